@@ -1,0 +1,96 @@
+# mcrash — top-level build. `make` builds bin/mcrash; `make test` runs every test;
+# `make check-asan` runs them under AddressSanitizer + UBSan; `make demo` runs the default scenario.
+# Everything depends on Debian packages only; `make deps` installs them (as root) when missing.
+
+CC       ?= cc
+BUILD    ?= build
+BIN      ?= bin
+PKGS      = ode hdf5-serial yaml-0.1
+DEB_PKGS  = build-essential pkg-config libode-dev libsundials-dev libhdf5-dev libyaml-dev \
+            liblapack-dev hdf5-tools
+
+PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
+
+OPT      ?= -O2 -g
+CFLAGS   += -std=c17 -Wall -Wextra -Werror -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE \
+            $(OPT) -MMD -MP -I. $(PKG_CFLAGS) $(SAN)
+LDFLAGS  += $(SAN)
+LDLIBS   += $(PKG_LIBS) -lsundials_cvode -lsundials_nvecserial -llapack -lblas -lm
+
+MODULES  = core analysis fe stage1_mb stage2_fe stage3_fe translators
+LIB_SRC  = $(foreach d,$(MODULES),$(wildcard $(d)/*.c))
+CLI_SRC  = $(wildcard cli/*.c)
+TEST_SRC = $(wildcard tests/test_*.c)
+BENCH_SRC= $(wildcard bench/bench_*.c)
+
+LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/%.o)
+CLI_OBJ  = $(CLI_SRC:%.c=$(BUILD)/%.o)
+TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+BENCH_BIN= $(BENCH_SRC:bench/%.c=$(BUILD)/bench/%)
+LIB      = $(BUILD)/libmcrash.a
+MCRASH   = $(BIN)/mcrash
+
+.SECONDARY:
+.PHONY: all deps test check-asan demo bench verify clean format
+
+all: $(MCRASH)
+
+# install the Debian packages that are missing; nothing when all are present
+deps:
+	@missing=""; for p in $(DEB_PKGS); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -z "$$missing" ]; then echo "deps: all Debian packages present"; \
+	elif [ "$$(id -u)" = 0 ]; then echo "deps: installing$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	else echo "deps: missing$$missing; run: sudo apt-get install -y$$missing"; exit 1; fi
+
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -c $< -o $@
+
+$(LIB): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@ && ar rcs $@ $^
+
+$(MCRASH): $(CLI_OBJ) $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
+
+$(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIB)
+	$(CC) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+$(BUILD)/bench/%: $(BUILD)/bench/%.o $(LIB)
+	$(CC) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+# every test binary, then one closing line `N passed, N failed`
+test: deps
+	@$(MAKE) --no-print-directory $(MCRASH) $(TEST_BIN)
+	@MCRASH_BIN=$(MCRASH) MCRASH_BUILD=$(BUILD) sh tests/run_tests.sh $(TEST_BIN)
+
+# the same tests under AddressSanitizer and UBSan, in their own build tree
+check-asan: deps
+	@$(MAKE) --no-print-directory test BUILD=build-asan BIN=build-asan/bin OPT="-O1 -g" \
+	  SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
+
+# longer verification runs (not part of `make test`)
+verify: deps
+	@$(MAKE) --no-print-directory $(MCRASH) $(TEST_BIN)
+	@MCRASH_VERIFY=1 MCRASH_BIN=$(MCRASH) MCRASH_BUILD=$(BUILD) sh tests/run_tests.sh $(TEST_BIN)
+
+bench: deps
+	@$(MAKE) --no-print-directory $(MCRASH) $(BENCH_BIN)
+	@for b in $(BENCH_BIN); do $$b || exit 1; done
+
+demo: deps
+	@$(MAKE) --no-print-directory $(MCRASH)
+	@sh scripts/demo.sh $(MCRASH)
+
+format:
+	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(BENCH_SRC) $(wildcard */*.h)
+
+clean:
+	rm -rf build build-asan bin out
+
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.d)

@@ -1,0 +1,46 @@
+/* cli.h: the `mcrash` subcommands (DESIGN.md "The command"). One file per subcommand,
+ * cli/cmd_<name>.c defining `int cli_<name>(int argc, char **argv)`; argv[0] is the
+ * subcommand name. Return the exit status: 0 done, 1 simulation failed, 2 bad input/usage. */
+#ifndef MCS_CLI_H
+#define MCS_CLI_H
+
+/* X(name, usage, summary) */
+#define MCS_CLI_COMMANDS(X)                                                                        \
+    X(check, "mcrash check SCENARIO.yaml [--json]",                                                \
+      "validate a scenario; --json prints it resolved (includes merged, SI units)")                \
+    X(run, "mcrash run SCENARIO.yaml [-o OUT.h5] [--stage 1|2|3|all] [--quiet] [--json]",         \
+      "run a scenario through its stages")                                                         \
+    X(stage1, "mcrash stage1 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]",                        \
+      "run the multibody model (ODE)")                                                             \
+    X(stage2, "mcrash stage2 SCENARIO.yaml [-o OUT.h5] --motion STAGE1.h5 [--quiet] [--json]",     \
+      "run the FE rider-interaction model on stage-1 vehicle motion")                              \
+    X(stage3, "mcrash stage3 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]",                        \
+      "run the full FE vehicle model")                                                             \
+    X(retune, "mcrash retune STAGE3.h5 -o CURVES.yaml",                                            \
+      "turn stage-3 force-crush results into stage-1 characteristics")                             \
+    X(loop, "mcrash loop SCENARIO.yaml [--max-iter N]",                                            \
+      "stage 3 -> retune -> stage 1 -> stage 2 until the ratings settle")                          \
+    X(injury, "mcrash injury OUT.h5 [--stage N] [--json]", "injury criteria of a results file")    \
+    X(signal, "mcrash signal hic|a3ms|cfc|nij|bric|vc|ti FILE.csv [--class CFC] [--window S] [--json]", \
+      "filter a channel or compute one criterion from CSV")                                        \
+    X(compare, "mcrash compare REF CMP [--method iso18571|cora] [--json]",                         \
+      "objective rating of one curve against another")                                             \
+    X(export, "mcrash export OUT.h5 --xdmf | --csv DIR | --mme DIR | --k FILE",                    \
+      "write a results file in other formats")                                                     \
+    X(report, "mcrash report OUT.h5 -o DIR", "HTML page with plots")                               \
+    X(study, "mcrash study STUDY.yaml [-o STUDY.h5]", "design of experiments")
+
+#define MCS_CLI_DECL(name, usage, summary) int cli_##name(int argc, char **argv);
+MCS_CLI_COMMANDS(MCS_CLI_DECL)
+#undef MCS_CLI_DECL
+
+/* print "mcrash NAME: not built yet (see issue N)" and return 2 */
+int cli_not_built(const char *name, const char *where);
+
+/* print the usage line of a subcommand on stderr and return 2 */
+int cli_usage(const char *name);
+
+/* true if s is "-h" or "--help"; then the usage is printed on stdout */
+int cli_wants_help(const char *name, int argc, char **argv);
+
+#endif

@@ -1,0 +1,74 @@
+/* harness.h: the small macro test harness (STYLE.md §10).
+ * A test is a function; it passes when every CHECK in it holds. main() runs them with RUN()
+ * and ends with TEST_END(), which prints "<binary>: N passed, N failed" for tests/run_tests.sh. */
+#ifndef MCS_HARNESS_H
+#define MCS_HARNESS_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int th_tests_passed, th_tests_failed, th_checks_failed;
+static const char *th_current = "";
+
+#define CHECK(cond)                                                                                \
+    do {                                                                                           \
+        if (!(cond)) {                                                                             \
+            th_checks_failed++;                                                                    \
+            fprintf(stderr, "%s:%d: %s: CHECK failed: %s\n", __FILE__, __LINE__, th_current,       \
+                    #cond);                                                                        \
+        }                                                                                          \
+    } while (0)
+
+/* |a - b| <= tol, and neither is NaN */
+#define CHECK_NEAR(a, b, tol)                                                                      \
+    do {                                                                                           \
+        double th_a = (double)(a), th_b = (double)(b), th_t = (double)(tol);                       \
+        if (!(fabs(th_a - th_b) <= th_t)) {                                                        \
+            th_checks_failed++;                                                                    \
+            fprintf(stderr, "%s:%d: %s: CHECK_NEAR failed: %s = %.12g, %s = %.12g, tol %.3g\n",    \
+                    __FILE__, __LINE__, th_current, #a, th_a, #b, th_b, th_t);                     \
+        }                                                                                          \
+    } while (0)
+
+/* relative tolerance: |a - b| <= rel * |b| */
+#define CHECK_REL(a, b, rel) CHECK_NEAR((a), (b), fabs((double)(rel) * (double)(b)))
+
+#define CHECK_STR_CONTAINS(hay, needle)                                                            \
+    do {                                                                                           \
+        const char *th_h = (hay), *th_n = (needle);                                                \
+        if (!th_h || !strstr(th_h, th_n)) {                                                        \
+            th_checks_failed++;                                                                    \
+            fprintf(stderr, "%s:%d: %s: expected \"%s\" in \"%s\"\n", __FILE__, __LINE__,        \
+                    th_current, th_n, th_h ? th_h : "(null)");                                     \
+        }                                                                                          \
+    } while (0)
+
+#define RUN(fn)                                                                                    \
+    do {                                                                                           \
+        int th_before = th_checks_failed;                                                          \
+        th_current = #fn;                                                                          \
+        fn();                                                                                      \
+        if (th_checks_failed == th_before)                                                         \
+            th_tests_passed++;                                                                     \
+        else {                                                                                     \
+            th_tests_failed++;                                                                     \
+            fprintf(stderr, "FAIL %s\n", #fn);                                                     \
+        }                                                                                          \
+    } while (0)
+
+#define TEST_END()                                                                                 \
+    do {                                                                                           \
+        printf("%s: %d passed, %d failed\n", __FILE__, th_tests_passed, th_tests_failed);          \
+        return th_tests_failed ? 1 : 0;                                                            \
+    } while (0)
+
+/* true when `make verify` runs the tests (longer verification cases) */
+static inline int th_verify(void)
+{
+    const char *v = getenv("MCRASH_VERIFY");
+    return v && *v && *v != '0';
+}
+
+#endif

@@ -29,4 +29,10 @@ void an_signals_free(an_signal **cols, int ncols);
  * "file.mme:channel" (ISO/TS 13499). */
 mcs_status an_signal_read_ref(const char *ref, an_signal *out, mcs_error *err);
 
+/* deep copy of a channel (dst owns new arrays) */
+mcs_status an_signal_copy(const an_signal *src, an_signal *dst, mcs_error *err);
+
+/* index of the column named `name` (exact match first, then case-insensitive), or -1 */
+int an_signal_find(const an_signal *cols, int ncols, const char *name);
+
 #endif

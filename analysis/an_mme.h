@@ -1,0 +1,25 @@
+/* an_mme.h: ISO/TS 13499 (ISO-MME) channels, read and write.
+ * Layout: DIR/TEST.mme (test header), DIR/Channel/TEST.chn (channel list,
+ * "Name of channel 001 :CODE / description"), DIR/Channel/TEST.001 ... (one file per channel:
+ * "key :value" header lines, then one value per line). The channel header keys used are
+ * `Name of the channel`, `Channel code`, `Unit`, `Channel frequency class`,
+ * `Time of first sample` [s], `Sampling interval` [s] and `Number of samples`. */
+#ifndef AN_MME_H
+#define AN_MME_H
+
+#include "analysis/an_signal.h"
+
+/* read one channel of the test whose .mme file is `mme_path`; `channel` is the channel number
+ * ("1", "001"), its channel code, or its name; values converted to SI */
+mcs_status an_mme_read_channel(const char *mme_path, const char *channel, an_signal *out,
+                               mcs_error *err);
+
+/* read one channel file (DIR/Channel/TEST.NNN) */
+mcs_status an_mme_read_file(const char *chan_path, an_signal *out, mcs_error *err);
+
+/* write n channels as test `test` under directory `dir` (created if missing); every channel
+ * must be uniformly sampled. Nothing is written when a channel is rejected. */
+mcs_status an_mme_write(const char *dir, const char *test, const an_signal *ch, int n,
+                        mcs_error *err);
+
+#endif

@@ -1,0 +1,368 @@
+/* mb_geom_facet: ellipsoid against triangles and triangle meshes (docs/contact_geometry.md).
+ * The penetration through a triangle is the deepest point of the ellipsoid below the triangle's
+ * plane among the ellipsoid points whose projection lies in the triangle. That depth is concave
+ * over the plane, so when the support point along -n projects outside the triangle the maximum
+ * lies on an edge (closed form: the deepest point of a planar slice) or at a vertex (closed
+ * form: the lower root of a line-ellipsoid intersection). */
+#include "stage1_mb/mb_geom.h"
+#include "stage1_mb/mb_geom_internal.h"
+#include "stage1_mb/mb_vec.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+/* an ellipsoid expressed in the frame the triangles are given in */
+typedef struct {
+    double c[3];  /* centre [m] */
+    double Q[9];  /* R diag(s^2) R^T [m^2]   */
+    double Qi[9]; /* R diag(1/s^2) R^T [1/m^2] */
+} ell_frame;
+
+static void ell_frame_make(const double c[3], const double R[9], const double s[3], ell_frame *e)
+{
+    mb_copy(c, e->c);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double q = 0, qi = 0;
+            for (int k = 0; k < 3; k++) {
+                double rr = R[3 * i + k] * R[3 * j + k];
+                q += rr * s[k] * s[k];
+                qi += rr / (s[k] * s[k]);
+            }
+            e->Q[3 * i + j] = q, e->Qi[3 * i + j] = qi;
+        }
+}
+
+/* vertex: lowest point of the ellipsoid on the line V + t n (t < 0 below the plane) */
+static int vertex_contact(const ell_frame *e, const double V[3], const double n[3], mb_contact *c)
+{
+    double w[3], Qiw[3], Qin[3];
+    mb_sub(V, e->c, w);
+    mb_mat_vec(e->Qi, w, Qiw);
+    mb_mat_vec(e->Qi, n, Qin);
+    double A = mb_dot(n, Qin), B = mb_dot(n, Qiw), C = mb_dot(w, Qiw) - 1;
+    double disc = B * B - A * C;
+    if (!(disc > 0)) return 0;
+    double t = (-B - sqrt(disc)) / A;
+    if (!(t < 0)) return 0;
+    c->depth = -t;
+    mb_axpy(V, t, n, c->point_a);
+    mb_copy(V, c->point_b);
+    c->feature = MB_FEATURE_VERTEX;
+    return 1;
+}
+
+/* edge P->R: minimise n.y over the slice of the ellipsoid by the plane through the edge and n.
+ * y - c = Q (a n + b m): m.(y - c) = delta and (y-c)'Qi(y-c) = 1 give
+ * a = -sqrt((1 - delta^2/Qmm) / (Qnn - Qnm^2/Qmm)), b = (delta - a Qnm)/Qmm. */
+static int edge_contact(const ell_frame *e, const double P[3], const double Rv[3],
+                        const double n[3], mb_contact *c)
+{
+    double E[3], m[3], Qn[3], Qm[3], rel[3];
+    mb_sub(Rv, P, E);
+    mb_cross(n, E, m);
+    mb_normalize(m);
+    mb_sub(P, e->c, rel);
+    double delta = mb_dot(m, rel);
+    mb_mat_vec(e->Q, n, Qn);
+    mb_mat_vec(e->Q, m, Qm);
+    double Qmm = mb_dot(m, Qm), Qnm = mb_dot(n, Qm), Qnn = mb_dot(n, Qn);
+    double r = 1 - delta * delta / Qmm;
+    if (!(r > 0)) return 0; /* the edge's line misses the ellipsoid's shadow */
+    double den = Qnn - Qnm * Qnm / Qmm;
+    double a = -sqrt(r / den), b = (delta - a * Qnm) / Qmm;
+    double y[3];
+    for (int k = 0; k < 3; k++) y[k] = e->c[k] + a * Qn[k] + b * Qm[k];
+    double yr[3];
+    mb_sub(y, P, yr);
+    double s = mb_dot(yr, E) / mb_dot(E, E);
+    if (s < 0) return vertex_contact(e, P, n, c);
+    if (s > 1) return vertex_contact(e, Rv, n, c);
+    double depth = -mb_dot(n, yr);
+    if (!(depth > 0)) return 0;
+    c->depth = depth;
+    mb_copy(y, c->point_a);
+    mb_axpy(y, depth, n, c->point_b);
+    c->feature = MB_FEATURE_EDGE;
+    return 1;
+}
+
+/* one triangle with unit outward normal n, everything in the frame of e */
+static int tri_contact(const ell_frame *e, const double *v[3], const double n[3], mb_contact *c)
+{
+    double rel[3], Qn[3];
+    mb_sub(e->c, v[0], rel);
+    double sd = mb_dot(n, rel);
+    if (!(sd > 0)) return 0; /* centre behind the facet: not this facet's contact */
+    mb_mat_vec(e->Q, n, Qn);
+    double h = sqrt(mb_dot(n, Qn));
+    double depth = h - sd;
+    if (!(depth > 0)) return 0;
+    /* face: the support point along -n projects inside the triangle */
+    double p[3], pb[3];
+    mb_axpy(e->c, -1.0 / h, Qn, p);
+    mb_axpy(p, depth, n, pb);
+    int inside = 1;
+    for (int i = 0; i < 3 && inside; i++) {
+        double E[3], W[3], X[3];
+        mb_sub(v[(i + 1) % 3], v[i], E);
+        mb_sub(pb, v[i], W);
+        mb_cross(E, W, X);
+        if (mb_dot(X, n) < 0) inside = 0;
+    }
+    if (inside) {
+        c->depth = depth;
+        mb_copy(p, c->point_a);
+        mb_copy(pb, c->point_b);
+        c->feature = MB_FEATURE_FACE;
+        return 1;
+    }
+    /* otherwise the concave depth peaks on the boundary: best edge (or vertex) */
+    mb_contact t;
+    int hit = 0;
+    for (int i = 0; i < 3; i++) {
+        mb_contact_clear(&t);
+        if (edge_contact(e, v[i], v[(i + 1) % 3], n, &t) && t.depth > c->depth) {
+            *c = t;
+            hit = 1;
+        }
+    }
+    return hit;
+}
+
+static int tri_normal(const double *v0, const double *v1, const double *v2, double n[3])
+{
+    double e1[3], e2[3];
+    mb_sub(v1, v0, e1);
+    mb_sub(v2, v0, e2);
+    mb_cross(e1, e2, n);
+    double l = mb_norm(n), s = mb_norm(e1) + mb_norm(e2);
+    if (!(l > 1e-12 * s * s)) return 0;
+    mb_scale(n, 1.0 / l, n);
+    return 1;
+}
+
+static void finish(mb_contact *c, const double normal[3])
+{
+    mb_copy(normal, c->normal);
+    for (int k = 0; k < 3; k++) c->point[k] = 0.5 * (c->point_a[k] + c->point_b[k]);
+}
+
+int mb_geom_ellipsoid_triangle(const mb_ellipsoid *a, const double v0[3], const double v1[3],
+                               const double v2[3], mb_contact *c)
+{
+    mb_contact_clear(c);
+    double n[3];
+    if (!tri_normal(v0, v1, v2, n)) return 0;
+    ell_frame e;
+    ell_frame_make(a->center, a->rot, a->semi, &e);
+    const double *v[3] = {v0, v1, v2};
+    if (!tri_contact(&e, v, n, c)) {
+        mb_contact_clear(c);
+        return 0;
+    }
+    finish(c, n);
+    return 1;
+}
+
+/* ---- meshes: AABB tree over triangles, median split on the longest axis -------------------- */
+
+/* a triangle index with its centroid coordinate on the split axis (build only) */
+typedef struct {
+    double key;
+    int tri;
+} keyed_tri;
+
+typedef struct {
+    double lo[3], hi[3]; /* box [m], mesh frame */
+    int first;           /* leaf: first index into tri_order; inner: left child (right = +1) */
+    int count;           /* leaf: number of triangles; inner: 0 */
+} bvh_node;
+
+struct mb_mesh {
+    int nvert, ntri, nnode;
+    double *vert;     /* vertex coordinates, mesh frame [m] (nvert x 3) */
+    int *tri;         /* vertex indices (ntri x 3) */
+    double *tri_n;    /* unit outward normals (ntri x 3) */
+    double *tri_c;    /* centroids, build only [m] (ntri x 3) */
+    int *tri_order;   /* triangle indices in leaf order (ntri) */
+    bvh_node *node;   /* tree nodes (nnode), root 0 */
+    keyed_tri *scratch; /* sort buffer, build only (ntri) */
+};
+
+enum { BVH_LEAF = 4, BVH_STACK = 64 };
+
+static const double *mesh_v(const mb_mesh *m, int t, int k) { return m->vert + 3 * m->tri[3 * t + k]; }
+
+static void node_bounds(mb_mesh *m, bvh_node *nd)
+{
+    for (int k = 0; k < 3; k++) nd->lo[k] = DBL_MAX, nd->hi[k] = -DBL_MAX;
+    for (int i = nd->first; i < nd->first + nd->count; i++)
+        for (int j = 0; j < 3; j++) {
+            const double *p = mesh_v(m, m->tri_order[i], j);
+            for (int k = 0; k < 3; k++) nd->lo[k] = fmin(nd->lo[k], p[k]), nd->hi[k] = fmax(nd->hi[k], p[k]);
+        }
+}
+
+static int cmp_keyed(const void *x, const void *y)
+{
+    double a = ((const keyed_tri *)x)->key, b = ((const keyed_tri *)y)->key;
+    return (a > b) - (a < b);
+}
+
+/* split node i (already bounded) recursively; depth is bounded by log2(ntri) + 1 */
+static void bvh_split(mb_mesh *m, int i)
+{
+    bvh_node *nd = &m->node[i];
+    if (nd->count <= BVH_LEAF) return;
+    int axis = 0;
+    for (int k = 1; k < 3; k++)
+        if (nd->hi[k] - nd->lo[k] > nd->hi[axis] - nd->lo[axis]) axis = k;
+    for (int i = 0; i < nd->count; i++) {
+        int t = m->tri_order[nd->first + i];
+        m->scratch[i] = (keyed_tri){.key = m->tri_c[3 * t + axis], .tri = t};
+    }
+    qsort(m->scratch, (size_t)nd->count, sizeof(keyed_tri), cmp_keyed);
+    for (int i = 0; i < nd->count; i++) m->tri_order[nd->first + i] = m->scratch[i].tri;
+    int half = nd->count / 2, first = nd->first, count = nd->count;
+    int l = m->nnode;
+    m->nnode += 2;
+    m->node[l] = (bvh_node){.first = first, .count = half};
+    m->node[l + 1] = (bvh_node){.first = first + half, .count = count - half};
+    m->node[i].first = l, m->node[i].count = 0;
+    node_bounds(m, &m->node[l]);
+    node_bounds(m, &m->node[l + 1]);
+    bvh_split(m, l);
+    bvh_split(m, l + 1);
+}
+
+mcs_status mb_mesh_create(mb_mesh **out, int nvert, const double *vert, int ntri, const int *tri,
+                          mcs_error *err)
+{
+    *out = NULL;
+    if (nvert < 3 || ntri < 1 || !vert || !tri)
+        return MCS_ERR(err, MCS_ERR_RANGE, "facet mesh: needs >= 3 vertices and >= 1 triangle "
+                                           "(got %d, %d)", nvert, ntri);
+    for (int i = 0; i < 3 * nvert; i++)
+        if (!isfinite(vert[i]))
+            return MCS_ERR(err, MCS_ERR_RANGE, "facet mesh: vertex %d is not finite", i / 3);
+    for (int t = 0; t < ntri; t++)
+        for (int k = 0; k < 3; k++)
+            if (tri[3 * t + k] < 0 || tri[3 * t + k] >= nvert)
+                return MCS_ERR(err, MCS_ERR_RANGE,
+                               "facet mesh: triangle %d uses vertex %d (mesh has %d)", t,
+                               tri[3 * t + k], nvert);
+    mb_mesh *m = calloc(1, sizeof *m);
+    if (!m) return MCS_ERR(err, MCS_ERR_NOMEM, "facet mesh: out of memory");
+    m->nvert = nvert, m->ntri = ntri;
+    m->vert = malloc(sizeof(double) * 3 * (size_t)nvert);
+    m->tri = malloc(sizeof(int) * 3 * (size_t)ntri);
+    m->tri_n = malloc(sizeof(double) * 3 * (size_t)ntri);
+    m->tri_c = malloc(sizeof(double) * 3 * (size_t)ntri);
+    m->tri_order = malloc(sizeof(int) * (size_t)ntri);
+    m->node = malloc(sizeof(bvh_node) * (2 * (size_t)ntri));
+    m->scratch = malloc(sizeof(keyed_tri) * (size_t)ntri);
+    if (!m->vert || !m->tri || !m->tri_n || !m->tri_c || !m->tri_order || !m->node ||
+        !m->scratch) {
+        mb_mesh_destroy(&m);
+        return MCS_ERR(err, MCS_ERR_NOMEM, "facet mesh: out of memory (%d triangles)", ntri);
+    }
+    for (int i = 0; i < 3 * nvert; i++) m->vert[i] = vert[i];
+    for (int i = 0; i < 3 * ntri; i++) m->tri[i] = tri[i];
+    for (int t = 0; t < ntri; t++) {
+        const double *a = mesh_v(m, t, 0), *b = mesh_v(m, t, 1), *c = mesh_v(m, t, 2);
+        if (!tri_normal(a, b, c, m->tri_n + 3 * t)) {
+            mb_mesh_destroy(&m);
+            return MCS_ERR(err, MCS_ERR_RANGE, "facet mesh: triangle %d has zero area", t);
+        }
+        for (int k = 0; k < 3; k++) m->tri_c[3 * t + k] = (a[k] + b[k] + c[k]) / 3.0;
+        m->tri_order[t] = t;
+    }
+    m->nnode = 1;
+    m->node[0] = (bvh_node){.first = 0, .count = ntri};
+    node_bounds(m, &m->node[0]);
+    bvh_split(m, 0);
+    free(m->scratch);
+    m->scratch = NULL;
+    *out = m;
+    return MCS_OK;
+}
+
+void mb_mesh_destroy(mb_mesh **pm)
+{
+    if (!pm || !*pm) return;
+    mb_mesh *m = *pm;
+    free(m->vert), free(m->tri), free(m->tri_n), free(m->tri_c), free(m->tri_order), free(m->node);
+    free(m->scratch);
+    free(m);
+    *pm = NULL;
+}
+
+int mb_mesh_ntri(const mb_mesh *m) { return m->ntri; }
+int mb_mesh_nnode(const mb_mesh *m) { return m->nnode; }
+
+/* mesh-frame contact -> world */
+static void to_world(const mb_pose *pose, mb_contact *c)
+{
+    if (!pose) return;
+    double *v[4] = {c->point, c->point_a, c->point_b, NULL};
+    for (int i = 0; v[i]; i++) {
+        double w[3];
+        mb_mat_vec(pose->rot, v[i], w);
+        mb_add(w, pose->pos, v[i]);
+    }
+    double w[3];
+    mb_mat_vec(pose->rot, c->normal, w);
+    mb_copy(w, c->normal);
+}
+
+int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pose *pose,
+                           mb_contact *deepest, mb_contact *all, int max_all)
+{
+    mb_contact_clear(deepest);
+    /* the ellipsoid in the mesh frame: c' = Rm^T (c - pos), R' = Rm^T Re */
+    ell_frame e;
+    if (pose) {
+        double rel[3], cl[3], Rl[9];
+        mb_sub(a->center, pose->pos, rel);
+        mb_mat_tvec(pose->rot, rel, cl);
+        mb_mat_tmul(pose->rot, a->rot, Rl);
+        ell_frame_make(cl, Rl, a->semi, &e);
+    } else {
+        ell_frame_make(a->center, a->rot, a->semi, &e);
+    }
+    /* exact axis-aligned box of the ellipsoid: half extent sqrt(Q_kk) */
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; k++) {
+        double h = sqrt(e.Q[4 * k]);
+        lo[k] = e.c[k] - h, hi[k] = e.c[k] + h;
+    }
+    int stack[BVH_STACK], sp = 0, nhit = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const bvh_node *nd = &m->node[stack[--sp]];
+        if (nd->lo[0] > hi[0] || nd->hi[0] < lo[0] || nd->lo[1] > hi[1] || nd->hi[1] < lo[1] ||
+            nd->lo[2] > hi[2] || nd->hi[2] < lo[2])
+            continue;
+        if (nd->count == 0) {
+            stack[sp++] = nd->first;
+            stack[sp++] = nd->first + 1;
+            continue;
+        }
+        for (int i = nd->first; i < nd->first + nd->count; i++) {
+            int t = m->tri_order[i];
+            const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
+            mb_contact c;
+            mb_contact_clear(&c);
+            if (!tri_contact(&e, v, m->tri_n + 3 * t, &c)) continue;
+            c.tri = t;
+            finish(&c, m->tri_n + 3 * t);
+            to_world(pose, &c);
+            if (all && nhit < max_all) all[nhit] = c;
+            if (c.depth > deepest->depth) *deepest = c;
+            nhit++;
+        }
+    }
+    return nhit;
+}

@@ -208,6 +208,7 @@ static void test_a3ms_cumulative(void)
     CHECK_NEAR(r.level / G, 40, 1e-9);
     /* shorter than 3 ms: refused */
     CHECK(an_a3ms(t, a, 100, 0.003, &r, &e) == MCS_ERR_RANGE);
+    free(t), free(a);
 }
 
 /* independent check of Eq. (8) on a rough signal: g(t1) = min of the interpolated signal over

@@ -2,6 +2,7 @@
 #include "analysis/an_signal.h"
 #include "analysis/an_mme.h"
 #include "analysis/an_units.h"
+#include "core/mcs_results.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -367,6 +368,78 @@ static mcs_status ref_csv(const char *file, const char *col, an_signal *out, mcs
     return st;
 }
 
+/* "/stageN/..." -> "/stageN/time"; "/path[k]" selects column k of an [nt, w] dataset */
+static mcs_status ref_h5(const char *file, const char *sel, an_signal *out, mcs_error *err)
+{
+    if (!sel || sel[0] != '/')
+        return MCS_ERR(err, MCS_ERR_USAGE, "%s: name a dataset as %s:/stageN/channels/NAME", file,
+                       file);
+    char path[1024], tpath[1024];
+    snprintf(path, sizeof path, "%s", sel);
+    long col = -1;
+    size_t pl = strlen(path);
+    if (pl > 2 && path[pl - 1] == ']') {
+        char *lb = strrchr(path, '[');
+        char *end;
+        if (lb) {
+            col = strtol(lb + 1, &end, 10);
+            if (end != path + pl - 1 || col < 0)
+                return MCS_ERR(err, MCS_ERR_USAGE, "%s: bad column index in %s", file, sel);
+            *lb = 0;
+        }
+    }
+    const char *slash = strchr(path + 1, '/');
+    if (!slash)
+        return MCS_ERR(err, MCS_ERR_USAGE, "%s:%s: not inside a stage group (/stageN/...)", file,
+                       sel);
+    snprintf(tpath, sizeof tpath, "%.*s/time", (int)(slash - path), path);
+    mcs_results *r = NULL;
+    mcs_status st = mcs_results_open(&r, file, err);
+    if (st) return st;
+    mcs_array a = {0}, ta = {0};
+    st = mcs_results_read(r, path, &a, err);
+    if (!st) st = mcs_results_read(r, tpath, &ta, err);
+    size_t nt = a.rank >= 1 ? a.dims[0] : 0, w = a.rank == 2 ? a.dims[1] : 1;
+    if (!st && (a.rank < 1 || a.rank > 2 || (a.rank == 2 && col < 0) || (long)w <= col))
+        st = MCS_ERR(err, MCS_ERR_FORMAT,
+                     "%s:%s: shape [%zu%s] does not give one channel (use %s[k] for column k of "
+                     "a two-dimensional dataset)",
+                     file, path, nt, a.rank == 2 ? ", ..." : "", path);
+    if (!st && (ta.rank != 1 || ta.dims[0] != nt))
+        st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: %s has %zu rows, %s has %zu", file, path, nt,
+                     tpath, ta.rank == 1 ? ta.dims[0] : 0);
+    double factor = 1;
+    const char *si = "-";
+    if (!st && !an_unit_to_si(a.unit, &factor, &si))
+        st = MCS_ERR(err, MCS_ERR_UNIT, "%s:%s: unknown unit \"%s\"", file, path, a.unit);
+    if (!st && nt < 2) st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: %zu samples", file, path, nt);
+    if (!st) {
+        out->t = malloc(nt * sizeof(double));
+        out->y = malloc(nt * sizeof(double));
+        if (!out->t || !out->y) st = MCS_ERR(err, MCS_ERR_NOMEM, "%s: out of memory", file);
+    }
+    if (!st) {
+        for (size_t i = 0; i < nt; i++) {
+            out->t[i] = ta.v[i];
+            out->y[i] = a.v[i * w + (col < 0 ? 0 : (size_t)col)] * factor;
+        }
+        out->n = (int)nt;
+        snprintf(out->unit, sizeof out->unit, "%s", si);
+        const char *base = strrchr(sel, '/') + 1;
+        snprintf(out->name, sizeof out->name, "%s", base);
+        double cfc;
+        mcs_error e2 = {0};
+        if (mcs_results_has_attr(r, path, "cfc") &&
+            mcs_results_attr_double(r, path, "cfc", &cfc, &e2) == MCS_OK)
+            out->cfc = (int)cfc;
+    }
+    if (st) an_signal_free(out);
+    mcs_array_free(&a);
+    mcs_array_free(&ta);
+    mcs_results_close(&r);
+    return st;
+}
+
 mcs_status an_signal_read_ref(const char *ref, an_signal *out, mcs_error *err)
 {
     memset(out, 0, sizeof *out);
@@ -400,8 +473,5 @@ mcs_status an_signal_read_ref(const char *ref, an_signal *out, mcs_error *err)
             return MCS_ERR(err, MCS_ERR_USAGE, "%s: name a channel as %s:CHANNEL", ref, file);
         return an_mme_read_channel(file, sel, out, err);
     }
-    return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
-                   "%s: reading channels from a results file (.h5) is not built yet; export "
-                   "the channel to CSV or ISO-MME",
-                   ref);
+    return ref_h5(file, sel, out, err);
 }

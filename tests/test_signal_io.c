@@ -2,6 +2,7 @@
 #include "analysis/an_mme.h"
 #include "analysis/an_signal.h"
 #include "analysis/an_units.h"
+#include "core/mcs_results.h"
 #include "tests/harness.h"
 
 #include <stdio.h>
@@ -214,6 +215,50 @@ static void test_ref_csv(void)
     CHECK(an_signal_read_ref("x.txt", &s, &e4) == MCS_ERR_USAGE);
 }
 
+/* channels from a results file: /stageN/channels/<name> with /stageN/time, a column of a
+ * body quantity with [k], the cfc attribute, and errors for a missing dataset */
+static void test_ref_h5(void)
+{
+    char path[200], ref[300];
+    snprintf(path, sizeof path, "%s/run.h5", tmpdir);
+    double t[50], y[50], acc[150];
+    for (int i = 0; i < 50; i++) {
+        t[i] = i * 1e-4, y[i] = 100 * i;
+        acc[3 * i] = 1, acc[3 * i + 1] = -2.0 * i, acc[3 * i + 2] = 3;
+    }
+    mcs_results *r = NULL;
+    mcs_error e = {0};
+    CHECK(mcs_results_create(&r, path, NULL, &e) == MCS_OK);
+    CHECK(mcs_results_put_time(r, 1, 50, t, &e) == MCS_OK);
+    CHECK(mcs_results_put_channel(r, 1, "head_ax", 50, y, "m/s^2", NULL, 1000, "head", &e) ==
+          MCS_OK);
+    CHECK(mcs_results_put_body(r, 1, "head", "acceleration", 50, acc, &e) == MCS_OK);
+    CHECK(mcs_results_commit(&r, &e) == MCS_OK);
+    an_signal s;
+    snprintf(ref, sizeof ref, "%s:/stage1/channels/head_ax", path);
+    CHECK(an_signal_read_ref(ref, &s, &e) == MCS_OK);
+    CHECK(s.n == 50 && s.cfc == 1000 && strcmp(s.name, "head_ax") == 0);
+    CHECK(strcmp(s.unit, "m/s^2") == 0);
+    if (s.n == 50) {
+        CHECK_NEAR(s.y[7], 700, 0);
+        CHECK_NEAR(s.t[7], 7e-4, 0);
+    }
+    an_signal_free(&s);
+    snprintf(ref, sizeof ref, "%s:/stage1/bodies/head/acceleration[1]", path);
+    CHECK(an_signal_read_ref(ref, &s, &e) == MCS_OK);
+    if (s.n == 50) CHECK_NEAR(s.y[10], -20, 0);
+    an_signal_free(&s);
+    mcs_error e2 = {0};
+    snprintf(ref, sizeof ref, "%s:/stage1/bodies/head/acceleration", path);
+    CHECK(an_signal_read_ref(ref, &s, &e2) == MCS_ERR_FORMAT);
+    CHECK_STR_CONTAINS(e2.msg, "[k]");
+    mcs_error e3 = {0};
+    snprintf(ref, sizeof ref, "%s:/stage1/channels/nope", path);
+    CHECK(an_signal_read_ref(ref, &s, &e3) != MCS_OK);
+    CHECK_STR_CONTAINS(e3.msg, "nope");
+    CHECK(s.t == NULL && s.y == NULL);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_sigio_XXXXXX");
@@ -225,6 +270,7 @@ int main(void)
     RUN(test_mme_roundtrip);
     RUN(test_mme_read_errors);
     RUN(test_ref_csv);
+    RUN(test_ref_h5);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", tmpdir);

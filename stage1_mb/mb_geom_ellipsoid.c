@@ -37,7 +37,8 @@ void mb_ellipsoid_support(const mb_ellipsoid *e, const double dir[3], double out
 
 static void finish_midpoint(mb_contact *c)
 {
-    for (int k = 0; k < 3; k++) c->point[k] = 0.5 * (c->point_a[k] + c->point_b[k]);
+    for (int k = 0; k < 3; k++)
+        c->point[k] = 0.5 * (c->point_a[k] + c->point_b[k]);
 }
 
 /* support function along -n: p = c - Q n / sqrt(n'Qn); depth = sqrt(n'Qn) - n.(c - p0) */
@@ -99,7 +100,8 @@ static double ee_eval(const ee_pair *p, const double n[3], double grad[3], doubl
     double ha = sqrt(mb_dot(n, qa)), hb = sqrt(mb_dot(n, qb));
     double g = mb_dot(n, p->d) - ha - hb;
     if (grad)
-        for (int k = 0; k < 3; k++) grad[k] = p->d[k] - qa[k] / ha - qb[k] / hb;
+        for (int k = 0; k < 3; k++)
+            grad[k] = p->d[k] - qa[k] / ha - qb[k] / hb;
     if (H) {
         double ia = 1.0 / ha, ib = 1.0 / hb, ia3 = ia * ia * ia, ib3 = ib * ib * ib;
         for (int i = 0; i < 3; i++)
@@ -154,7 +156,8 @@ static double ee_ascend(const ee_pair *p, double n[3], double tol, int *iters, i
         /* backtrack until g does not decrease */
         double nn[3], gn = -DBL_MAX;
         for (int ls = 0; ls < 40; ls++) {
-            for (int k = 0; k < 3; k++) nn[k] = n[k] + v1 * t1[k] + v2 * t2[k];
+            for (int k = 0; k < 3; k++)
+                nn[k] = n[k] + v1 * t1[k] + v2 * t2[k];
             mb_normalize(nn);
             gn = ee_eval(p, nn, NULL, NULL);
             if (gn >= g - 1e-15 * (fabs(g) + scale)) break;
@@ -205,7 +208,7 @@ int mb_geom_ellipsoid_ellipsoid(const mb_ellipsoid *a, const mb_ellipsoid *b,
             mb_copy(starts[s], n);
             double g = ee_ascend(&p, n, tol, &iters, &conv);
             if (g > best_g) best_g = g, best_conv = conv, mb_copy(n, best_n);
-            if (g > 0) return 0; /* a separating axis: apart */
+            if (g > 0) return 0;                                   /* a separating axis: apart */
             if (pass == 0 && s == 0 && warm_normal && conv) break; /* warm start converged */
         }
         double smin = fmin(fmin(fmin(a->semi[0], a->semi[1]), a->semi[2]),

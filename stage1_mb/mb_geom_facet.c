@@ -73,7 +73,8 @@ static int edge_contact(const ell_frame *e, const double P[3], const double Rv[3
     double den = Qnn - Qnm * Qnm / Qmm;
     double a = -sqrt(r / den), b = (delta - a * Qnm) / Qmm;
     double y[3];
-    for (int k = 0; k < 3; k++) y[k] = e->c[k] + a * Qn[k] + b * Qm[k];
+    for (int k = 0; k < 3; k++)
+        y[k] = e->c[k] + a * Qn[k] + b * Qm[k];
     double yr[3];
     mb_sub(y, P, yr);
     double s = mb_dot(yr, E) / mb_dot(E, E);
@@ -146,7 +147,8 @@ static int tri_normal(const double *v0, const double *v1, const double *v2, doub
 static void finish(mb_contact *c, const double normal[3])
 {
     mb_copy(normal, c->normal);
-    for (int k = 0; k < 3; k++) c->point[k] = 0.5 * (c->point_a[k] + c->point_b[k]);
+    for (int k = 0; k < 3; k++)
+        c->point[k] = 0.5 * (c->point_a[k] + c->point_b[k]);
 }
 
 int mb_geom_ellipsoid_triangle(const mb_ellipsoid *a, const double v0[3], const double v1[3],
@@ -182,26 +184,31 @@ typedef struct {
 
 struct mb_mesh {
     int nvert, ntri, nnode;
-    double *vert;     /* vertex coordinates, mesh frame [m] (nvert x 3) */
-    int *tri;         /* vertex indices (ntri x 3) */
-    double *tri_n;    /* unit outward normals (ntri x 3) */
-    double *tri_c;    /* centroids, build only [m] (ntri x 3) */
-    int *tri_order;   /* triangle indices in leaf order (ntri) */
-    bvh_node *node;   /* tree nodes (nnode), root 0 */
+    double *vert;       /* vertex coordinates, mesh frame [m] (nvert x 3) */
+    int *tri;           /* vertex indices (ntri x 3) */
+    double *tri_n;      /* unit outward normals (ntri x 3) */
+    double *tri_c;      /* centroids, build only [m] (ntri x 3) */
+    int *tri_order;     /* triangle indices in leaf order (ntri) */
+    bvh_node *node;     /* tree nodes (nnode), root 0 */
     keyed_tri *scratch; /* sort buffer, build only (ntri) */
 };
 
 enum { BVH_LEAF = 4, BVH_STACK = 64 };
 
-static const double *mesh_v(const mb_mesh *m, int t, int k) { return m->vert + 3 * m->tri[3 * t + k]; }
+static const double *mesh_v(const mb_mesh *m, int t, int k)
+{
+    return m->vert + 3 * m->tri[3 * t + k];
+}
 
 static void node_bounds(mb_mesh *m, bvh_node *nd)
 {
-    for (int k = 0; k < 3; k++) nd->lo[k] = DBL_MAX, nd->hi[k] = -DBL_MAX;
+    for (int k = 0; k < 3; k++)
+        nd->lo[k] = DBL_MAX, nd->hi[k] = -DBL_MAX;
     for (int i = nd->first; i < nd->first + nd->count; i++)
         for (int j = 0; j < 3; j++) {
             const double *p = mesh_v(m, m->tri_order[i], j);
-            for (int k = 0; k < 3; k++) nd->lo[k] = fmin(nd->lo[k], p[k]), nd->hi[k] = fmax(nd->hi[k], p[k]);
+            for (int k = 0; k < 3; k++)
+                nd->lo[k] = fmin(nd->lo[k], p[k]), nd->hi[k] = fmax(nd->hi[k], p[k]);
         }
 }
 
@@ -224,7 +231,8 @@ static void bvh_split(mb_mesh *m, int i)
         m->scratch[i] = (keyed_tri){.key = m->tri_c[3 * t + axis], .tri = t};
     }
     qsort(m->scratch, (size_t)nd->count, sizeof(keyed_tri), cmp_keyed);
-    for (int i = 0; i < nd->count; i++) m->tri_order[nd->first + i] = m->scratch[i].tri;
+    for (int i = 0; i < nd->count; i++)
+        m->tri_order[nd->first + i] = m->scratch[i].tri;
     int half = nd->count / 2, first = nd->first, count = nd->count;
     int l = m->nnode;
     m->nnode += 2;
@@ -242,8 +250,10 @@ mcs_status mb_mesh_create(mb_mesh **out, int nvert, const double *vert, int ntri
 {
     *out = NULL;
     if (nvert < 3 || ntri < 1 || !vert || !tri)
-        return MCS_ERR(err, MCS_ERR_RANGE, "facet mesh: needs >= 3 vertices and >= 1 triangle "
-                                           "(got %d, %d)", nvert, ntri);
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "facet mesh: needs >= 3 vertices and >= 1 triangle "
+                       "(got %d, %d)",
+                       nvert, ntri);
     for (int i = 0; i < 3 * nvert; i++)
         if (!isfinite(vert[i]))
             return MCS_ERR(err, MCS_ERR_RANGE, "facet mesh: vertex %d is not finite", i / 3);
@@ -263,20 +273,22 @@ mcs_status mb_mesh_create(mb_mesh **out, int nvert, const double *vert, int ntri
     m->tri_order = malloc(sizeof(int) * (size_t)ntri);
     m->node = malloc(sizeof(bvh_node) * (2 * (size_t)ntri));
     m->scratch = malloc(sizeof(keyed_tri) * (size_t)ntri);
-    if (!m->vert || !m->tri || !m->tri_n || !m->tri_c || !m->tri_order || !m->node ||
-        !m->scratch) {
+    if (!m->vert || !m->tri || !m->tri_n || !m->tri_c || !m->tri_order || !m->node || !m->scratch) {
         mb_mesh_destroy(&m);
         return MCS_ERR(err, MCS_ERR_NOMEM, "facet mesh: out of memory (%d triangles)", ntri);
     }
-    for (int i = 0; i < 3 * nvert; i++) m->vert[i] = vert[i];
-    for (int i = 0; i < 3 * ntri; i++) m->tri[i] = tri[i];
+    for (int i = 0; i < 3 * nvert; i++)
+        m->vert[i] = vert[i];
+    for (int i = 0; i < 3 * ntri; i++)
+        m->tri[i] = tri[i];
     for (int t = 0; t < ntri; t++) {
         const double *a = mesh_v(m, t, 0), *b = mesh_v(m, t, 1), *c = mesh_v(m, t, 2);
         if (!tri_normal(a, b, c, m->tri_n + 3 * t)) {
             mb_mesh_destroy(&m);
             return MCS_ERR(err, MCS_ERR_RANGE, "facet mesh: triangle %d has zero area", t);
         }
-        for (int k = 0; k < 3; k++) m->tri_c[3 * t + k] = (a[k] + b[k] + c[k]) / 3.0;
+        for (int k = 0; k < 3; k++)
+            m->tri_c[3 * t + k] = (a[k] + b[k] + c[k]) / 3.0;
         m->tri_order[t] = t;
     }
     m->nnode = 1;
@@ -299,8 +311,14 @@ void mb_mesh_destroy(mb_mesh **pm)
     *pm = NULL;
 }
 
-int mb_mesh_ntri(const mb_mesh *m) { return m->ntri; }
-int mb_mesh_nnode(const mb_mesh *m) { return m->nnode; }
+int mb_mesh_ntri(const mb_mesh *m)
+{
+    return m->ntri;
+}
+int mb_mesh_nnode(const mb_mesh *m)
+{
+    return m->nnode;
+}
 
 /* mesh-frame contact -> world */
 static void to_world(const mb_pose *pose, mb_contact *c)

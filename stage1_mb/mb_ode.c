@@ -42,7 +42,8 @@ mcs_status mb_ode_init(mcs_error *err)
         dSetMessageHandler(ode_message);
         dSetErrorHandler(ode_fatal);
         dSetDebugHandler(ode_fatal);
-        if (!dInitODE2(0)) st = MCS_ERR(err, MCS_ERR_NUMERIC, "ODE: dInitODE2 failed");
+        if (!dInitODE2(0))
+            st = MCS_ERR(err, MCS_ERR_NUMERIC, "ODE: dInitODE2 failed");
         else if (!dCheckConfiguration("ODE_double_precision")) {
             dCloseODE();
             st = MCS_ERR(err, MCS_ERR_UNSUPPORTED,
@@ -71,26 +72,30 @@ int mb_ode_double_precision(void)
     return dCheckConfiguration("ODE_double_precision") && sizeof(dReal) == sizeof(double);
 }
 
-long mb_ode_message_count(void) { return ode_messages; }
+long mb_ode_message_count(void)
+{
+    return ode_messages;
+}
 
-/* ---- world ------------------------------------------------------------------------------------ */
+/* ---- world ------------------------------------------------------------------------------------
+ */
 
 typedef enum { J_REVOLUTE, J_SPHERICAL, J_UNIVERSAL, J_TRANSLATIONAL, J_FIXED } joint_type;
 
 struct mb_world {
     dWorldID world;
     int nbody, max_bodies, njoint, max_joints;
-    dBodyID *body;           /* (max_bodies)  */
-    char (*body_name)[64];   /* (max_bodies)  */
-    dJointID *joint;         /* (max_joints)  */
-    int *joint_type;         /* joint_type (max_joints) */
+    dBodyID *body;            /* (max_bodies)  */
+    char (*body_name)[64];    /* (max_bodies)  */
+    dJointID *joint;          /* (max_joints)  */
+    int *joint_type;          /* joint_type (max_joints) */
     dJointFeedback *joint_fb; /* reactions (max_joints) */
-    double time;             /* simulated time [s] */
-    long steps;              /* dWorldStep calls */
+    double time;              /* simulated time [s] */
+    long steps;               /* dWorldStep calls */
 };
 
-mcs_status mb_world_create(mb_world **out, int max_bodies, int max_joints,
-                           const double gravity[3], mcs_error *err)
+mcs_status mb_world_create(mb_world **out, int max_bodies, int max_joints, const double gravity[3],
+                           mcs_error *err)
 {
     *out = NULL;
     if (max_bodies < 1 || max_joints < 0)
@@ -138,11 +143,26 @@ void mb_world_destroy(mb_world **pw)
     mb_ode_close();
 }
 
-int mb_world_nbody(const mb_world *w) { return w->nbody; }
-int mb_world_njoint(const mb_world *w) { return w->njoint; }
-double mb_world_time(const mb_world *w) { return w->time; }
-long mb_world_steps(const mb_world *w) { return w->steps; }
-const char *mb_body_name(const mb_world *w, int b) { return w->body_name[b]; }
+int mb_world_nbody(const mb_world *w)
+{
+    return w->nbody;
+}
+int mb_world_njoint(const mb_world *w)
+{
+    return w->njoint;
+}
+double mb_world_time(const mb_world *w)
+{
+    return w->time;
+}
+long mb_world_steps(const mb_world *w)
+{
+    return w->steps;
+}
+const char *mb_body_name(const mb_world *w, int b)
+{
+    return w->body_name[b];
+}
 
 /* inertia tensor must be symmetric positive definite with the triangle inequalities of a
  * physical mass distribution (I1 + I2 >= I3 for the principal moments) */
@@ -242,11 +262,14 @@ void mb_body_get(const mb_world *w, int b, mb_body_kin *out)
     dBodyID id = w->body[b];
     const dReal *p = dBodyGetPosition(id), *q = dBodyGetQuaternion(id), *R = dBodyGetRotation(id);
     const dReal *v = dBodyGetLinearVel(id), *om = dBodyGetAngularVel(id);
-    for (int k = 0; k < 3; k++) out->pos[k] = p[k], out->vel[k] = v[k], out->angvel[k] = om[k];
-    for (int k = 0; k < 4; k++) out->quat[k] = q[k];
+    for (int k = 0; k < 3; k++)
+        out->pos[k] = p[k], out->vel[k] = v[k], out->angvel[k] = om[k];
+    for (int k = 0; k < 4; k++)
+        out->quat[k] = q[k];
     /* ODE's dMatrix3 is 3x4 row-major (padding column) */
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) out->rot[3 * i + j] = R[4 * i + j];
+        for (int j = 0; j < 3; j++)
+            out->rot[3 * i + j] = R[4 * i + j];
 }
 
 void mb_body_point_vel(const mb_world *w, int b, const double p[3], double out[3])
@@ -285,7 +308,8 @@ mcs_status mb_world_step(mb_world *w, double h, mcs_error *err)
     return MCS_OK;
 }
 
-/* ---- joints ------------------------------------------------------------------------------------ */
+/* ---- joints ------------------------------------------------------------------------------------
+ */
 
 /* check indices and room; attach child as ODE body 1 and parent (or the world) as body 2 */
 static int joint_begin(mb_world *w, int parent, int child, const char *what, mcs_error *err)
@@ -335,8 +359,7 @@ int mb_joint_revolute(mb_world *w, int parent, int child, const double anchor[3]
     return i;
 }
 
-int mb_joint_spherical(mb_world *w, int parent, int child, const double anchor[3],
-                       mcs_error *err)
+int mb_joint_spherical(mb_world *w, int parent, int child, const double anchor[3], mcs_error *err)
 {
     if (joint_begin(w, parent, child, "spherical", err) < 0) return -1;
     dJointID j = dJointCreateBall(w->world, 0);
@@ -363,8 +386,7 @@ int mb_joint_universal(mb_world *w, int parent, int child, const double anchor[3
     return i;
 }
 
-int mb_joint_translational(mb_world *w, int parent, int child, const double axis[3],
-                           mcs_error *err)
+int mb_joint_translational(mb_world *w, int parent, int child, const double axis[3], mcs_error *err)
 {
     if (joint_begin(w, parent, child, "translational", err) < 0 ||
         !unit_ok(axis, "translational", err))
@@ -387,23 +409,30 @@ int mb_joint_fixed(mb_world *w, int parent, int child, mcs_error *err)
 double mb_joint_position(const mb_world *w, int j)
 {
     switch (w->joint_type[j]) {
-    case J_REVOLUTE: return dJointGetHingeAngle(w->joint[j]);
-    case J_TRANSLATIONAL: return dJointGetSliderPosition(w->joint[j]);
-    default: return NAN; /* no single coordinate */
+    case J_REVOLUTE:
+        return dJointGetHingeAngle(w->joint[j]);
+    case J_TRANSLATIONAL:
+        return dJointGetSliderPosition(w->joint[j]);
+    default:
+        return NAN; /* no single coordinate */
     }
 }
 
 double mb_joint_rate(const mb_world *w, int j)
 {
     switch (w->joint_type[j]) {
-    case J_REVOLUTE: return dJointGetHingeAngleRate(w->joint[j]);
-    case J_TRANSLATIONAL: return dJointGetSliderPositionRate(w->joint[j]);
-    default: return NAN;
+    case J_REVOLUTE:
+        return dJointGetHingeAngleRate(w->joint[j]);
+    case J_TRANSLATIONAL:
+        return dJointGetSliderPositionRate(w->joint[j]);
+    default:
+        return NAN;
     }
 }
 
 void mb_joint_reaction(const mb_world *w, int j, double force[3], double torque[3])
 {
     const dJointFeedback *fb = &w->joint_fb[j];
-    for (int k = 0; k < 3; k++) force[k] = fb->f1[k], torque[k] = fb->t1[k];
+    for (int k = 0; k < 3; k++)
+        force[k] = fb->f1[k], torque[k] = fb->t1[k];
 }

@@ -10,7 +10,7 @@
 /* once per process (reference counted): dInitODE2, handlers, and the double-precision check.
  * mb_world_create calls it; call it yourself only to use ODE without a world. */
 mcs_status mb_ode_init(mcs_error *err);
-void mb_ode_close(void);         /* dCloseODE when the last user closes */
+void mb_ode_close(void);           /* dCloseODE when the last user closes */
 int mb_ode_double_precision(void); /* 1 when ODE was built with ODE_double_precision */
 long mb_ode_message_count(void);   /* ODE warnings (dMessage) logged so far, this thread */
 
@@ -37,8 +37,8 @@ typedef struct {
     double angvel[3]; /* angular velocity, world [rad/s]    */
 } mb_body_kin;
 
-mcs_status mb_world_create(mb_world **out, int max_bodies, int max_joints,
-                           const double gravity[3], mcs_error *err);
+mcs_status mb_world_create(mb_world **out, int max_bodies, int max_joints, const double gravity[3],
+                           mcs_error *err);
 void mb_world_destroy(mb_world **w);
 
 /* returns the body index (>= 0) or -1 with err set (bad mass/inertia, too many bodies) */
@@ -65,8 +65,7 @@ mcs_status mb_world_step(mb_world *w, double h, mcs_error *err);
  * Each returns the joint index (>= 0) or -1 with err set. */
 int mb_joint_revolute(mb_world *w, int parent, int child, const double anchor[3],
                       const double axis[3], mcs_error *err);
-int mb_joint_spherical(mb_world *w, int parent, int child, const double anchor[3],
-                       mcs_error *err);
+int mb_joint_spherical(mb_world *w, int parent, int child, const double anchor[3], mcs_error *err);
 int mb_joint_universal(mb_world *w, int parent, int child, const double anchor[3],
                        const double axis1[3], const double axis2[3], mcs_error *err);
 int mb_joint_translational(mb_world *w, int parent, int child, const double axis[3],

@@ -17,7 +17,10 @@ static inline void mb_cross(const double a[3], const double b[3], double out[3])
     out[0] = x, out[1] = y, out[2] = z;
 }
 
-static inline double mb_norm(const double a[3]) { return sqrt(mb_dot(a, a)); }
+static inline double mb_norm(const double a[3])
+{
+    return sqrt(mb_dot(a, a));
+}
 
 static inline void mb_sub(const double a[3], const double b[3], double out[3])
 {

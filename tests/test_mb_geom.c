@@ -95,7 +95,8 @@ static double brute_depth(const mb_ellipsoid *a, const mb_ellipsoid *b, double n
             mb_cross(nbest, t1, t2);
             for (int k = 0; k < 4; k++) {
                 double s1 = (k == 0) - (k == 1), s2 = (k == 2) - (k == 3), n[3];
-                for (int j = 0; j < 3; j++) n[j] = nbest[j] + step * (s1 * t1[j] + s2 * t2[j]);
+                for (int j = 0; j < 3; j++)
+                    n[j] = nbest[j] + step * (s1 * t1[j] + s2 * t2[j]);
                 mb_normalize(n);
                 double o = proj_overlap(pa, pb, n);
                 if (o < best - 1e-15) best = o, mb_copy(n, nbest), moved = 1;
@@ -145,8 +146,8 @@ static void test_ellipsoid_plane_rotated(void)
 {
     static double pts[3 * NSAMP];
     for (int trial = 0; trial < 5; trial++) {
-        mb_ellipsoid e = ell(0.3, 0.1, 0.2, 0.05 + 0.1 * urand(), 0.05 + 0.1 * urand(),
-                             0.05 + 0.1 * urand());
+        mb_ellipsoid e =
+            ell(0.3, 0.1, 0.2, 0.05 + 0.1 * urand(), 0.05 + 0.1 * urand(), 0.05 + 0.1 * urand());
         random_rot(e.rot);
         double n[3] = {urand() - 0.5, urand() - 0.5, urand() - 0.5};
         mb_normalize(n);
@@ -178,7 +179,8 @@ static void test_ellipsoid_plane_rotated(void)
     }
 }
 
-/* ---- sphere-sphere and ellipsoid-ellipsoid ---------------------------------------------------- */
+/* ---- sphere-sphere and ellipsoid-ellipsoid ----------------------------------------------------
+ */
 
 static void test_sphere_sphere(void)
 {
@@ -199,14 +201,16 @@ static void test_sphere_sphere(void)
 /* spheres through the ellipsoid path, rotated frames: exact depth ra + rb - |d| */
 static void test_ee_spheres(void)
 {
-    mb_ellipsoid a = ell(0.01, 0.02, 0.03, 0.1, 0.1, 0.1), b = ell(0.12, -0.05, 0.1, 0.07, 0.07, 0.07);
+    mb_ellipsoid a = ell(0.01, 0.02, 0.03, 0.1, 0.1, 0.1),
+                 b = ell(0.12, -0.05, 0.1, 0.07, 0.07, 0.07);
     random_rot(a.rot);
     random_rot(b.rot);
     mb_contact c, s;
     CHECK(mb_geom_ellipsoid_ellipsoid(&a, &b, NULL, &c) == 1);
     CHECK(mb_geom_sphere_sphere(a.center, 0.1, b.center, 0.07, &s) == 1);
     CHECK_NEAR(c.depth, s.depth, 1e-14);
-    for (int k = 0; k < 3; k++) CHECK_NEAR(c.normal[k], s.normal[k], 1e-12);
+    for (int k = 0; k < 3; k++)
+        CHECK_NEAR(c.normal[k], s.normal[k], 1e-12);
     CHECK(c.status == MB_GEOM_OK);
     CHECK(c.iterations <= 20); /* deep (> smin / 4): 1 + 6 multistart runs of <= 3 steps */
 }
@@ -253,10 +257,11 @@ static void test_ee_rotated_brute(void)
     int ncase = th_verify() ? 12 : 4;
     double worst = 0;
     for (int trial = 0; trial < ncase; trial++) {
-        mb_ellipsoid a = ell(0, 0, 0, 0.06 + 0.1 * urand(), 0.06 + 0.1 * urand(),
-                             0.06 + 0.1 * urand());
+        mb_ellipsoid a =
+            ell(0, 0, 0, 0.06 + 0.1 * urand(), 0.06 + 0.1 * urand(), 0.06 + 0.1 * urand());
         mb_ellipsoid b = a;
-        for (int k = 0; k < 3; k++) b.semi[k] = 0.05 + 0.1 * urand();
+        for (int k = 0; k < 3; k++)
+            b.semi[k] = 0.05 + 0.1 * urand();
         random_rot(a.rot);
         random_rot(b.rot);
         /* place b along a random direction, then move it in until the depth is 5-25 mm */
@@ -274,8 +279,8 @@ static void test_ee_rotated_brute(void)
         check_common_normal(&a, &b, &c);
         double nb[3];
         double bd = brute_depth(&a, &b, nb);
-        double smax = fmax(fmax(a.semi[0], a.semi[1]), fmax(a.semi[2], fmax(b.semi[0],
-                                                                            fmax(b.semi[1], b.semi[2]))));
+        double smax = fmax(fmax(a.semi[0], a.semi[1]),
+                           fmax(a.semi[2], fmax(b.semi[0], fmax(b.semi[1], b.semi[2]))));
         /* sampled supports are low by <= smax (1 - cos(1.5 deg)) each: brute depth may be
          * smaller than the true one by up to 2 of them, never larger */
         CHECK(bd <= c.depth + 1e-12);
@@ -339,7 +344,8 @@ static void test_triangle_face(void)
     CHECK(mb_geom_ellipsoid_plane(&e, &g, &p) == 1);
     CHECK(c.feature == MB_FEATURE_FACE);
     CHECK_NEAR(c.depth, p.depth, 1e-15);
-    for (int k = 0; k < 3; k++) CHECK_NEAR(c.point[k], p.point[k], 1e-15);
+    for (int k = 0; k < 3; k++)
+        CHECK_NEAR(c.point[k], p.point[k], 1e-15);
     CHECK_NEAR(c.normal[2], 1, 0);
     /* reversed winding: the ellipsoid centre is behind the facet, no contact */
     CHECK(mb_geom_ellipsoid_triangle(&e, v0, v2, v1, &c) == 0);
@@ -379,7 +385,8 @@ static double brute_tri_depth(const mb_ellipsoid *e, const double *v[3])
     for (int i = 0; i <= n; i++)
         for (int j = 0; j <= n - i; j++) {
             double u = (double)i / n, w = (double)j / n, x[3];
-            for (int k = 0; k < 3; k++) x[k] = v[0][k] + u * (v[1][k] - v[0][k]) + w * (v[2][k] - v[0][k]);
+            for (int k = 0; k < 3; k++)
+                x[k] = v[0][k] + u * (v[1][k] - v[0][k]) + w * (v[2][k] - v[0][k]);
             /* local coordinates of the line x + t z (plane z = 0 here) */
             double r[3], l[3], dz[3] = {0, 0, 1}, ld[3];
             mb_sub(x, e->center, r);
@@ -403,8 +410,8 @@ static void test_triangle_rotated_brute(void)
     const double *v[3] = {v0, v1, v2};
     int nfeat[4] = {0};
     for (int trial = 0; trial < 30; trial++) {
-        mb_ellipsoid e = ell(-0.1 + 0.5 * urand(), -0.1 + 0.45 * urand(), 0,
-                             0.04 + 0.08 * urand(), 0.04 + 0.08 * urand(), 0.04 + 0.08 * urand());
+        mb_ellipsoid e = ell(-0.1 + 0.5 * urand(), -0.1 + 0.45 * urand(), 0, 0.04 + 0.08 * urand(),
+                             0.04 + 0.08 * urand(), 0.04 + 0.08 * urand());
         random_rot(e.rot);
         double g[3] = {0, 0, 1}, s[3];
         mb_ellipsoid_support(&e, g, s);
@@ -431,7 +438,8 @@ static void grid_mesh(int nx, int ny, double L, double *vert, int *tri)
     for (int j = 0; j <= ny; j++)
         for (int i = 0; i <= nx; i++) {
             double *p = vert + 3 * (j * (nx + 1) + i);
-            p[0] = L * i / nx, p[1] = L * j / ny, p[2] = 0.002 * sin(7.0 * i / nx) * cos(5.0 * j / ny);
+            p[0] = L * i / nx, p[1] = L * j / ny,
+            p[2] = 0.002 * sin(7.0 * i / nx) * cos(5.0 * j / ny);
         }
     int t = 0;
     for (int j = 0; j < ny; j++)
@@ -467,7 +475,8 @@ static void test_mesh_vs_loop(void)
     static mb_contact all[64];
     for (int trial = 0; trial < 10; trial++) {
         double loc[3] = {2.2 * urand() - 0.1, 2.2 * urand() - 0.1, 0.03 + 0.05 * urand()};
-        mb_ellipsoid e = ell(0, 0, 0, 0.05 + 0.05 * urand(), 0.05 + 0.05 * urand(), 0.05 + 0.05 * urand());
+        mb_ellipsoid e =
+            ell(0, 0, 0, 0.05 + 0.05 * urand(), 0.05 + 0.05 * urand(), 0.05 + 0.05 * urand());
         random_rot(e.rot);
         mb_mat_vec(pose.rot, loc, e.center);
         mb_add(e.center, pose.pos, e.center);
@@ -487,7 +496,8 @@ static void test_mesh_vs_loop(void)
         CHECK(n == nl);
         CHECK_NEAR(deep.depth, dl, 1e-12);
         CHECK(deep.tri == tl);
-        for (int i = 0; i < n && i < 64; i++) CHECK(all[i].depth > 0 && all[i].depth <= deep.depth);
+        for (int i = 0; i < n && i < 64; i++)
+            CHECK(all[i].depth > 0 && all[i].depth <= deep.depth);
     }
     mb_mesh_destroy(&m);
     CHECK(m == NULL);
@@ -543,13 +553,15 @@ static void test_wheel_plane(void)
     for (int i = 0; i < 3600; i++)
         for (int j = 0; j < 360; j++) {
             double a = 2 * M_PI * i / 3600, b = 2 * M_PI * j / 360, radial[3], p[3];
-            for (int k = 0; k < 3; k++) radial[k] = cos(a) * e1[k] + sin(a) * e2[k];
+            for (int k = 0; k < 3; k++)
+                radial[k] = cos(a) * e1[k] + sin(a) * e2[k];
             for (int k = 0; k < 3; k++)
                 p[k] = t.center[k] + (R + rt * cos(b)) * radial[k] + rt * sin(b) * t.axis[k];
             if (p[2] < lowest) lowest = p[2], mb_copy(p, low_pt);
         }
     CHECK_NEAR(wc.c.depth, -lowest, 2e-5);
-    for (int k = 0; k < 3; k++) CHECK_NEAR(wc.c.point_a[k], low_pt[k], 2e-3);
+    for (int k = 0; k < 3; k++)
+        CHECK_NEAR(wc.c.point_a[k], low_pt[k], 2e-3);
     CHECK_NEAR(mb_dot(wc.forward, t.axis), 0, 1e-15);
     CHECK_NEAR(mb_dot(wc.forward, g.normal), 0, 1e-15);
     CHECK_NEAR(mb_norm(wc.lateral), 1, 1e-15);

@@ -11,7 +11,10 @@ static const double G[3] = {0, 0, -9.81};
 
 static mb_body_desc ball(const char *name, double m, double I, double x, double y, double z)
 {
-    mb_body_desc d = {.name = name, .mass = m, .inertia = {I, I, I, 0, 0, 0}, .pos = {x, y, z},
+    mb_body_desc d = {.name = name,
+                      .mass = m,
+                      .inertia = {I, I, I, 0, 0, 0},
+                      .pos = {x, y, z},
                       .quat = {1, 0, 0, 0}};
     return d;
 }
@@ -42,7 +45,8 @@ static void test_free_fall(void)
         int b = mb_world_add_body(w, &d, &err);
         CHECK(b == 0);
         int n = (int)lround(0.5 / h);
-        for (int i = 0; i < n; i++) CHECK(mb_world_step(w, h, &err) == MCS_OK);
+        for (int i = 0; i < n; i++)
+            CHECK(mb_world_step(w, h, &err) == MCS_OK);
         double t = n * h, g = 9.81;
         mb_body_kin s;
         mb_body_get(w, b, &s);
@@ -153,7 +157,8 @@ static void test_joint_angle(void)
     int j = mb_joint_revolute(w, -1, b, zero, y, &err);
     /* ODE advances the quaternion by q += (h/2) w q and renormalises: each step turns by
      * 2 atan(w h / 2), so 100 steps of 1 ms at 2 rad/s turn 200 atan(0.001) = 0.2 - 6.7e-8 */
-    for (int i = 0; i < 100; i++) mb_world_step(w, 1e-3, &err);
+    for (int i = 0; i < 100; i++)
+        mb_world_step(w, 1e-3, &err);
     CHECK_NEAR(mb_joint_position(w, j), 200 * atan(1e-3), 1e-12);
     CHECK_NEAR(mb_joint_rate(w, j), 2.0, 1e-9);
     /* translational: child sliding at +1 m/s along +x reads +position */
@@ -162,7 +167,8 @@ static void test_joint_angle(void)
     int bs = mb_world_add_body(w, &s, &err);
     double x[3] = {1, 0, 0};
     int js = mb_joint_translational(w, -1, bs, x, &err);
-    for (int i = 0; i < 100; i++) mb_world_step(w, 1e-3, &err);
+    for (int i = 0; i < 100; i++)
+        mb_world_step(w, 1e-3, &err);
     CHECK_NEAR(mb_joint_position(w, js), 0.1, 1e-9);
     CHECK_NEAR(mb_joint_rate(w, js), 1.0, 1e-9);
     CHECK(err.status == MCS_OK);
@@ -184,10 +190,12 @@ static void test_force_at_pos(void)
     mb_normalize(ax);
     double ang = 0.9;
     mb_rot_axis_angle(ax, ang, R);
-    mb_body_desc d = {.name = "frame", .mass = 200, .inertia = {10, 25, 22, 1.5, -2.0, 0.8},
-                      .pos = {0.1, 0.2, 0.6},
-                      .quat = {cos(ang / 2), sin(ang / 2) * ax[0], sin(ang / 2) * ax[1],
-                               sin(ang / 2) * ax[2]}};
+    mb_body_desc d = {
+        .name = "frame",
+        .mass = 200,
+        .inertia = {10, 25, 22, 1.5, -2.0, 0.8},
+        .pos = {0.1, 0.2, 0.6},
+        .quat = {cos(ang / 2), sin(ang / 2) * ax[0], sin(ang / 2) * ax[1], sin(ang / 2) * ax[2]}};
     int b = mb_world_add_body(w, &d, &err);
     CHECK(b == 0);
     double F[3] = {1000, -300, 500}, p[3] = {0.5, 0.1, 0.9}, h = 1e-3;
@@ -195,7 +203,8 @@ static void test_force_at_pos(void)
     CHECK(mb_world_step(w, h, &err) == MCS_OK);
     mb_body_kin s;
     mb_body_get(w, b, &s);
-    for (int k = 0; k < 3; k++) CHECK_NEAR(s.vel[k], F[k] * h / 200, 1e-12);
+    for (int k = 0; k < 3; k++)
+        CHECK_NEAR(s.vel[k], F[k] * h / 200, 1e-12);
     /* expected angular velocity: solve I_b (R^T dw) = R^T tau h by Cramer's rule */
     double r[3], tau[3], tb[3];
     mb_sub(p, d.pos, r);
@@ -208,22 +217,28 @@ static void test_force_at_pos(void)
     double wb[3];
     for (int c = 0; c < 3; c++) {
         double A[9];
-        for (int i = 0; i < 9; i++) A[i] = M[i];
-        for (int i = 0; i < 3; i++) A[3 * i + c] = tb[i] * h;
+        for (int i = 0; i < 9; i++)
+            A[i] = M[i];
+        for (int i = 0; i < 3; i++)
+            A[3 * i + c] = tb[i] * h;
         wb[c] = (A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
-                 A[2] * (A[3] * A[7] - A[4] * A[6])) / det;
+                 A[2] * (A[3] * A[7] - A[4] * A[6])) /
+                det;
     }
     double wexp[3];
     mb_mat_vec(R, wb, wexp);
-    for (int k = 0; k < 3; k++) CHECK_NEAR(s.angvel[k], wexp[k], 1e-9 * mb_norm(wexp));
+    for (int k = 0; k < 3; k++)
+        CHECK_NEAR(s.angvel[k], wexp[k], 1e-9 * mb_norm(wexp));
     CHECK(mb_norm(wexp) > 1e-3);
     /* rotation and point velocity agree with ODE's quaternion and v + w x r */
-    for (int k = 0; k < 9; k++) CHECK_NEAR(s.rot[k], R[k], 1e-3);
+    for (int k = 0; k < 9; k++)
+        CHECK_NEAR(s.rot[k], R[k], 1e-3);
     double pv[3], wr[3], rr[3];
     mb_body_point_vel(w, b, p, pv);
     mb_sub(p, s.pos, rr);
     mb_cross(s.angvel, rr, wr);
-    for (int k = 0; k < 3; k++) CHECK_NEAR(pv[k], s.vel[k] + wr[k], 1e-12);
+    for (int k = 0; k < 3; k++)
+        CHECK_NEAR(pv[k], s.vel[k] + wr[k], 1e-12);
     mb_world_destroy(&w);
 }
 
@@ -250,6 +265,114 @@ static void test_constant_load(void)
     CHECK_NEAR(s.vel[2], -1.0, 1e-12);
     CHECK_NEAR(s.angvel[1], 2.0, 1e-12);
     CHECK_NEAR(s.angvel[0], 0, 1e-12);
+    mb_world_destroy(&w);
+}
+
+/* a body hanging at rest on a revolute joint: the joint carries its weight, reaction +m g */
+static void test_joint_reaction(void)
+{
+    mb_world *w = NULL;
+    mcs_error err;
+    mcs_error_clear(&err);
+    CHECK(mb_world_create(&w, 1, 1, G, &err) == MCS_OK);
+    if (!w) return;
+    mb_body_desc d = ball("arm", 2.5, 0.01, 0, 0, -0.3);
+    int b = mb_world_add_body(w, &d, &err);
+    double o[3] = {0, 0, 0}, y[3] = {0, 1, 0}, f[3], tq[3];
+    int j = mb_joint_revolute(w, -1, b, o, y, &err);
+    for (int i = 0; i < 10; i++)
+        CHECK(mb_world_step(w, 1e-3, &err) == MCS_OK);
+    mb_joint_reaction(w, j, f, tq);
+    CHECK_NEAR(f[0], 0, 1e-9);
+    CHECK_NEAR(f[2], 2.5 * 9.81, 1e-6);
+    mb_body_kin s;
+    mb_body_get(w, b, &s);
+    CHECK_NEAR(s.pos[2], -0.3, 1e-9);
+    mb_world_destroy(&w);
+}
+
+/* a spherical joint swinging in a plane is the same pendulum: same period; the CG stays at
+ * distance L from the anchor */
+static void test_spherical_pendulum(void)
+{
+    mb_world *w = NULL;
+    mcs_error err;
+    mcs_error_clear(&err);
+    CHECK(mb_world_create(&w, 1, 1, G, &err) == MCS_OK);
+    if (!w) return;
+    double L = 0.25, m = 1.5, I = 1e-4, th0 = 0.01, o[3] = {0, 0, 0};
+    mb_body_desc d = ball("head", m, I, L * sin(th0), 0, -L * cos(th0));
+    int b = mb_world_add_body(w, &d, &err);
+    CHECK(mb_joint_spherical(w, -1, b, o, &err) == 0);
+    double le = (I + m * L * L) / (m * L), T0 = 2 * M_PI * sqrt(le / 9.81);
+    double prev = th0, tprev = 0, first = -1, last = -1, maxr = 0;
+    int nc = 0;
+    while (nc < 3 && mb_world_time(w) < 5) {
+        CHECK(mb_world_step(w, 1e-4, &err) == MCS_OK);
+        mb_body_kin s;
+        mb_body_get(w, b, &s);
+        double th = atan2(s.pos[0], -s.pos[2]), t = mb_world_time(w);
+        maxr = fmax(maxr, fabs(mb_norm(s.pos) - L));
+        if (prev < 0 && th >= 0) {
+            double tc = tprev + (t - tprev) * (-prev) / (th - prev);
+            if (first < 0) first = tc;
+            last = tc, nc++;
+        }
+        prev = th, tprev = t;
+    }
+    CHECK(nc == 3);
+    CHECK_REL((last - first) / 2, T0, 1e-5);
+    CHECK(maxr < 1e-9);
+    mb_world_destroy(&w);
+}
+
+/* fixed joint: two bodies move as one, a = F / (m1 + m2); universal joint: no rotation about
+ * the axis normal to both of its axes, free rotation about the others */
+static void test_fixed_and_universal(void)
+{
+    mb_world *w = NULL;
+    mcs_error err;
+    mcs_error_clear(&err);
+    double zero[3] = {0, 0, 0};
+    CHECK(mb_world_create(&w, 4, 3, zero, &err) == MCS_OK);
+    if (!w) return;
+    mb_body_desc d1 = ball("tank", 12, 0.2, 0, 0, 0), d2 = ball("seat", 3, 0.05, 0.4, 0, 0);
+    int b1 = mb_world_add_body(w, &d1, &err), b2 = mb_world_add_body(w, &d2, &err);
+    CHECK(mb_joint_fixed(w, b1, b2, &err) == 0);
+    double F[3] = {0, 30, 0}, p[3] = {0.08, 0, 0}; /* combined CG (12*0 + 3*0.4)/15: no spin */
+    for (int i = 0; i < 1000; i++) {
+        mb_body_add_force_at_pos(w, b1, F, p);
+        CHECK(mb_world_step(w, 1e-3, &err) == MCS_OK);
+    }
+    mb_body_kin s1, s2;
+    mb_body_get(w, b1, &s1);
+    mb_body_get(w, b2, &s2);
+    CHECK_NEAR(s1.vel[1], 30.0 / 15.0, 1e-6);
+    CHECK_NEAR(s2.vel[1], 30.0 / 15.0, 1e-6);
+    CHECK_NEAR(s2.pos[0] - s1.pos[0], 0.4, 1e-9);
+
+    mb_body_desc d3 = ball("hand", 0.5, 1e-3, 0, 0, -1);
+    int b3 = mb_world_add_body(w, &d3, &err);
+    double anchor[3] = {0, 0, -0.9}, x[3] = {1, 0, 0}, y[3] = {0, 1, 0};
+    CHECK(mb_joint_universal(w, -1, b3, anchor, x, y, &err) == 1);
+    double tz[3] = {0, 0, 0.01}, tx[3] = {0.01, 0, 0};
+    for (int i = 0; i < 100; i++) {
+        mb_body_add_torque(w, b3, tz);
+        CHECK(mb_world_step(w, 1e-3, &err) == MCS_OK);
+    }
+    mb_body_kin s3;
+    mb_body_get(w, b3, &s3);
+    CHECK_NEAR(mb_norm(s3.angvel), 0, 1e-9); /* blocked about z */
+    for (int i = 0; i < 100; i++) {
+        mb_body_add_torque(w, b3, tx);
+        CHECK(mb_world_step(w, 1e-3, &err) == MCS_OK);
+    }
+    mb_body_get(w, b3, &s3);
+    CHECK(fabs(s3.angvel[0]) > 0.05); /* free about x */
+    CHECK(isnan(mb_joint_position(w, 1)));
+    double skew[3] = {0.6, 0.8, 0};
+    CHECK(mb_joint_universal(w, -1, b3, anchor, x, skew, &err) == -1);
+    CHECK_STR_CONTAINS(err.msg, "not perpendicular");
     mb_world_destroy(&w);
 }
 
@@ -320,6 +443,9 @@ int main(void)
     RUN(test_joint_angle);
     RUN(test_force_at_pos);
     RUN(test_constant_load);
+    RUN(test_joint_reaction);
+    RUN(test_spherical_pendulum);
+    RUN(test_fixed_and_universal);
     RUN(test_bad_input);
     RUN(test_message_routing);
     TEST_END();

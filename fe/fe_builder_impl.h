@@ -1,0 +1,42 @@
+/* fe_builder_impl: the builder's insides, shared by fe_builder.c, fe_mesh.c and fe_model.c. */
+#ifndef FE_BUILDER_IMPL_H
+#define FE_BUILDER_IMPL_H
+
+#include "fe/fe_model.h"
+
+typedef struct {
+    int node;      /* constrained node [-]                                 */
+    unsigned fix;  /* FE_DOF_* mask [-]                                    */
+    double v[3];   /* prescribed velocity of fixed translations [m/s]      */
+} fe_node_fix;
+
+typedef struct {
+    int node;        /* one node, or -1: the part/where selection of d      */
+    fe_load_desc d;
+} fe_bload;
+
+struct fe_builder {
+    int nnode, cap_node;
+    double *x;                                    /* (nnode x 3) [m]      */
+    int nelem[FE_NKIND], cap_conn[FE_NKIND], cap_epart[FE_NKIND];
+    int *conn[FE_NKIND];                          /* connectivity per kind */
+    int *epart[FE_NKIND];                         /* part per element      */
+    int npart, cap_part;
+    fe_part_desc *part;
+    int nbc, cap_bc;
+    fe_boundary_desc *bc;
+    int nfix, cap_fix;
+    fe_node_fix *fix;
+    int nload, cap_load;
+    fe_bload *load;
+    int nwall;
+    fe_wall_desc wall[FE_WALL_MAX];
+};
+
+int fe_kind_nnode(int kind);
+int fe_section_kind(fe_section_type t);
+void fe_builder_part_nodes(const fe_builder *b, int part, unsigned char *mark);
+/* generate the mesh of part ip (fe_mesh.c) */
+mcs_status fe_mesh_generate(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
+
+#endif

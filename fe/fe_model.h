@@ -1,0 +1,264 @@
+/* fe_model: the immutable explicit-FE model (nodes, elements, parts, materials, sections,
+ * boundary conditions, loads, rigid walls) and the builder that assembles it.
+ *
+ * A model is built once: parts are added with a generated mesh (DESIGN.md `fe:` block keys:
+ * the descriptor fields below carry the same names) or with explicit nodes and elements, then
+ * fe_model_create() validates everything, computes lumped masses and the node-to-element
+ * gather lists, and freezes it. The time loop only reads it (fe_state holds what changes).
+ *
+ * Element kinds live in separate flat arrays (hex8, shell4, truss2), each sorted by part so
+ * an element loop runs over contiguous ranges. Internal forces are stored per element slot
+ * (element x local node) and gathered per node, so element loops never write to shared nodes.
+ * Units are SI throughout. */
+#ifndef FE_MODEL_H
+#define FE_MODEL_H
+
+#include <stddef.h>
+
+#include "core/mcs_error.h"
+
+#define FE_NAME_MAX 64   /* longest part / wall name + 1                 */
+#define FE_CURVE_MAX 32  /* most points in a hardening or load table       */
+#define FE_NIP_MAX 10    /* most through-thickness points of a shell       */
+#define FE_WALL_MAX 32   /* most rigid walls (one bit each in a node mask) */
+
+/* ---- descriptors: what a part is made of (the `fe:` block keys) ------------------------ */
+
+typedef enum {
+    FE_MESH_NONE,           /* nodes and elements added explicitly             */
+    FE_MESH_BOX,            /* hex8 block: size, divisions, origin (min corner) */
+    FE_MESH_PLATE,          /* shell plate: size[0..1], divisions[0..1], origin, axis = normal */
+    FE_MESH_SQUARE_TUBE,    /* shell tube: side, length, element_size, axis    */
+    FE_MESH_CIRCULAR_TUBE,  /* shell tube: diameter, length, element_size, axis */
+    FE_MESH_LINE            /* truss line: origin -> end, divisions[0]          */
+} fe_mesh_kind;
+
+typedef struct {
+    fe_mesh_kind generate; /* which generator                                          */
+    double size[3];        /* box edge lengths / plate in-plane lengths [m]              */
+    int divisions[3];      /* elements per direction [-]                                */
+    double origin[3];      /* box/plate min corner; line start [m]                      */
+    double end[3];         /* line end [m]                                              */
+    double side;           /* square tube side (mid-surface) [m]                        */
+    double diameter;       /* circular tube diameter (mid-surface) [m]                  */
+    double length;         /* tube length along the axis, from 0 to length [m]          */
+    double element_size;   /* target element edge for tubes [m]                         */
+    int axis;              /* tube axis / plate normal: 0 x, 1 y, 2 z [-]               */
+} fe_mesh_desc;
+
+typedef enum { FE_SECTION_SOLID, FE_SECTION_SHELL, FE_SECTION_TRUSS } fe_section_type;
+typedef enum { FE_HG_VISCOUS, FE_HG_STIFFNESS } fe_hourglass;
+
+typedef struct {
+    fe_section_type type;         /* solid (hex8) | shell (BT quad) | truss (2-node)           */
+    double thickness;             /* shell thickness [m]                                        */
+    int integration_points;       /* shell points through the thickness (Gauss), 1..10 [-]     */
+    double area;                  /* truss cross-section area [m^2]                             */
+    int tension_only;             /* truss carries no compression (cable) [-]                   */
+    fe_hourglass hourglass;       /* hourglass control form                                     */
+    double hourglass_coefficient; /* Q_hg [-]; 0 takes the default (0.1 viscous, 0.05 stiffness) */
+    double shear_factor;          /* shell transverse shear factor; 0 takes 5/6 [-]             */
+} fe_section_desc;
+
+typedef enum { FE_MAT_ELASTIC, FE_MAT_ELASTIC_PLASTIC } fe_mat_model;
+
+typedef struct {
+    fe_mat_model model;                /* elastic | elastic_plastic                          */
+    double density;                    /* [kg/m^3]                                           */
+    double youngs_modulus;             /* [Pa]                                               */
+    double poisson;                    /* [-]                                                */
+    double yield_stress;               /* initial yield, used when no hardening table [Pa]   */
+    int nhardening;                    /* points in hardening (0: perfectly plastic) [-]     */
+    double hardening[FE_CURVE_MAX][2]; /* (plastic strain [-], flow stress [Pa]), from 0     */
+    double cowper_symonds_c;           /* rate factor 1+(rate/C)^(1/p); 0 = off [1/s]        */
+    double cowper_symonds_p;           /* [-]                                                */
+} fe_material_desc;
+
+typedef struct {
+    char name[FE_NAME_MAX];     /* unique part name                                        */
+    fe_mesh_desc mesh;          /* generated mesh (FE_MESH_NONE: add nodes/elements yourself) */
+    fe_section_desc section;    /* element type and its properties                         */
+    fe_material_desc material;  /* constitutive model                                      */
+    double initial_velocity[3]; /* of every node of the part [m/s]                         */
+} fe_part_desc;
+
+/* degrees of freedom, as a mask for `fix` */
+enum {
+    FE_DOF_X = 1, FE_DOF_Y = 2, FE_DOF_Z = 4, FE_DOF_RX = 8, FE_DOF_RY = 16, FE_DOF_RZ = 32,
+    FE_DOF_TRANS = 7, FE_DOF_ROT = 56, FE_DOF_ALL = 63
+};
+
+/* node selection on a part's bounding box */
+typedef enum {
+    FE_WHERE_ALL, FE_WHERE_X_MIN, FE_WHERE_X_MAX, FE_WHERE_Y_MIN,
+    FE_WHERE_Y_MAX, FE_WHERE_Z_MIN, FE_WHERE_Z_MAX
+} fe_where;
+
+typedef struct {
+    char part[FE_NAME_MAX]; /* part whose nodes are selected                              */
+    fe_where where;         /* which of them                                              */
+    unsigned fix;           /* FE_DOF_* mask of constrained dofs                          */
+    double velocity[3];     /* prescribed translational velocity of the fixed x/y/z dofs [m/s] */
+} fe_boundary_desc;
+
+typedef struct {
+    char part[FE_NAME_MAX];     /* part whose nodes are loaded                               */
+    fe_where where;             /* which nodes; the force is split equally between them       */
+    double force[3];            /* total force at scale 1 [N]                                */
+    int ncurve;                 /* points in curve; 0: constant scale 1 [-]                  */
+    double curve[FE_CURVE_MAX][2]; /* (time [s], scale [-]); held constant beyond the ends    */
+} fe_load_desc;
+
+typedef enum { FE_WALL_KINEMATIC, FE_WALL_PENALTY } fe_wall_method;
+
+typedef struct {
+    char name[FE_NAME_MAX];   /* wall name (results: /stage3/rigidwall/<name>)               */
+    double point[3];          /* a point of the plane at t = 0 [m]                           */
+    double normal[3];         /* points to the side whose nodes the wall stops (normalised) [-] */
+    double velocity[3];       /* prescribed wall velocity [m/s]                              */
+    fe_wall_method method;    /* kinematic (default) or penalty                              */
+    double penalty_scale;     /* penalty: stiffness = scale * m / dt^2 per node; 0 -> 0.1 [-] */
+    int nparts;               /* 0: every node in front of the wall at t = 0 is a slave       */
+    char parts[8][FE_NAME_MAX]; /* slave parts                                              */
+} fe_wall_desc;
+
+/* ---- model options (not per part) ----------------------------------------------------- */
+
+typedef struct {
+    double dt_scale;            /* safety factor on the stable step [-] (0.9)                  */
+    double dt_max;              /* upper bound on the step; 0 none [s]                         */
+    double dt_min;              /* a smaller stable step stops the run [s] (1e-12)             */
+    double damping;             /* mass-proportional damping c: f = -c m v [1/s] (0)           */
+    double bulk_q1;             /* quadratic bulk viscosity (hex) [-] (1.5)                    */
+    double bulk_q2;             /* linear bulk viscosity (hex) [-] (0.06)                      */
+    double energy_growth_limit; /* stop when total energy grows by more than this fraction of
+                                   the largest energy seen [-] (0.05); 0 disables            */
+    double history_interval;    /* sampling interval of the history arrays [s] (0: every step) */
+    int history_capacity;       /* samples kept (0: none) [-]                                  */
+} fe_opts;
+
+fe_opts fe_opts_default(void);
+
+/* ---- the frozen model ------------------------------------------------------------------ */
+
+typedef struct {
+    char name[FE_NAME_MAX];
+    fe_section_desc section;
+    fe_material_desc material;
+    int elem_kind;      /* FE_KIND_HEX | FE_KIND_SHELL | FE_KIND_TRUSS                */
+    int elem_begin;     /* first element of this part in its kind's arrays [-]          */
+    int elem_end;       /* one past the last [-]                                       */
+    int node_begin;     /* nodes created with the part (generated meshes) [-]           */
+    int node_end;
+    /* derived material constants */
+    double lambda, mu;  /* Lamé constants [Pa]                                          */
+    double bulk;        /* bulk modulus [Pa]                                            */
+    double wave_speed;  /* dilatational (solid), plate (shell), bar (truss) speed [m/s]  */
+    double hg_coef;     /* effective Q_hg [-]                                           */
+    double shear_factor;/* shell transverse shear factor [-]                            */
+    double ip_z[FE_NIP_MAX]; /* shell point positions in [-1/2, 1/2] of the thickness [-] */
+    double ip_w[FE_NIP_MAX]; /* their weights, summing to 1 [-]                           */
+} fe_part;
+
+enum { FE_KIND_HEX, FE_KIND_SHELL, FE_KIND_TRUSS, FE_NKIND };
+
+typedef struct {
+    double point[3], normal[3], velocity[3]; /* [m], [-], [m/s]                             */
+    fe_wall_method method;
+    double penalty_scale;                    /* [-]                                          */
+    char name[FE_NAME_MAX];
+} fe_wall;
+
+typedef struct {
+    int node;              /* loaded node [-]                                              */
+    double force[3];       /* force at scale 1 [N]                                         */
+    int load;              /* index of its load curve [-]                                  */
+} fe_nodal_load;
+
+typedef struct {
+    int ncurve;
+    double curve[FE_CURVE_MAX][2];
+} fe_load_curve;
+
+/* the model's arrays: X(type, name, count (a size field), components, unit, what).
+ * Drives the struct layout, allocation, freeing and the memory count (STYLE.md §4). */
+#define FE_MODEL_ARRAYS(X)                                                                         \
+    X(double, node_x0, nnode, 3, "m", "initial position")                                          \
+    X(double, node_v0, nnode, 3, "m/s", "initial velocity")                                        \
+    X(double, node_mass, nnode, 1, "kg", "lumped mass")                                            \
+    X(double, node_inertia, nnode, 1, "kg m^2", "lumped rotary inertia (shell nodes)")             \
+    X(unsigned, node_fix, nnode, 1, "-", "FE_DOF_* mask of constrained dofs")                      \
+    X(double, node_vfix, nnode, 3, "m/s", "prescribed velocity of fixed translations")             \
+    X(unsigned, node_walls, nnode, 1, "-", "bit w: slave of rigid wall w")                         \
+    X(int, node_part, nnode, 1, "-", "part of the node (of its first element)")                    \
+    X(int, node_slot_off, nnode + 1, 1, "-", "gather list offsets")                                \
+    X(int, node_slot, nslot, 1, "-", "element-node force slots of each node")                      \
+    X(int, hex_node, nhex, 8, "-", "hex8 connectivity")                                            \
+    X(int, hex_part, nhex, 1, "-", "part of each hex")                                             \
+    X(int, shell_node, nshell, 4, "-", "shell connectivity, counter-clockwise about the normal")   \
+    X(int, shell_part, nshell, 1, "-", "part of each shell")                                       \
+    X(int, truss_node, ntruss, 2, "-", "truss connectivity")                                       \
+    X(int, truss_part, ntruss, 1, "-", "part of each truss")
+
+typedef struct fe_model {
+    /* sizes */
+    int nnode, nelem;      /* nodes; elements of every kind                              */
+    int nhex, nshell, ntruss;
+    int npart, nwall, nload, nnodal_load;
+    int nslot;             /* element-node force slots: 8 nhex + 4 nshell + 2 ntruss      */
+    int nip_max;           /* largest number of shell points through the thickness        */
+    int nshell_ip;         /* nshell x nip_max: shell stress points [-]                    */
+
+    /* every per-node and per-element array, declared once (FE_MODEL_ARRAYS) */
+#define FE_X_DECL(T, name, n, k, unit, doc) T *name;
+    FE_MODEL_ARRAYS(FE_X_DECL)
+#undef FE_X_DECL
+    int slot_base[FE_NKIND]; /* first slot of each kind [-]                              */
+
+    fe_part *part;         /* (npart)                                                     */
+    fe_wall *wall;         /* (nwall)                                                     */
+    fe_nodal_load *nodal_load; /* (nnodal_load)                                           */
+    fe_load_curve *load_curve; /* (nload)                                                 */
+
+    fe_opts opts;
+    double dt_initial;     /* stable step of the undeformed mesh, safety factor applied [s] */
+    double mass_total;     /* [kg]                                                        */
+    size_t bytes;          /* memory held by the model [B]                                 */
+} fe_model;
+
+/* ---- the builder ------------------------------------------------------------------------ */
+
+typedef struct fe_builder fe_builder;
+
+mcs_status fe_builder_create(fe_builder **out, mcs_error *err);
+void fe_builder_destroy(fe_builder **p);
+
+/* add a part; a generated mesh is created now. Returns the part index in *index (may be NULL). */
+mcs_status fe_builder_add_part(fe_builder *b, const fe_part_desc *d, int *index, mcs_error *err);
+/* explicit meshes: a node, then elements of a part (4 nodes for shells, 8 hex, 2 truss).
+ * The nodes of a part must be added while it is the last part (elements stay contiguous). */
+mcs_status fe_builder_add_node(fe_builder *b, const double x[3], int *index, mcs_error *err);
+mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_error *err);
+mcs_status fe_builder_add_boundary(fe_builder *b, const fe_boundary_desc *d, mcs_error *err);
+mcs_status fe_builder_fix_node(fe_builder *b, int node, unsigned fix, const double vel[3],
+                               mcs_error *err);
+mcs_status fe_builder_add_load(fe_builder *b, const fe_load_desc *d, mcs_error *err);
+/* one node's share of a load; curve as in fe_load_desc (ncurve 0: constant) */
+mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force[3], int ncurve,
+                                     const double (*curve)[2], mcs_error *err);
+mcs_status fe_builder_add_wall(fe_builder *b, const fe_wall_desc *d, mcs_error *err);
+int fe_builder_nnode(const fe_builder *b);
+/* index of a part by name, -1 if none */
+int fe_builder_find_part(const fe_builder *b, const char *name);
+/* nodes of a part on its bounding-box side `where`, written to idx (capacity cap); count returned */
+int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, int cap);
+
+/* validate and freeze; opts NULL takes fe_opts_default() */
+mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **out,
+                           mcs_error *err);
+void fe_model_destroy(fe_model **p);
+
+/* descriptors with the documented defaults (zeros elsewhere) */
+fe_part_desc fe_part_desc_default(void);
+
+#endif

@@ -1,0 +1,273 @@
+/* fe_stages: the sub-stages of fe_step (internal forces, contact, external forces,
+ * accelerations, integration, stable step). Each reads and writes only what its comment says. */
+#include "fe/fe_elem.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* reads x, v (t - dt/2), stresses; writes stresses, slot forces, node_fint, node_mint,
+ * part internal/hourglass/dissipated energies and part element steps */
+void fe_internal_forces(const fe_model *m, fe_state *s)
+{
+    for (int ip = 0; ip < m->npart; ip++) {
+        switch (m->part[ip].elem_kind) {
+        case FE_KIND_HEX: fe_hex_part(m, s, ip); break;
+        case FE_KIND_SHELL: fe_shell_part(m, s, ip); break;
+        default: fe_truss_part(m, s, ip); break;
+        }
+    }
+    /* gather: each node sums its element slots (no element writes to a shared node) */
+    const int sb = m->slot_base[FE_KIND_SHELL], se = m->slot_base[FE_KIND_TRUSS];
+    for (int n = 0; n < m->nnode; n++) {
+        double f0 = 0, f1 = 0, f2 = 0, m0 = 0, m1 = 0, m2 = 0;
+        for (int j = m->node_slot_off[n]; j < m->node_slot_off[n + 1]; j++) {
+            int sl = m->node_slot[j];
+            const double *f = s->slot_f + 3 * (size_t)sl;
+            f0 += f[0];
+            f1 += f[1];
+            f2 += f[2];
+            if (sl >= sb && sl < se) {
+                const double *mm = s->shell_m + 3 * (size_t)(sl - sb);
+                m0 += mm[0];
+                m1 += mm[1];
+                m2 += mm[2];
+            }
+        }
+        double *fi = s->node_fint + 3 * n, *mi = s->node_mint + 3 * n;
+        fi[0] = f0, fi[1] = f1, fi[2] = f2;
+        mi[0] = m0, mi[1] = m1, mi[2] = m2;
+    }
+}
+
+/* reads x, time; writes node_fext (zeroed here, then penalty rigid-wall forces) and the
+ * walls' forces. Kinematic walls act in fe_integrate (they need the new velocities). */
+void fe_contact_forces(const fe_model *m, fe_state *s)
+{
+    memset(s->node_fext, 0, sizeof(double) * 3 * (size_t)m->nnode);
+    memset(s->wall_force, 0, sizeof(double) * 3 * (size_t)m->nwall);
+    unsigned pen = 0;
+    for (int w = 0; w < m->nwall; w++)
+        if (m->wall[w].method == FE_WALL_PENALTY) pen |= 1u << w;
+    if (!pen) return;
+    const double dt = s->dt;
+    for (int n = 0; n < m->nnode; n++) {
+        unsigned mask = m->node_walls[n] & pen;
+        while (mask) {
+            int w = __builtin_ctz(mask);
+            mask &= mask - 1;
+            const fe_wall *W = &m->wall[w];
+            double g = 0;
+            for (int i = 0; i < 3; i++)
+                g += (s->node_x[3 * n + i] - W->point[i] - W->velocity[i] * s->time) * W->normal[i];
+            if (g >= 0) continue;
+            /* stiffness scale m / dt^2: a fraction of the node's own stability limit */
+            double fn = -W->penalty_scale * m->node_mass[n] / (dt * dt) * g;
+            for (int i = 0; i < 3; i++) {
+                s->node_fext[3 * n + i] += fn * W->normal[i];
+                s->wall_force[3 * w + i] -= fn * W->normal[i];
+            }
+        }
+    }
+}
+
+/* reads time, the load curves; adds nodal loads to node_fext */
+void fe_external_forces(const fe_model *m, fe_state *s)
+{
+    for (int i = 0; i < m->nnodal_load; i++) {
+        const fe_nodal_load *l = &m->nodal_load[i];
+        const fe_load_curve *c = &m->load_curve[l->load];
+        double sc = 1, t = s->time;
+        if (c->ncurve == 1 || (c->ncurve > 1 && t <= c->curve[0][0])) sc = c->curve[0][1];
+        else if (c->ncurve > 1 && t >= c->curve[c->ncurve - 1][0]) sc = c->curve[c->ncurve - 1][1];
+        else if (c->ncurve > 1) {
+            int k = 0;
+            while (t > c->curve[k + 1][0]) k++;
+            double u = (t - c->curve[k][0]) / (c->curve[k + 1][0] - c->curve[k][0]);
+            sc = c->curve[k][1] + u * (c->curve[k + 1][1] - c->curve[k][1]);
+        }
+        for (int j = 0; j < 3; j++) s->node_fext[3 * l->node + j] += sc * l->force[j];
+    }
+}
+
+/* reads node_fext, node_fint, masses; writes node_a */
+void fe_accelerations(const fe_model *m, fe_state *s)
+{
+    for (int n = 0; n < m->nnode; n++) {
+        double mass = m->node_mass[n], inv = mass > 0 ? 1 / mass : 0;
+        for (int i = 0; i < 3; i++)
+            s->node_a[3 * n + i] = (s->node_fext[3 * n + i] - s->node_fint[3 * n + i]) * inv;
+    }
+}
+
+/* reads node_a, node_mint, v, w, x; writes v, w (t + dt/2), x (t + dt), the kinematic
+ * walls' forces, kinetic energy and the works of loads, constraints and damping (at t) */
+void fe_integrate(const fe_model *m, fe_state *s)
+{
+    const double dt = s->dt, dtp = s->dt_prev, dth = 0.5 * (dt + dtp), tn = s->time + dt;
+    const double c = m->opts.damping, d0 = 1 - 0.5 * c * dth, d1 = 1 / (1 + 0.5 * c * dth);
+    unsigned kin = 0;
+    for (int w = 0; w < m->nwall; w++)
+        if (m->wall[w].method == FE_WALL_KINEMATIC) kin |= 1u << w;
+    double ke = 0, wb = 0, wf = 0, db = 0, dfw = 0;
+    int bad = -1;
+    for (int ip = 0; ip < m->npart; ip++) s->part_energy[FE_NENERGY * ip + FE_E_kinetic] = 0;
+    for (int n = 0; n < m->nnode; n++) {
+        const double mass = m->node_mass[n];
+        if (!(mass > 0)) continue;
+        double *v = s->node_v + 3 * n, *x = s->node_x + 3 * n;
+        const double *a = s->node_a + 3 * n, *fe = s->node_fext + 3 * n;
+        const unsigned fix = m->node_fix[n];
+        double vo[3] = {v[0], v[1], v[2]}, vn[3], vfree[3];
+        for (int i = 0; i < 3; i++) vn[i] = vfree[i] = (d0 * vo[i] + dth * a[i]) * d1;
+        for (int i = 0; i < 3; i++)
+            if (fix & (1u << i)) vn[i] = m->node_vfix[3 * n + i];
+        unsigned mask = m->node_walls[n] & kin;
+        while (mask) {
+            int w = __builtin_ctz(mask);
+            mask &= mask - 1;
+            const fe_wall *W = &m->wall[w];
+            double g = 0;
+            for (int i = 0; i < 3; i++)
+                g += (x[i] + dt * vn[i] - W->point[i] - W->velocity[i] * tn) * W->normal[i];
+            if (g >= 0) continue;
+            /* land on the wall: remove the normal velocity that would penetrate */
+            double dv = -g / dt;
+            for (int i = 0; i < 3; i++) {
+                vn[i] += dv * W->normal[i];
+                s->wall_force[3 * w + i] -= mass * dv / dth * W->normal[i];
+            }
+        }
+        /* trapezoidal works: backward half now, forward half pending (see fe_state.h) */
+        double ek = 0;
+        for (int i = 0; i < 3; i++) {
+            double r = mass * (vn[i] - vfree[i]) / dth; /* constraint and wall reaction */
+            double fd = -c * mass * 0.5 * (vo[i] + vn[i]);
+            ek += vo[i] * vn[i];
+            wb += 0.5 * (fe[i] + r) * dtp * vo[i];
+            wf += 0.5 * (fe[i] + r) * dt * vn[i];
+            db -= 0.5 * fd * dtp * vo[i];
+            dfw -= 0.5 * fd * dt * vn[i];
+            v[i] = vn[i];
+            x[i] += dt * vn[i];
+        }
+        if (!isfinite(vn[0] + vn[1] + vn[2]) && bad < 0) bad = n;
+        ek *= 0.5 * mass;
+        const double in = m->node_inertia[n];
+        if (in > 0) {
+            double *w = s->node_w + 3 * n;
+            const double *mi = s->node_mint + 3 * n;
+            for (int i = 0; i < 3; i++) {
+                double wo = w[i], wn = (d0 * wo - dth * mi[i] / in) * d1;
+                if (fix & (8u << i)) wn = 0;
+                ek += 0.5 * in * wo * wn;
+                db += 0.5 * c * in * 0.5 * (wo + wn) * dtp * wo;
+                dfw += 0.5 * c * in * 0.5 * (wo + wn) * dt * wn;
+                w[i] = wn;
+            }
+            if (!isfinite(w[0] + w[1] + w[2]) && bad < 0) bad = n;
+        }
+        ke += ek;
+        if (m->node_part[n] >= 0) s->part_energy[FE_NENERGY * m->node_part[n] + FE_E_kinetic] += ek;
+    }
+    s->energy[FE_E_kinetic] = ke;
+    s->work_ext += wb + s->work_pending[0];
+    s->work_damp += db + s->work_pending[2];
+    s->work_pending[0] = wf;
+    s->work_pending[2] = dfw;
+    s->bad_node = bad;
+    for (int w = 0; w < m->nwall; w++) {
+        const fe_wall *W = &m->wall[w];
+        s->wall_normal[w] = -fe_dot(s->wall_force + 3 * w, W->normal);
+        s->wall_disp[w] = fe_dot(W->velocity, W->normal) * s->time;
+    }
+}
+
+static void record_history(const fe_model *m, fe_state *s)
+{
+    int cap = m->opts.history_capacity;
+    if (cap <= 0 || s->energy_time < s->hist_next - 1e-9 * s->dt) return;
+    if (s->nhist >= cap) {
+        s->hist_dropped++;
+        return;
+    }
+    int k = s->nhist++;
+    s->hist_time[k] = s->energy_time;
+    memcpy(s->hist_energy + FE_NENERGY * (size_t)k, s->energy, sizeof s->energy);
+    for (int w = 0; w < m->nwall; w++) {
+        s->hist_wall_force[FE_WALL_MAX * (size_t)k + w] = s->wall_normal[w];
+        s->hist_wall_disp[FE_WALL_MAX * (size_t)k + w] = s->wall_disp[w];
+    }
+    s->hist_next = s->energy_time + m->opts.history_interval;
+}
+
+/* reads part energies and steps, the works; writes the global energies (at t), the history,
+ * time, dt_prev and the next dt; stops on NaN, inverted elements, step collapse, energy growth */
+mcs_status fe_stable_step(const fe_model *m, fe_state *s)
+{
+    const double t = s->time;
+    double e_int = 0, e_hg = 0, e_diss = s->work_damp, dtmin = INFINITY;
+    for (int ip = 0; ip < m->npart; ip++) {
+        const double *pe = s->part_energy + FE_NENERGY * ip;
+        e_int += pe[FE_E_internal];
+        e_hg += pe[FE_E_hourglass];
+        e_diss += pe[FE_E_dissipated];
+        if (s->part_bad_elem[ip] >= 0)
+            return MCS_ERR(&s->err, MCS_ERR_NUMERIC,
+                           "fe: part '%s': element %d inverted or degenerate at t = %.6g s",
+                           m->part[ip].name, s->part_bad_elem[ip] - m->part[ip].elem_begin, t);
+        if (s->part_dt[ip] < dtmin) {
+            dtmin = s->part_dt[ip];
+            s->dt_part = ip;
+            s->dt_elem = s->part_dt_elem[ip];
+        }
+    }
+    if (s->bad_node >= 0)
+        return MCS_ERR(&s->err, MCS_ERR_NUMERIC,
+                       "fe: node %d: velocity is not finite at t = %.6g s (part '%s')",
+                       s->bad_node, t,
+                       m->node_part[s->bad_node] >= 0 ? m->part[m->node_part[s->bad_node]].name
+                                                      : "-");
+    double *en = s->energy;
+    en[FE_E_potential] = 0;
+    en[FE_E_internal] = e_int;
+    en[FE_E_contact] = 0;
+    en[FE_E_hourglass] = e_hg;
+    en[FE_E_dissipated] = e_diss;
+    en[FE_E_external_work] = s->work_ext;
+    en[FE_E_total] = en[FE_E_kinetic] + en[FE_E_potential] + e_int + en[FE_E_contact] + e_hg +
+                     e_diss - s->work_ext;
+    s->energy_time = t;
+    if (s->nstep == 0) s->energy0 = en[FE_E_total];
+    double ref = fmax(fmax(en[FE_E_kinetic], e_int + e_hg), fabs(s->work_ext));
+    s->energy_ref = fmax(fmax(s->energy_ref, ref), fabs(s->energy0));
+    double growth = en[FE_E_total] - s->energy0;
+    if (!isfinite(en[FE_E_total]))
+        return MCS_ERR(&s->err, MCS_ERR_NUMERIC, "fe: energy is not finite at t = %.6g s", t);
+    if (m->opts.energy_growth_limit > 0 && s->energy_ref > 0 &&
+        growth > m->opts.energy_growth_limit * s->energy_ref) {
+        int ip = s->dt_part;
+        return MCS_ERR(&s->err, MCS_ERR_NUMERIC,
+                       "fe: energy grew by %.3g J (%.1f %% of %.3g J) at t = %.6g s: unstable; "
+                       "smallest step in part '%s' element %d",
+                       growth, 100 * growth / s->energy_ref, s->energy_ref, t,
+                       ip >= 0 ? m->part[ip].name : "-",
+                       ip >= 0 ? s->dt_elem - m->part[ip].elem_begin : -1);
+    }
+    record_history(m, s);
+    /* advance the clock; the new step comes from the geometry at t */
+    s->time = t + s->dt;
+    s->dt_prev = s->dt;
+    s->nstep++;
+    double dt = m->opts.dt_scale * dtmin;
+    if (m->opts.dt_max > 0) dt = fmin(dt, m->opts.dt_max);
+    if (!(dt >= m->opts.dt_min)) {
+        int ip = s->dt_part;
+        return MCS_ERR(&s->err, MCS_ERR_NUMERIC,
+                       "fe: stable step collapsed to %.3g s at t = %.6g s (part '%s' element %d)",
+                       dt, s->time, ip >= 0 ? m->part[ip].name : "-",
+                       ip >= 0 ? s->dt_elem - m->part[ip].elem_begin : -1);
+    }
+    s->dt = dt;
+    return MCS_OK;
+}

@@ -1,0 +1,139 @@
+/* fe_state: everything an explicit FE run changes (STYLE.md §1). Many states per model work.
+ *
+ * Time centring (central difference): one fe_step goes from t_n to t_{n+1}. After it returns,
+ * `time` is t_{n+1}, node_x is x(t_{n+1}), node_v and node_w are the velocities at
+ * t_{n+1/2}; forces, accelerations, stresses and energies are those of t_n = energy_time.
+ * Kinetic energy is m v_{n-1/2}.v_{n+1/2} / 2 and every work is summed with the trapezoidal
+ * rule over the same intervals, so the balance closes to round-off for a linear elastic system
+ * at a constant step (the modified energy that central differences conserve). */
+#ifndef FE_STATE_H
+#define FE_STATE_H
+
+#include <stddef.h>
+
+#include "core/mcs_arena.h"
+#include "fe/fe_model.h"
+
+/* energies, in the order and with the names of /stageN/energy (DESIGN.md) [J] */
+#define FE_ENERGY_LIST(X)                                                                          \
+    X(kinetic)       /* translational + rotational                                      */        \
+    X(potential)     /* gravity (none yet: 0)                                            */        \
+    X(internal)      /* stress power of the elements (elastic + plastic work)           */        \
+    X(contact)       /* contact interfaces (none yet: 0)                                 */        \
+    X(hourglass)     /* work of the hourglass forces                                     */        \
+    X(dissipated)    /* bulk viscosity and mass damping                                  */        \
+    X(external_work) /* loads, prescribed motion and rigid walls on the structure        */        \
+    X(total)         /* kinetic + potential + internal + contact + hourglass + dissipated - external_work */
+
+typedef enum {
+#define FE_X_EN(name) FE_E_##name,
+    FE_ENERGY_LIST(FE_X_EN)
+#undef FE_X_EN
+        FE_NENERGY
+} fe_energy_kind;
+
+extern const char *const fe_energy_name[FE_NENERGY];
+
+/* the sub-stages of fe_step, each with a timer slot */
+#define FE_STAGE_LIST(X)                                                                           \
+    X(internal)     /* element forces into slots, gathered per node               */               \
+    X(contact)      /* penalty rigid walls (contact interfaces later)             */               \
+    X(external)     /* nodal loads                                                 */               \
+    X(accelerate)   /* a = f / m                                                   */               \
+    X(integrate)    /* velocities, constraints, kinematic walls, positions, energies */            \
+    X(timestep)     /* next stable step, energy check, history                     */
+
+typedef enum {
+#define FE_X_ST(name) FE_STAGE_##name,
+    FE_STAGE_LIST(FE_X_ST)
+#undef FE_X_ST
+        FE_NSTAGE
+} fe_stage;
+
+extern const char *const fe_stage_name[FE_NSTAGE];
+
+/* the state's arrays: X(type, name, count (a model size), components, unit, what) */
+#define FE_STATE_ARRAYS(X)                                                                         \
+    X(double, node_x, nnode, 3, "m", "position")                                                   \
+    X(double, node_v, nnode, 3, "m/s", "velocity at t + dt/2")                                     \
+    X(double, node_w, nnode, 3, "rad/s", "angular velocity at t + dt/2 (shell nodes)")             \
+    X(double, node_a, nnode, 3, "m/s^2", "acceleration at t")                                      \
+    X(double, node_fint, nnode, 3, "N", "internal force (resisting) at t")                         \
+    X(double, node_mint, nnode, 3, "N m", "internal moment (resisting) at t")                      \
+    X(double, node_fext, nnode, 3, "N", "external + contact force at t")                           \
+    X(double, hex_sig, nhex, 6, "Pa", "Cauchy stress xx yy zz xy yz zx")                           \
+    X(double, hex_epsp, nhex, 1, "-", "equivalent plastic strain")                                 \
+    X(double, hex_hg, nhex, 12, "N", "stiffness hourglass forces (3 x 4 modes)")                   \
+    X(double, shell_sig, nshell_ip, 3, "Pa", "local in-plane stress xx yy xy per point")          \
+    X(double, shell_epsp, nshell_ip, 1, "-", "equivalent plastic strain per point")                \
+    X(double, shell_tau, nshell, 2, "Pa", "local transverse shear stress xz yz")                   \
+    X(double, shell_hg, nshell, 5, "N", "stiffness hourglass resultants (x, y, z, rx, ry)")        \
+    X(double, truss_sig, ntruss, 1, "Pa", "axial stress")                                          \
+    X(double, truss_epsp, ntruss, 1, "-", "plastic strain")                                        \
+    X(double, slot_f, nslot, 3, "N", "element force at each element node (resisting)")            \
+    X(double, shell_m, nshell, 12, "N m", "shell moment at each of its 4 nodes (resisting)")       \
+    X(double, part_energy, npart, FE_NENERGY, "J", "energies per part")                           \
+    X(double, part_dt, npart, 1, "s", "smallest element step of each part, no safety factor")     \
+    X(int, part_dt_elem, npart, 1, "-", "element giving part_dt")                                  \
+    X(int, part_bad_elem, npart, 1, "-", "first inverted element of the part, -1 none")           \
+    X(double, wall_force, nwall, 3, "N", "force of the structure on each rigid wall")             \
+    X(double, wall_disp, nwall, 1, "m", "rigid wall displacement along its velocity")            \
+    X(double, hist_time, opts.history_capacity, 1, "s", "history sample times")                  \
+    X(double, hist_energy, opts.history_capacity, FE_NENERGY, "J", "energies at samples")        \
+    X(double, hist_wall_force, opts.history_capacity, FE_WALL_MAX, "N", "wall normal force")     \
+    X(double, hist_wall_disp, opts.history_capacity, FE_WALL_MAX, "m", "wall displacement")
+
+typedef struct fe_state {
+    double time;                  /* t [s]                                                     */
+    double dt;                    /* step from t to t + dt, used by the next fe_step [s]       */
+    double dt_prev;               /* step from t - dt_prev to t [s]                            */
+    long nstep;                   /* steps taken [-]                                           */
+    double energy[FE_NENERGY];    /* global energies at t [J]                                  */
+    double energy0;               /* total energy at t = 0 [J]                                 */
+    double energy_ref;            /* largest of kinetic, internal and |external work| seen [J] */
+    double wall_normal[FE_WALL_MAX]; /* normal force of each wall at t (>= 0 pushing) [N]     */
+    double energy_time;           /* time of energy[] (t_n: one step behind `time`) [s]        */
+    double work_pending[3];       /* forward halves of external, constraint, damping work [J]  */
+    double work_ext;              /* external work up to energy_time, walls and constraints [J] */
+    double work_damp;             /* mass damping dissipation up to energy_time [J]            */
+    int bad_node;                 /* first node with a non-finite velocity, -1 none [-]        */
+    int dt_part, dt_elem;         /* element controlling the stable step (part, index in kind) */
+    int nhist;                    /* history samples written [-]                              */
+    long hist_dropped;            /* samples that did not fit [-]                              */
+    double hist_next;             /* time of the next sample [s]                               */
+    double timer[FE_NSTAGE];      /* wall time spent in each sub-stage [s]                     */
+    mcs_error err;                /* why the run stopped (MCS_ERR_NUMERIC ...), else MCS_OK     */
+    mcs_arena *arena;             /* scratch for per-step temporaries                          */
+    size_t bytes;                 /* memory held by the state, arena included [B]              */
+
+#define FE_X_DECL(T, name, n, k, unit, doc) T *name;
+    FE_STATE_ARRAYS(FE_X_DECL)
+#undef FE_X_DECL
+} fe_state;
+
+/* allocate every array once (and the scratch arena), then fe_state_reset */
+mcs_status fe_state_create(const fe_model *m, fe_state **out, mcs_error *err);
+void fe_state_destroy(fe_state **p);
+/* back to t = 0: initial positions and velocities, zero stresses, first stable step */
+void fe_state_reset(const fe_model *m, fe_state *s);
+
+/* advance one step; MCS_ERR_NUMERIC (NaN, inverted element, step collapse, energy growth)
+ * stops the run, with s->err naming the node or element and the time */
+mcs_status fe_step(const fe_model *m, fe_state *s);
+/* steps until time >= t_end (the last step is not shortened) */
+mcs_status fe_run(const fe_model *m, fe_state *s, double t_end);
+
+/* the sub-stages (fe_step calls them in order; exposed for tests and benchmarks) */
+void fe_internal_forces(const fe_model *m, fe_state *s);
+void fe_contact_forces(const fe_model *m, fe_state *s);
+void fe_external_forces(const fe_model *m, fe_state *s);
+void fe_accelerations(const fe_model *m, fe_state *s);
+void fe_integrate(const fe_model *m, fe_state *s);
+mcs_status fe_stable_step(const fe_model *m, fe_state *s);
+
+/* smallest stable step of the current geometry, safety factor applied [s] */
+double fe_stable_dt(const fe_model *m, const fe_state *s);
+/* energies of one part [J] (FE_E_* index) */
+double fe_part_energy(const fe_model *m, const fe_state *s, int part, fe_energy_kind k);
+
+#endif

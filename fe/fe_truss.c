@@ -1,0 +1,81 @@
+/* fe_truss: 2-node truss / cable, constant area, axial stress from the stretching rate
+ * (logarithmic strain in the limit), elastic or J2 uniaxial; tension-only carries no
+ * compression (a slack cable: the stress keeps tracking the strain elastically, the force is
+ * max(sigma, 0) A). Power: N (v_b - v_a).e, so f_b = N e, f_a = -N e (resisting). */
+#include "fe/fe_elem.h"
+
+#include <math.h>
+
+void fe_truss_part(const fe_model *m, fe_state *s, int ip)
+{
+    const fe_part *p = &m->part[ip];
+    const double dt = s->dt_prev, area = p->section.area, c0 = p->wave_speed;
+    const int tonly = p->section.tension_only;
+    double e_int = 0, dtmin = INFINITY;
+    int dtel = -1, bad = -1;
+    for (int e = p->elem_begin; e < p->elem_end; e++) {
+        const int a = m->truss_node[2 * e], b = m->truss_node[2 * e + 1];
+        double d[3], dv[3];
+        for (int i = 0; i < 3; i++) {
+            d[i] = s->node_x[3 * b + i] - s->node_x[3 * a + i];
+            dv[i] = s->node_v[3 * b + i] - s->node_v[3 * a + i];
+        }
+        double len = sqrt(fe_dot(d, d));
+        double *f = s->slot_f + 3 * ((size_t)m->slot_base[FE_KIND_TRUSS] + 2 * (size_t)e);
+        if (!(len > 0)) {
+            if (bad < 0) bad = e;
+            for (int i = 0; i < 6; i++) f[i] = 0;
+            continue;
+        }
+        double rate = fe_dot(d, dv) / (len * len), de = rate * dt;
+        double sig0 = s->truss_sig[e];
+        s->truss_epsp[e] += fe_mat_1d(p, &s->truss_sig[e], de, s->truss_epsp[e], fabs(rate));
+        double n0 = tonly ? fmax(sig0, 0) : sig0, n1 = tonly ? fmax(s->truss_sig[e], 0)
+                                                             : s->truss_sig[e];
+        e_int += 0.5 * (n0 + n1) * area * de * len;
+        double fn = n1 * area / len;
+        for (int i = 0; i < 3; i++) {
+            f[i] = -fn * d[i];
+            f[3 + i] = fn * d[i];
+        }
+        double dte = len / c0;
+        if (dte < dtmin) dtmin = dte, dtel = e;
+    }
+    double *pe = s->part_energy + FE_NENERGY * ip;
+    pe[FE_E_internal] += e_int;
+    s->part_dt[ip] = dtmin;
+    s->part_dt_elem[ip] = dtel;
+    if (bad >= 0 && s->part_bad_elem[ip] < 0) s->part_bad_elem[ip] = bad;
+}
+
+/* element steps from geometry alone (model build and state reset; no bulk viscosity) */
+double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem)
+{
+    const fe_part *p = &m->part[ip];
+    double dtmin = INFINITY;
+    *elem = -1;
+    for (int e = p->elem_begin; e < p->elem_end; e++) {
+        double len = 0;
+        if (p->elem_kind == FE_KIND_HEX) {
+            double xe[8][3], b[8][3], a[8][3];
+            for (int n = 0; n < 8; n++)
+                for (int i = 0; i < 3; i++) xe[n][i] = x[3 * m->hex_node[8 * e + n] + i];
+            len = fe_hex_length(xe, fe_hex_gradients(xe, b, a));
+        } else if (p->elem_kind == FE_KIND_SHELL) {
+            double xe[4][3], fr[3][3], xl[4], yl[4];
+            for (int n = 0; n < 4; n++)
+                for (int i = 0; i < 3; i++) xe[n][i] = x[3 * m->shell_node[4 * e + n] + i];
+            len = fe_shell_length(xe, fe_shell_frame(xe, fr, xl, yl));
+        } else {
+            double d2 = 0;
+            for (int i = 0; i < 3; i++) {
+                double d = x[3 * m->truss_node[2 * e + 1] + i] - x[3 * m->truss_node[2 * e] + i];
+                d2 += d * d;
+            }
+            len = sqrt(d2);
+        }
+        double dte = len / p->wave_speed;
+        if (dte < dtmin) dtmin = dte, *elem = e;
+    }
+    return dtmin;
+}

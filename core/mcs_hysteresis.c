@@ -44,9 +44,15 @@ static hpath path_elastic(const mcs_hyst_model *m)
     return (hpath){.m = m, .kind = PATH_ELASTIC, .c = INFINITY, .s = 0, .xm = 0, .xa = 0};
 }
 
+/* value and right derivative with one segment lookup (as mcs_curve_eval / mcs_curve_slope) */
 static vd curve_vd(const mcs_curve *c, double x)
 {
-    return (vd){mcs_curve_eval(c, x), mcs_curve_slope(c, x)};
+    int n = c->n;
+    if (n == 1 || (x < c->x[0] && c->lo == MCS_EXTRAP_CONSTANT)) return (vd){c->y[0], 0};
+    if (x >= c->x[n - 1] && c->hi == MCS_EXTRAP_CONSTANT) return (vd){c->y[n - 1], 0};
+    int i = mcs_curve_segment(c, x, -1);
+    double sl = (c->y[i + 1] - c->y[i]) / (c->x[i + 1] - c->x[i]);
+    return (vd){c->y[i] + sl * (x - c->x[i]), sl};
 }
 
 /* constituent values at x; returns how many (1..3) */
@@ -190,9 +196,32 @@ static double path_integral(const hpath *p, double a, double b)
     return sum;
 }
 
+/* the slope rule's set without a walk over P: above the line's zero z the path is zero only
+ * where F_L <= 0, so the set is the largest such x in [max(z, 0), x_max], or that bound */
+static double slope_zero_below(const hpath *p, double xm)
+{
+    const mcs_curve *L = p->m->loading;
+    double lo = fmax(-p->c / p->m->unload_slope, 0.0), hi = xm;
+    double fh = mcs_curve_eval(L, hi);
+    if (fh <= 0) return hi;
+    /* breakpoints strictly inside (lo, hi), from the top: F_L is linear between them */
+    int i = mcs_curve_segment(L, hi, -1); /* then the largest i with x_i < hi */
+    if (i + 1 < L->n && L->x[i + 1] < hi) i++;
+    if (L->x[i] >= hi) i--;
+    for (; i >= 0 && L->x[i] > lo; i--) {
+        if (L->y[i] <= 0) return L->x[i] + (hi - L->x[i]) * (-L->y[i]) / (fh - L->y[i]);
+        hi = L->x[i];
+        fh = L->y[i];
+    }
+    double fl = mcs_curve_eval(L, lo);
+    if (fl <= 0) return lo + (hi - lo) * (-fl) / (fh - fl);
+    return lo;
+}
+
 /* permanent set: the largest x in [0, x_max] with P(x) = 0, walking down from x_max */
 static double path_zero_below(const hpath *p, double xm, double fscale)
 {
+    if (p->kind == PATH_SLOPE) return slope_zero_below(p, xm);
     double tol = 1e-12 * fscale, t1 = xm;
     vd v0[3], v1[3];
     int nv = path_parts(p, t1, v1);

@@ -29,7 +29,8 @@ typedef enum {
      * the lowest such line (min of F_L(x') - k x'); from x_max down to the anchor the path is the
      * loading curve itself. Usually the anchor is x_max; loading into a stop stiffer than k
      * unloads elastically down the stop, then parallel to k from where the stop began (the fork
-     * "blocked in that position", MYMOSA). Dissipation never decreases. */
+     * "blocked in that position", MYMOSA): any part of F_L steeper than k is elastic.
+     * Dissipation never decreases. */
     MCS_UNLOAD_SLOPE,
     /* the unloading curve G, given as the unloading path from its last point (u_e, G(u_e) > 0),
      * scaled uniformly by s = F_max / G(u_e) (both axes, so its slopes are kept) and shifted so

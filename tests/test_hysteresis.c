@@ -346,7 +346,7 @@ static void random_walk(const mcs_hyst_model *m, double scale, unsigned seed, in
     mcs_hyst_reset(m, &s);
     mcs_hyst_reset(m, &fine);
     double x = 0, dprev = 0, worst = 0;
-    int bad_balance = 0, bad_dis = 0, bad_split = 0;
+    int bad_balance = 0, bad_dis = 0, bad_split = 0, bad_set = 0;
     for (int i = 0; i < nsteps; i++) {
         /* growing cycles from a gap (x < 0) to new maxima, with random jitter and reversals */
         double env = 1.2 * scale * (i + 1) / nsteps;
@@ -362,11 +362,17 @@ static void random_walk(const mcs_hyst_model *m, double scale, unsigned seed, in
         if (dis < -1e-12 * ref || st < -1e-12 * ref) bad_dis++;
         if (m->unload != MCS_UNLOAD_CURVE && dis < dprev - 1e-9 * ref) bad_dis++;
         if (fabs(fine.work - s.work) > 1e-9 * ref) bad_split++;
+        /* the permanent set is where the path reaches zero: no force there, force just above */
+        double fs = mcs_hyst_force(m, &s, s.x_set), dx = 1e-6 * scale;
+        if (fs > 1e-9 * s.f_max) bad_set++;
+        if (s.x_set + dx < s.x_max && !(mcs_hyst_force(m, &s, s.x_set + dx) > 0)) bad_set++;
+        if (s.x_set - dx > 0 && mcs_hyst_force(m, &s, s.x_set - dx) != 0) bad_set++;
         dprev = dis;
     }
     CHECK(bad_balance == 0);
     CHECK(bad_dis == 0);
     CHECK(bad_split == 0);
+    CHECK(bad_set == 0);
     if (bad_balance || getenv("MCRASH_TEST_VERBOSE"))
         fprintf(stderr, "random walk (rule %d): worst |W - S - D|/W = %.3g, final W %.6g J, D %.6g J\n",
                 (int)m->unload, worst, s.work, mcs_hyst_dissipated(m, &s));
@@ -390,12 +396,21 @@ static void test_work_balance_random_walk(void)
     mcs_hyst_model mb = {.loading = M, .unloading = G2, .unload = MCS_UNLOAD_SLOPE_CURVE,
                          .unload_slope = 2000, .elastic_limit = 0.05};
     mcs_hyst_model me = {.loading = N, .unload = MCS_UNLOAD_ELASTIC};
+    /* free play: no force up to 0.1 rad, then a stiff restraint */
+    const double fp[][2] = {{0, 0}, {0.1, 0}, {0.2, 1000}};
+    mcs_curve *FP = mk(3, fp, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
+    mcs_hyst_model mp = {.loading = FP, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 1.5e4};
+    mcs_hyst_model mp2 = {.loading = FP, .unloading = G2, .unload = MCS_UNLOAD_SLOPE_CURVE,
+                          .unload_slope = 1.5e4};
     int n = th_verify() ? 20000 : 2000;
     random_walk(&ms, 0.035, 1, n);
     random_walk(&mc, 0.035, 2, n);
     random_walk(&mf, 0.31, 3, n);
     random_walk(&mb, 0.31, 4, n);
     random_walk(&me, 0.035, 5, n);
+    random_walk(&mp, 0.25, 6, n);
+    random_walk(&mp2, 0.25, 7, n);
+    mcs_curve_destroy(&FP);
     mcs_curve_destroy(&N);
     mcs_curve_destroy(&G);
     mcs_curve_destroy(&M);
@@ -443,6 +458,39 @@ static void test_bidirectional_joint(void)
     mcs_curve_destroy(&M);
 }
 
+/* free play (zero force up to 0.1 rad) then 1e4 N m/rad.
+ * k = 2e4 from 0.15 (500 N m): set 0.15 - 500/2e4 = 0.125, outside the free play.
+ * k = 5000, below the restraint's 1e4: like a stop, the restraint is steeper than the unloading
+ * slope, so it is elastic: the anchor is where it starts (0.1, 0), the path is F_L above it,
+ * the set is 0.1 and a cycle dissipates nothing. Beyond the last point (0.25, 1500 N m,
+ * extrapolated) with k = 2e4: 0.25 - 1500/2e4 = 0.175. */
+static void test_free_play_set(void)
+{
+    const double fp[][2] = {{0, 0}, {0.1, 0}, {0.2, 1000}};
+    mcs_curve *FP = mk(3, fp, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
+    mcs_hyst_model m = {.loading = FP, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 2e4};
+    mcs_hyst_state s;
+    mcs_hyst_reset(&m, &s);
+    mcs_hyst_update(&m, &s, 0.15);
+    CHECK_NEAR(s.x_set, 0.125, 1e-14);
+    CHECK_NEAR(mcs_hyst_force(&m, &s, 0.14), 300, 1e-9);
+    mcs_hyst_update(&m, &s, 0.0);
+    CHECK_REL(s.work, 0.5 * 500 * 0.05 - 0.5 * 500 * 0.025, 1e-12); /* 6.25 J */
+    m.unload_slope = 5000;
+    mcs_hyst_reset(&m, &s);
+    mcs_hyst_update(&m, &s, 0.15);
+    CHECK_NEAR(s.x_anchor, 0.1, 1e-15);
+    CHECK_NEAR(s.x_set, 0.1, 1e-14);
+    CHECK_NEAR(mcs_hyst_force(&m, &s, 0.12), 200, 1e-9);
+    mcs_hyst_update(&m, &s, 0.0);
+    CHECK_NEAR(s.work, 0, 1e-12);
+    m.unload_slope = 2e4;
+    mcs_hyst_reset(&m, &s);
+    mcs_hyst_update(&m, &s, 0.25);
+    CHECK_NEAR(s.x_set, 0.175, 1e-14);
+    mcs_curve_destroy(&FP);
+}
+
 int main(void)
 {
     RUN(test_loading_follows_curve);
@@ -456,5 +504,6 @@ int main(void)
     RUN(test_slope_then_curve);
     RUN(test_work_balance_random_walk);
     RUN(test_bidirectional_joint);
+    RUN(test_free_play_set);
     TEST_END();
 }

@@ -436,3 +436,25 @@ void mb_joint_reaction(const mb_world *w, int j, double force[3], double torque[
     for (int k = 0; k < 3; k++)
         force[k] = fb->f1[k], torque[k] = fb->t1[k];
 }
+
+int mb_joint_add_load(mb_world *w, int j, double load)
+{
+    switch (w->joint_type[j]) {
+    case J_REVOLUTE:
+        dJointAddHingeTorque(w->joint[j], load);
+        return 0;
+    case J_TRANSLATIONAL:
+        dJointAddSliderForce(w->joint[j], load);
+        return 0;
+    default:
+        return -1;
+    }
+}
+
+void mb_joint_axis(const mb_world *w, int j, double axis[3])
+{
+    dVector3 a = {0, 0, 0, 0};
+    if (w->joint_type[j] == J_REVOLUTE) dJointGetHingeAxis(w->joint[j], a);
+    if (w->joint_type[j] == J_TRANSLATIONAL) dJointGetSliderAxis(w->joint[j], a);
+    axis[0] = a[0], axis[1] = a[1], axis[2] = a[2];
+}

@@ -76,6 +76,13 @@ int mb_joint_fixed(mb_world *w, int parent, int child, mcs_error *err);
  * creation; translational: position [m] and rate [m/s] along the axis */
 double mb_joint_position(const mb_world *w, int j);
 double mb_joint_rate(const mb_world *w, int j);
+/* a generalised load on a revolute (torque about the axis [N m]) or translational (force along
+ * the axis [N]) joint for the next step: +load on the child, -load on the parent. Returns 0, or
+ * -1 for other joint types. */
+int mb_joint_add_load(mb_world *w, int j, double load);
+/* the joint's axis in world (revolute, translational); 0 vector for other types */
+void mb_joint_axis(const mb_world *w, int j, double axis[3]);
+
 /* constraint force and torque the joint applied to the child at the last step, world [N, N m]
  * (torque about the child's CG) */
 void mb_joint_reaction(const mb_world *w, int j, double force[3], double torque[3]);

@@ -28,17 +28,19 @@ int main(void)
         fprintf(stderr, "%s\n", e.msg);
         return 1;
     }
-    mcs_hyst_model m = {.loading = L, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 5e5,
-                        .elastic_limit = 0.002};
+    mcs_hyst_model m = {
+        .loading = L, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 5e5, .elastic_limit = 0.002};
     mcs_hyst_state s;
     mcs_hyst_reset(&m, &s);
     volatile double sink = 0;
     /* a slow oscillation growing into the element, as a contact sees it step by step */
     double t0 = now();
-    for (int i = 0; i < N; i++) sink += mcs_curve_eval(L, 0.03 * (1 - cos(1e-5 * i)));
+    for (int i = 0; i < N; i++)
+        sink += mcs_curve_eval(L, 0.03 * (1 - cos(1e-5 * i)));
     double t1 = now();
     int hint = -1;
-    for (int i = 0; i < N; i++) sink += mcs_curve_eval_hint(L, 0.03 * (1 - cos(1e-5 * i)), &hint);
+    for (int i = 0; i < N; i++)
+        sink += mcs_curve_eval_hint(L, 0.03 * (1 - cos(1e-5 * i)), &hint);
     double t2 = now();
     for (int i = 0; i < N; i++)
         sink += mcs_hyst_force(&m, &s, 0.03 * (1 - cos(1e-5 * i)) * (1 + 1e-6 * i));

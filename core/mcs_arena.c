@@ -66,7 +66,10 @@ void *mcs_arena_calloc(mcs_arena *a, size_t n, size_t size, size_t align, mcs_er
     return p;
 }
 
-size_t mcs_arena_mark(const mcs_arena *a) { return a->used; }
+size_t mcs_arena_mark(const mcs_arena *a)
+{
+    return a->used;
+}
 
 void mcs_arena_reset(mcs_arena *a, size_t mark)
 {
@@ -74,6 +77,15 @@ void mcs_arena_reset(mcs_arena *a, size_t mark)
     if (mark <= a->used) a->used = mark;
 }
 
-size_t mcs_arena_used(const mcs_arena *a) { return a->used; }
-size_t mcs_arena_capacity(const mcs_arena *a) { return a->capacity; }
-size_t mcs_arena_high_water(const mcs_arena *a) { return a->high_water; }
+size_t mcs_arena_used(const mcs_arena *a)
+{
+    return a->used;
+}
+size_t mcs_arena_capacity(const mcs_arena *a)
+{
+    return a->capacity;
+}
+size_t mcs_arena_high_water(const mcs_arena *a)
+{
+    return a->high_water;
+}

@@ -262,9 +262,10 @@ mcs_status mcs_curve_create_series(const mcs_curve *a, const mcs_curve *b, const
     force_range(a, &fmin, &fmax);
     force_range(b, &fmin, &fmax);
     if (!(fmax > fmin))
-        return MCS_ERR(err, MCS_ERR_RANGE,
-                       "%s: curves '%s' and '%s' share no force range (plateaus cap it to [%g, %g])",
-                       name, a->name, b->name, fmin, fmax);
+        return MCS_ERR(
+            err, MCS_ERR_RANGE,
+            "%s: curves '%s' and '%s' share no force range (plateaus cap it to [%g, %g])", name,
+            a->name, b->name, fmin, fmax);
     /* breakpoints: every force level of either curve inside the range, plus the caps */
     int cap = a->n + b->n + 2, m = 0;
     double *buf = malloc(2 * (size_t)cap * sizeof(double));
@@ -279,7 +280,8 @@ mcs_status mcs_curve_create_series(const mcs_curve *a, const mcs_curve *b, const
     int u = 0; /* drop duplicates */
     for (int i = 0; i < m; i++)
         if (u == 0 || f[i] > f[u - 1]) f[u++] = f[i];
-    for (int i = 0; i < u; i++) x[i] = mcs_curve_inverse(a, f[i]) + mcs_curve_inverse(b, f[i]);
+    for (int i = 0; i < u; i++)
+        x[i] = mcs_curve_inverse(a, f[i]) + mcs_curve_inverse(b, f[i]);
     mcs_extrap lo = isfinite(fmin) ? MCS_EXTRAP_CONSTANT : MCS_EXTRAP_LINEAR;
     mcs_extrap hi = isfinite(fmax) ? MCS_EXTRAP_CONSTANT : MCS_EXTRAP_LINEAR;
     mcs_status st = curve_build(name, u, x, f, 1, lo, hi, out, err);

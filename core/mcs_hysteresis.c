@@ -19,18 +19,29 @@ typedef struct {
     double v, d; /* value [N] and right derivative [N/m] */
 } vd;
 
-static vd vd_min(vd a, vd b) { return (a.v < b.v || (a.v == b.v && a.d <= b.d)) ? a : b; }
-static vd vd_max(vd a, vd b) { return (a.v > b.v || (a.v == b.v && a.d >= b.d)) ? a : b; }
+static vd vd_min(vd a, vd b)
+{
+    return (a.v < b.v || (a.v == b.v && a.d <= b.d)) ? a : b;
+}
+static vd vd_max(vd a, vd b)
+{
+    return (a.v > b.v || (a.v == b.v && a.d >= b.d)) ? a : b;
+}
 
 static hpath path_of(const mcs_hyst_model *m, const mcs_hyst_state *s)
 {
-    hpath p = {.m = m, .kind = PATH_ELASTIC, .c = s->line_c, .s = 0, .xm = s->x_max,
-               .xa = s->x_anchor};
+    hpath p = {
+        .m = m, .kind = PATH_ELASTIC, .c = s->line_c, .s = 0, .xm = s->x_max, .xa = s->x_anchor};
     if (!(s->x_max > m->elastic_limit)) return p;
     switch (m->unload) {
-    case MCS_UNLOAD_ELASTIC: break;
-    case MCS_UNLOAD_SLOPE: p.kind = PATH_SLOPE; break;
-    case MCS_UNLOAD_SLOPE_CURVE: p.kind = PATH_SLOPE_CURVE; break;
+    case MCS_UNLOAD_ELASTIC:
+        break;
+    case MCS_UNLOAD_SLOPE:
+        p.kind = PATH_SLOPE;
+        break;
+    case MCS_UNLOAD_SLOPE_CURVE:
+        p.kind = PATH_SLOPE_CURVE;
+        break;
     case MCS_UNLOAD_CURVE:
         p.kind = PATH_CURVE;
         p.s = s->f_max / m->unloading->y[m->unloading->n - 1];
@@ -61,7 +72,9 @@ static int path_parts(const hpath *p, double x, vd out[3])
     const mcs_hyst_model *m = p->m;
     out[0] = curve_vd(m->loading, x);
     switch (p->kind) {
-    case PATH_SLOPE: out[1] = (vd){m->unload_slope * x + p->c, m->unload_slope}; return 2;
+    case PATH_SLOPE:
+        out[1] = (vd){m->unload_slope * x + p->c, m->unload_slope};
+        return 2;
     case PATH_SLOPE_CURVE:
         out[1] = (vd){m->unload_slope * x + p->c, m->unload_slope};
         out[2] = curve_vd(m->unloading, x);
@@ -75,7 +88,8 @@ static int path_parts(const hpath *p, double x, vd out[3])
             out[1] = (vd){p->s * mcs_curve_eval(g, u), mcs_curve_slope(g, u)};
         }
         return 2;
-    default: return 1;
+    default:
+        return 1;
     }
 }
 
@@ -159,12 +173,13 @@ static int piece_nodes(int nv, const vd *v0, const vd *v1, double t0, double t1,
 }
 
 /* P at t in [t0, t1] by linear interpolation of the constituents (exact: they are linear) */
-static double piece_value(const hpath *p, int nv, const vd *v0, const vd *v1, double t0,
-                          double t1, double t)
+static double piece_value(const hpath *p, int nv, const vd *v0, const vd *v1, double t0, double t1,
+                          double t)
 {
     vd v[3];
     double w = (t1 > t0) ? (t - t0) / (t1 - t0) : 0.0;
-    for (int i = 0; i < nv; i++) v[i] = (vd){v0[i].v + w * (v1[i].v - v0[i].v), 0};
+    for (int i = 0; i < nv; i++)
+        v[i] = (vd){v0[i].v + w * (v1[i].v - v0[i].v), 0};
     /* the side of the anchor is that of the piece (the anchor is a knot) */
     return path_compose(p, v, 0.5 * (t0 + t1)).v;
 }
@@ -191,7 +206,8 @@ static double path_integral(const hpath *p, double a, double b)
             fp = f;
         }
         t0 = t1;
-        for (int i = 0; i < nv; i++) v0[i] = v1[i];
+        for (int i = 0; i < nv; i++)
+            v0[i] = v1[i];
     }
     return sum;
 }
@@ -236,7 +252,8 @@ static double path_zero_below(const hpath *p, double xm, double fscale)
             if (piece_value(p, nv, v0, v1, t0, t1, t) <= tol) return t;
         }
         t1 = t0;
-        for (int i = 0; i < nv; i++) v1[i] = v0[i];
+        for (int i = 0; i < nv; i++)
+            v1[i] = v0[i];
     }
     return 0.0;
 }
@@ -268,8 +285,14 @@ mcs_status mcs_hyst_model_check(const mcs_hyst_model *m, const char *name, mcs_e
 void mcs_hyst_reset(const mcs_hyst_model *m, mcs_hyst_state *s)
 {
     double f0 = mcs_curve_eval(m->loading, 0.0);
-    *s = (mcs_hyst_state){.x = 0, .force = 0, .x_max = 0, .f_max = f0 > 0 ? f0 : 0,
-                          .x_set = 0, .line_c = INFINITY, .x_anchor = 0, .work = 0};
+    *s = (mcs_hyst_state){.x = 0,
+                          .force = 0,
+                          .x_max = 0,
+                          .f_max = f0 > 0 ? f0 : 0,
+                          .x_set = 0,
+                          .line_c = INFINITY,
+                          .x_anchor = 0,
+                          .work = 0};
 }
 
 double mcs_hyst_force(const mcs_hyst_model *m, const mcs_hyst_state *s, double x)
@@ -313,6 +336,8 @@ static void update_line(const mcs_hyst_model *m, mcs_hyst_state *s, double x0, d
 
 double mcs_hyst_update(const mcs_hyst_model *m, mcs_hyst_state *s, double x)
 {
+    /* a NaN deflection is the caller's numerical failure: report it, keep the history */
+    if (isnan(x)) return NAN;
     hpath p = path_of(m, s);
     double x0 = s->x;
     if (x <= s->x_max) {
@@ -380,7 +405,10 @@ double mcs_hyst2_update(const mcs_hyst2_model *m, mcs_hyst2_state *s, double x)
 }
 
 /* the negative branch's F_neg d(-x) is the work of -F_neg over dx: works add */
-double mcs_hyst2_work(const mcs_hyst2_state *s) { return s->pos.work + s->neg.work; }
+double mcs_hyst2_work(const mcs_hyst2_state *s)
+{
+    return s->pos.work + s->neg.work;
+}
 
 double mcs_hyst2_stored(const mcs_hyst2_model *m, const mcs_hyst2_state *s)
 {

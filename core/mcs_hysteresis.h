@@ -54,16 +54,16 @@ typedef struct {
 
 /* the mutable state (small: one per contact pair / joint branch) */
 typedef struct {
-    double x;      /* deflection at the last update [m | rad]                                */
-    double force;  /* force at the last update [N | N m]                                     */
-    double x_max;  /* largest deflection reached [m | rad]                                   */
-    double f_max;  /* loading force there, max(0, F_L(x_max)) [N | N m]                     */
-    double x_set;  /* permanent set: largest deflection <= x_max where the unloading path
-                      carries no force [m | rad]                                             */
-    double line_c; /* unloading line intercept, line = k x + line_c: min over plastic points
-                      x' reached of F_L(x') - k x' (INFINITY while elastic) [N | N m]        */
+    double x;        /* deflection at the last update [m | rad]                                */
+    double force;    /* force at the last update [N | N m]                                     */
+    double x_max;    /* largest deflection reached [m | rad]                                   */
+    double f_max;    /* loading force there, max(0, F_L(x_max)) [N | N m]                     */
+    double x_set;    /* permanent set: largest deflection <= x_max where the unloading path
+                        carries no force [m | rad]                                             */
+    double line_c;   /* unloading line intercept, line = k x + line_c: min over plastic points
+                        x' reached of F_L(x') - k x' (INFINITY while elastic) [N | N m]        */
     double x_anchor; /* the x' of that minimum: the path is F_L from here to x_max [m | rad] */
-    double work;   /* work done on the element, integral of F dx over the history [J]       */
+    double work;     /* work done on the element, integral of F dx over the history [J]       */
 } mcs_hyst_state;
 
 /* validate a model (name is used in messages: the characteristic's key) */
@@ -75,7 +75,7 @@ double mcs_hyst_force(const mcs_hyst_model *m, const mcs_hyst_state *s, double x
 /* tangent stiffness dF/dx at x (right derivative) for the current history [N/m | N m/rad] */
 double mcs_hyst_stiffness(const mcs_hyst_model *m, const mcs_hyst_state *s, double x);
 /* commit a step from s->x to x (assumed monotone within the step): updates the history and
- * the exact work integral; returns the force at x */
+ * the exact work integral; returns the force at x (NaN for a NaN x, the state untouched) */
 double mcs_hyst_update(const mcs_hyst_model *m, mcs_hyst_state *s, double x);
 
 /* energy bookkeeping [J], computed on demand (exact integrals of the piecewise-linear paths) */

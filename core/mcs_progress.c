@@ -15,8 +15,13 @@ static double clock_monotonic(void *user)
 
 mcs_progress_opts mcs_progress_opts_default(void)
 {
-    return (mcs_progress_opts){.out = NULL, .quiet = 0, .force = 0, .min_interval = 0.2,
-                               .check_every = 64, .clock = NULL, .clock_user = NULL,
+    return (mcs_progress_opts){.out = NULL,
+                               .quiet = 0,
+                               .force = 0,
+                               .min_interval = 0.2,
+                               .check_every = 64,
+                               .clock = NULL,
+                               .clock_user = NULL,
                                .label = NULL};
 }
 

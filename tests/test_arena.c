@@ -30,7 +30,8 @@ static void test_alignment(void)
     CHECK(c != NULL);
     double *d = MCS_ARENA_NEW(a, double, 10, &e);
     CHECK(d && (uintptr_t)d % _Alignof(double) == 0);
-    for (int i = 0; i < 10; i++) CHECK(d[i] == 0.0); /* zero-filled */
+    for (int i = 0; i < 10; i++)
+        CHECK(d[i] == 0.0); /* zero-filled */
     mcs_arena_alloc(a, 3, 1, &e);
     void *p64 = mcs_arena_alloc(a, 8, 64, &e);
     CHECK(p64 && (uintptr_t)p64 % 64 == 0);
@@ -38,7 +39,8 @@ static void test_alignment(void)
     CHECK(p0 && (uintptr_t)p0 % _Alignof(max_align_t) == 0);
     /* allocations do not overlap: write all, read back */
     *c = 'x';
-    for (int i = 0; i < 10; i++) d[i] = i;
+    for (int i = 0; i < 10; i++)
+        d[i] = i;
     memset(p64, 0xab, 8);
     CHECK(*c == 'x' && d[9] == 9.0);
     CHECK(e.status == MCS_OK);

@@ -61,7 +61,8 @@ static void test_eval_and_extrapolation(void)
     mcs_curve *con = mk(3, bil, MCS_EXTRAP_CONSTANT, MCS_EXTRAP_CONSTANT);
     mcs_curve *mix = mk(3, bil, MCS_EXTRAP_CONSTANT, MCS_EXTRAP_LINEAR);
     /* at and between the points */
-    for (int i = 0; i < 3; i++) CHECK_NEAR(mcs_curve_eval(lin, bil[i][0]), bil[i][1], 1e-12);
+    for (int i = 0; i < 3; i++)
+        CHECK_NEAR(mcs_curve_eval(lin, bil[i][0]), bil[i][1], 1e-12);
     CHECK_NEAR(mcs_curve_eval(lin, 0.005), 50, 1e-12);
     CHECK_NEAR(mcs_curve_eval(lin, 0.02), 125, 1e-12);
     /* linear: end segments continue; constant: end values held */
@@ -98,7 +99,7 @@ static void test_segment_hint(void)
     double x = 0;
     for (int k = 0; k < 20000; k++) {
         s = s * 1103515245u + 12345u;
-        double r = (double)(s >> 8) / (double)(1u << 24); /* [0, 1) */
+        double r = (double)(s >> 8) / (double)(1u << 24);     /* [0, 1) */
         x = (k % 3 == 0) ? -2 + 20 * r : x + 0.2 * (r - 0.5); /* jumps and small moves */
         int h0 = mcs_curve_segment(c, x, -1);
         int hr = mcs_curve_segment(c, x, (int)(r * 45) - 2); /* any hint, even invalid */
@@ -138,7 +139,8 @@ static void test_integral_exact(void)
     mcs_curve *w = mk(25, xy, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
     double a = -0.3, b = 4.1, sum = 0;
     int m = 200000;
-    for (int k = 0; k < m; k++) sum += mcs_curve_eval(w, a + (k + 0.5) * (b - a) / m);
+    for (int k = 0; k < m; k++)
+        sum += mcs_curve_eval(w, a + (k + 0.5) * (b - a) / m);
     sum *= (b - a) / m;
     /* midpoint error bound: kinks only, <= (b-a)*max|y''|... each kink contributes O(h^2) */
     CHECK_NEAR(mcs_curve_integral(w, a, b), sum, 1e-7);

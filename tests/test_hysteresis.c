@@ -49,7 +49,8 @@ static void test_unload_slope_permanent_set(void)
     mcs_hyst_model m = {.loading = L, .unload = MCS_UNLOAD_SLOPE, .unload_slope = k2};
     mcs_hyst_state s;
     mcs_hyst_reset(&m, &s);
-    for (int i = 1; i <= 20; i++) mcs_hyst_update(&m, &s, 0.001 * i);
+    for (int i = 1; i <= 20; i++)
+        mcs_hyst_update(&m, &s, 0.001 * i);
     CHECK_NEAR(s.force, 2000, 1e-9);
     CHECK_NEAR(s.x_set, 0.015, 1e-15);
     CHECK_NEAR(mcs_hyst_update(&m, &s, 0.017), 2000 - k2 * 0.003, 1e-9);
@@ -72,11 +73,13 @@ static void test_closed_cycle_energy(void)
     mcs_hyst_state s;
     mcs_hyst_reset(&m, &s);
     const double F = 2000, xm = F / k1;
-    for (int i = 1; i <= 40; i++) mcs_hyst_update(&m, &s, xm * i / 40);
-    CHECK_REL(s.work, F * F / (2 * k1), 1e-12);                      /* 20 J */
-    CHECK_REL(mcs_hyst_stored(&m, &s), F * F / (2 * k2), 1e-12);     /* 5 J  */
+    for (int i = 1; i <= 40; i++)
+        mcs_hyst_update(&m, &s, xm * i / 40);
+    CHECK_REL(s.work, F * F / (2 * k1), 1e-12);                  /* 20 J */
+    CHECK_REL(mcs_hyst_stored(&m, &s), F * F / (2 * k2), 1e-12); /* 5 J  */
     CHECK_REL(mcs_hyst_dissipated(&m, &s), F * F / (2 * k1) - F * F / (2 * k2), 1e-12);
-    for (int i = 39; i >= -5; i--) mcs_hyst_update(&m, &s, xm * i / 40); /* unload past the set */
+    for (int i = 39; i >= -5; i--)
+        mcs_hyst_update(&m, &s, xm * i / 40); /* unload past the set */
     CHECK_REL(s.work, 15.0, 1e-12);
     CHECK_NEAR(mcs_hyst_stored(&m, &s), 0, 1e-12);
     /* half-way up the reload: stored = k2 (x - x_set)^2 / 2 = 2e5 * 0.0025^2 = 1.25 J */
@@ -125,6 +128,9 @@ static void test_reload_along_unloading_path(void)
     mcs_hyst_state before = s;
     CHECK_NEAR(mcs_hyst_force(&m, &s, 0.03), 3000, 1e-9);
     CHECK(memcmp(&before, &s, sizeof s) == 0);
+    /* a NaN deflection gives NaN and leaves the history alone */
+    CHECK(isnan(mcs_hyst_update(&m, &s, NAN)));
+    CHECK(memcmp(&before, &s, sizeof s) == 0);
     mcs_curve_destroy(&L);
 }
 
@@ -132,8 +138,8 @@ static void test_reload_along_unloading_path(void)
 static void test_elastic_limit(void)
 {
     mcs_curve *L = mk(2, lin_xy, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
-    mcs_hyst_model m = {.loading = L, .unload = MCS_UNLOAD_SLOPE, .unload_slope = k2,
-                        .elastic_limit = 0.01};
+    mcs_hyst_model m = {
+        .loading = L, .unload = MCS_UNLOAD_SLOPE, .unload_slope = k2, .elastic_limit = 0.01};
     mcs_hyst_state s;
     mcs_hyst_reset(&m, &s);
     for (int cycle = 0; cycle < 3; cycle++) {
@@ -257,8 +263,8 @@ static const double fork_xy[][2] = {{0, 0}, {0.05, 100}, {0.3, 120}, {0.32, 1120
 static void test_fork_fig7(void)
 {
     mcs_curve *M = mk(4, fork_xy, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
-    mcs_hyst_model m = {.loading = M, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 2000,
-                        .elastic_limit = 0.05};
+    mcs_hyst_model m = {
+        .loading = M, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 2000, .elastic_limit = 0.05};
     mcs_hyst_state s;
     mcs_hyst_reset(&m, &s);
     /* a: elastic cycle to 0.04 rad: back to zero, nothing lost */
@@ -269,20 +275,23 @@ static void test_fork_fig7(void)
     /* b: plastic to 0.2 rad: M = 100 + 20 * 0.15/0.25 = 112, set 0.2 - 112/2000 = 0.144;
      * unloading stiffness is the elastic one; loss = int_0^0.2 M - 112 * 0.056 / 2
      * = (2.5 + 0.15 * 106) - 3.136 = 15.264 J */
-    for (int i = 1; i <= 200; i++) mcs_hyst_update(&m, &s, 0.001 * i);
+    for (int i = 1; i <= 200; i++)
+        mcs_hyst_update(&m, &s, 0.001 * i);
     CHECK_NEAR(s.force, 112, 1e-9);
     CHECK_NEAR(s.x_set, 0.144, 1e-14);
     mcs_hyst_update(&m, &s, 0.18);
     CHECK_NEAR(mcs_hyst_stiffness(&m, &s, 0.18), 2000, 1e-9);
     CHECK_NEAR(s.force, 112 - 2000 * 0.02, 1e-9);
-    for (int i = 180; i >= 0; i--) mcs_hyst_update(&m, &s, 0.001 * i);
+    for (int i = 180; i >= 0; i--)
+        mcs_hyst_update(&m, &s, 0.001 * i);
     CHECK_REL(s.work, 15.264, 1e-12);
     /* c: into the stop, to 0.31 rad (M = 620). The lowest line of slope 2000 through any plastic
      * point is through the stop's start (0.3, 120): line 2000 phi - 480, zero at 0.24. Unloading
      * goes down the stop (elastic, 5e4) to 0.3, then parallel to the elastic slope to 0.24: the
      * fork stays blocked near the stop, with the elastic restitution (MYMOSA). The stop's energy
      * is returned; loss = int_0^0.3 M - 120 * 0.06 / 2 = (2.5 + 27.5) - 3.6 = 26.4 J. */
-    for (int i = 1; i <= 310; i++) mcs_hyst_update(&m, &s, 0.001 * i);
+    for (int i = 1; i <= 310; i++)
+        mcs_hyst_update(&m, &s, 0.001 * i);
     CHECK_NEAR(s.force, 620, 1e-8);
     CHECK_NEAR(s.x_set, 0.24, 1e-12);
     CHECK_NEAR(mcs_hyst_update(&m, &s, 0.305), 370, 1e-8); /* on the stop */
@@ -306,14 +315,18 @@ static void test_slope_then_curve(void)
     const double gxy[][2] = {{0.1, 0}, {0.3, 40}};
     mcs_curve *M = mk(4, fork_xy, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
     mcs_curve *G = mk(2, gxy, MCS_EXTRAP_CONSTANT, MCS_EXTRAP_LINEAR);
-    mcs_hyst_model m = {.loading = M, .unloading = G, .unload = MCS_UNLOAD_SLOPE_CURVE,
-                        .unload_slope = 2000, .elastic_limit = 0.05};
+    mcs_hyst_model m = {.loading = M,
+                        .unloading = G,
+                        .unload = MCS_UNLOAD_SLOPE_CURVE,
+                        .unload_slope = 2000,
+                        .elastic_limit = 0.05};
     mcs_error e;
     mcs_error_clear(&e);
     CHECK(mcs_hyst_model_check(&m, "fork", &e) == MCS_OK);
     mcs_hyst_state s;
     mcs_hyst_reset(&m, &s);
-    for (int i = 1; i <= 250; i++) mcs_hyst_update(&m, &s, 0.001 * i);
+    for (int i = 1; i <= 250; i++)
+        mcs_hyst_update(&m, &s, 0.001 * i);
     const double pc = 364.0 / 1800.0, gc = 200 * (pc - 0.1);
     CHECK_NEAR(s.x_set, 0.1, 1e-14);
     CHECK_NEAR(mcs_hyst_force(&m, &s, 0.22), 116 - 2000 * 0.03, 1e-9); /* on the line */
@@ -324,7 +337,8 @@ static void test_slope_then_curve(void)
      * int_0^0.25 M = 2.5 + 0.2 * (100 + 116)/2 = 24.1; line: (gc + 116)/2 * (0.25 - pc);
      * G: gc/2 * (pc - 0.1) */
     double loss = 24.1 - 0.5 * (gc + 116) * (0.25 - pc) - 0.5 * gc * (pc - 0.1);
-    for (int i = 249; i >= 0; i--) mcs_hyst_update(&m, &s, 0.001 * i);
+    for (int i = 249; i >= 0; i--)
+        mcs_hyst_update(&m, &s, 0.001 * i);
     CHECK_REL(s.work, loss, 1e-12);
     CHECK_REL(mcs_hyst_dissipated(&m, &s), loss, 1e-12);
     mcs_curve_destroy(&M);
@@ -353,7 +367,8 @@ static void random_walk(const mcs_hyst_model *m, double scale, unsigned seed, in
         x = env * (0.55 - 0.65 * cos(0.021 * i)) + 0.02 * scale * (rnd(&seed) - 0.5);
         double x0 = s.x;
         mcs_hyst_update(m, &s, x);
-        for (int k = 1; k <= 7; k++) mcs_hyst_update(m, &fine, x0 + (x - x0) * k / 7.0);
+        for (int k = 1; k <= 7; k++)
+            mcs_hyst_update(m, &fine, x0 + (x - x0) * k / 7.0);
         double st = mcs_hyst_stored(m, &s), dis = mcs_hyst_dissipated(m, &s);
         double ref = fmax(fabs(s.work), 1e-3 * scale * mcs_curve_eval(m->loading, scale));
         double err = fabs(s.work - (st + dis)) / ref;
@@ -374,7 +389,8 @@ static void random_walk(const mcs_hyst_model *m, double scale, unsigned seed, in
     CHECK(bad_split == 0);
     CHECK(bad_set == 0);
     if (bad_balance || getenv("MCRASH_TEST_VERBOSE"))
-        fprintf(stderr, "random walk (rule %d): worst |W - S - D|/W = %.3g, final W %.6g J, D %.6g J\n",
+        fprintf(stderr,
+                "random walk (rule %d): worst |W - S - D|/W = %.3g, final W %.6g J, D %.6g J\n",
                 (int)m->unload, worst, s.work, mcs_hyst_dissipated(m, &s));
 }
 
@@ -387,21 +403,24 @@ static void test_work_balance_random_walk(void)
     mcs_curve *G = mk(3, gxy, MCS_EXTRAP_CONSTANT, MCS_EXTRAP_LINEAR);
     mcs_curve *M = mk(4, fork_xy, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
     mcs_curve *G2 = mk(2, g2, MCS_EXTRAP_CONSTANT, MCS_EXTRAP_LINEAR);
-    mcs_hyst_model ms = {.loading = N, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 3e5,
-                         .elastic_limit = 0.005};
-    mcs_hyst_model mc = {.loading = N, .unloading = G, .unload = MCS_UNLOAD_CURVE,
-                         .elastic_limit = 0.004};
-    mcs_hyst_model mf = {.loading = M, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 2000,
+    mcs_hyst_model ms = {
+        .loading = N, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 3e5, .elastic_limit = 0.005};
+    mcs_hyst_model mc = {
+        .loading = N, .unloading = G, .unload = MCS_UNLOAD_CURVE, .elastic_limit = 0.004};
+    mcs_hyst_model mf = {
+        .loading = M, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 2000, .elastic_limit = 0.05};
+    mcs_hyst_model mb = {.loading = M,
+                         .unloading = G2,
+                         .unload = MCS_UNLOAD_SLOPE_CURVE,
+                         .unload_slope = 2000,
                          .elastic_limit = 0.05};
-    mcs_hyst_model mb = {.loading = M, .unloading = G2, .unload = MCS_UNLOAD_SLOPE_CURVE,
-                         .unload_slope = 2000, .elastic_limit = 0.05};
     mcs_hyst_model me = {.loading = N, .unload = MCS_UNLOAD_ELASTIC};
     /* free play: no force up to 0.1 rad, then a stiff restraint */
     const double fp[][2] = {{0, 0}, {0.1, 0}, {0.2, 1000}};
     mcs_curve *FP = mk(3, fp, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
     mcs_hyst_model mp = {.loading = FP, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 1.5e4};
-    mcs_hyst_model mp2 = {.loading = FP, .unloading = G2, .unload = MCS_UNLOAD_SLOPE_CURVE,
-                          .unload_slope = 1.5e4};
+    mcs_hyst_model mp2 = {
+        .loading = FP, .unloading = G2, .unload = MCS_UNLOAD_SLOPE_CURVE, .unload_slope = 1.5e4};
     int n = th_verify() ? 20000 : 2000;
     random_walk(&ms, 0.035, 1, n);
     random_walk(&mc, 0.035, 2, n);
@@ -422,8 +441,8 @@ static void test_work_balance_random_walk(void)
 static void test_bidirectional_joint(void)
 {
     mcs_curve *M = mk(4, fork_xy, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
-    mcs_hyst_model b = {.loading = M, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 2000,
-                        .elastic_limit = 0.05};
+    mcs_hyst_model b = {
+        .loading = M, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 2000, .elastic_limit = 0.05};
     mcs_hyst2_model j = {.pos = b, .neg = b};
     mcs_error e;
     mcs_error_clear(&e);

@@ -36,7 +36,8 @@ static void test_format(void)
 static int count_char(const char *s, char c)
 {
     int n = 0;
-    for (; *s; s++) n += *s == c;
+    for (; *s; s++)
+        n += *s == c;
     return n;
 }
 
@@ -120,13 +121,15 @@ static void test_quiet_and_not_a_terminal(void)
     /* a memory stream is not a terminal: nothing, and the clock is never read */
     mcs_progress_start(&p, &o, 1.0);
     CHECK(!p.active);
-    for (int i = 0; i < 1000; i++) mcs_progress_update(&p, i * 1e-3);
+    for (int i = 0; i < 1000; i++)
+        mcs_progress_update(&p, i * 1e-3);
     mcs_progress_finish(&p, 1.0);
     /* forced but quiet: nothing either */
     o.force = 1;
     o.quiet = 1;
     mcs_progress_start(&p, &o, 1.0);
-    for (int i = 0; i < 1000; i++) mcs_progress_update(&p, i * 1e-3);
+    for (int i = 0; i < 1000; i++)
+        mcs_progress_update(&p, i * 1e-3);
     mcs_progress_finish(&p, 1.0);
     fclose(f);
     CHECK(len == 0);

@@ -1,0 +1,121 @@
+/* mcs_scenario: the scenario reader. Loads a YAML scenario (libyaml), resolves its includes,
+ * validates it against the schema (core/mcs_schema.c) and converts every quantity to SI.
+ * Stages then read the tree with the accessors below: a quantity node holds its SI value.
+ *
+ * Input rules
+ * - One YAML document per file, UTF-8, no NUL bytes, at most MCS_SCN_MAX_BYTES, nesting at
+ *   most MCS_SCN_MAX_DEPTH levels. Aliases (*name) are refused: use include: or a named
+ *   characteristic instead. Duplicate keys in one mapping are refused.
+ * - Plain scalars resolve as YAML 1.2 core: null/~/empty -> null, true/false -> bool, decimal
+ *   numbers -> number; quoted scalars are strings. A quantity is a number (SI) or a string
+ *   "value unit" ("48.5 km/h", "12 ms", "50 g"); see core/mcs_units.h.
+ *
+ * include: (top level only) a path or a list of paths, relative to the including file.
+ * The included files are loaded (recursively, cycles refused with the chain in the message)
+ * and merged in order, then the including file is merged on top:
+ *   - maps merge key by key, recursively;
+ *   - lists of entities (sequences whose items are all mappings: bodies, joints, contacts,
+ *     fe.parts, ...) concatenate, included items first (a model's bodies come before the
+ *     scenario's own);
+ *   - anything else given in both (a scalar, null, a vector, a curve, a kind mismatch) is a
+ *     value: the including file's replaces it; between two includes, the later one wins.
+ * The resolved tree has no include: key. Validation runs on the resolved tree, and every node
+ * keeps the file, line and column it came from.
+ *
+ * Errors: status MCS_ERR_* and the message "FILE:LINE:COL: error: KEY: what is wrong" with KEY
+ * the dotted path in the resolved tree (bodies[0].mass). */
+#ifndef MCS_SCENARIO_H
+#define MCS_SCENARIO_H
+
+#include "core/mcs_error.h"
+
+#include <stddef.h>
+#include <stdio.h>
+
+#define MCS_SCN_MAX_BYTES (16 * 1024 * 1024) /* per file */
+#define MCS_SCN_MAX_DEPTH 64                 /* nesting of maps and sequences */
+#define MCS_SCN_MAX_FILES 256                /* files read for one scenario, includes counted */
+#define MCS_SCN_MAX_KEYS 10000               /* keys in one mapping */
+#define MCS_SCN_MAX_NODES 4000000            /* nodes in one file */
+
+typedef struct mcs_scenario mcs_scenario;
+typedef struct mcs_node mcs_node;
+
+typedef enum {
+    MCS_NODE_NULL, /* null, ~, or an absent node (accessors given NULL) */
+    MCS_NODE_BOOL,
+    MCS_NODE_NUM, /* a number in SI */
+    MCS_NODE_STR,
+    MCS_NODE_MAP,
+    MCS_NODE_SEQ,
+} mcs_kind;
+
+/* load, resolve includes, validate; on error *out is NULL and err says why */
+mcs_status mcs_scenario_load(const char *path, mcs_scenario **out, mcs_error *err);
+
+/* the same from text in memory; name is used in messages and to resolve includes */
+mcs_status mcs_scenario_load_text(const char *name, const char *text, size_t len,
+                                  mcs_scenario **out, mcs_error *err);
+
+void mcs_scenario_destroy(mcs_scenario **scn);
+
+const mcs_node *mcs_scenario_root(const mcs_scenario *scn);
+
+/* the source texts that were read, in reading order, each preceded by a line
+ * "# === mcrash source: PATH" (for /meta/scenario) */
+const char *mcs_scenario_text(const mcs_scenario *scn);
+
+/* the resolved scenario as JSON (includes merged, quantities in SI); MCS_ERR_IO on write error */
+mcs_status mcs_scenario_write_json(const mcs_scenario *scn, FILE *f);
+
+/* ---- nodes (a NULL node is an absent one: kind NULL, length 0, number NaN) ---- */
+mcs_kind mcs_node_kind(const mcs_node *n);
+const char *mcs_node_kind_str(mcs_kind k);
+
+/* value of key in a map, NULL if absent or n is not a map */
+const mcs_node *mcs_node_get(const mcs_node *map, const char *key);
+
+/* entries of a map or sequence (0 for anything else) */
+int mcs_node_len(const mcs_node *n);
+
+/* i-th item of a sequence or i-th value of a map (in file order); NULL if out of range */
+const mcs_node *mcs_node_at(const mcs_node *n, int i);
+
+/* i-th key of a map; NULL if out of range */
+const char *mcs_node_key(const mcs_node *map, int i);
+
+/* number in SI (NaN if not a number); bool as 0/1 */
+double mcs_node_num(const mcs_node *n);
+
+/* number of key in map, or dflt when the key is absent or null */
+double mcs_node_num_or(const mcs_node *map, const char *key, double dflt);
+
+/* text of a string (NULL for other kinds) */
+const char *mcs_node_str(const mcs_node *n);
+
+/* text of a scalar as written in the file ("48.5 km/h"); NULL for maps and sequences */
+const char *mcs_node_text(const mcs_node *n);
+
+/* bool value, dflt when absent or null */
+int mcs_node_bool(const mcs_node *n, int dflt);
+
+/* where the node was written (1-based) and its dotted path in the resolved tree */
+const char *mcs_node_file(const mcs_node *n);
+int mcs_node_line(const mcs_node *n);
+int mcs_node_col(const mcs_node *n);
+const char *mcs_node_path(const mcs_node *n);
+
+/* a sequence of exactly n numbers into v[n] (validated trees always satisfy their schema) */
+mcs_status mcs_node_vec(const mcs_node *seq, double *v, int n, mcs_error *err);
+mcs_status mcs_node_vec3(const mcs_node *seq, double v[3], mcs_error *err);
+
+/* a curve [[x, y], ...]: number of points (0 if not a curve); then x[cap], y[cap] filled */
+int mcs_node_curve_len(const mcs_node *curve);
+mcs_status mcs_node_curve(const mcs_node *curve, double *x, double *y, int cap, mcs_error *err);
+
+/* record an error located at a node: "FILE:LINE:COL: error: PATH: <fmt>" (for the stages'
+ * own checks when they build a model) */
+mcs_status mcs_node_error(const mcs_node *n, mcs_error *err, mcs_status st, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+#endif

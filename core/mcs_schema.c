@@ -1,0 +1,491 @@
+/* mcs_schema.c: every contract key of the scenario (DESIGN.md "The scenario (YAML)"), with its
+ * type, dimension, required flag and range. Later stages add their keys here.
+ * Where DESIGN.md is silent the choice is what a crash engineer expects; it says so in a comment.
+ * Cross-key rules (inertia definite, time step below end time, ...) live in mcs_scn_rules.c. */
+#include "core/mcs_schema.h"
+
+/* row makers: name, flags, then what the type needs; doc is the text of "missing" messages */
+#define Q(n, d, fl, lo_, hi_, doc_)                                                                \
+    {.name = n, .type = MCS_SK_NUM, .flags = fl, .dim = d, .lo = lo_, .hi = hi_, .doc = doc_}
+#define V(n, d, n0, n1, fl, lo_, doc_)                                                             \
+    {.name = n, .type = MCS_SK_VEC, .flags = fl, .dim = d, .nmin = n0, .nmax = n1, .lo = lo_,      \
+     .doc = doc_}
+#define I(n, fl, lo_, hi_, doc_)                                                                   \
+    {.name = n, .type = MCS_SK_INT, .flags = fl, .lo = lo_, .hi = hi_, .doc = doc_}
+#define IS(n, n0, n1, fl, lo_, doc_)                                                               \
+    {.name = n, .type = MCS_SK_INTS, .flags = fl, .nmin = n0, .nmax = n1, .lo = lo_, .doc = doc_}
+#define S(n, fl, doc_) {.name = n, .type = MCS_SK_STR, .flags = fl, .doc = doc_}
+#define B(n, fl, doc_) {.name = n, .type = MCS_SK_BOOL, .flags = fl, .doc = doc_}
+#define E(n, ch, fl, doc_) {.name = n, .type = MCS_SK_ENUM, .flags = fl, .choices = ch, .doc = doc_}
+#define R(n, r, fl, doc_) {.name = n, .type = MCS_SK_REF, .flags = fl, .ref = r, .doc = doc_}
+#define RS(n, r, n0, fl, doc_)                                                                     \
+    {.name = n, .type = MCS_SK_REFS, .flags = fl, .ref = r, .nmin = n0, .doc = doc_}
+#define C(n, dx, dy, n0, fl, lo_, doc_)                                                            \
+    {.name = n, .type = MCS_SK_CURVE, .flags = fl, .dim = dx, .dim_y = dy, .nmin = n0, .lo = lo_, \
+     .doc = doc_}
+#define M(n, s, fl, doc_) {.name = n, .type = MCS_SK_MAP, .flags = fl, .sub = &s, .doc = doc_}
+#define L(n, s, fl, doc_) {.name = n, .type = MCS_SK_LIST, .flags = fl, .sub = &s, .doc = doc_}
+#define NM(n, s, fl, doc_) {.name = n, .type = MCS_SK_NAMED, .flags = fl, .sub = &s, .doc = doc_}
+#define A(n, fl, doc_) {.name = n, .type = MCS_SK_ANY, .flags = fl, .doc = doc_}
+#define D(n, doc_) {.name = n, .type = MCS_SK_DISC, .doc = doc_}
+#define END {.name = 0}
+
+enum {
+    REQ = MCS_SK_REQ,
+    GT = MCS_SK_GT,
+    GE = MCS_SK_GE,
+    LT = MCS_SK_LT,
+    LE = MCS_SK_LE,
+    NZ = MCS_SK_NONZERO,
+    UNIQ = MCS_SK_UNIQUE,
+    NE = MCS_SK_NONEMPTY,
+};
+
+#define LEN MCS_DIM_LENGTH
+#define NONE MCS_DIM_NONE
+#define ANG MCS_DIM_ANGLE
+#define VEL MCS_DIM_VELOCITY
+#define FRC MCS_DIM_FORCE
+#define PRS MCS_DIM_PRESSURE
+#define BODY MCS_REF_BODY
+#define BODY_G MCS_REF_BODY_OR_GROUND
+#define CHR MCS_REF_CHAR
+#define PART MCS_REF_FE_PART
+#define CHOICES_AXIS "x|y|z"
+
+/* ---- simulation, environment ---- */
+
+static const mcs_skey sim_keys[] = {
+    Q("end_time", MCS_DIM_TIME, REQ | GT, 0, 0, "simulated duration [s]"),
+    /* stage 1: the fixed step; FE stages: an upper bound on the stable (Courant) step */
+    Q("time_step", MCS_DIM_TIME, GT, 0, 0, "time step [s]"),
+    /* FE: safety factor on the Courant step (LS-DYNA TSSFAC, default 0.9) */
+    Q("time_step_scale", NONE, GT | LE, 0, 1, "FE time step scale factor"),
+    Q("output_rate", MCS_DIM_FREQ, GT, 0, 0, "sampling rate of the results [Hz]"),
+    END,
+};
+static const mcs_smap sim_map = {.what = "simulation block", .keys = sim_keys,
+                                 .check = mcs_rule_simulation};
+
+static const mcs_skey ground_keys[] = {
+    Q("height", LEN, REQ, 0, 0, "ground height z [m]"),
+    Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
+    R("characteristic", CHR, 0, "contact characteristic of the ground"),
+    END,
+};
+static const mcs_smap ground_map = {.what = "ground", .keys = ground_keys};
+
+static const mcs_skey env_keys[] = {
+    /* magnitude, acting along -z (DESIGN: z up); "1 g" reads as 9.80665 m/s^2 */
+    Q("gravity", MCS_DIM_ACCEL, GE, 0, 0, "gravitational acceleration [m/s^2]"),
+    M("ground", ground_map, 0, "the ground plane"),
+    END,
+};
+static const mcs_smap env_map = {.what = "environment block", .keys = env_keys};
+
+/* ---- characteristics: force vs. penetration (default) or moment vs. angle ---- */
+
+static const mcs_skey char_force_keys[] = {
+    C("loading", LEN, FRC, 2, REQ, 0, "loading curve [[penetration m, force N], ...]"),
+    C("unloading", LEN, FRC, 2, 0, 0, "unloading curve (null: elastic)"),
+    Q("unloading_slope", MCS_DIM_STIFFNESS, GT, 0, 0, "unloading slope from the maximum [N/m]"),
+    Q("elastic_limit", LEN, GE, 0, 0, "penetration below which unloading is elastic [m]"),
+    Q("damping", MCS_DIM_DAMPING, GE, 0, 0, "viscous damping [N s/m]"),
+    END,
+};
+static const mcs_smap char_force = {.what = "force characteristic", .keys = char_force_keys,
+                                    .check = mcs_rule_characteristic};
+
+static const mcs_skey char_moment_keys[] = {
+    C("loading", ANG, MCS_DIM_MOMENT, 2, REQ, 0, "loading curve [[angle rad, moment N m], ...]"),
+    C("unloading", ANG, MCS_DIM_MOMENT, 2, 0, 0, "unloading curve (null: elastic)"),
+    Q("unloading_slope", MCS_DIM_ROTSTIFF, GT, 0, 0, "unloading slope [N m/rad]"),
+    Q("elastic_limit", ANG, GE, 0, 0, "angle below which unloading is elastic [rad]"),
+    Q("damping", MCS_DIM_ROTDAMP, GE, 0, 0, "viscous damping [N m s/rad]"),
+    END,
+};
+static const mcs_smap char_moment = {.what = "moment characteristic", .keys = char_moment_keys,
+                                     .check = mcs_rule_characteristic};
+
+static const mcs_svariant char_variants[] = {{"force", &char_force}, {"moment", &char_moment}, {0}};
+
+static const mcs_skey char_keys[] = {
+    D("type", "force (default) or moment"),
+    Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
+    END,
+};
+static const mcs_smap char_map = {.what = "characteristic", .keys = char_keys, .disc = "type",
+                                  .variants = char_variants, .disc_default = "force"};
+
+/* ---- bodies and their surfaces ---- */
+
+static const mcs_skey ellipsoid_keys[] = {
+    V("center", LEN, 3, 3, REQ, 0, "centre in the body frame [m]"),
+    V("semi_axes", LEN, 3, 3, REQ | GT, 0, "semi-axes [m]"),
+    /* MADYMO hyper-ellipsoid degree: 2 is an ellipsoid, higher is boxier */
+    I("degree", GE | LE, 2, 16, "hyper-ellipsoid degree"),
+    V("orientation", ANG, 3, 3, 0, 0, "roll, pitch, yaw in the body frame [rad]"),
+    END,
+};
+static const mcs_skey plane_keys[] = {
+    V("point", LEN, 3, 3, REQ, 0, "a point of the plane [m]"),
+    V("normal", NONE, 3, 3, REQ | NZ, 0, "outward normal"),
+    V("size", LEN, 2, 2, GT, 0, "extent of a finite plane [m]"),
+    END,
+};
+static const mcs_skey cylinder_keys[] = {
+    V("center", LEN, 3, 3, REQ, 0, "centre [m]"),
+    Q("radius", LEN, REQ | GT, 0, 0, "radius [m]"),
+    Q("length", LEN, REQ | GT, 0, 0, "length [m]"),
+    V("axis", NONE, 3, 3, REQ | NZ, 0, "axis direction"),
+    END,
+};
+static const mcs_smap ellipsoid_map = {.what = "ellipsoid surface", .keys = ellipsoid_keys};
+static const mcs_smap plane_map = {.what = "plane surface", .keys = plane_keys};
+static const mcs_smap cylinder_map = {.what = "cylinder surface", .keys = cylinder_keys};
+static const mcs_svariant surface_variants[] = {
+    {"ellipsoid", &ellipsoid_map}, {"plane", &plane_map}, {"cylinder", &cylinder_map}, {0}};
+
+static const mcs_skey surface_keys[] = {
+    D("type", "surface type"),
+    S("name", 0, "surface name"),
+    R("characteristic", CHR, 0, "contact characteristic"),
+    END,
+};
+static const mcs_smap surface_map = {.what = "surface", .keys = surface_keys, .disc = "type",
+                                     .variants = surface_variants};
+
+static const mcs_skey body_keys[] = {
+    S("name", REQ | UNIQ | NE, "body name"),
+    Q("mass", MCS_DIM_MASS, REQ | GT, 0, 0, "mass [kg]"),
+    /* principal Ixx Iyy Izz, or Ixx Iyy Izz Ixy Iyz Ixz (MADYMO order), about the centre of mass */
+    V("inertia", MCS_DIM_INERTIA, 3, 6, REQ, 0, "inertia [kg m^2] (3 or 6 values)"),
+    V("position", LEN, 3, 3, REQ, 0, "centre of mass in the world [m]"),
+    /* 3 values: roll, pitch, yaw (z-y-x Cardan, ISO 8855); 4: quaternion w, x, y, z */
+    V("orientation", ANG, 3, 4, 0, 0, "orientation"),
+    V("velocity", VEL, 3, 3, REQ, 0, "initial velocity [m/s]"),
+    V("angular_velocity", MCS_DIM_ANGVEL, 3, 3, 0, 0, "initial angular velocity [rad/s]"),
+    L("surfaces", surface_map, 0, "contact surfaces"),
+    END,
+};
+static const mcs_smap body_map = {.what = "body", .keys = body_keys, .check = mcs_rule_body};
+
+static const mcs_skey contact_keys[] = {
+    S("name", 0, "contact name"),
+    R("a", BODY_G, REQ, "first body (or ground)"),
+    R("b", BODY_G, REQ, "second body (or ground)"),
+    R("characteristic", CHR, REQ, "contact characteristic"),
+    Q("friction", NONE, GE, 0, 0, "friction coefficient (overrides the characteristic's)"),
+    END,
+};
+static const mcs_smap contact_map = {.what = "contact", .keys = contact_keys,
+                                     .check = mcs_rule_pair};
+
+/* ---- joints ---- */
+
+static const mcs_skey revolute_keys[] = {
+    V("axis", NONE, 3, 3, REQ | NZ, 0, "rotation axis (world frame)"),
+    V("range", ANG, 2, 2, 0, 0, "stops [min, max] [rad]"),
+    END,
+};
+static const mcs_skey universal_keys[] = {
+    V("axis", NONE, 3, 3, REQ | NZ, 0, "first axis"),
+    V("axis2", NONE, 3, 3, REQ | NZ, 0, "second axis"),
+    END,
+};
+static const mcs_skey translational_keys[] = {
+    V("axis", NONE, 3, 3, REQ | NZ, 0, "sliding axis"),
+    V("range", LEN, 2, 2, 0, 0, "stops [min, max] [m]"),
+    END,
+};
+static const mcs_skey no_keys[] = {END};
+static const mcs_smap revolute_map = {.what = "revolute joint", .keys = revolute_keys};
+static const mcs_smap universal_map = {.what = "universal joint", .keys = universal_keys};
+static const mcs_smap translational_map = {.what = "translational joint", .keys = translational_keys};
+static const mcs_smap spherical_map = {.what = "spherical joint", .keys = no_keys};
+static const mcs_smap fixed_map = {.what = "fixed joint", .keys = no_keys};
+static const mcs_svariant joint_variants[] = {
+    {"revolute", &revolute_map}, {"spherical", &spherical_map}, {"universal", &universal_map},
+    {"translational", &translational_map}, {"fixed", &fixed_map}, {0}};
+
+static const mcs_skey joint_keys[] = {
+    S("name", UNIQ | NE, "joint name"),
+    D("type", "joint type"),
+    R("parent", BODY_G, REQ, "parent body (or ground)"),
+    R("child", BODY, REQ, "child body"),
+    V("anchor", LEN, 3, 3, REQ, 0, "joint point in the world [m]"),
+    R("restraint", CHR, 0, "restraint characteristic (moment vs angle or force vs travel)"),
+    END,
+};
+static const mcs_smap joint_map = {.what = "joint", .keys = joint_keys, .disc = "type",
+                                   .variants = joint_variants, .check = mcs_rule_joint};
+
+/* ---- attachments (breakable spring-dampers), sensors, impact ---- */
+
+static const mcs_skey attachment_keys[] = {
+    S("name", UNIQ | NE, "attachment name"),
+    R("a", BODY_G, REQ, "first body"),
+    R("b", BODY_G, REQ, "second body"),
+    V("point_a", LEN, 3, 3, REQ, 0, "attachment point on a (body frame) [m]"),
+    V("point_b", LEN, 3, 3, REQ, 0, "attachment point on b (body frame) [m]"),
+    Q("stiffness", MCS_DIM_STIFFNESS, REQ | GE, 0, 0, "spring stiffness [N/m]"),
+    Q("damping", MCS_DIM_DAMPING, GE, 0, 0, "damping [N s/m]"),
+    Q("failure_force", FRC, REQ | GT, 0, 0, "force at which it breaks [N]"),
+    Q("length", LEN, GE, 0, 0, "free length [m] (default: initial distance)"),
+    END,
+};
+static const mcs_smap attachment_map = {.what = "attachment", .keys = attachment_keys,
+                                        .check = mcs_rule_pair};
+
+static const mcs_skey sensor_keys[] = {
+    S("name", REQ | UNIQ | NE, "channel name"),
+    R("body", BODY, REQ, "body carrying the sensor"),
+    E("type", "acceleration|velocity|displacement|angular_velocity|angular_acceleration", REQ,
+      "quantity measured"),
+    V("point", LEN, 3, 3, 0, 0, "sensor point in the body frame [m] (default: centre of mass)"),
+    /* SAE J211 channel frequency class; 0 = unfiltered */
+    I("cfc", GE, 0, 0, "channel frequency class (0, 60, 180, 600, 1000)"),
+    END,
+};
+static const mcs_smap sensor_map = {.what = "sensor", .keys = sensor_keys,
+                                    .check = mcs_rule_sensor};
+
+/* open: other fields are kept as written (ISO 13232 contact codes etc.) */
+static const mcs_skey impact_keys[] = {
+    S("code", 0, "ISO 13232 impact configuration code, e.g. 413-0/13.4"),
+    S("motorcycle", 0, "motorcycle model"),
+    S("opponent", 0, "opponent model"),
+    Q("heading_angle", ANG, 0, 0, 0, "relative heading angle [rad]"),
+    Q("motorcycle_speed", VEL, GE, 0, 0, "motorcycle speed [m/s]"),
+    Q("opponent_speed", VEL, GE, 0, 0, "opponent speed [m/s]"),
+    V("motorcycle_contact", LEN, 3, 3, 0, 0, "contact point on the motorcycle [m]"),
+    V("opponent_contact", LEN, 3, 3, 0, 0, "contact point on the opponent [m]"),
+    Q("roll_angle", ANG, 0, 0, 0, "motorcycle roll (lean) angle [rad]"),
+    END,
+};
+static const mcs_smap impact_map = {.what = "impact block", .keys = impact_keys, .open = 1};
+
+/* ---- fe: meshes ---- */
+
+#define MESH_COMMON                                                                                \
+    V("origin", LEN, 3, 3, 0, 0, "translation of the generated mesh [m]")
+
+static const mcs_skey square_tube_keys[] = {
+    Q("side", LEN, REQ | GT, 0, 0, "outer side of the square section [m]"),
+    Q("length", LEN, REQ | GT, 0, 0, "tube length [m]"),
+    Q("element_size", LEN, REQ | GT, 0, 0, "element edge length [m]"),
+    E("axis", CHOICES_AXIS, 0, "tube axis (default z)"),
+    MESH_COMMON,
+    END,
+};
+static const mcs_skey round_tube_keys[] = {
+    Q("radius", LEN, REQ | GT, 0, 0, "mid-surface radius [m]"),
+    Q("length", LEN, REQ | GT, 0, 0, "length [m]"),
+    Q("element_size", LEN, REQ | GT, 0, 0, "element edge length [m]"),
+    E("axis", CHOICES_AXIS, 0, "axis (default z)"),
+    MESH_COMMON,
+    END,
+};
+static const mcs_skey plate_keys[] = {
+    V("size", LEN, 2, 2, REQ | GT, 0, "plate size [m]"),
+    IS("divisions", 2, 2, GE, 1, "elements along each side"),
+    Q("element_size", LEN, GT, 0, 0, "element edge length [m]"),
+    E("normal", CHOICES_AXIS, 0, "plate normal (default z)"),
+    MESH_COMMON,
+    END,
+};
+static const mcs_skey box_keys[] = {
+    V("size", LEN, 3, 3, REQ | GT, 0, "box size [m]"),
+    IS("divisions", 3, 3, REQ | GE, 1, "hex8 elements along x, y, z"),
+    MESH_COMMON,
+    END,
+};
+static const mcs_skey sphere_keys[] = {
+    Q("radius", LEN, REQ | GT, 0, 0, "radius [m]"),
+    Q("element_size", LEN, REQ | GT, 0, 0, "element edge length [m]"),
+    MESH_COMMON,
+    END,
+};
+static const mcs_skey keyword_keys[] = {
+    /* an LS-DYNA keyword file, relative to the YAML file that names it */
+    S("keyword", REQ | NE, "LS-DYNA keyword file (or give generate:)"),
+    I("part", REQ | GE, 1, 0, "part ID in the keyword file"),
+    END,
+};
+static const mcs_smap square_tube_map = {.what = "square_tube mesh", .keys = square_tube_keys};
+static const mcs_smap circular_tube_map = {.what = "circular_tube mesh", .keys = round_tube_keys};
+static const mcs_smap cylinder_shell_map = {.what = "cylinder_shell mesh", .keys = round_tube_keys};
+static const mcs_smap plate_map = {.what = "plate mesh", .keys = plate_keys,
+                                   .check = mcs_rule_plate};
+static const mcs_smap box_map = {.what = "box mesh", .keys = box_keys};
+static const mcs_smap sphere_shell_map = {.what = "sphere_shell mesh", .keys = sphere_keys};
+static const mcs_smap keyword_map = {.what = "keyword mesh", .keys = keyword_keys};
+/* "(keyword)": chosen when generate: is absent, never by name */
+static const mcs_svariant mesh_variants[] = {
+    {"square_tube", &square_tube_map}, {"circular_tube", &circular_tube_map},
+    {"cylinder_shell", &cylinder_shell_map}, {"plate", &plate_map}, {"box", &box_map},
+    {"sphere_shell", &sphere_shell_map}, {"(keyword)", &keyword_map}, {0}};
+static const mcs_skey mesh_keys[] = {D("generate", "mesh generator"), END};
+static const mcs_smap mesh_map = {.what = "mesh", .keys = mesh_keys, .disc = "generate",
+                                  .variants = mesh_variants, .disc_default = "(keyword)"};
+
+/* ---- fe: sections and materials ---- */
+
+static const mcs_skey shell_keys[] = {
+    Q("thickness", LEN, REQ | GT, 0, 0, "shell thickness [m]"),
+    /* through-thickness points (LS-DYNA NIP); default 5 */
+    I("integration_points", GE | LE, 1, 10, "through-thickness integration points"),
+    END,
+};
+static const mcs_skey membrane_keys[] = {
+    Q("thickness", LEN, REQ | GT, 0, 0, "membrane thickness [m]"),
+    END,
+};
+static const mcs_skey truss_keys[] = {
+    Q("area", MCS_DIM_AREA, REQ | GT, 0, 0, "cross-section area [m^2]"),
+    END,
+};
+static const mcs_smap shell_map = {.what = "shell section", .keys = shell_keys};
+static const mcs_smap membrane_map = {.what = "membrane section", .keys = membrane_keys};
+static const mcs_smap solid_map = {.what = "solid section", .keys = no_keys};
+static const mcs_smap truss_map = {.what = "truss section", .keys = truss_keys};
+static const mcs_svariant section_variants[] = {{"shell", &shell_map}, {"solid", &solid_map},
+                                                {"membrane", &membrane_map}, {"truss", &truss_map},
+                                                {0}};
+static const mcs_skey section_keys[] = {D("type", "section type"), END};
+static const mcs_smap section_map = {.what = "section", .keys = section_keys, .disc = "type",
+                                     .variants = section_variants};
+
+#define ELASTIC_KEYS                                                                               \
+    Q("youngs_modulus", PRS, REQ | GT, 0, 0, "Young's modulus [Pa]"),                              \
+        Q("poisson", NONE, REQ | GT | LT, -1, 0.5, "Poisson's ratio")
+
+static const mcs_skey elastic_keys[] = {ELASTIC_KEYS, END};
+static const mcs_skey plastic_keys[] = {
+    ELASTIC_KEYS,
+    Q("yield_stress", PRS, REQ | GT, 0, 0, "initial yield stress [Pa]"),
+    /* true stress vs. effective plastic strain (LS-DYNA *MAT_024 LCSS) */
+    C("hardening", NONE, PRS, 1, GE, 0, "hardening curve [[plastic strain, stress Pa], ...]"),
+    Q("tangent_modulus", PRS, GE, 0, 0, "bilinear hardening modulus [Pa] (without a curve)"),
+    Q("failure_strain", NONE, GT, 0, 0, "effective plastic strain at erosion"),
+    END,
+};
+static const mcs_skey foam_keys[] = {
+    /* crushable foam (LS-DYNA *MAT_063 style): stress vs. volumetric strain, E for unloading */
+    Q("youngs_modulus", PRS, REQ | GT, 0, 0, "unloading modulus [Pa]"),
+    Q("poisson", NONE, GE | LT, 0, 0.5, "Poisson's ratio (default 0)"),
+    C("stress_strain", NONE, PRS, 2, REQ | GE, 0, "[[volumetric strain, stress Pa], ...]"),
+    Q("damping", NONE, GE | LE, 0, 1, "viscous damping fraction"),
+    END,
+};
+static const mcs_skey fabric_keys[] = {ELASTIC_KEYS, END};
+static const mcs_skey rigid_keys[] = {ELASTIC_KEYS, END};
+static const mcs_smap elastic_map = {.what = "elastic material", .keys = elastic_keys};
+static const mcs_smap plastic_map = {.what = "elastic_plastic material", .keys = plastic_keys,
+                                     .check = mcs_rule_plastic};
+static const mcs_smap foam_map = {.what = "foam material", .keys = foam_keys};
+static const mcs_smap fabric_map = {.what = "fabric material", .keys = fabric_keys};
+static const mcs_smap rigid_map = {.what = "rigid material", .keys = rigid_keys};
+static const mcs_svariant material_variants[] = {
+    {"elastic", &elastic_map}, {"elastic_plastic", &plastic_map}, {"foam", &foam_map},
+    {"fabric", &fabric_map},   {"rigid", &rigid_map},             {0}};
+static const mcs_skey material_keys[] = {
+    D("model", "material model"),
+    Q("density", MCS_DIM_DENSITY, REQ | GT, 0, 0, "density [kg/m^3]"),
+    END,
+};
+static const mcs_smap material_map = {.what = "material", .keys = material_keys,
+                                      .disc = "model", .variants = material_variants};
+
+/* ---- fe: parts, boundary, rigid walls, contacts ---- */
+
+static const mcs_skey part_keys[] = {
+    S("name", REQ | UNIQ | NE, "part name"),
+    M("mesh", mesh_map, REQ, "mesh (generate: or keyword:)"),
+    M("section", section_map, REQ, "section"),
+    M("material", material_map, REQ, "material"),
+    V("initial_velocity", VEL, 3, 3, 0, 0, "initial velocity [m/s]"),
+    END,
+};
+static const mcs_smap part_map = {.what = "FE part", .keys = part_keys};
+
+static const mcs_skey boundary_keys[] = {
+    R("part", PART, REQ, "FE part"),
+    E("where", "x_min|x_max|y_min|y_max|z_min|z_max|all", REQ, "which nodes of the part"),
+    /* degrees of freedom held: all = translations and rotations */
+    E("fix", "all|translations|rotations|x|y|z|xy|yz|xz", 0, "fixed degrees of freedom"),
+    Q("tolerance", LEN, GE, 0, 0, "distance from the extreme that still counts [m]"),
+    END,
+};
+static const mcs_smap boundary_map = {.what = "boundary condition", .keys = boundary_keys};
+
+static const mcs_skey wall_keys[] = {
+    S("name", REQ | UNIQ | NE, "wall name"),
+    V("point", LEN, 3, 3, REQ, 0, "a point of the wall [m]"),
+    V("normal", NONE, 3, 3, REQ | NZ, 0, "normal, pointing to the side it stops"),
+    V("velocity", VEL, 3, 3, 0, 0, "prescribed velocity [m/s] (default fixed)"),
+    Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
+    V("size", LEN, 2, 2, GT, 0, "extent of a finite wall [m] (default infinite)"),
+    END,
+};
+static const mcs_smap wall_map = {.what = "rigid wall", .keys = wall_keys};
+
+static const mcs_skey single_surface_keys[] = {
+    RS("parts", PART, 1, REQ, "parts in contact with themselves and each other"),
+    END,
+};
+static const mcs_skey two_surface_keys[] = {
+    RS("a", PART, 1, REQ, "first side (slave, LS-DYNA terms)"),
+    RS("b", PART, 1, REQ, "second side (master)"),
+    END,
+};
+static const mcs_smap single_surface_map = {.what = "single_surface contact",
+                                            .keys = single_surface_keys};
+static const mcs_smap s2s_map = {.what = "surface_to_surface contact", .keys = two_surface_keys};
+static const mcs_smap n2s_map = {.what = "node_to_surface contact", .keys = two_surface_keys};
+static const mcs_svariant fe_contact_variants[] = {{"single_surface", &single_surface_map},
+                                                   {"surface_to_surface", &s2s_map},
+                                                   {"node_to_surface", &n2s_map},
+                                                   {0}};
+static const mcs_skey fe_contact_keys[] = {
+    D("type", "contact type"),
+    S("name", 0, "contact name"),
+    Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
+    /* penalty stiffness scale (LS-DYNA SLSFAC), default 0.1 */
+    Q("penalty_scale", NONE, GT, 0, 0, "penalty stiffness scale factor"),
+    END,
+};
+static const mcs_smap fe_contact_map = {.what = "FE contact", .keys = fe_contact_keys,
+                                        .disc = "type", .variants = fe_contact_variants};
+
+static const mcs_skey fe_keys[] = {
+    L("parts", part_map, REQ | NE, "FE parts"),
+    L("boundary", boundary_map, 0, "boundary conditions"),
+    L("rigid_walls", wall_map, 0, "rigid walls"),
+    L("contacts", fe_contact_map, 0, "FE contacts"),
+    END,
+};
+static const mcs_smap fe_map = {.what = "fe block", .keys = fe_keys};
+
+/* ---- the root ---- */
+
+static const mcs_skey root_keys[] = {
+    I("mcrash", REQ, 0, 0, "schema version (1)"),
+    S("name", 0, "scenario name"),
+    S("description", 0, "free text"),
+    A("include", 0, "files to include (resolved before validation)"),
+    /* no simulation block: a model file (scenarios/models/), checked but not runnable */
+    M("simulation", sim_map, 0, "simulation block"),
+    M("environment", env_map, 0, "environment block"),
+    NM("characteristics", char_map, 0, "named characteristics"),
+    L("bodies", body_map, 0, "rigid bodies"),
+    L("contacts", contact_map, 0, "contacts between bodies"),
+    L("joints", joint_map, 0, "joints"),
+    L("attachments", attachment_map, 0, "breakable attachments"),
+    L("sensors", sensor_map, 0, "sensors"),
+    M("impact", impact_map, 0, "impact configuration"),
+    M("fe", fe_map, 0, "FE block"),
+    END,
+};
+const mcs_smap mcs_schema_root = {.what = "scenario", .keys = root_keys,
+                                  .check = mcs_rule_root};

@@ -19,7 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define FE_GASBAG_SUB_MAX 4096 /* most sub-steps per half step before giving up */
+#define FE_GASBAG_SUB_MAX 4096  /* most sub-steps per half step before giving up */
 #define FE_GASBAG_SUB_FRAC 0.02 /* sub-step as a fraction of the mass turnover time */
 
 fe_gasbag_desc fe_gasbag_desc_default(void)
@@ -51,19 +51,19 @@ static mcs_status check_desc(const char *name, const fe_gasbag_desc *d, mcs_erro
                        FE_GASBAG_TABLE_MAX);
     for (int i = 0; i < d->ninflator; i++) {
         if (!(d->inflator_mass_flow[i] >= 0.0 && isfinite(d->inflator_mass_flow[i])))
-            return MCS_ERR(err, MCS_ERR_RANGE, "%s: inflator mass flow point %d: %g kg/s < 0",
-                           name, i, d->inflator_mass_flow[i]);
+            return MCS_ERR(err, MCS_ERR_RANGE, "%s: inflator mass flow point %d: %g kg/s < 0", name,
+                           i, d->inflator_mass_flow[i]);
         if (!(d->inflator_temperature[i] > 0.0 && isfinite(d->inflator_temperature[i])))
-            return MCS_ERR(err, MCS_ERR_RANGE, "%s: inflator temperature point %d: %g K <= 0",
-                           name, i, d->inflator_temperature[i]);
+            return MCS_ERR(err, MCS_ERR_RANGE, "%s: inflator temperature point %d: %g K <= 0", name,
+                           i, d->inflator_temperature[i]);
     }
     if (d->nvent < 0 || d->nvent > FE_GASBAG_VENT_MAX)
         return MCS_ERR(err, MCS_ERR_RANGE, "%s: %d vents (0..%d)", name, d->nvent,
                        FE_GASBAG_VENT_MAX);
     for (int i = 0; i < d->nvent; i++) {
         const fe_gasbag_vent *v = &d->vent[i];
-        if (!(v->area >= 0.0 && v->discharge_coefficient > 0.0 &&
-              v->discharge_coefficient <= 1.0 && v->open_pressure >= 0.0))
+        if (!(v->area >= 0.0 && v->discharge_coefficient > 0.0 && v->discharge_coefficient <= 1.0 &&
+              v->open_pressure >= 0.0))
             return MCS_ERR(err, MCS_ERR_RANGE,
                            "%s: vent %d: area %g m^2 >= 0, discharge coefficient %g in (0, 1], "
                            "open pressure %g Pa >= 0 required",
@@ -78,16 +78,14 @@ static mcs_status check_desc(const char *name, const fe_gasbag_desc *d, mcs_erro
     return MCS_OK;
 }
 
-mcs_status fe_gasbag_model_create(const char *name, const fe_gasbag_desc *d,
-                                  fe_gasbag_model **out, mcs_error *err)
+mcs_status fe_gasbag_model_create(const char *name, const fe_gasbag_desc *d, fe_gasbag_model **out,
+                                  mcs_error *err)
 {
     *out = NULL;
     mcs_status st = check_desc(name, d, err);
-    if (st != MCS_OK)
-        return st;
+    if (st != MCS_OK) return st;
     fe_gasbag_model *m = calloc(1, sizeof(*m));
-    if (!m)
-        return MCS_ERR(err, MCS_ERR_NOMEM, "%s: gas bag model", name);
+    if (!m) return MCS_ERR(err, MCS_ERR_NOMEM, "%s: gas bag model", name);
     snprintf(m->name, sizeof(m->name), "%s", name);
     double g = d->gamma;
     m->gamma = g;
@@ -113,9 +111,8 @@ mcs_status fe_gasbag_model_create(const char *name, const fe_gasbag_desc *d,
                               MCS_EXTRAP_CONSTANT, MCS_EXTRAP_CONSTANT, &m->mass_flow, err);
         if (st == MCS_OK) {
             snprintf(cname, sizeof(cname), "%s inflator temperature", name);
-            st = mcs_curve_create(cname, d->ninflator, d->inflator_time,
-                                  d->inflator_temperature, MCS_EXTRAP_CONSTANT,
-                                  MCS_EXTRAP_CONSTANT, &m->temperature, err);
+            st = mcs_curve_create(cname, d->ninflator, d->inflator_time, d->inflator_temperature,
+                                  MCS_EXTRAP_CONSTANT, MCS_EXTRAP_CONSTANT, &m->temperature, err);
         }
         if (st != MCS_OK) {
             fe_gasbag_model_destroy(&m);
@@ -128,19 +125,17 @@ mcs_status fe_gasbag_model_create(const char *name, const fe_gasbag_desc *d,
 
 void fe_gasbag_model_destroy(fe_gasbag_model **p)
 {
-    if (!p || !*p)
-        return;
+    if (!p || !*p) return;
     mcs_curve_destroy(&(*p)->mass_flow);
     mcs_curve_destroy(&(*p)->temperature);
     free(*p);
     *p = NULL;
 }
 
-double fe_gasbag_orifice_flow(const fe_gasbag_model *m, double cd_area, double p_up,
-                              double T_up, double p_down)
+double fe_gasbag_orifice_flow(const fe_gasbag_model *m, double cd_area, double p_up, double T_up,
+                              double p_down)
 {
-    if (!(cd_area > 0.0) || !(p_up > p_down) || !(T_up > 0.0))
-        return 0.0;
+    if (!(cd_area > 0.0) || !(p_up > p_down) || !(T_up > 0.0)) return 0.0;
     double g = m->gamma, r = p_down / p_up, psi;
     /* isentropic nozzle: m_dot = Cd A p0 / sqrt(R T0) psi(r); choked psi is constant */
     if (r <= m->crit_ratio)
@@ -159,14 +154,13 @@ typedef struct {
 } gb_work;
 
 /* outflow rates at (mass, U, V): vent and leak mass flows [kg/s] */
-void fe_gasbag_outflow_(const fe_gasbag_model *m, unsigned open, double area, double mass,
-                    double U, double V, double *mv, double *ml)
+void fe_gasbag_outflow_(const fe_gasbag_model *m, unsigned open, double area, double mass, double U,
+                        double V, double *mv, double *ml)
 {
     double T = U / (mass * m->cv), p = (m->gamma - 1.0) * U / V;
     double cda = 0.0;
     for (int i = 0; i < m->nvent; i++)
-        if (open & (1u << i))
-            cda += m->vent[i].discharge_coefficient * m->vent[i].area;
+        if (open & (1u << i)) cda += m->vent[i].discharge_coefficient * m->vent[i].area;
     *mv = fe_gasbag_orifice_flow(m, cda, p, T, m->ambient_pressure);
     double la = m->leak_cd * (m->leak_area + m->leak_porosity * area);
     *ml = fe_gasbag_orifice_flow(m, la, p, T, m->ambient_pressure);
@@ -177,8 +171,7 @@ void fe_gasbag_inflow_(const fe_gasbag_model *m, double t, double *mdot, double 
 {
     *mdot = 0.0;
     *Tin = m->ambient_temperature;
-    if (!m->mass_flow || t < m->fire_time)
-        return;
+    if (!m->mass_flow || t < m->fire_time) return;
     *mdot = mcs_curve_eval(m->mass_flow, t - m->fire_time);
     *Tin = mcs_curve_eval(m->temperature, t - m->fire_time);
 }
@@ -188,10 +181,8 @@ void fe_gasbag_inflow_(const fe_gasbag_model *m, double t, double *mdot, double 
 static void inflow_amounts(const fe_gasbag_model *m, double a, double b, double *dm, double *dh)
 {
     *dm = *dh = 0.0;
-    if (!m->mass_flow || b <= m->fire_time)
-        return;
-    if (a < m->fire_time)
-        a = m->fire_time;
+    if (!m->mass_flow || b <= m->fire_time) return;
+    if (a < m->fire_time) a = m->fire_time;
     *dm = mcs_curve_integral(m->mass_flow, a - m->fire_time, b - m->fire_time);
     double q[3];
     for (int k = 0; k < 3; k++) {
@@ -203,8 +194,8 @@ static void inflow_amounts(const fe_gasbag_model *m, double a, double b, double 
 }
 
 /* one Heun step of the exchange at fixed V over [t, t + h]; 0 ok, -1 mass or energy <= 0 */
-static int heun(const fe_gasbag_model *m, unsigned open, double area, double V, double t,
-                double h, gb_work *w)
+static int heun(const fe_gasbag_model *m, unsigned open, double area, double V, double t, double h,
+                gb_work *w)
 {
     double dm_in, dh_in, mv0, ml0, mv1, ml1;
     inflow_amounts(m, t, t + h, &dm_in, &dh_in);
@@ -212,16 +203,14 @@ static int heun(const fe_gasbag_model *m, unsigned open, double area, double V, 
     fe_gasbag_outflow_(m, open, area, w->mass, w->energy, V, &mv0, &ml0);
     double m1 = w->mass + dm_in - h * (mv0 + ml0);
     double U1 = w->energy + dh_in - h * (mv0 + ml0) * m->cp * T0;
-    if (!(m1 > 0.0 && U1 > 0.0))
-        return -1;
+    if (!(m1 > 0.0 && U1 > 0.0)) return -1;
     double T1 = U1 / (m1 * m->cv);
     fe_gasbag_outflow_(m, open, area, m1, U1, V, &mv1, &ml1);
     double dmv = 0.5 * h * (mv0 + mv1), dml = 0.5 * h * (ml0 + ml1);
     double dev = 0.5 * h * m->cp * (mv0 * T0 + mv1 * T1);
     double del = 0.5 * h * m->cp * (ml0 * T0 + ml1 * T1);
     double mn = w->mass + dm_in - dmv - dml, Un = w->energy + dh_in - dev - del;
-    if (!(mn > 0.0 && Un > 0.0))
-        return -1;
+    if (!(mn > 0.0 && Un > 0.0)) return -1;
     w->mass = mn;
     w->energy = Un;
     w->mass_in += dm_in, w->energy_in += dh_in;
@@ -247,8 +236,7 @@ static int substeps(const fe_gasbag_model *m, unsigned open, double area, double
 static int exchange(const fe_gasbag_model *m, unsigned open, double area, double V, double t,
                     double h, gb_work *w, int *nsub)
 {
-    if (h <= 0.0)
-        return 0;
+    if (h <= 0.0) return 0;
     for (int n = substeps(m, open, area, V, t, h, w); n <= FE_GASBAG_SUB_MAX; n *= 4) {
         gb_work trial = *w;
         int ok = 1;
@@ -266,36 +254,51 @@ static int exchange(const fe_gasbag_model *m, unsigned open, double area, double
 unsigned fe_gasbag_latch_vents_(const fe_gasbag_model *m, unsigned open, double p)
 {
     for (int i = 0; i < m->nvent; i++)
-        if (p - m->ambient_pressure >= m->vent[i].open_pressure)
-            open |= 1u << i;
+        if (p - m->ambient_pressure >= m->vent[i].open_pressure) open |= 1u << i;
     return open;
+}
+
+mcs_status fe_gasbag_state_init_gas(const fe_gasbag_model *m, fe_gasbag_state *s, double t,
+                                    double volume, double area, double pressure, double temperature,
+                                    mcs_error *err)
+{
+    if (!(volume > 0.0 && isfinite(volume)) || !(area >= 0.0 && isfinite(area)) || !isfinite(t))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "%s: initial volume %g m^3 must be > 0 and area %g m^2 >= 0 (is the "
+                       "surface oriented outward?)",
+                       m->name, volume, area);
+    if (!(pressure > 0.0 && isfinite(pressure) && temperature > 0.0 && isfinite(temperature)))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "%s: initial pressure %g Pa and temperature %g K "
+                       "must be > 0",
+                       m->name, pressure, temperature);
+    memset(s, 0, sizeof(*s));
+    s->time = t;
+    s->volume = volume;
+    s->area = area;
+    s->temperature = temperature;
+    s->pressure = pressure;
+    s->mass = pressure * volume / (m->gas_constant * temperature);
+    s->energy = s->mass * m->cv * temperature;
+    s->mass0 = s->mass;
+    s->energy0 = s->energy;
+    s->vent_open = fe_gasbag_latch_vents_(m, 0, s->pressure);
+    fe_gasbag_outflow_(m, s->vent_open, area, s->mass, s->energy, volume, &s->mass_flow_vent,
+                       &s->mass_flow_leak);
+    double Tin;
+    fe_gasbag_inflow_(m, t, &s->mass_flow_in, &Tin);
+    return MCS_OK;
 }
 
 mcs_status fe_gasbag_state_init(const fe_gasbag_model *m, fe_gasbag_state *s, double t,
                                 double volume, double area, mcs_error *err)
 {
-    if (!(volume > 0.0 && isfinite(volume)) || !(area >= 0.0 && isfinite(area)) ||
-        !isfinite(t))
-        return MCS_ERR(err, MCS_ERR_RANGE,
-                       "%s: initial volume %g m^3 must be > 0 and area %g m^2 >= 0 (is the "
-                       "surface oriented outward?)",
-                       m->name, volume, area);
-    memset(s, 0, sizeof(*s));
-    s->time = t;
-    s->volume = volume;
-    s->area = area;
-    s->temperature = m->ambient_temperature;
-    s->pressure = m->ambient_pressure;
-    s->mass = m->ambient_pressure * volume / (m->gas_constant * m->ambient_temperature);
-    s->energy = s->mass * m->cv * s->temperature;
-    s->mass0 = s->mass;
-    s->energy0 = s->energy;
-    s->vent_open = fe_gasbag_latch_vents_(m, 0, s->pressure);
-    return MCS_OK;
+    return fe_gasbag_state_init_gas(m, s, t, volume, area, m->ambient_pressure,
+                                    m->ambient_temperature, err);
 }
 
-mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, double dt,
-                             double volume, double area, mcs_error *err)
+mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, double dt, double volume,
+                             double area, mcs_error *err)
 {
     if (!(dt >= 0.0 && isfinite(dt)) || !(volume > 0.0 && isfinite(volume)) ||
         !(area >= 0.0 && isfinite(area)))
@@ -308,18 +311,15 @@ mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, doubl
     unsigned open = fe_gasbag_latch_vents_(m, s->vent_open, s->pressure);
     int nsub = 0;
     /* half the exchange at the old volume */
-    if (exchange(m, open, s->area, s->volume, s->time, 0.5 * dt, &w, &nsub) != 0)
-        goto fail;
+    if (exchange(m, open, s->area, s->volume, s->time, 0.5 * dt, &w, &nsub) != 0) goto fail;
     /* isentropic volume change: U V^(gamma-1) constant; the gas does the work lost by U */
     double U_before = w.energy;
     w.energy *= pow(s->volume / volume, m->gamma - 1.0);
     double work = U_before - w.energy;
     open = fe_gasbag_latch_vents_(m, open, (m->gamma - 1.0) * w.energy / volume);
     /* the other half at the new volume */
-    if (exchange(m, open, area, volume, s->time + 0.5 * dt, 0.5 * dt, &w, &nsub) != 0)
-        goto fail;
-    if (!(isfinite(w.energy) && w.energy > 0.0 && w.mass > 0.0))
-        goto fail;
+    if (exchange(m, open, area, volume, s->time + 0.5 * dt, 0.5 * dt, &w, &nsub) != 0) goto fail;
+    if (!(isfinite(w.energy) && w.energy > 0.0 && w.mass > 0.0)) goto fail;
     s->time += dt;
     s->volume = volume;
     s->area = area;
@@ -336,7 +336,7 @@ mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, doubl
     double Tin;
     fe_gasbag_inflow_(m, s->time, &s->mass_flow_in, &Tin);
     fe_gasbag_outflow_(m, s->vent_open, area, s->mass, s->energy, volume, &s->mass_flow_vent,
-            &s->mass_flow_leak);
+                       &s->mass_flow_leak);
     return MCS_OK;
 fail:
     return MCS_ERR(err, MCS_ERR_NUMERIC,
@@ -352,6 +352,5 @@ double fe_gasbag_gauge_pressure(const fe_gasbag_model *m, const fe_gasbag_state 
 
 double fe_gasbag_energy_residual(const fe_gasbag_state *s)
 {
-    return s->energy - s->energy0 -
-           (s->energy_in - s->energy_vent - s->energy_leak - s->work);
+    return s->energy - s->energy0 - (s->energy_in - s->energy_vent - s->energy_leak - s->work);
 }

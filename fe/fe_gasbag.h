@@ -21,55 +21,55 @@
 #include "core/mcs_curve.h"
 #include "core/mcs_error.h"
 
-#define FE_GASBAG_VENT_MAX 8    /* most vents (exhaust holes) per bag  */
-#define FE_GASBAG_TABLE_MAX 64  /* most points in an inflator table     */
+#define FE_GASBAG_VENT_MAX 8   /* most vents (exhaust holes) per bag  */
+#define FE_GASBAG_TABLE_MAX 64 /* most points in an inflator table     */
 
 typedef struct {
-    double area;                   /* orifice area [m^2]                                     */
-    double discharge_coefficient;  /* C_d, effective / geometric area (0, 1] [-]             */
-    double open_pressure;          /* gauge pressure that opens the vent (latched); 0 = open
-                                      from the start [Pa]                                     */
+    double area;                  /* orifice area [m^2]                                     */
+    double discharge_coefficient; /* C_d, effective / geometric area (0, 1] [-]             */
+    double open_pressure;         /* gauge pressure that opens the vent (latched); 0 = open
+                                     from the start [Pa]                                     */
 } fe_gasbag_vent;
 
 /* what a bag is (the scenario keys map one to one) */
 typedef struct {
-    double gamma;                  /* cp / cv of the gas [-] (1.4)                           */
-    double gas_constant;           /* specific gas constant R = R_u / M [J/(kg K)] (287.05)  */
-    double fire_time;              /* inflator firing time [s] (0)                           */
-    int ninflator;                 /* points in the inflator tables (>= 1; 0 = no inflator)  */
-    double inflator_time[FE_GASBAG_TABLE_MAX];      /* time since firing [s] (ninflator)     */
-    double inflator_mass_flow[FE_GASBAG_TABLE_MAX]; /* mass flow into the bag [kg/s]         */
+    double gamma;        /* cp / cv of the gas [-] (1.4)                           */
+    double gas_constant; /* specific gas constant R = R_u / M [J/(kg K)] (287.05)  */
+    double fire_time;    /* inflator firing time [s] (0)                           */
+    int ninflator;       /* points in the inflator tables (>= 1; 0 = no inflator)  */
+    double inflator_time[FE_GASBAG_TABLE_MAX];        /* time since firing [s] (ninflator)     */
+    double inflator_mass_flow[FE_GASBAG_TABLE_MAX];   /* mass flow into the bag [kg/s]         */
     double inflator_temperature[FE_GASBAG_TABLE_MAX]; /* gas temperature at inflow [K]       */
-    int nvent;                     /* vents in use [-]                                       */
+    int nvent; /* vents in use [-]                                       */
     fe_gasbag_vent vent[FE_GASBAG_VENT_MAX];
-    double leak_area;              /* fabric and seam leakage, effective area [m^2] (0)      */
-    double leak_porosity;          /* leakage area per fabric area (scales with the current
-                                      surface area) [-] (0)                                  */
+    double leak_area;                  /* fabric and seam leakage, effective area [m^2] (0)      */
+    double leak_porosity;              /* leakage area per fabric area (scales with the current
+                                          surface area) [-] (0)                                  */
     double leak_discharge_coefficient; /* C_d of the leakage [-] (1)                         */
-    double ambient_pressure;       /* [Pa] (101325)                                          */
-    double ambient_temperature;    /* also the initial gas temperature [K] (293.15)          */
+    double ambient_pressure;           /* [Pa] (101325)                                          */
+    double ambient_temperature;        /* also the initial gas temperature [K] (293.15)          */
 } fe_gasbag_desc;
 
 fe_gasbag_desc fe_gasbag_desc_default(void);
 
 /* the immutable, validated bag */
 typedef struct {
-    char name[64];                 /* used in messages                                       */
-    double gamma;                  /* [-]                                                    */
-    double gas_constant;           /* R [J/(kg K)]                                           */
-    double cv, cp;                 /* specific heats R/(gamma-1), gamma R/(gamma-1) [J/(kg K)] */
-    double fire_time;              /* [s]                                                    */
-    mcs_curve *mass_flow;          /* inflator mass flow vs. time since firing [kg/s]; NULL none */
-    mcs_curve *temperature;        /* inflator gas temperature vs. time since firing [K]     */
-    int nvent;                     /* [-]                                                    */
+    char name[64];          /* used in messages                                       */
+    double gamma;           /* [-]                                                    */
+    double gas_constant;    /* R [J/(kg K)]                                           */
+    double cv, cp;          /* specific heats R/(gamma-1), gamma R/(gamma-1) [J/(kg K)] */
+    double fire_time;       /* [s]                                                    */
+    mcs_curve *mass_flow;   /* inflator mass flow vs. time since firing [kg/s]; NULL none */
+    mcs_curve *temperature; /* inflator gas temperature vs. time since firing [K]     */
+    int nvent;              /* [-]                                                    */
     fe_gasbag_vent vent[FE_GASBAG_VENT_MAX];
-    double leak_area;              /* [m^2]                                                  */
-    double leak_porosity;          /* [-]                                                    */
-    double leak_cd;                /* [-]                                                    */
-    double ambient_pressure;       /* [Pa]                                                   */
-    double ambient_temperature;    /* [K]                                                    */
-    double crit_ratio;             /* p_amb / p below which orifices choke [-]               */
-    double psi_choked;             /* choked flow function sqrt(g) (2/(g+1))^((g+1)/(2(g-1))) [-] */
+    double leak_area;           /* [m^2]                                                  */
+    double leak_porosity;       /* [-]                                                    */
+    double leak_cd;             /* [-]                                                    */
+    double ambient_pressure;    /* [Pa]                                                   */
+    double ambient_temperature; /* [K]                                                    */
+    double crit_ratio;          /* p_amb / p below which orifices choke [-]               */
+    double psi_choked;          /* choked flow function sqrt(g) (2/(g+1))^((g+1)/(2(g-1))) [-] */
 } fe_gasbag_model;
 
 /* what changes: the gas, and running totals for the energy balance */
@@ -93,21 +93,25 @@ typedef struct {
     int nsub;                      /* sub-steps taken by the last advance [-]                */
 } fe_gasbag_state;
 
-mcs_status fe_gasbag_model_create(const char *name, const fe_gasbag_desc *d,
-                                  fe_gasbag_model **out, mcs_error *err);
+mcs_status fe_gasbag_model_create(const char *name, const fe_gasbag_desc *d, fe_gasbag_model **out,
+                                  mcs_error *err);
 void fe_gasbag_model_destroy(fe_gasbag_model **p);
 
 /* the bag at time t holding ambient gas in volume [m^3] with fabric area [m^2] */
 mcs_status fe_gasbag_state_init(const fe_gasbag_model *m, fe_gasbag_state *s, double t,
                                 double volume, double area, mcs_error *err);
+/* the same holding gas at pressure [Pa] and temperature [K] (a pre-pressurised bag) */
+mcs_status fe_gasbag_state_init_gas(const fe_gasbag_model *m, fe_gasbag_state *s, double t,
+                                    double volume, double area, double pressure, double temperature,
+                                    mcs_error *err);
 
 /* advance from s->time to s->time + dt while the volume goes linearly to `volume` [m^3] and
  * the fabric area to `area` [m^2]. Strang split: exchange (inflator, vents, leakage) at fixed
  * volume for dt/2, the isentropic volume change (exact: U V^(gamma-1) constant), exchange for
  * dt/2. On failure (non-positive volume, mass or energy, NaN) the state is unchanged and
  * MCS_ERR_NUMERIC names the bag and the time. */
-mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, double dt,
-                             double volume, double area, mcs_error *err);
+mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, double dt, double volume,
+                             double area, mcs_error *err);
 
 /* gauge pressure p - p_amb to apply to the fabric [Pa] */
 double fe_gasbag_gauge_pressure(const fe_gasbag_model *m, const fe_gasbag_state *s);
@@ -117,8 +121,8 @@ double fe_gasbag_energy_residual(const fe_gasbag_state *s);
 
 /* isentropic orifice mass flow [kg/s] from upstream (p_up [Pa], T_up [K]) to p_down [Pa]
  * through cd * area [m^2]; choked below the critical pressure ratio; 0 when p_up <= p_down */
-double fe_gasbag_orifice_flow(const fe_gasbag_model *m, double cd_area, double p_up,
-                              double T_up, double p_down);
+double fe_gasbag_orifice_flow(const fe_gasbag_model *m, double cd_area, double p_up, double T_up,
+                              double p_down);
 
 /* CVODE reference: integrate the balances from s->time to t_end with V(t), dV/dt from `vol`
  * (returns 0 ok, nonzero failure), relative tolerance rtol; vent opening located by CVODE's

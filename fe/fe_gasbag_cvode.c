@@ -40,8 +40,7 @@ static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *ud)
         return -1;
     }
     double mass = Y[Y_M], U = Y[Y_U];
-    if (!(mass > 0.0 && U > 0.0))
-        return 1; /* recoverable: CVODE retries a smaller step */
+    if (!(mass > 0.0 && U > 0.0)) return 1; /* recoverable: CVODE retries a smaller step */
     double T = U / (mass * m->cv), p = (m->gamma - 1.0) * U / V, mdi, Tin, mv, ml;
     fe_gasbag_inflow_(m, t, &mdi, &Tin);
     fe_gasbag_outflow_(m, o->open, o->area, mass, U, V, &mv, &ml);
@@ -69,13 +68,11 @@ static int roots(sunrealtype t, N_Vector y, sunrealtype *g, void *ud)
     }
     double p = (m->gamma - 1.0) * Y[Y_U] / V;
     for (int i = 0; i < m->nvent; i++)
-        g[i] = (o->open & (1u << i)) ? 1.0
-                                     : p - m->ambient_pressure - m->vent[i].open_pressure;
+        g[i] = (o->open & (1u << i)) ? 1.0 : p - m->ambient_pressure - m->vent[i].open_pressure;
     return 0;
 }
 
-static void err_handler(int code, const char *module, const char *function, char *msg,
-                        void *ud)
+static void err_handler(int code, const char *module, const char *function, char *msg, void *ud)
 {
     (void)ud;
     mcs_log(MCS_LOG_DEBUG, "%s %s (%d): %s", module, function, code, msg);
@@ -86,19 +83,17 @@ static double next_stop(const fe_gasbag_model *m, double t, double t_end)
 {
     double ts = t_end;
     if (m->mass_flow) {
-        if (m->fire_time > t && m->fire_time < ts)
-            ts = m->fire_time;
+        if (m->fire_time > t && m->fire_time < ts) ts = m->fire_time;
         for (int i = 0; i < m->mass_flow->n; i++) {
             double tb = m->fire_time + m->mass_flow->x[i];
-            if (tb > t * (1.0 + 1e-14) + 1e-15 && tb < ts)
-                ts = tb;
+            if (tb > t * (1.0 + 1e-14) + 1e-15 && tb < ts) ts = tb;
         }
     }
     return ts;
 }
 
-static void commit(const fe_gasbag_model *m, fe_gasbag_state *s, const gb_ode *o,
-                   const double *Y, double t)
+static void commit(const fe_gasbag_model *m, fe_gasbag_state *s, const gb_ode *o, const double *Y,
+                   double t)
 {
     double V, dV;
     o->vol(t, &V, &dV, o->user);
@@ -133,8 +128,7 @@ static mcs_status run(const fe_gasbag_model *m, fe_gasbag_state *s, double t_end
             int rf[FE_GASBAG_VENT_MAX] = {0};
             CVodeGetRootInfo(cv, rf);
             for (int i = 0; i < m->nvent; i++)
-                if (rf[i])
-                    o->open |= 1u << i;
+                if (rf[i]) o->open |= 1u << i;
         } else if (flag < 0 || o->vol_failed) {
             return MCS_ERR(err, MCS_ERR_NUMERIC, "%s: CVODE failed at t = %.9g s (flag %d%s)",
                            m->name, t, flag, o->vol_failed ? ", volume function" : "");
@@ -154,8 +148,7 @@ mcs_status fe_gasbag_integrate_cvode(const fe_gasbag_model *m, fe_gasbag_state *
     if (!(t_end >= s->time) || !(rtol > 0.0) || !vol)
         return MCS_ERR(err, MCS_ERR_USAGE, "%s: integrate to %g s from %g s, rtol %g", m->name,
                        t_end, s->time, rtol);
-    if (t_end == s->time)
-        return MCS_OK;
+    if (t_end == s->time) return MCS_OK;
     gb_ode o = {m, vol, user, s->area, s->vent_open, 0};
     SUNContext ctx = NULL;
     N_Vector y = NULL, atol = NULL;
@@ -173,9 +166,9 @@ mcs_status fe_gasbag_integrate_cvode(const fe_gasbag_model *m, fe_gasbag_state *
         goto done;
     }
     double *Y = N_VGetArrayPointer(y), *AT = N_VGetArrayPointer(atol);
-    const double init[NY] = {s->mass,      s->energy,      s->mass_in,   s->energy_in,
-                             s->mass_vent, s->energy_vent, s->mass_leak, s->energy_leak,
-                             s->work};
+    const double init[NY] = {s->mass,      s->energy,      s->mass_in,
+                             s->energy_in, s->mass_vent,   s->energy_vent,
+                             s->mass_leak, s->energy_leak, s->work};
     /* absolute tolerances on the scale of each component */
     double mscale = s->mass, escale = s->energy;
     for (int i = 0; i < NY; i++) {
@@ -196,14 +189,10 @@ mcs_status fe_gasbag_integrate_cvode(const fe_gasbag_model *m, fe_gasbag_state *
     st = run(m, s, t_end, &o, cv, y, err);
 done:
     CVodeFree(&cv);
-    if (LS)
-        SUNLinSolFree(LS);
-    if (A)
-        SUNMatDestroy(A);
-    if (y)
-        N_VDestroy(y);
-    if (atol)
-        N_VDestroy(atol);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (y) N_VDestroy(y);
+    if (atol) N_VDestroy(atol);
     SUNContext_Free(&ctx);
     return st;
 }

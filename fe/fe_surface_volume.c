@@ -25,7 +25,10 @@ static inline double dot3(const double *a, const double *b)
 }
 
 /* nodes of face i: 3 or 4 */
-static inline int face_nn(const int *fn) { return fn[3] < 0 ? 3 : 4; }
+static inline int face_nn(const int *fn)
+{
+    return fn[3] < 0 ? 3 : 4;
+}
 
 /* (a-o).((b-o) x (c-o)), six times the signed tetrahedron volume */
 static double triple_o(const double *a, const double *b, const double *c, const double *o)
@@ -46,8 +49,7 @@ static void centroid4(const double *x, const int *fn, double *c)
 
 double fe_surface_volume(int nface, const int *face_node, const double *x)
 {
-    if (nface <= 0)
-        return 0.0;
+    if (nface <= 0) return 0.0;
     /* a point on the surface as origin keeps the tetrahedra small (less cancellation) */
     const double *o = x + 3 * face_node[0];
     double six_v = 0.0;
@@ -186,10 +188,8 @@ typedef struct {
 static int edge_cmp(const void *pa, const void *pb)
 {
     const edge_rec *a = pa, *b = pb;
-    if (a->key != b->key)
-        return a->key < b->key ? -1 : 1;
-    if (a->dir != b->dir)
-        return a->dir < b->dir ? -1 : 1;
+    if (a->key != b->key) return a->key < b->key ? -1 : 1;
+    if (a->dir != b->dir) return a->dir < b->dir ? -1 : 1;
     return a->face - b->face;
 }
 
@@ -218,15 +218,13 @@ mcs_status fe_surface_check(const char *name, int nnode, int nface, const int *f
 {
     if (nface < 4 || nnode < 4)
         return MCS_ERR(err, MCS_ERR_RANGE,
-                       "%s: a closed surface needs at least 4 faces and 4 nodes (got %d, %d)",
-                       name, nface, nnode);
+                       "%s: a closed surface needs at least 4 faces and 4 nodes (got %d, %d)", name,
+                       nface, nnode);
     mcs_status st = check_faces(name, nnode, nface, face_node, err);
-    if (st != MCS_OK)
-        return st;
+    if (st != MCS_OK) return st;
     size_t ne = 0;
     edge_rec *e = malloc(sizeof(*e) * 4 * (size_t)nface);
-    if (!e)
-        return MCS_ERR(err, MCS_ERR_NOMEM, "%s: edge list of %d faces", name, nface);
+    if (!e) return MCS_ERR(err, MCS_ERR_NOMEM, "%s: edge list of %d faces", name, nface);
     for (int i = 0; i < nface; i++) {
         const int *fn = face_node + 4 * i;
         int nn = face_nn(fn);

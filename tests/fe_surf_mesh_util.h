@@ -33,8 +33,7 @@ static inline int sm_midpoint(sm_edge_map *em, sm_mesh *m, int a, int b, double 
     long long lo = a < b ? a : b, hi = a < b ? b : a, k = lo * 1000003LL + hi;
     int h = (int)((unsigned long long)(k * 2654435761ULL) % (unsigned long long)em->cap);
     while (em->key[h] != -1) {
-        if (em->key[h] == k)
-            return em->val[h];
+        if (em->key[h] == k) return em->val[h];
         h = (h + 1) % em->cap;
     }
     int id = m->nnode++;
@@ -80,8 +79,8 @@ static inline sm_mesh sm_icosphere(int level, double r)
         m.face_node[4 * i + 3] = -1;
     }
     for (int l = 0; l < level; l++) {
-        sm_edge_map em = {malloc(sizeof(long long) * 4 * m.nface), malloc(sizeof(int) * 4 * m.nface),
-                          4 * m.nface};
+        sm_edge_map em = {malloc(sizeof(long long) * 4 * m.nface),
+                          malloc(sizeof(int) * 4 * m.nface), 4 * m.nface};
         for (int i = 0; i < em.cap; i++)
             em.key[i] = -1;
         int *nf = malloc(sizeof(int) * 16 * m.nface);
@@ -124,7 +123,7 @@ static inline sm_mesh sm_uvsphere(int nlat, int nlon, double r)
             p[1] = r * sin(th) * sin(ph);
             p[2] = r * cos(th);
         }
-#define SM_RING(j, i) (2 + ((j) - 1) * nlon + ((i) % nlon))
+#define SM_RING(j, i) (2 + ((j)-1) * nlon + ((i) % nlon))
     int f = 0;
     for (int i = 0; i < nlon; i++) {
         int *q = m.face_node + 4 * f++;

@@ -86,8 +86,7 @@ static void test_icosphere_convergence(void)
                 CHECK_NEAR(order_a, 2.0, 0.03);
             }
         }
-        if (level == 5)
-            CHECK(e < 1e-3);
+        if (level == 5) CHECK(e < 1e-3);
         e_prev = e;
         ea_prev = ea;
         sm_free(&m);
@@ -200,8 +199,7 @@ static void test_hemisphere_force(void)
         CHECK_REL(fz, p * poly, 1e-12);
         printf("  hemisphere force, %3d segments: F/(p pi r^2) - 1 = %.3e\n", nlon,
                fz / (p * M_PI * r * r) - 1.0);
-        if (nlon == 256)
-            CHECK_REL(fz, p * M_PI * r * r, 1e-3);
+        if (nlon == 256) CHECK_REL(fz, p * M_PI * r * r, 1e-3);
         /* the whole closed sphere: the pressure forces cancel */
         memset(f, 0, sizeof(double) * 3 * m.nnode);
         fe_surface_pressure_forces(m.nface, m.face_node, m.x, p, f);

@@ -89,6 +89,7 @@ struct mb_world {
     char (*body_name)[64];    /* (max_bodies)  */
     dJointID *joint;          /* (max_joints)  */
     int *joint_type;          /* joint_type (max_joints) */
+    int (*joint_bodies)[2];   /* parent (-1 = world), child (max_joints) */
     dJointFeedback *joint_fb; /* reactions (max_joints) */
     double time;              /* simulated time [s] */
     long steps;               /* dWorldStep calls */
@@ -109,11 +110,12 @@ mcs_status mb_world_create(mb_world **out, int max_bodies, int max_joints, const
         w->body_name = calloc((size_t)max_bodies, sizeof *w->body_name);
         w->joint = calloc((size_t)max_joints + 1, sizeof *w->joint);
         w->joint_type = calloc((size_t)max_joints + 1, sizeof *w->joint_type);
+        w->joint_bodies = calloc((size_t)max_joints + 1, sizeof *w->joint_bodies);
         w->joint_fb = calloc((size_t)max_joints + 1, sizeof *w->joint_fb);
         w->world = dWorldCreate();
     }
-    if (!w || !w->body || !w->body_name || !w->joint || !w->joint_type || !w->joint_fb ||
-        !w->world) {
+    if (!w || !w->body || !w->body_name || !w->joint || !w->joint_type || !w->joint_bodies ||
+        !w->joint_fb || !w->world) {
         if (w) {
             w->max_bodies = max_bodies; /* so destroy can free what exists */
             mb_world_destroy(&w);
@@ -138,6 +140,7 @@ void mb_world_destroy(mb_world **pw)
     mb_world *w = *pw;
     if (w->world) dWorldDestroy(w->world); /* destroys its bodies and joints */
     free(w->body), free(w->body_name), free(w->joint), free(w->joint_type), free(w->joint_fb);
+    free(w->joint_bodies);
     free(w);
     *pw = NULL;
     mb_ode_close();
@@ -333,6 +336,7 @@ static int joint_end(mb_world *w, dJointID j, int type, int parent, int child)
     dJointSetFeedback(j, &w->joint_fb[i]);
     w->joint[i] = j;
     w->joint_type[i] = type;
+    w->joint_bodies[i][0] = parent, w->joint_bodies[i][1] = child;
     return i;
 }
 
@@ -457,4 +461,14 @@ void mb_joint_axis(const mb_world *w, int j, double axis[3])
     if (w->joint_type[j] == J_REVOLUTE) dJointGetHingeAxis(w->joint[j], a);
     if (w->joint_type[j] == J_TRANSLATIONAL) dJointGetSliderAxis(w->joint[j], a);
     axis[0] = a[0], axis[1] = a[1], axis[2] = a[2];
+}
+
+void mb_joint_bodies(const mb_world *w, int j, int *parent, int *child)
+{
+    *parent = w->joint_bodies[j][0], *child = w->joint_bodies[j][1];
+}
+
+int mb_joint_is_spherical(const mb_world *w, int j)
+{
+    return w->joint_type[j] == J_SPHERICAL || w->joint_type[j] == J_UNIVERSAL;
 }

@@ -76,6 +76,11 @@ int mb_joint_fixed(mb_world *w, int parent, int child, mcs_error *err);
  * creation; translational: position [m] and rate [m/s] along the axis */
 double mb_joint_position(const mb_world *w, int j);
 double mb_joint_rate(const mb_world *w, int j);
+/* the bodies a joint connects (parent -1 = the world) */
+void mb_joint_bodies(const mb_world *w, int j, int *parent, int *child);
+/* 1 for spherical and universal joints (restrained by mb_restraint3) */
+int mb_joint_is_spherical(const mb_world *w, int j);
+
 /* a generalised load on a revolute (torque about the axis [N m]) or translational (force along
  * the axis [N]) joint for the next step: +load on the child, -load on the parent. Returns 0, or
  * -1 for other joint types. */

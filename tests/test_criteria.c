@@ -1,6 +1,7 @@
 /* tests for the injury criteria (analysis/an_criteria.h) against closed forms and independent
  * computations; each derivation is in the comment above its test */
 #include "analysis/an_criteria.h"
+#include "analysis/an_limits.h"
 #include "tests/harness.h"
 
 #include <stdlib.h>
@@ -358,6 +359,27 @@ static void test_peaks(void)
     CHECK(k == 1);
 }
 
+/* limits: every row has a positive limit and a source; fractions are value / limit (Fig. 22);
+ * the values REFERENCES.md confirms are the ones marked verified */
+static void test_limits(void)
+{
+    int n;
+    const an_limit *t = an_limits_table(&n);
+    CHECK(n >= 12);
+    for (int i = 0; i < n; i++) {
+        CHECK(t[i].limit > 0);
+        CHECK(t[i].source && strlen(t[i].source) > 5);
+        CHECK(an_limit_find(t[i].key) == &t[i]);
+    }
+    CHECK_NEAR(an_limit_find("hic15")->limit, 700, 0);
+    CHECK(an_limit_find("hic15")->verified);
+    CHECK_NEAR(an_limit_find("hic36")->limit, 1000, 0);
+    CHECK_NEAR(an_limit_fraction("hic15", 350), 0.5, 1e-15);
+    CHECK_NEAR(an_limit_fraction("nij", 0.8), 0.8, 1e-15);
+    CHECK(!an_limit_find("femur_compression")->verified);
+    CHECK(isnan(an_limit_fraction("elbow", 1)));
+}
+
 int main(void)
 {
     RUN(test_hic_constant);
@@ -372,5 +394,6 @@ int main(void)
     RUN(test_vc_polynomial);
     RUN(test_tibia_index);
     RUN(test_peaks);
+    RUN(test_limits);
     TEST_END();
 }

@@ -13,6 +13,7 @@
  * known as a function of time (fe_gasbag_cvode.c), which the tests compare with. */
 #include "fe/fe_gasbag.h"
 #include "fe/fe_gasbag_impl.h"
+#include "fe/fe_surface_volume.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -233,17 +234,22 @@ static int substeps(const fe_gasbag_model *m, unsigned open, double area, double
 }
 
 /* exchange over [t, t + h] at fixed V, sub-cycled; retried with more sub-steps on failure */
-static int exchange(const fe_gasbag_model *m, unsigned open, double area, double V, double t,
+static int exchange(const fe_gasbag_model *m, unsigned *open, double area, double V, double t,
                     double h, gb_work *w, int *nsub)
 {
     if (h <= 0.0) return 0;
-    for (int n = substeps(m, open, area, V, t, h, w); n <= FE_GASBAG_SUB_MAX; n *= 4) {
+    for (int n = substeps(m, *open, area, V, t, h, w); n <= FE_GASBAG_SUB_MAX; n *= 4) {
         gb_work trial = *w;
+        unsigned op = *open;
         int ok = 1;
-        for (int j = 0; j < n && ok; j++)
-            ok = heun(m, open, area, V, t + h * j / n, h / n, &trial) == 0;
+        for (int j = 0; j < n && ok; j++) {
+            /* vents open at the sub-step where the pressure reaches their opening pressure */
+            op = fe_gasbag_latch_vents_(m, op, (m->gamma - 1.0) * trial.energy / V);
+            ok = heun(m, op, area, V, t + h * j / n, h / n, &trial) == 0;
+        }
         if (ok) {
             *w = trial;
+            *open = op;
             *nsub += n;
             return 0;
         }
@@ -311,14 +317,14 @@ mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, doubl
     unsigned open = fe_gasbag_latch_vents_(m, s->vent_open, s->pressure);
     int nsub = 0;
     /* half the exchange at the old volume */
-    if (exchange(m, open, s->area, s->volume, s->time, 0.5 * dt, &w, &nsub) != 0) goto fail;
+    if (exchange(m, &open, s->area, s->volume, s->time, 0.5 * dt, &w, &nsub) != 0) goto fail;
     /* isentropic volume change: U V^(gamma-1) constant; the gas does the work lost by U */
     double U_before = w.energy;
     w.energy *= pow(s->volume / volume, m->gamma - 1.0);
     double work = U_before - w.energy;
     open = fe_gasbag_latch_vents_(m, open, (m->gamma - 1.0) * w.energy / volume);
     /* the other half at the new volume */
-    if (exchange(m, open, area, volume, s->time + 0.5 * dt, 0.5 * dt, &w, &nsub) != 0) goto fail;
+    if (exchange(m, &open, area, volume, s->time + 0.5 * dt, 0.5 * dt, &w, &nsub) != 0) goto fail;
     if (!(isfinite(w.energy) && w.energy > 0.0 && w.mass > 0.0)) goto fail;
     s->time += dt;
     s->volume = volume;
@@ -343,6 +349,20 @@ fail:
                    "%s: at t = %.9g s the gas mass or energy would become <= 0 over a step of "
                    "%g s (volume %g -> %g m^3)",
                    m->name, s->time, dt, s->volume, volume);
+}
+
+mcs_status fe_gasbag_step_surface(const fe_gasbag_model *m, fe_gasbag_state *s, int nface,
+                                  const int *face_node, const double *x, double dt, double *f,
+                                  mcs_error *err)
+{
+    double V = fe_surface_volume(nface, face_node, x);
+    double A = m->leak_porosity > 0.0 ? fe_surface_area(nface, face_node, x) : s->area;
+    if (dt > 0.0 || V != s->volume) {
+        mcs_status st = fe_gasbag_advance(m, s, dt, V, A, err);
+        if (st != MCS_OK) return st;
+    }
+    fe_surface_pressure_forces(nface, face_node, x, fe_gasbag_gauge_pressure(m, s), f);
+    return MCS_OK;
 }
 
 double fe_gasbag_gauge_pressure(const fe_gasbag_model *m, const fe_gasbag_state *s)

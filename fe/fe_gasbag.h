@@ -113,6 +113,15 @@ mcs_status fe_gasbag_state_init_gas(const fe_gasbag_model *m, fe_gasbag_state *s
 mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, double dt, double volume,
                              double area, mcs_error *err);
 
+/* one kernel step of a bag bounded by a closed surface (faces nface x 4, -1 as the 4th index
+ * of a triangle, outward): volume and area at the node positions x (nnode x 3) [m], the gas
+ * advanced over dt [s] to them, and the gauge-pressure forces (p - p_amb) dV/dx added into f
+ * (nnode x 3) [N]. Central-difference centring: call it in the external-force stage with
+ * x = x(t_n) and dt = t_n - t_{n-1} (0 on the first step), so the pressure is that of t_n. */
+mcs_status fe_gasbag_step_surface(const fe_gasbag_model *m, fe_gasbag_state *s, int nface,
+                                  const int *face_node, const double *x, double dt, double *f,
+                                  mcs_error *err);
+
 /* gauge pressure p - p_amb to apply to the fabric [Pa] */
 double fe_gasbag_gauge_pressure(const fe_gasbag_model *m, const fe_gasbag_state *s);
 

@@ -228,7 +228,8 @@ static int substeps(const fe_gasbag_model *m, unsigned open, double area, double
     fe_gasbag_inflow_(m, t, &md0, &T);
     fe_gasbag_inflow_(m, t + h, &md1, &T);
     fe_gasbag_outflow_(m, open, area, w->mass, w->energy, V, &mv, &ml);
-    double rate = (fmax(md0, md1) + mv + ml) / w->mass; /* 1/s */
+    /* inflow enters exactly; it sets the scale through the mass it brings within h */
+    double mdi = fmax(md0, md1), rate = (mdi + mv + ml) / (w->mass + mdi * h); /* 1/s */
     double n = ceil(h * rate / FE_GASBAG_SUB_FRAC);
     return n < 1.0 ? 1 : n > FE_GASBAG_SUB_MAX ? FE_GASBAG_SUB_MAX : (int)n;
 }

@@ -261,7 +261,7 @@ static int vol_bag(double t, double *V, double *dV, void *user)
     return 0;
 }
 
-static double airbag_run(double dt, int verbose)
+static double airbag_run(double dt, double V0, int verbose)
 {
     fe_gasbag_desc d = fe_gasbag_desc_default();
     const double tt[] = {0.0, 0.004, 0.015, 0.030, 0.040};
@@ -282,7 +282,7 @@ static double airbag_run(double dt, int verbose)
     fe_gasbag_model *m = make_bag(&d);
     CHECK(m != NULL);
     if (!m) return 1.0;
-    bag_vol bv = {0.005, 0.06, 0.025, 0.045, 0.08};
+    bag_vol bv = {V0, 0.06, 0.025, 0.045, 0.08};
     fe_gasbag_state s, ref;
     mcs_error err = {0};
     double V, dV;
@@ -290,10 +290,12 @@ static double airbag_run(double dt, int verbose)
     CHECK(fe_gasbag_state_init(m, &s, 0.0, V, 0.8, &err) == MCS_OK);
     ref = s;
     double emax = 0.0, pmax = 0.0, t_vent = -1.0;
+    long nsub = 0;
     const int nstep = (int)(0.1 / dt + 0.5), nout = nstep / 10;
     for (int k = 1; k <= nstep; k++) {
         vol_bag(k * dt, &V, &dV, &bv);
         CHECK(fe_gasbag_advance(m, &s, dt, V, 0.8, &err) == MCS_OK);
+        nsub += s.nsub;
         pmax = fmax(pmax, s.pressure);
         if (t_vent < 0.0 && s.vent_open) t_vent = s.time;
         if (k % nout == 0) {
@@ -309,9 +311,10 @@ static double airbag_run(double dt, int verbose)
                     s.mass_vent * 1e3, s.mass_leak * 1e3);
         }
     }
-    printf("  %g us steps: vents open at %.3f ms; max deviation from CVODE %.2e (of peak gauge "
+    printf("  V0 %g l, %g us steps, %.1f sub-steps/step: vents open at %.3f ms; max deviation from "
+           "CVODE %.2e (of peak gauge "
            "/ mass)\n",
-           dt * 1e6, t_vent * 1e3, emax);
+           V0 * 1e3, dt * 1e6, (double)nsub / nstep, t_vent * 1e3, emax);
     CHECK(s.vent_open == 3u && ref.vent_open == 3u);
     CHECK(t_vent > 0.0);
     CHECK(s.mass_vent > 0.0 && s.mass_leak > 0.0);
@@ -326,15 +329,21 @@ static double airbag_run(double dt, int verbose)
 /* FE-size steps (1 us) */
 static void test_airbag_vs_cvode(void)
 {
-    CHECK(airbag_run(1e-6, 1) < 1e-4);
+    CHECK(airbag_run(1e-6, 0.005, 1) < 1e-4);
 }
 
 /* the same bag with stage-1 (multibody) steps of 0.1 ms and 1 ms: sub-cycling keeps it
  * stable and close to the reference */
 static void test_airbag_coarse_steps(void)
 {
-    CHECK(airbag_run(1e-4, 0) < 2e-3); /* splitting error of the fast 5 -> 60 l opening */
-    CHECK(airbag_run(1e-3, 0) < 1e-2);
+    CHECK(airbag_run(1e-4, 0.005, 0) < 2e-3); /* splitting error of the fast 5 -> 60 l opening */
+    CHECK(airbag_run(1e-3, 0.005, 0) < 1e-2);
+}
+
+/* a folded bag: 10 ml at firing (mass turnover time ~ 10 ns at the start) */
+static void test_airbag_folded(void)
+{
+    CHECK(airbag_run(1e-6, 1e-5, 0) < 1e-4);
 }
 
 /* bad input is rejected with a message; a failing step leaves the state unchanged */
@@ -466,6 +475,7 @@ int main(void)
     RUN(test_orifice_law);
     RUN(test_airbag_vs_cvode);
     RUN(test_airbag_coarse_steps);
+    RUN(test_airbag_folded);
     RUN(test_gas_spring_piston);
     RUN(test_bad_input);
     TEST_END();

@@ -371,6 +371,30 @@ double fe_gasbag_gauge_pressure(const fe_gasbag_model *m, const fe_gasbag_state 
     return s->pressure - m->ambient_pressure;
 }
 
+const char *const fe_gasbag_channel_name[FE_GASBAG_NCHANNEL] = {
+#define FE_GASBAG_X_NAME(name, unit, what) #name,
+    FE_GASBAG_STATE_FIELDS(FE_GASBAG_X_NAME)
+#undef FE_GASBAG_X_NAME
+};
+
+const char *const fe_gasbag_channel_unit[FE_GASBAG_NCHANNEL] = {
+#define FE_GASBAG_X_UNIT(name, unit, what) unit,
+    FE_GASBAG_STATE_FIELDS(FE_GASBAG_X_UNIT)
+#undef FE_GASBAG_X_UNIT
+};
+
+double fe_gasbag_channel(const fe_gasbag_state *s, int channel)
+{
+    switch (channel) {
+#define FE_GASBAG_X_CASE(name, unit, what)                                                         \
+    case FE_GASBAG_CH_##name:                                                                      \
+        return s->name;
+        FE_GASBAG_STATE_FIELDS(FE_GASBAG_X_CASE)
+#undef FE_GASBAG_X_CASE
+    }
+    return NAN;
+}
+
 double fe_gasbag_energy_residual(const fe_gasbag_state *s)
 {
     return s->energy - s->energy0 - (s->energy_in - s->energy_vent - s->energy_leak - s->work);

@@ -72,26 +72,47 @@ typedef struct {
     double psi_choked;          /* choked flow function sqrt(g) (2/(g+1))^((g+1)/(2(g-1))) [-] */
 } fe_gasbag_model;
 
-/* what changes: the gas, and running totals for the energy balance */
+/* what changes: the gas, and running totals for the energy balance. The scalar fields are
+ * declared once here, X(name, unit, what); the same table names the result channels. */
+#define FE_GASBAG_STATE_FIELDS(X)                                                                  \
+    X(time, "s", "time")                                                                           \
+    X(volume, "m^3", "enclosed volume")                                                            \
+    X(area, "m^2", "fabric area used for porosity leakage")                                        \
+    X(mass, "kg", "gas mass")                                                                      \
+    X(energy, "J", "internal energy U = m cv T")                                                   \
+    X(pressure, "Pa", "absolute pressure")                                                         \
+    X(temperature, "K", "gas temperature")                                                         \
+    X(mass_flow_in, "kg/s", "inflator mass flow at the end of the last step")                      \
+    X(mass_flow_vent, "kg/s", "vent mass flow at the end of the last step")                        \
+    X(mass_flow_leak, "kg/s", "leakage mass flow at the end of the last step")                     \
+    X(mass_in, "kg", "inflator mass in")                                                           \
+    X(energy_in, "J", "inflator enthalpy in")                                                      \
+    X(mass_vent, "kg", "mass out through the vents")                                               \
+    X(energy_vent, "J", "enthalpy out through the vents")                                          \
+    X(mass_leak, "kg", "mass leaked through the fabric")                                           \
+    X(energy_leak, "J", "enthalpy leaked through the fabric")                                      \
+    X(work, "J", "work of the gas on the fabric, int p dV")                                        \
+    X(mass0, "kg", "initial gas mass")                                                             \
+    X(energy0, "J", "initial internal energy")
+
 typedef struct {
-    double time;                   /* [s]                                                    */
-    double volume;                 /* enclosed volume [m^3]                                  */
-    double area;                   /* fabric area used for porosity leakage [m^2]            */
-    double mass;                   /* gas mass [kg]                                          */
-    double energy;                 /* internal energy U = m cv T [J]                         */
-    double pressure;               /* absolute pressure [Pa]                                 */
-    double temperature;            /* [K]                                                    */
-    double mass_flow_in;           /* at the end of the last step [kg/s]                     */
-    double mass_flow_vent;         /* [kg/s]                                                 */
-    double mass_flow_leak;         /* [kg/s]                                                 */
-    double mass_in, energy_in;     /* inflator totals: mass [kg], enthalpy [J]               */
-    double mass_vent, energy_vent; /* vented totals: mass [kg], enthalpy [J]                 */
-    double mass_leak, energy_leak; /* leaked totals: mass [kg], enthalpy [J]                 */
-    double work;                   /* work of the gas on the fabric, int p dV [J]            */
-    double mass0, energy0;         /* initial gas mass [kg] and internal energy [J]          */
-    unsigned vent_open;            /* bit i set: vent i is open [-]                          */
-    int nsub;                      /* sub-steps taken by the last advance [-]                */
+#define FE_GASBAG_X_DECL(name, unit, what) double name;
+    FE_GASBAG_STATE_FIELDS(FE_GASBAG_X_DECL)
+#undef FE_GASBAG_X_DECL
+    unsigned vent_open; /* bit i set: vent i is open [-]           */
+    int nsub;           /* sub-steps taken by the last advance [-] */
 } fe_gasbag_state;
+
+/* the scalar fields as result channels: count, name, unit, value */
+enum {
+#define FE_GASBAG_X_COUNT(name, unit, what) FE_GASBAG_CH_##name,
+    FE_GASBAG_STATE_FIELDS(FE_GASBAG_X_COUNT)
+#undef FE_GASBAG_X_COUNT
+        FE_GASBAG_NCHANNEL
+};
+extern const char *const fe_gasbag_channel_name[FE_GASBAG_NCHANNEL];
+extern const char *const fe_gasbag_channel_unit[FE_GASBAG_NCHANNEL];
+double fe_gasbag_channel(const fe_gasbag_state *s, int channel);
 
 mcs_status fe_gasbag_model_create(const char *name, const fe_gasbag_desc *d, fe_gasbag_model **out,
                                   mcs_error *err);

@@ -165,3 +165,27 @@ mcs_status fe_retractor_advance(const fe_retractor_model *m, fe_retractor_state 
     s->time = t1;
     return MCS_OK;
 }
+
+const char *const fe_retractor_channel_name[FE_RETRACTOR_NCHANNEL] = {
+#define FE_RETRACTOR_X_NAME(name, unit, what) #name,
+    FE_RETRACTOR_STATE_FIELDS(FE_RETRACTOR_X_NAME)
+#undef FE_RETRACTOR_X_NAME
+};
+
+const char *const fe_retractor_channel_unit[FE_RETRACTOR_NCHANNEL] = {
+#define FE_RETRACTOR_X_UNIT(name, unit, what) unit,
+    FE_RETRACTOR_STATE_FIELDS(FE_RETRACTOR_X_UNIT)
+#undef FE_RETRACTOR_X_UNIT
+};
+
+double fe_retractor_channel(const fe_retractor_state *s, int channel)
+{
+    switch (channel) {
+#define FE_RETRACTOR_X_CASE(name, unit, what)                                                      \
+    case FE_RETRACTOR_CH_##name:                                                                   \
+        return s->name;
+        FE_RETRACTOR_STATE_FIELDS(FE_RETRACTOR_X_CASE)
+#undef FE_RETRACTOR_X_CASE
+    }
+    return NAN;
+}

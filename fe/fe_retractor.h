@@ -56,21 +56,37 @@ typedef struct {
     double lock_payout_rate;       /* [m/s]; 0 none                                          */
 } fe_retractor_model;
 
+/* what changes; the scalar fields declared once, X(name, unit, what), also the channels */
+#define FE_RETRACTOR_STATE_FIELDS(X)                                                               \
+    X(time, "s", "time")                                                                           \
+    X(payout, "m", "total webbing given out since t0 (< 0 pulled in)")                             \
+    X(payout_pretensioner, "m", "pulled in by the pretensioner (<= 0)")                            \
+    X(payout_limiter, "m", "paid out by the load limiter (>= 0)")                                  \
+    X(payout_spool, "m", "elastic film-spool payout F / k_spool")                                  \
+    X(payout_unlocked, "m", "given out or reeled in while unlocked")                               \
+    X(payout_rate, "m/s", "payout rate over the last step")                                        \
+    X(force, "N", "belt tension at the retractor (>= 0)")                                          \
+    X(energy_limiter, "J", "energy absorbed by the load limiter")                                  \
+    X(energy_pretensioner, "J", "work done by the pretensioner on the belt")
+
 typedef struct {
-    double time;                /* [s]                                                    */
-    double payout;              /* total webbing given out since t0 (< 0 pulled in) [m]   */
-    double payout_pretensioner; /* pulled in by the pretensioner (<= 0) [m]               */
-    double payout_limiter;      /* paid out by the load limiter (>= 0) [m]                */
-    double payout_spool;        /* elastic film-spool payout F / k_spool [m]              */
-    double payout_unlocked;     /* given out or reeled in while unlocked [m]              */
-    double payout_rate;         /* over the last step [m/s]                               */
-    double force;               /* belt tension at the retractor (>= 0) [N]               */
-    double energy_limiter;      /* absorbed by the load limiter [J]                       */
-    double energy_pretensioner; /* work done by the pretensioner on the belt [J]          */
-    int locked;                 /* spool locked [-]                                       */
-    int fired;                  /* pretensioner fired [-]                                 */
-    int stalled;                /* pretensioner stalled in the last step [-]              */
+#define FE_RETRACTOR_X_DECL(name, unit, what) double name;
+    FE_RETRACTOR_STATE_FIELDS(FE_RETRACTOR_X_DECL)
+#undef FE_RETRACTOR_X_DECL
+    int locked;  /* spool locked [-]                          */
+    int fired;   /* pretensioner fired [-]                    */
+    int stalled; /* pretensioner stalled in the last step [-] */
 } fe_retractor_state;
+
+enum {
+#define FE_RETRACTOR_X_COUNT(name, unit, what) FE_RETRACTOR_CH_##name,
+    FE_RETRACTOR_STATE_FIELDS(FE_RETRACTOR_X_COUNT)
+#undef FE_RETRACTOR_X_COUNT
+        FE_RETRACTOR_NCHANNEL
+};
+extern const char *const fe_retractor_channel_name[FE_RETRACTOR_NCHANNEL];
+extern const char *const fe_retractor_channel_unit[FE_RETRACTOR_NCHANNEL];
+double fe_retractor_channel(const fe_retractor_state *s, int channel);
 
 mcs_status fe_retractor_model_create(const char *name, const fe_retractor_desc *d,
                                      fe_retractor_model **out, mcs_error *err);

@@ -134,6 +134,11 @@ static void test_inflation_fixed_volume(void)
     CHECK_REL(s.mass_in, mdot * (s.time - tf), 1e-10);
     CHECK_NEAR(fe_gasbag_energy_residual(&s), 0.0, 1e-12 * s.energy);
     CHECK(s.work == 0.0);
+    /* the result channels read the same fields */
+    CHECK(fe_gasbag_channel(&s, FE_GASBAG_CH_pressure) == s.pressure);
+    CHECK(strcmp(fe_gasbag_channel_name[FE_GASBAG_CH_temperature], "temperature") == 0);
+    CHECK(strcmp(fe_gasbag_channel_unit[FE_GASBAG_CH_mass_flow_in], "kg/s") == 0);
+    CHECK(isnan(fe_gasbag_channel(&s, FE_GASBAG_NCHANNEL)));
     fe_gasbag_model_destroy(&m);
 }
 

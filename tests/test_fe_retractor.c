@@ -65,6 +65,9 @@ static void test_payin_eq3(void)
     CHECK_NEAR(s.force, 1005.0, 1e-6);
     CHECK(s.fired && s.locked && s.payout_limiter == 0.0 && s.energy_limiter == 0.0);
     CHECK_NEAR(fe_retractor_payin(m, 0.012 + 0.0075), -0.050, 1e-15);
+    CHECK(fe_retractor_channel(&s, FE_RETRACTOR_CH_payout) == s.payout);
+    CHECK(strcmp(fe_retractor_channel_name[FE_RETRACTOR_CH_force], "force") == 0);
+    CHECK(strcmp(fe_retractor_channel_unit[FE_RETRACTOR_CH_energy_limiter], "J") == 0);
     /* work of the pretensioner = elastic energy gained by the belt, (F1^2 - F0^2)/(2 k_b) */
     CHECK_REL(s.energy_pretensioner, (1005.0 * 1005.0 - 25.0) / (2.0 * kb), 1e-9);
     fe_retractor_model_destroy(&m);

@@ -35,13 +35,39 @@ fe_gasbag_desc fe_gasbag_desc_default(void)
     return d;
 }
 
+#define FE_GASBAG_R_UNIVERSAL 8.314462618 /* J/(mol K), CODATA 2018 (exact since 2019 SI) */
+
+/* gamma and R from whichever the description gives: cp and cv, or gamma with R or M */
+static mcs_status resolve_gas(const char *name, const fe_gasbag_desc *d, double *g, double *R,
+                              mcs_error *err)
+{
+    *g = d->gamma;
+    *R = d->gas_constant;
+    if (d->cp != 0.0 || d->cv != 0.0) {
+        if (!(d->cp > d->cv && d->cv > 0.0 && isfinite(d->cp)) || d->molar_mass != 0.0)
+            return MCS_ERR(err, MCS_ERR_RANGE,
+                           "%s: cp %g and cv %g J/(kg K) need cp > cv > 0 (and no molar_mass)",
+                           name, d->cp, d->cv);
+        *g = d->cp / d->cv;
+        *R = d->cp - d->cv;
+    } else if (d->molar_mass != 0.0) {
+        if (!(d->molar_mass > 0.0 && isfinite(d->molar_mass)))
+            return MCS_ERR(err, MCS_ERR_RANGE, "%s: molar_mass %g kg/mol must be > 0", name,
+                           d->molar_mass);
+        *R = FE_GASBAG_R_UNIVERSAL / d->molar_mass;
+    }
+    if (!(*g > 1.0 && *g < 2.0))
+        return MCS_ERR(err, MCS_ERR_RANGE, "%s: gamma %g must lie in (1, 2)", name, *g);
+    if (!(*R > 0.0 && isfinite(*R)))
+        return MCS_ERR(err, MCS_ERR_RANGE, "%s: gas_constant %g J/(kg K) must be > 0", name, *R);
+    return MCS_OK;
+}
+
 static mcs_status check_desc(const char *name, const fe_gasbag_desc *d, mcs_error *err)
 {
-    if (!(d->gamma > 1.0 && d->gamma < 2.0))
-        return MCS_ERR(err, MCS_ERR_RANGE, "%s: gamma %g must lie in (1, 2)", name, d->gamma);
-    if (!(d->gas_constant > 0.0 && isfinite(d->gas_constant)))
-        return MCS_ERR(err, MCS_ERR_RANGE, "%s: gas_constant %g J/(kg K) must be > 0", name,
-                       d->gas_constant);
+    double g, R;
+    mcs_status st = resolve_gas(name, d, &g, &R, err);
+    if (st != MCS_OK) return st;
     if (!(d->ambient_pressure > 0.0 && d->ambient_temperature > 0.0))
         return MCS_ERR(err, MCS_ERR_RANGE, "%s: ambient pressure and temperature must be > 0",
                        name);
@@ -88,10 +114,11 @@ mcs_status fe_gasbag_model_create(const char *name, const fe_gasbag_desc *d, fe_
     fe_gasbag_model *m = calloc(1, sizeof(*m));
     if (!m) return MCS_ERR(err, MCS_ERR_NOMEM, "%s: gas bag model", name);
     snprintf(m->name, sizeof(m->name), "%s", name);
-    double g = d->gamma;
+    double g, R;
+    resolve_gas(name, d, &g, &R, err); /* checked above */
     m->gamma = g;
-    m->gas_constant = d->gas_constant;
-    m->cv = d->gas_constant / (g - 1.0);
+    m->gas_constant = R;
+    m->cv = R / (g - 1.0);
     m->cp = g * m->cv;
     m->fire_time = d->fire_time;
     m->nvent = d->nvent;

@@ -35,6 +35,9 @@ typedef struct {
 typedef struct {
     double gamma;        /* cp / cv of the gas [-] (1.4)                           */
     double gas_constant; /* specific gas constant R = R_u / M [J/(kg K)] (287.05)  */
+    double molar_mass;   /* if > 0: R = R_u / molar_mass, overriding gas_constant [kg/mol] */
+    double cp, cv;       /* if both > 0: gamma = cp/cv and R = cp - cv (Mayer), overriding
+                            gamma and gas_constant [J/(kg K)]                      */
     double fire_time;    /* inflator firing time [s] (0)                           */
     int ninflator;       /* points in the inflator tables (>= 1; 0 = no inflator)  */
     double inflator_time[FE_GASBAG_TABLE_MAX];        /* time since firing [s] (ninflator)     */

@@ -372,6 +372,27 @@ static void test_bad_input(void)
     d.inflator_time[1] = 0.0; /* not increasing */
     mcs_error_clear(&err);
     CHECK(fe_gasbag_model_create("front", &d, &m, &err) != MCS_OK && !m);
+    /* the gas by cp and cv (Mayer: R = cp - cv) or by molar mass; nitrogen */
+    d = fe_gasbag_desc_default();
+    d.cp = 1040.0, d.cv = 743.0;
+    mcs_error_clear(&err);
+    CHECK(fe_gasbag_model_create("n2", &d, &m, &err) == MCS_OK && m);
+    if (m) {
+        CHECK_REL(m->gamma, 1040.0 / 743.0, 1e-15);
+        CHECK_REL(m->gas_constant, 297.0, 1e-15);
+        CHECK_REL(m->cp, 1040.0, 1e-12);
+        fe_gasbag_model_destroy(&m);
+    }
+    d.cp = d.cv = 0.0;
+    d.molar_mass = 0.0280134;
+    CHECK(fe_gasbag_model_create("n2", &d, &m, &err) == MCS_OK && m);
+    if (m) {
+        CHECK_REL(m->gas_constant, 296.80, 1e-4);
+        fe_gasbag_model_destroy(&m);
+    }
+    d.cp = 700.0, d.cv = 743.0;
+    CHECK(fe_gasbag_model_create("n2", &d, &m, &err) == MCS_ERR_RANGE && !m);
+    CHECK_STR_CONTAINS(err.msg, "cp 700");
     d = fe_gasbag_desc_default();
     d.nvent = 1;
     d.vent[0] = (fe_gasbag_vent){1e-3, 1.5, 0.0};

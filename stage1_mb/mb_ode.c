@@ -472,3 +472,45 @@ int mb_joint_is_spherical(const mb_world *w, int j)
 {
     return w->joint_type[j] == J_SPHERICAL || w->joint_type[j] == J_UNIVERSAL;
 }
+
+double mb_body_mass(const mb_world *w, int b)
+{
+    dMass m;
+    dBodyGetMass(w->body[b], &m);
+    return m.mass;
+}
+
+double mb_world_kinetic_energy(const mb_world *w)
+{
+    double e = 0;
+    for (int i = 0; i < w->nbody; i++) {
+        dMass m;
+        dBodyGetMass(w->body[i], &m);
+        mb_body_kin k;
+        mb_body_get(w, i, &k);
+        /* rotational part in body axes: w_b = R' w, I_b from the mass (3x4 rows) */
+        double wb[3];
+        for (int r = 0; r < 3; r++)
+            wb[r] =
+                k.rot[r] * k.angvel[0] + k.rot[3 + r] * k.angvel[1] + k.rot[6 + r] * k.angvel[2];
+        double rot = 0;
+        for (int r = 0; r < 3; r++)
+            for (int q = 0; q < 3; q++)
+                rot += wb[r] * m.I[4 * r + q] * wb[q];
+        double v2 = k.vel[0] * k.vel[0] + k.vel[1] * k.vel[1] + k.vel[2] * k.vel[2];
+        e += 0.5 * m.mass * v2 + 0.5 * rot;
+    }
+    return e;
+}
+
+double mb_world_potential_energy(const mb_world *w)
+{
+    dVector3 g;
+    dWorldGetGravity(w->world, g);
+    double e = 0;
+    for (int i = 0; i < w->nbody; i++) {
+        const dReal *p = dBodyGetPosition(w->body[i]);
+        e -= mb_body_mass(w, i) * (g[0] * p[0] + g[1] * p[1] + g[2] * p[2]);
+    }
+    return e;
+}

@@ -57,6 +57,12 @@ void mb_body_get(const mb_world *w, int b, mb_body_kin *out);
 void mb_body_point_vel(const mb_world *w, int b, const double p[3], double out[3]);
 const char *mb_body_name(const mb_world *w, int b);
 
+/* mechanical energy of the bodies [J]: kinetic sum(m v^2/2 + w.I_w w/2) and gravitational
+ * potential -sum(m g.x) (zero at the world origin) */
+double mb_world_kinetic_energy(const mb_world *w);
+double mb_world_potential_energy(const mb_world *w);
+double mb_body_mass(const mb_world *w, int b); /* [kg] */
+
 /* one dWorldStep of h seconds; MCS_ERR_NUMERIC when ODE fails or a body becomes non-finite
  * (the message names the body and the time) */
 mcs_status mb_world_step(mb_world *w, double h, mcs_error *err);

@@ -26,6 +26,15 @@ double fe_flow_stress(const fe_part *p, double epsp, double *slope);
 /* Cowper-Symonds factor 1 + (rate/C)^(1/p) (1 when off) [-] */
 double fe_rate_factor(const fe_part *p, double rate);
 
+/* the effective strain rate that enters the rate factor: an exponential average over about
+ * FE_RATE_CYCLES steps (as LS-DYNA averages MAT_024 rates over 12 cycles), so that element
+ * vibrations do not feed back through the flow stress */
+#define FE_RATE_CYCLES 12
+static inline double fe_rate_filter(double filtered, double rate)
+{
+    return filtered + (rate - filtered) / FE_RATE_CYCLES;
+}
+
 /* 3-D J2 radial return: sig (xx yy zz xy yz zx) holds the rotated stress at t - dt and
  * receives the stress at t; de is the strain increment (tensor shear components). Returns
  * the plastic strain increment. rate: effective strain rate [1/s]. */

@@ -148,6 +148,7 @@ void fe_hex_part(const fe_model *m, fe_state *s, int ip)
                                      2 * (de[3] * de[3] + de[4] * de[4] + de[5] * de[5]))) /
                                    dt
                              : 0;
+        if (p->material.cowper_symonds_c > 0) rate = s->hex_rate[e] = fe_rate_filter(s->hex_rate[e], rate);
         s->hex_epsp[e] += fe_mat_3d(p, sg, de, s->hex_epsp[e], rate);
         double w = 0;
         for (int i = 0; i < 3; i++) w += (old[i] + sg[i]) * de[i];

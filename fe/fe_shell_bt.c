@@ -119,6 +119,10 @@ void fe_shell_part(const fe_model *m, fe_state *s, int ip)
                 double ex = de[0] / dt, ey = de[1] / dt, gxy = de[2] / dt;
                 rate = sqrt(4.0 / 3.0 * (ex * ex + ey * ey + ex * ey) + gxy * gxy / 3);
             }
+            if (p->material.cowper_symonds_c > 0) {
+                double *rf = s->shell_rate + (size_t)stride * e + g;
+                rate = *rf = fe_rate_filter(*rf, rate);
+            }
             ep[g] += fe_mat_plane_stress(p, sp, de, ep[g], rate);
             w_int += wt * ((old[0] + sp[0]) * de[0] + (old[1] + sp[1]) * de[1] +
                            (old[2] + sp[2]) * de[2]);

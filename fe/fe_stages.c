@@ -198,7 +198,10 @@ static void record_history(const fe_model *m, fe_state *s)
         s->hist_wall_force[FE_WALL_MAX * (size_t)k + w] = s->wall_normal[w];
         s->hist_wall_disp[FE_WALL_MAX * (size_t)k + w] = s->wall_disp[w];
     }
-    s->hist_next = s->energy_time + m->opts.history_interval;
+    /* samples on the grid k * interval: the first step at or after each grid time */
+    const double iv = m->opts.history_interval;
+    if (iv > 0)
+        s->hist_next += iv * fmax(1.0, ceil((s->energy_time - s->hist_next) / iv + 1e-9));
 }
 
 /* reads part energies and steps, the works; writes the global energies (at t), the history,

@@ -1,5 +1,5 @@
 /* fe_truss: 2-node truss / cable, constant area, axial stress from the stretching rate
- * (logarithmic strain in the limit), elastic or J2 uniaxial; tension-only carries no
+ * (logarithmic strain increments ln(l_n / l_{n-1})), elastic or J2 uniaxial; tension-only carries no
  * compression (a slack cable: the stress keeps tracking the strain elastically, the force is
  * max(sigma, 0) A). Power: N (v_b - v_a).e, so f_b = N e, f_a = -N e (resisting). */
 #include "fe/fe_elem.h"
@@ -27,7 +27,10 @@ void fe_truss_part(const fe_model *m, fe_state *s, int ip)
             for (int i = 0; i < 6; i++) f[i] = 0;
             continue;
         }
-        double rate = fe_dot(d, dv) / (len * len), de = rate * dt;
+        /* logarithmic strain increment between the previous and the current length */
+        double dold[3] = {d[0] - dt * dv[0], d[1] - dt * dv[1], d[2] - dt * dv[2]};
+        double lold = sqrt(fe_dot(dold, dold));
+        double de = lold > 0 ? log(len / lold) : 0, rate = dt > 0 ? de / dt : 0;
         double sig0 = s->truss_sig[e];
         s->truss_epsp[e] += fe_mat_1d(p, &s->truss_sig[e], de, s->truss_epsp[e], fabs(rate));
         double n0 = tonly ? fmax(sig0, 0) : sig0, n1 = tonly ? fmax(s->truss_sig[e], 0)

@@ -4,6 +4,7 @@
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
 
+#include "fe/fe_builder_impl.h"
 #include "fe/fe_elem.h"
 
 static const double E_ST = 210e9, RHO_ST = 7850;
@@ -74,8 +75,346 @@ static void test_bar_impact(void)
     fe_builder_destroy(&b);
 }
 
+/* run to t_end; return the largest |total - total(0)| seen */
+static double run_track(const fe_model *m, fe_state *s, double t_end)
+{
+    double emax = 0;
+    while (s->time < t_end && s->err.status == MCS_OK) {
+        if (fe_step(m, s) != MCS_OK) break;
+        emax = fmax(emax, fabs(s->energy[FE_E_total] - s->energy0));
+    }
+    return emax;
+}
+
+/* Energy balance (Belytschko, Liu & Moran, Nonlinear Finite Elements, 2000, §6.2.5: kinetic +
+ * internal - external work constant): a clamped hex block set twisting and bending, and a
+ * clamped shell plate set vibrating, both elastic; the total stays within 1 % of the initial
+ * kinetic energy while the energy moves between kinetic and internal. */
+static void test_energy_balance(void)
+{
+    mcs_error err = {0};
+    fe_builder *b;
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc d = ft_part("block", FE_SECTION_SOLID, 70e9, 0.33, 2700);
+    d.mesh.generate = FE_MESH_BOX;
+    d.mesh.size[0] = 0.1, d.mesh.size[1] = 0.1, d.mesh.size[2] = 0.3;
+    d.mesh.divisions[0] = 3, d.mesh.divisions[1] = 3, d.mesh.divisions[2] = 8;
+    d.mesh.origin[0] = d.mesh.origin[1] = -0.05;
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_part_desc sh = ft_part("plate", FE_SECTION_SHELL, 210e9, 0.3, 7850);
+    sh.section.thickness = 2e-3;
+    sh.mesh.generate = FE_MESH_PLATE;
+    sh.mesh.size[0] = 0.3, sh.mesh.size[1] = 0.1, sh.mesh.divisions[0] = 12, sh.mesh.divisions[1] = 4;
+    sh.mesh.origin[0] = 1; /* apart from the block */
+    CHECK(fe_builder_add_part(b, &sh, NULL, &err) == MCS_OK);
+    fe_boundary_desc bc = ft_bc("block", FE_WHERE_Z_MIN, FE_DOF_ALL);
+    CHECK(fe_builder_add_boundary(b, &bc, &err) == MCS_OK);
+    bc = ft_bc("plate", FE_WHERE_X_MIN, FE_DOF_ALL);
+    CHECK(fe_builder_add_boundary(b, &bc, &err) == MCS_OK);
+    fe_model *m;
+    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+    fe_state *s;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    for (int n = 0; n < m->nnode; n++) {
+        const double *x = m->node_x0 + 3 * n;
+        double *v = s->node_v + 3 * n;
+        if (m->node_part[n] == 0) { /* twist about z and sway in x, growing with height */
+            double h = x[2] / 0.3;
+            v[0] = -20 * x[1] * h + 2 * h * h;
+            v[1] = 20 * x[0] * h;
+        } else if (!(m->node_fix[n])) {
+            double r = (x[0] - 1) / 0.3;
+            v[2] = 3 * r * r;
+        }
+    }
+    double emax = run_track(m, s, 3e-3);
+    const double e0 = s->energy0;
+    printf("energy balance: %ld steps, E0 %.4g J, internal %.4g J, hourglass %.3g J, "
+           "max |error| %.2e of E0\n",
+           s->nstep, e0, s->energy[FE_E_internal], s->energy[FE_E_hourglass], emax / e0);
+    CHECK(s->err.status == MCS_OK);
+    CHECK(s->energy[FE_E_internal] > 0.05 * e0); /* energy really moved */
+    CHECK(emax < 0.01 * e0);
+    /* per-part energies add up to the global ones */
+    double ki = 0;
+    for (int ip = 0; ip < m->npart; ip++) ki += fe_part_energy(m, s, ip, FE_E_kinetic);
+    CHECK_REL(ki, s->energy[FE_E_kinetic], 1e-12);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+}
+
+/* Shell cantilever under a slowly applied tip load, damped to rest (dynamic relaxation):
+ * Euler-Bernoulli tip deflection delta = P L^3 / (3 E I), I = b t^3 / 12 (nu = 0, so the strip
+ * bends as a beam; shear deflection P L / (k G b t) is 1e-4 of it). */
+static void test_cantilever(void)
+{
+    const double L = 1.0, bw = 0.1, t = 0.01, E = 210e9;
+    const double I = bw * t * t * t / 12, P = 0.03 * 3 * E * I / (L * L); /* delta = 3 % of L */
+    mcs_error err = {0};
+    fe_builder *b;
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc d = ft_part("strip", FE_SECTION_SHELL, E, 0.0, 7850);
+    d.section.thickness = t;
+    d.section.integration_points = 3;
+    d.mesh.generate = FE_MESH_PLATE;
+    d.mesh.size[0] = L, d.mesh.size[1] = bw, d.mesh.divisions[0] = 20, d.mesh.divisions[1] = 2;
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_boundary_desc bc = ft_bc("strip", FE_WHERE_X_MIN, FE_DOF_ALL);
+    CHECK(fe_builder_add_boundary(b, &bc, &err) == MCS_OK);
+    /* consistent edge load: 1/4, 1/2, 1/4 of P; ramped over 0.1 s and held */
+    int tip[3];
+    CHECK(fe_builder_select(b, 0, FE_WHERE_X_MAX, tip, 3) == 3);
+    const double curve[2][2] = {{0, 0}, {0.1, 1}};
+    for (int k = 0; k < 3; k++) {
+        double w = fabs(b->x[3 * tip[k] + 1] - 0.05) < 1e-9 ? 0.5 : 0.25;
+        double f[3] = {0, 0, -w * P};
+        CHECK(fe_builder_add_nodal_load(b, tip[k], f, 2, curve, &err) == MCS_OK);
+    }
+    fe_opts o = fe_opts_default();
+    o.damping = 2 * 2 * M_PI * 8.35; /* about critical for the first mode (8.35 Hz) */
+    fe_model *m;
+    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+    fe_state *s;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    double emax = run_track(m, s, 0.4);
+    double w = 0;
+    for (int k = 0; k < 3; k++) w += s->node_x[3 * tip[k] + 2] / 3;
+    double ref = P * L * L * L / (3 * E * I);
+    printf("cantilever: tip deflection %.5g m (P L^3 / 3EI = %.5g m), %ld steps, energy error "
+           "%.2e of the external work\n",
+           -w, ref, s->nstep, emax / fabs(s->energy[FE_E_external_work]));
+    CHECK_REL(-w, ref, 0.02);
+    CHECK(emax < 0.01 * fabs(s->energy[FE_E_external_work]));
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+}
+
+static void set_hardening(fe_material_desc *mt)
+{
+    mt->model = FE_MAT_ELASTIC_PLASTIC;
+    mt->nhardening = 3;
+    const double h[3][2] = {{0, 250e6}, {0.05, 300e6}, {0.2, 400e6}};
+    memcpy(mt->hardening, h, sizeof h);
+}
+
+/* Uniaxial tension of a J2 bar (Hill, The Mathematical Theory of Plasticity, 1950; LS-DYNA
+ * MAT_024): once yielded the axial Cauchy stress follows the hardening curve,
+ * sigma = R sigma_y(eps_p), eps_p = ln(l / l0) - sigma / E, with the Cowper-Symonds factor
+ * R = 1 + (rate / C)^(1/p) at the strain rate v / l. One hex (3-D radial return) and one
+ * shell (plane-stress return), pulled at a constant rate from a homogeneous initial velocity
+ * field so that no stress wave disturbs the state. */
+static void uniaxial(fe_section_type type, double csc, double *sig_out, double *ref_out)
+{
+    const double l0 = 0.01, rate0 = 10, v = rate0 * l0;
+    mcs_error err = {0};
+    fe_builder *b;
+    fe_builder_create(&b, &err);
+    fe_part_desc d = ft_part("p", type, E_ST, 0.3, RHO_ST);
+    set_hardening(&d.material);
+    d.material.cowper_symonds_c = csc, d.material.cowper_symonds_p = 5;
+    if (type == FE_SECTION_SOLID) {
+        d.mesh.generate = FE_MESH_BOX;
+        d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = l0;
+        d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 1;
+    } else {
+        d.section.thickness = 1e-3;
+        d.mesh.generate = FE_MESH_PLATE;
+        d.mesh.size[0] = d.mesh.size[1] = l0;
+        d.mesh.divisions[0] = d.mesh.divisions[1] = 1;
+    }
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_boundary_desc bc = ft_bc("p", FE_WHERE_X_MIN, FE_DOF_X);
+    fe_builder_add_boundary(b, &bc, &err);
+    bc = ft_bc("p", FE_WHERE_Y_MIN, FE_DOF_Y);
+    fe_builder_add_boundary(b, &bc, &err);
+    bc = ft_bc("p", type == FE_SECTION_SOLID ? FE_WHERE_Z_MIN : FE_WHERE_ALL,
+               type == FE_SECTION_SOLID ? FE_DOF_Z : FE_DOF_Z | FE_DOF_ROT);
+    fe_builder_add_boundary(b, &bc, &err);
+    bc = ft_bc("p", FE_WHERE_X_MAX, FE_DOF_X);
+    bc.velocity[0] = v;
+    fe_builder_add_boundary(b, &bc, &err);
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+    fe_state *s = NULL;
+    if (m) CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    if (!s) {
+        fprintf(stderr, "%s\n", err.msg);
+        fe_model_destroy(&m);
+        fe_builder_destroy(&b);
+        return;
+    }
+    for (int n = 0; n < m->nnode; n++) s->node_v[3 * n] = rate0 * m->node_x0[3 * n];
+    double t_end = 0.03 / rate0; /* 3 % strain */
+    while (s->time < t_end && fe_step(m, s) == MCS_OK) {}
+    CHECK(s->err.status == MCS_OK);
+    /* stresses are those of energy_time; the length then is l0 + v energy_time */
+    double l = l0 + v * s->energy_time, sig;
+    if (type == FE_SECTION_SOLID) {
+        sig = s->hex_sig[0];
+        CHECK_NEAR(s->hex_sig[1], 0, 2e-3 * sig);
+        CHECK_NEAR(s->hex_sig[2], 0, 2e-3 * sig);
+    } else {
+        sig = s->shell_sig[0];
+        for (int g = 1; g < m->part[0].section.integration_points; g++)
+            CHECK_REL(s->shell_sig[3 * g], sig, 1e-9);
+        CHECK_NEAR(s->shell_sig[1], 0, 2e-3 * sig);
+    }
+    double h, epsp = log(l / l0) - sig / E_ST;
+    fe_part pp = m->part[0];
+    *sig_out = sig;
+    *ref_out = fe_rate_factor(&pp, v / l) * fe_flow_stress(&pp, epsp, &h);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+}
+
+static void test_plastic_uniaxial(void)
+{
+    double sig, ref;
+    uniaxial(FE_SECTION_SOLID, 0, &sig, &ref);
+    printf("J2 uniaxial hex: sigma %.5g MPa, hardening curve %.5g MPa\n", sig / 1e6, ref / 1e6);
+    CHECK_REL(sig, ref, 0.01);
+    CHECK(sig > 250e6);
+    uniaxial(FE_SECTION_SHELL, 0, &sig, &ref);
+    printf("J2 uniaxial shell: sigma %.5g MPa, hardening curve %.5g MPa\n", sig / 1e6, ref / 1e6);
+    CHECK_REL(sig, ref, 0.01);
+    uniaxial(FE_SECTION_SOLID, 40.4, &sig, &ref);
+    printf("J2 uniaxial hex, Cowper-Symonds C 40.4 p 5: sigma %.5g MPa, R sigma_y %.5g MPa\n",
+           sig / 1e6, ref / 1e6);
+    CHECK_REL(sig, ref, 0.01);
+    CHECK(sig > 1.5 * 250e6);
+    uniaxial(FE_SECTION_SHELL, 40.4, &sig, &ref);
+    printf("J2 uniaxial shell, Cowper-Symonds: sigma %.5g MPa, R sigma_y %.5g MPa\n", sig / 1e6,
+           ref / 1e6);
+    CHECK_REL(sig, ref, 0.01);
+}
+
+/* Truss: axial force N = E A ln(l / l0) (hypoelastic rate form integrates to the logarithmic
+ * strain); a tension-only cable pushed together carries nothing and stores no energy. */
+static void test_truss(void)
+{
+    const double A = 1e-4, l0 = 1.0, v = 2.0;
+    for (int tonly = 0; tonly < 2; tonly++) {
+        mcs_error err = {0};
+        fe_builder *b;
+        fe_builder_create(&b, &err);
+        fe_part_desc d = ft_part("cable", FE_SECTION_TRUSS, E_ST, 0.3, RHO_ST);
+        d.section.area = A;
+        d.section.tension_only = tonly;
+        d.mesh.generate = FE_MESH_LINE;
+        d.mesh.end[0] = l0;
+        d.mesh.divisions[0] = 1;
+        CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+        fe_boundary_desc bc = ft_bc("cable", FE_WHERE_X_MIN, FE_DOF_ALL);
+        fe_builder_add_boundary(b, &bc, &err);
+        bc = ft_bc("cable", FE_WHERE_X_MAX, FE_DOF_ALL);
+        bc.velocity[0] = tonly ? -v : v;
+        fe_builder_add_boundary(b, &bc, &err);
+        fe_model *m;
+        CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+        fe_state *s;
+        CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+        CHECK(fe_run(m, s, 1e-3) == MCS_OK);
+        double l = l0 + (tonly ? -v : v) * s->energy_time;
+        double n = -s->node_fint[0]; /* the fixed end is pulled along +x by a tension */
+        if (!tonly) {
+            CHECK_REL(n, E_ST * A * log(l / l0), 1e-9);
+            /* internal energy E A l0 eps^2 / 2 for the small strain here */
+            CHECK_REL(s->energy[FE_E_internal], 0.5 * E_ST * A * l0 * pow(log(l / l0), 2), 2e-3);
+        } else {
+            CHECK_NEAR(n, 0, 1e-12);
+            CHECK_NEAR(s->energy[FE_E_internal], 0, 1e-15);
+            CHECK(s->truss_sig[0] < 0); /* the strain is still tracked */
+        }
+        fe_state_destroy(&s);
+        fe_model_destroy(&m);
+        fe_builder_destroy(&b);
+    }
+}
+
+/* A rigid wall moving at a prescribed velocity (penalty form) into a clamped elastic block:
+ * its displacement is V.n t, it is pushed back (positive normal force), its work goes into the
+ * external work so the balance still closes, and the history holds the samples. */
+static void test_moving_wall(void)
+{
+    mcs_error err = {0};
+    fe_builder *b;
+    fe_builder_create(&b, &err);
+    fe_part_desc d = ft_part("block", FE_SECTION_SOLID, 70e9, 0.3, 2700);
+    d.mesh.generate = FE_MESH_BOX;
+    d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = 0.1;
+    d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 3;
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_boundary_desc bc = ft_bc("block", FE_WHERE_Z_MIN, FE_DOF_ALL);
+    fe_builder_add_boundary(b, &bc, &err);
+    fe_wall_desc w;
+    memset(&w, 0, sizeof w);
+    snprintf(w.name, sizeof w.name, "ram");
+    w.point[2] = 0.1, w.normal[2] = -1, w.velocity[2] = -2.0;
+    w.method = FE_WALL_PENALTY;
+    CHECK(fe_builder_add_wall(b, &w, &err) == MCS_OK);
+    fe_opts o = fe_opts_default();
+    o.history_capacity = 200;
+    o.history_interval = 1e-5;
+    fe_model *m;
+    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+    fe_state *s;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    double emax = run_track(m, s, 5e-4);
+    CHECK(s->err.status == MCS_OK);
+    CHECK_REL(s->wall_disp[0], 2.0 * s->energy_time, 1e-12);
+    CHECK(s->wall_normal[0] > 0);
+    CHECK(s->energy[FE_E_external_work] > 0);
+    printf("moving wall: force %.4g N at %.3g mm, external work %.4g J, energy error %.2e\n",
+           s->wall_normal[0], 1e3 * s->wall_disp[0], s->energy[FE_E_external_work],
+           emax / s->energy[FE_E_external_work]);
+    CHECK(emax < 0.01 * s->energy[FE_E_external_work]);
+    CHECK(s->nhist >= 49 && s->nhist <= 52);
+    CHECK_NEAR(s->hist_time[10] - s->hist_time[9], 1e-5, 0.3 * s->dt);
+    CHECK(s->hist_wall_force[FE_WALL_MAX * (s->nhist - 1)] > 0);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+}
+
+/* A step above the stability limit (dt_scale 1.5: omega dt = 3 > 2) makes the solution grow;
+ * the run stops with MCS_ERR_NUMERIC naming the time, and stays stopped. */
+static void test_instability_detected(void)
+{
+    fe_builder *b = bar_builder(0.2, 0.01, 20, 1.0);
+    mcs_error err = {0};
+    fe_boundary_desc bc = ft_bc("bar", FE_WHERE_X_MIN, FE_DOF_ALL);
+    fe_builder_add_boundary(b, &bc, &err);
+    fe_opts o = fe_opts_default();
+    o.dt_scale = 1.5;
+    fe_model *m;
+    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+    fe_state *s;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    mcs_status st = fe_run(m, s, 1e-2);
+    CHECK(st == MCS_ERR_NUMERIC);
+    CHECK_STR_CONTAINS(s->err.msg, "t = ");
+    CHECK(s->time < 1e-2);
+    CHECK(fe_step(m, s) == MCS_ERR_NUMERIC);
+    CHECK(mcs_status_exit_code(st) == 1);
+    /* reset gives a fresh run */
+    fe_state_reset(m, s);
+    CHECK(s->err.status == MCS_OK && s->time == 0);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+}
+
 int main(void)
 {
     RUN(test_bar_impact);
+    RUN(test_energy_balance);
+    RUN(test_cantilever);
+    RUN(test_plastic_uniaxial);
+    RUN(test_truss);
+    RUN(test_moving_wall);
+    RUN(test_instability_detected);
     TEST_END();
 }

@@ -160,8 +160,10 @@ void fe_hex_part(const fe_model *m, fe_state *s, int ip)
             double evr = dv / dt;
             q = rho * len * (m->opts.bulk_q1 * len * evr * evr - m->opts.bulk_q2 * c0 * evr);
             qrate = m->opts.bulk_q1 * len * fabs(evr) + m->opts.bulk_q2 * c0;
-            e_diss += -q * dv * vol;
         }
+        /* dissipation with the trapezoidal rule of every other work (fe_state.h) */
+        e_diss += -0.5 * (s->hex_q[e] + q) * dv * vol;
+        s->hex_q[e] = q;
         double dte = len / (qrate + sqrt(qrate * qrate + c0 * c0));
         if (dte < dtmin) dtmin = dte, dtel = e;
         /* nodal forces f_iI = V sig_ij b_jI */
@@ -185,7 +187,8 @@ void fe_hex_part(const fe_model *m, fe_state *s, int ip)
             for (int al = 0; al < 4; al++)
                 for (int i = 0; i < 3; i++) {
                     fh[al][i] = ch * qh[al][i];
-                    e_hg += fh[al][i] * qh[al][i] * dt;
+                    e_hg += 0.5 * (hg[3 * al + i] + fh[al][i]) * qh[al][i] * dt;
+                    hg[3 * al + i] = fh[al][i];
                 }
         } else {
             double bb = 0;

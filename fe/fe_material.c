@@ -6,6 +6,10 @@
 
 #include <math.h>
 
+/* a return is converged when the yield condition holds to this fraction of the trial stress
+ * (1e-12: far below any physical effect, above the round-off of the residual) */
+#define FE_RETURN_TOL 1e-12
+
 double fe_flow_stress(const fe_part *p, double epsp, double *slope)
 {
     const fe_material_desc *mt = &p->material;
@@ -52,10 +56,9 @@ double fe_mat_3d(const fe_part *p, double sig[6], const double de[6], double eps
     double dp = 0;
     for (int it = 0; it < 50; it++) {
         double g = q - 3 * mu * dp - rf * fe_flow_stress(p, epsp + dp, &h);
-        double step = g / (3 * mu + rf * h);
-        dp += step;
+        if (fabs(g) <= FE_RETURN_TOL * q) break;
+        dp += g / (3 * mu + rf * h);
         if (dp < 0) dp = 0;
-        if (fabs(step) <= 1e-14 * (dp + 1e-30) + 1e-300) break;
     }
     double scale = 1 - 3 * mu * dp / q;
     for (int i = 0; i < 3; i++) sig[i] = pm + scale * s[i];
@@ -86,7 +89,9 @@ double fe_mat_plane_stress(const fe_part *p, double sig[3], const double de[3], 
     /* plastic multiplier dg: p, m, t shrink by 1/(1 + a dg), 1/(1 + 2 G dg), 1/(1 + 2 G dg)
      * with a = E / (3 (1 - nu)); plastic strain increment (2/3) dg q(dg) */
     const double a = E / (3 * (1 - nu));
-    double dg = 0, q = q0;
+    /* start from the exact answer of a purely deviatoric in-plane state, q0 / (1 + 2 G dg) =
+     * sy + (2/3) h dg sy: Newton then needs two or three iterations */
+    double dg = (q0 - sy) / (sy * (2 * G + 2.0 / 3.0 * rf * h)), q = q0;
     for (int it = 0; it < 60; it++) {
         double fp = 1 / (1 + a * dg), fm = 1 / (1 + 2 * G * dg);
         double pp = p0 * fp, mm = m0 * fm, tt = t0 * fm;
@@ -95,10 +100,10 @@ double fe_mat_plane_stress(const fe_part *p, double sig[3], const double de[3], 
         double dep = 2.0 / 3.0 * dg * q;
         double g = q - rf * fe_flow_stress(p, epsp + dep, &h);
         double dg_d = dq - rf * h * 2.0 / 3.0 * (q + dg * dq);
+        if (fabs(g) <= FE_RETURN_TOL * q0) break;
         double step = -g / dg_d;
         if (dg + step < 0) step = -0.5 * dg;
         dg += step;
-        if (fabs(step) <= 1e-13 * dg + 1e-300) break;
     }
     double fp = 1 / (1 + a * dg), fm = 1 / (1 + 2 * G * dg);
     double pp = p0 * fp, mm = m0 * fm;
@@ -119,10 +124,9 @@ double fe_mat_1d(const fe_part *p, double *sig, double de, double epsp, double r
     double dp = 0;
     for (int it = 0; it < 50; it++) {
         double g = q - E * dp - rf * fe_flow_stress(p, epsp + dp, &h);
-        double step = g / (E + rf * h);
-        dp += step;
+        if (fabs(g) <= FE_RETURN_TOL * q) break;
+        dp += g / (E + rf * h);
         if (dp < 0) dp = 0;
-        if (fabs(step) <= 1e-14 * (dp + 1e-30) + 1e-300) break;
     }
     *sig = copysign(q - E * dp, *sig);
     return dp;

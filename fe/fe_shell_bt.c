@@ -164,7 +164,8 @@ void fe_shell_part(const fe_model *m, fe_state *s, int ip)
         for (int i = 0; i < 5; i++) {
             if (visc) {
                 fh[i] = kk[i] * (len / c0) * qh[i];
-                e_hg += fh[i] * qh[i] * dt;
+                e_hg += 0.5 * (hg[i] + fh[i]) * qh[i] * dt;
+                hg[i] = fh[i];
             } else {
                 double h0 = hg[i];
                 hg[i] += kk[i] * qh[i] * dt;

@@ -64,12 +64,13 @@ extern const char *const fe_stage_name[FE_NSTAGE];
     X(double, hex_sig, nhex, 6, "Pa", "Cauchy stress xx yy zz xy yz zx")                           \
     X(double, hex_epsp, nhex, 1, "-", "equivalent plastic strain")                                 \
     X(double, hex_rate, nhex, 1, "1/s", "filtered effective strain rate (rate factor)")           \
-    X(double, hex_hg, nhex, 12, "N", "stiffness hourglass forces (3 x 4 modes)")                   \
+    X(double, hex_q, nhex, 1, "Pa", "bulk viscosity pressure")                                   \
+    X(double, hex_hg, nhex, 12, "N", "hourglass forces (3 x 4 modes)")                   \
     X(double, shell_sig, nshell_ip, 3, "Pa", "local in-plane stress xx yy xy per point")          \
     X(double, shell_epsp, nshell_ip, 1, "-", "equivalent plastic strain per point")                \
     X(double, shell_rate, nshell_ip, 1, "1/s", "filtered effective strain rate per point")       \
     X(double, shell_tau, nshell, 2, "Pa", "local transverse shear stress xz yz")                   \
-    X(double, shell_hg, nshell, 5, "N", "stiffness hourglass resultants (x, y, z, rx, ry)")        \
+    X(double, shell_hg, nshell, 5, "N", "hourglass resultants (x, y, z, rx, ry)")        \
     X(double, truss_sig, ntruss, 1, "Pa", "axial stress")                                          \
     X(double, truss_epsp, ntruss, 1, "-", "plastic strain")                                        \
     X(double, slot_f, nslot, 3, "N", "element force at each element node (resisting)")            \

@@ -1,0 +1,196 @@
+/* mb_build_joint.c: joints with their restraints, and breakable attachments.
+ * Restraints: revolute and translational joints get mb_restraint (the characteristic on both
+ * directions, mirrored; its damping), spherical and universal joints mb_restraint3 (the same
+ * characteristic on the three axes of the parent's frame). A joint `range` becomes a stop: a
+ * linear one-sided spring beyond the range of 10 times the steepest slope of the restraint's
+ * loading curve, or 1e3 N m/rad (revolute) / 1e5 N/m (translational) without one.
+ * Attachments: zero-length isotropic spring-dampers (mb_restraint.h). Without `length` (or
+ * with length 0 and coinciding points) they are at rest in the initial posture: the point on b
+ * is taken where point_a is at t = 0. A non-zero free length is not built yet. */
+#include "stage1_mb/mb_build_internal.h"
+#include "stage1_mb/mb_vec.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static const char *const joint_types[] = {"revolute", "spherical", "universal", "translational",
+                                          "fixed"};
+
+static double steepest(const mcs_curve *c)
+{
+    double k = 0;
+    for (int i = 0; i + 1 < c->n; i++)
+        k = fmax(k, fabs((c->y[i + 1] - c->y[i]) / (c->x[i + 1] - c->x[i])));
+    return k;
+}
+
+static mcs_status build_restraint1(const mcs_node *jn, mb_model *m, int ij, int chr,
+                                   mcs_error *err)
+{
+    const mb_joint_def *j = &m->joint[ij];
+    const mcs_node *range = mcs_node_get(jn, "range");
+    if (chr < 0 && mcs_node_kind(range) != MCS_NODE_SEQ) return MCS_OK;
+    mb_restraint_model *r = &m->restraint1[m->nrestraint1];
+    *r = (mb_restraint_model){.joint = ij, .lo = -INFINITY, .hi = INFINITY};
+    if (chr >= 0) {
+        r->has_spring = 1;
+        r->spring = (mcs_hyst2_model){m->chr[chr].hyst, m->chr[chr].hyst};
+        r->damping = m->chr[chr].damping;
+    }
+    if (mcs_node_kind(range) == MCS_NODE_SEQ) {
+        double lr[2];
+        mcs_status st = mcs_node_vec(range, lr, 2, err);
+        if (st) return st;
+        if (!(lr[0] < 0 && 0 < lr[1]))
+            return mcs_node_error(range, err, MCS_ERR_RANGE,
+                                  "range [%g, %g] must contain the initial position 0", lr[0],
+                                  lr[1]);
+        r->lo = lr[0], r->hi = lr[1];
+        double k = chr >= 0 ? 10 * steepest(m->chr[chr].loading) : 0;
+        r->stop_stiffness = k > 0 ? k : (j->type == MB_J_REVOLUTE ? 1e3 : 1e5);
+    }
+    snprintf(m->restraint1_name[m->nrestraint1], MB_NAME, "%s", j->name);
+    m->joint[ij].restraint = m->nrestraint1++;
+    return MCS_OK;
+}
+
+static void build_restraint3(mb_model *m, int ij, int chr)
+{
+    mb_restraint3_model *r = &m->restraint3[m->nrestraint3];
+    *r = (mb_restraint3_model){.joint = ij, .frame = {1, 0, 0, 0, 1, 0, 0, 0, 1}};
+    for (int k = 0; k < 3; k++) {
+        r->has_spring[k] = 1;
+        r->spring[k] = (mcs_hyst2_model){m->chr[chr].hyst, m->chr[chr].hyst};
+        r->damping[k] = m->chr[chr].damping;
+        r->lo[k] = -INFINITY, r->hi[k] = INFINITY;
+    }
+    snprintf(m->restraint3_name[m->nrestraint3], MB_NAME, "%s", m->joint[ij].name);
+    m->joint[ij].restraint = m->nrestraint3++;
+}
+
+static mcs_status build_joint(const mcs_node *jn, mb_model *m, int ij, mcs_error *err)
+{
+    mb_joint_def *j = &m->joint[ij];
+    const char *ty = mcs_node_str(mcs_node_get(jn, "type"));
+    for (int k = 0; k < 5; k++)
+        if (ty && strcmp(ty, joint_types[k]) == 0) j->type = (mb_joint_type)k;
+    const char *nm = mcs_node_str(mcs_node_get(jn, "name"));
+    snprintf(j->name, MB_NAME, "%s", nm ? nm : "");
+    if (!nm) snprintf(j->name, MB_NAME, "joints[%d]", ij);
+    j->parent = mb_build_body_ref(m, mcs_node_get(jn, "parent"));
+    j->child = mb_build_body_ref(m, mcs_node_get(jn, "child"));
+    j->restraint = -1;
+    mcs_status st = mcs_node_vec3(mcs_node_get(jn, "anchor"), j->anchor, err);
+    if (!st && mcs_node_kind(mcs_node_get(jn, "axis")) == MCS_NODE_SEQ)
+        st = mb_build_dir(mcs_node_get(jn, "axis"), j->axis, err);
+    if (!st && mcs_node_kind(mcs_node_get(jn, "axis2")) == MCS_NODE_SEQ)
+        st = mb_build_dir(mcs_node_get(jn, "axis2"), j->axis2, err);
+    if (st) return st;
+    if (j->type == MB_J_UNIVERSAL && fabs(mb_dot(j->axis, j->axis2)) > 1 - 1e-9)
+        return mcs_node_error(mcs_node_get(jn, "axis2"), err, MCS_ERR_RANGE,
+                              "axis2 is parallel to axis");
+    const mcs_node *rn = mcs_node_get(jn, "restraint");
+    int chr = mb_build_char_ref(m, rn);
+    int want_moment = j->type != MB_J_TRANSLATIONAL;
+    if (chr >= 0 && j->type == MB_J_FIXED)
+        return mcs_node_error(rn, err, MCS_ERR_RANGE, "a fixed joint has no restraint");
+    if (chr >= 0 && m->chr[chr].moment != want_moment)
+        return mcs_node_error(rn, err, MCS_ERR_TYPE, "a %s joint needs a %s characteristic",
+                              ty, want_moment ? "moment (type: moment)" : "force");
+    if (j->type == MB_J_REVOLUTE || j->type == MB_J_TRANSLATIONAL)
+        return build_restraint1(jn, m, ij, chr, err);
+    if (chr >= 0 && j->type != MB_J_FIXED) build_restraint3(m, ij, chr);
+    return MCS_OK;
+}
+
+mcs_status mb_build_joints(const mcs_node *root, mb_model *m, mcs_error *err)
+{
+    const mcs_node *list = mcs_node_get(root, "joints");
+    m->njoint = mcs_node_len(list);
+    m->joint = MB_NEW(mb_joint_def, m->njoint);
+    m->restraint1 = MB_NEW(mb_restraint_model, m->njoint);
+    m->restraint1_name = MB_NEW(mb_name, m->njoint);
+    m->restraint3 = MB_NEW(mb_restraint3_model, m->njoint);
+    m->restraint3_name = MB_NEW(mb_name, m->njoint);
+    if (!m->joint || !m->restraint1 || !m->restraint1_name || !m->restraint3 ||
+        !m->restraint3_name)
+        return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
+    for (int i = 0; i < m->njoint; i++) {
+        mcs_status st = build_joint(mcs_node_at(list, i), m, i, err);
+        if (st) return st;
+    }
+    return MCS_OK;
+}
+
+/* world position of a point given in body b's frame (world coordinates for the ground) */
+static void initial_world_point(const mb_model *m, int b, const double p[3], double out[3])
+{
+    if (b == MB_GROUND) {
+        mb_copy(p, out);
+        return;
+    }
+    double R[9];
+    mb_quat_to_rot(m->body[b].quat, R);
+    mb_mat_vec(R, p, out);
+    mb_add(out, m->body[b].pos, out);
+}
+
+static mcs_status build_attachment(const mcs_node *n, mb_model *m, int i, mcs_error *err)
+{
+    mb_attach_model *a = &m->attach[i];
+    const char *nm = mcs_node_str(mcs_node_get(n, "name"));
+    if (nm)
+        snprintf(m->attach_name[i], MB_NAME, "%s", nm);
+    else
+        snprintf(m->attach_name[i], MB_NAME, "attachments[%d]", i);
+    a->body_a = mb_build_body_ref(m, mcs_node_get(n, "a"));
+    a->body_b = mb_build_body_ref(m, mcs_node_get(n, "b"));
+    mcs_status st = mcs_node_vec3(mcs_node_get(n, "point_a"), a->pa, err);
+    if (!st) st = mcs_node_vec3(mcs_node_get(n, "point_b"), a->pb, err);
+    if (st) return st;
+    if (a->body_a == MB_GROUND) { /* keep the world second */
+        a->body_a = a->body_b, a->body_b = MB_GROUND;
+        double t[3];
+        mb_copy(a->pa, t), mb_copy(a->pb, a->pa), mb_copy(t, a->pb);
+    }
+    a->stiffness = mcs_node_num(mcs_node_get(n, "stiffness"));
+    a->damping = mcs_node_num_or(n, "damping", 0);
+    a->fail_force = mcs_node_num(mcs_node_get(n, "failure_force"));
+    if (!(a->stiffness > 0))
+        return mcs_node_error(mcs_node_get(n, "stiffness"), err, MCS_ERR_RANGE,
+                              "an attachment needs a stiffness > 0 N/m");
+    const mcs_node *len = mcs_node_get(n, "length");
+    double L = mcs_node_num_or(n, "length", NAN);
+    if (!isnan(L) && L != 0)
+        return mcs_node_error(len, err, MCS_ERR_UNSUPPORTED,
+                              "attachments of non-zero free length are not built yet "
+                              "(omit length: at rest in the initial posture)");
+    if (isnan(L)) { /* at rest now: b's point where a's point is */
+        double wa[3];
+        initial_world_point(m, a->body_a, a->pa, wa);
+        if (a->body_b == MB_GROUND)
+            mb_copy(wa, a->pb);
+        else {
+            double R[9], d[3];
+            mb_quat_to_rot(m->body[a->body_b].quat, R);
+            mb_sub(wa, m->body[a->body_b].pos, d);
+            mb_mat_tvec(R, d, a->pb);
+        }
+    }
+    return MCS_OK;
+}
+
+mcs_status mb_build_attachments(const mcs_node *root, mb_model *m, mcs_error *err)
+{
+    const mcs_node *list = mcs_node_get(root, "attachments");
+    m->nattach = mcs_node_len(list);
+    m->attach = MB_NEW(mb_attach_model, m->nattach);
+    m->attach_name = MB_NEW(mb_name, m->nattach);
+    if (!m->attach || !m->attach_name) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
+    for (int i = 0; i < m->nattach; i++) {
+        mcs_status st = build_attachment(mcs_node_at(list, i), m, i, err);
+        if (st) return st;
+    }
+    return MCS_OK;
+}

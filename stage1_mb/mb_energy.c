@@ -1,0 +1,117 @@
+/* mb_energy.c: the energy sub-stage of mb_step: the balance of mb_model.h at the current
+ * poses (s->kin, detected after the ODE step). Contacts and one-axis restraints are evaluated
+ * at the new deflection on a copy of their history (nothing is committed here); three-axis
+ * restraints and attachments report the deflection of their last apply (half a step behind:
+ * an O(h) term of the balance). The growth check stops a run whose total energy rises by more
+ * than opts.energy_tol of the reference energy (largest kinetic + stored so far). */
+#include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_vec.h"
+
+#include <math.h>
+
+static double kinetic(const mb_model *m, const mb_state *s)
+{
+    double e = 0;
+    for (int b = 0; b < m->nbody; b++) {
+        const mb_body_kin *k = &s->kin[b];
+        const double *I = m->body[b].inertia; /* Ixx Iyy Izz Ixy Ixz Iyz, body axes */
+        double w[3], Iw[3];
+        mb_mat_tvec(k->rot, k->angvel, w);
+        Iw[0] = I[0] * w[0] + I[3] * w[1] + I[4] * w[2];
+        Iw[1] = I[3] * w[0] + I[1] * w[1] + I[5] * w[2];
+        Iw[2] = I[4] * w[0] + I[5] * w[1] + I[2] * w[2];
+        e += 0.5 * m->body[b].mass * mb_dot(k->vel, k->vel) + 0.5 * mb_dot(w, Iw);
+    }
+    return e;
+}
+
+static double potential(const mb_model *m, const mb_state *s)
+{
+    double e = 0;
+    for (int b = 0; b < m->nbody; b++) e -= m->body[b].mass * mb_dot(m->gravity, s->kin[b].pos);
+    return e;
+}
+
+/* contacts: stored and dissipated at the new penetration */
+static void contact_energy(const mb_model *m, const mb_state *s, double *stored, double *diss)
+{
+    for (int i = 0; i < m->npair; i++) {
+        const mcs_hyst_model *h = &m->pair[i].hyst;
+        mcs_hyst_state t = s->pair[i].h;
+        double x = s->pc[i].depth > 0 ? s->pc[i].depth : 0;
+        mcs_hyst_update(h, &t, x);
+        *stored += mcs_hyst_stored(h, &t);
+        *diss += mcs_hyst_dissipated(h, &t) + s->pair[i].e_damp + s->pair[i].e_fric;
+    }
+}
+
+static void restraint_energy(const mb_model *m, const mb_state *s, double *stored, double *diss)
+{
+    for (int i = 0; i < m->nrestraint1; i++) {
+        const mb_restraint_model *r = &m->restraint1[i];
+        mb_restraint_state t = s->r1[i];
+        t.x = mb_joint_position(s->world, r->joint);
+        if (r->has_spring) mcs_hyst2_update(&r->spring, &t.h, t.x - r->neutral);
+        *stored += mb_restraint_stored(r, &t);
+        *diss += mb_restraint_dissipated(r, &t);
+    }
+    for (int i = 0; i < m->nrestraint3; i++) {
+        *stored += mb_restraint3_stored(&m->restraint3[i], &s->r3[i]);
+        *diss += mb_restraint3_dissipated(&m->restraint3[i], &s->r3[i]);
+    }
+    for (int i = 0; i < m->nattach; i++) {
+        *stored += mb_attach_stored(&m->attach[i], &s->att[i]);
+        *diss += s->att[i].e_damp + s->att[i].e_lost;
+    }
+}
+
+/* energy: reads s->kin and the histories, writes s->e and the drift */
+void mb_energy_update(const mb_model *m, mb_state *s)
+{
+    mb_energy *e = &s->e;
+    e->kinetic = kinetic(m, s);
+    e->potential = potential(m, s);
+    e->contact = e->internal = e->dissipated = 0;
+    contact_energy(m, s, &e->contact, &e->dissipated);
+    restraint_energy(m, s, &e->internal, &e->dissipated);
+    e->external_work = 0; /* no prescribed loads or motions in stage 1 yet */
+    e->total = e->kinetic + e->potential + e->internal + e->contact + e->dissipated -
+               e->external_work;
+    double live = e->kinetic + e->internal + e->contact;
+    if (live > s->e_ref) s->e_ref = live;
+    double d = fabs(e->total - s->e_total0);
+    if (s->step > 0 && d > s->drift_abs) s->drift_abs = d;
+}
+
+double mb_energy_drift(const mb_model *m, const mb_state *s)
+{
+    return s->drift_abs / fmax(s->e_ref, m->opts.energy_floor);
+}
+
+/* the body moving fastest: where energy growth most likely comes from */
+static int fastest_body(const mb_model *m, const mb_state *s)
+{
+    int best = 0;
+    double vmax = -1;
+    for (int b = 0; b < m->nbody; b++) {
+        double v = mb_norm(s->kin[b].vel) + mb_norm(s->kin[b].angvel);
+        if (!(v <= vmax)) best = b, vmax = isnan(v) ? INFINITY : v;
+    }
+    return best;
+}
+
+mcs_status mb_energy_check(const mb_model *m, mb_state *s, mcs_error *err)
+{
+    double ref = fmax(s->e_ref, m->opts.energy_floor);
+    double grow = s->e.total - s->e_total0;
+    if (isfinite(s->e.total) && grow <= m->opts.energy_tol * ref) return MCS_OK;
+    int b = fastest_body(m, s);
+    if (!isfinite(s->e.total))
+        return MCS_ERR(err, MCS_ERR_NUMERIC,
+                       "stage 1: energy is not finite at t = %.6g s (body %s)", s->t,
+                       m->body_name[b]);
+    return MCS_ERR(err, MCS_ERR_NUMERIC,
+                   "stage 1: energy grew by %.4g J (%.3g %% of %.4g J) at t = %.6g s; fastest "
+                   "body %s: reduce simulation.time_step or stiffen less",
+                   grow, 100 * grow / ref, ref, s->t, m->body_name[b]);
+}

@@ -1,0 +1,54 @@
+/* mb_step.c: one fixed step of stage 1. The contact geometry is detected right after the ODE
+ * step, at the new poses, so that the energy of this step and the forces of the next one use
+ * the same geometry (mb_state_create detects once before the first step). */
+#include "stage1_mb/mb_model.h"
+
+#include <time.h>
+
+static double wall(const mb_state *s)
+{
+    if (!s->timing) return 0;
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* close timer slot k: add the wall time since *t0 and restart it */
+static void lap(mb_state *s, mb_timer k, double *t0)
+{
+    if (!s->timing) return;
+    double t = wall(s);
+    s->timer[k] += t - *t0;
+    *t0 = t;
+}
+
+mcs_status mb_step(const mb_model *m, mb_state *s, mcs_error *err)
+{
+    double t0 = wall(s);
+    /* contact: pair geometry and velocities -> contact forces on bodies, pair histories */
+    mb_contact_forces(m, s);
+    lap(s, MB_T_contact, &t0);
+    /* restraint: joint positions and rates -> restraint and attachment loads, histories */
+    mb_restraints_apply(m, s);
+    lap(s, MB_T_restraint, &t0);
+    /* external: gravity is ODE's world gravity (model gravity); no other external loads yet */
+    lap(s, MB_T_external, &t0);
+    /* integrate: forces -> new velocities and poses (dWorldStep, checked for NaN) */
+    mcs_status st = mb_world_step(s->world, m->h, err);
+    if (st) return st;
+    s->step++;
+    s->t = (double)s->step * m->h;
+    lap(s, MB_T_integrate, &t0);
+    /* detect: new poses -> body kinematics (s->kin) and pair geometry (s->pc) */
+    mb_contact_detect(m, s);
+    lap(s, MB_T_detect, &t0);
+    /* sensors: new velocities -> accelerations of the step */
+    mb_kinematics_update(m, s);
+    lap(s, MB_T_sensors, &t0);
+    /* energy: kinematics and histories -> balance, growth check, output record */
+    mb_energy_update(m, s);
+    st = mb_energy_check(m, s, err);
+    if (!st) mb_record(m, s);
+    lap(s, MB_T_energy, &t0);
+    return st;
+}

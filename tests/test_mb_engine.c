@@ -1,0 +1,316 @@
+/* test_mb_engine.c: the stage-1 engine (stage1_mb/mb_model.h) against analytic answers.
+ * Scenarios are in scenarios/verification/ (each says its numbers); time step h = 10 us unless
+ * said. Tolerances are justified by the step: the ODE step is semi-implicit Euler (symplectic),
+ * whose error in a contact of natural frequency w is of order w h (w h = 3.2e-3 for
+ * k = 1e5 N/m, m = 1 kg, h = 10 us). */
+#include "harness.h"
+#include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_vec.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+static mb_model *load_model(const char *path)
+{
+    mcs_scenario *scn = NULL;
+    mcs_error err = {0};
+    mb_model *m = NULL;
+    if (mcs_scenario_load(path, &scn, &err) || mb_model_build(scn, NULL, &m, &err))
+        fprintf(stderr, "%s: %s\n", path, err.msg);
+    mcs_scenario_destroy(&scn);
+    return m;
+}
+
+static mb_model *load_text(const char *text, mcs_error *err)
+{
+    mcs_scenario *scn = NULL;
+    mb_model *m = NULL;
+    if (mcs_scenario_load_text("test.yaml", text, strlen(text), &scn, err) == MCS_OK)
+        mb_model_build(scn, NULL, &m, err);
+    mcs_scenario_destroy(&scn);
+    return m;
+}
+
+/* Elastic bounce: energy is conserved, so the ball climbs back to its drop height 0.5 m.
+ * Errors: the free fall of semi-implicit Euler lowers the height by g h t / 2 per leg
+ * (1.4e-5 m) and the contact's w h = 3.2e-3 error stays in the contact energy, which is zero
+ * after separation up to O((w h)^2); 1e-4 m (2e-4 relative) bounds both. */
+static void test_elastic_bounce_returns_to_height(void)
+{
+    mb_model *m = load_model("scenarios/verification/bounce_elastic.yaml");
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    double zmin = 1, zmax_after = 0, fmax = 0;
+    int touched = 0;
+    while (s->step < m->nsteps) {
+        CHECK(mb_step(m, s, &err) == MCS_OK);
+        double z = s->kin[0].pos[2];
+        if (z < zmin) zmin = z;
+        if (s->pair[0].fn > fmax) fmax = s->pair[0].fn;
+        if (s->pair[0].depth > 0) touched = 1;
+        if (touched && s->pair[0].depth == 0 && z > zmax_after) zmax_after = z;
+    }
+    /* deepest point: m g (0.4 + d) = k d^2 / 2 -> d = (m g + sqrt((m g)^2 + 0.8 k m g)) / k */
+    double mg = 9.81, k = 1e5;
+    double d = (mg + sqrt(mg * mg + 0.8 * k * mg)) / k;
+    CHECK_NEAR(0.1 - zmin, d, 1e-4 * d * 10);
+    CHECK_NEAR(fmax, k * d, 0.01 * k * d);
+    CHECK_NEAR(zmax_after, 0.5, 1e-4);
+    /* energy balance: the elastic case keeps total energy to 0.2 % of the largest energy */
+    CHECK(mb_energy_drift(m, s) < 2e-3);
+    CHECK(s->e.dissipated == 0);
+    CHECK(s->nrec == m->nout);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* Damped bounce, m x'' + c x' + k x = 0 during contact with x the penetration and x(0) = 0,
+ * x'(0) = v0: x = (v0 / wd) exp(-z w t) sin(wd t), w = sqrt(k / m), wd = w sqrt(1 - z^2).
+ * Without the clamp the ball would leave at wd t = pi with the textbook restitution
+ * e0 = exp(-z pi / sqrt(1 - z^2)) (e.g. Stronge, Impact Mechanics, 2000). The force
+ * k x + c x' is clamped at 0 (a contact never pulls), so the ball leaves earlier, when
+ * k x + c x' = 0: dividing by m v0 w exp(...): (w/wd)(1 - 2 z^2) sin(wd t) + 2 z cos(wd t) = 0,
+ * tan(wd t*) = -2 z sqrt(1 - z^2) / (1 - 2 z^2), wd t* in (pi/2, pi) for z < 1/sqrt(2); then
+ * e = -x'(t*) / v0 = -exp(-z w t*) (cos(wd t*) - z / sqrt(1 - z^2) sin(wd t*)), larger than e0.
+ * After t* the force stays 0 (x keeps shrinking), so the exit speed is e v0. */
+static void test_damped_bounce_matches_exact_solution(void)
+{
+    mb_model *m = load_model("scenarios/verification/bounce_damped.yaml");
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    double k = 1e5, mass = 1, z = 0.2, v0 = 2;
+    double w = sqrt(k / mass), wd = w * sqrt(1 - z * z);
+    double ts = (M_PI - atan(2 * z * sqrt(1 - z * z) / (1 - 2 * z * z))) / wd;
+    double e = -exp(-z * w * ts) * (cos(wd * ts) - z / sqrt(1 - z * z) * sin(wd * ts));
+    double e0 = exp(-z * M_PI / sqrt(1 - z * z));
+    double t0 = -1, xmax = 0, err_x = 0;
+    while (s->step < m->nsteps) {
+        CHECK(mb_step(m, s, &err) == MCS_OK);
+        double x = s->pair[0].depth;
+        if (x > 0 && t0 < 0) t0 = s->t - x / v0; /* first touch, interpolated */
+        if (x > xmax) xmax = x;
+        /* penetration against the exact solution while the force acts */
+        if (x > 0 && s->pair[0].fn > 0) {
+            double t = s->t - t0;
+            double xe = v0 / wd * exp(-z * w * t) * sin(wd * t);
+            if (fabs(x - xe) > err_x) err_x = fabs(x - xe);
+        }
+    }
+    double vout = s->kin[0].vel[2];
+    /* x_max = (v0 / wd) exp(-z w t_m) sin(wd t_m), tan(wd t_m) = sqrt(1 - z^2) / z */
+    double tm = atan(sqrt(1 - z * z) / z) / wd;
+    double xm = v0 / wd * exp(-z * w * tm) * sin(wd * tm);
+    printf("damped bounce: e = %.5f (exact, clamped %.5f; unclamped %.5f), x_max %.6g (exact "
+           "%.6g), max |x - x_exact| %.3g m\n",
+           vout / v0, e, e0, xmax, xm, err_x);
+    CHECK(e > e0);
+    CHECK_NEAR(vout / v0, e, 0.01 * e);
+    CHECK_NEAR(xmax, xm, 0.005 * xm);
+    CHECK(err_x < 0.01 * xm);
+    /* balance: kinetic energy lost = dissipated by the damper (no hysteresis) */
+    CHECK_NEAR(s->e.dissipated, 0.5 * mass * (v0 * v0 - vout * vout), 0.01 * s->e.dissipated);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* Two spheres with hysteresis: loading k1 to the deepest point d (relative kinetic energy
+ * mu v^2 / 2 = k1 d^2 / 2), unloading on the line of slope k2 from (d, k1 d) gives back
+ * (k1 d)^2 / (2 k2). So e^2 = v_out^2 / v^2 = k1 / k2 (e = 0.5 for k1 = 1e5, k2 = 4e5 N/m) and
+ * the hysteresis loop dissipates its area (1 - k1/k2) mu v^2 / 2 = 3.375 J. Equal and opposite
+ * forces at one point keep the momentum to rounding. */
+static void test_two_spheres_momentum_restitution_loop_area(void)
+{
+    mb_model *m = load_model("scenarios/verification/two_spheres.yaml");
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    double m1 = 1, m2 = 3, v1 = 2, v2 = -1, p0 = m1 * v1 + m2 * v2, dp = 0;
+    while (s->step < m->nsteps) {
+        CHECK(mb_step(m, s, &err) == MCS_OK);
+        double p[3];
+        for (int i = 0; i < 3; i++) p[i] = m1 * s->kin[0].vel[i] + m2 * s->kin[1].vel[i];
+        double d = fabs(p[0] - p0) + fabs(p[1]) + fabs(p[2]);
+        if (d > dp) dp = d;
+    }
+    CHECK(s->pair[0].depth == 0); /* apart again */
+    double u1 = s->kin[0].vel[0], u2 = s->kin[1].vel[0];
+    double e = (u2 - u1) / (v1 - v2);
+    double mu = m1 * m2 / (m1 + m2), v = v1 - v2;
+    double diss = 0.5 * mu * v * v * (1 - 1e5 / 4e5);
+    printf("two spheres: e = %.5f (exact 0.5), momentum error %.3g kg m/s, dissipated %.5f J "
+           "(loop area %.5f J)\n",
+           e, dp, s->e.dissipated, diss);
+    CHECK(dp < 1e-12);
+    CHECK_NEAR(e, 0.5, 0.005);
+    CHECK_NEAR(s->e.dissipated, diss, 0.005 * diss);
+    /* the balance closes: kinetic energy lost = dissipated */
+    double ke = 0.5 * (m1 * u1 * u1 + m2 * u2 * u2), ke0 = 0.5 * (m1 * v1 * v1 + m2 * v2 * v2);
+    CHECK_NEAR(ke0 - ke, s->e.dissipated, 1e-3 * diss);
+    CHECK(mb_energy_drift(m, s) < 5e-3);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* Pendulum: period T = 2 pi sqrt(I_O / (m g d)) (1 + theta0^2/16 + 11 theta0^4/3072 + ...),
+ * the series of 2 K(sin(theta0 / 2)) / pi (e.g. Landau & Lifshitz, Mechanics, §11 problem 1).
+ * Measured from successive upward zero crossings of the bob's x, linearly interpolated between
+ * 1 kHz samples; h = 100 us here (w h = 4.3e-4). */
+static void test_pendulum_keeps_its_period(void)
+{
+    mb_model *m = load_model("scenarios/verification/pendulum.yaml");
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    while (s->step < m->nsteps) CHECK(mb_step(m, s, &err) == MCS_OK);
+    double cross[8];
+    int nc = 0;
+    for (long i = 1; i < s->nrec && nc < 8; i++) {
+        double x0 = s->rec_body[(i - 1) * MB_BODY_ROW], x1 = s->rec_body[i * MB_BODY_ROW];
+        if (x0 < 0 && x1 >= 0) cross[nc++] = s->rec_t[i - 1] + (s->rec_t[i] - s->rec_t[i - 1]) *
+                                                                    (-x0) / (x1 - x0);
+    }
+    CHECK(nc >= 2);
+    double th = 5 * M_PI / 180;
+    double T = 2 * M_PI * sqrt(0.26 / (9.81 * 0.5)) *
+               (1 + th * th / 16 + 11 * pow(th, 4) / 3072);
+    double Tm = nc >= 2 ? (cross[nc - 1] - cross[0]) / (nc - 1) : 0;
+    printf("pendulum: period %.6f s (exact %.6f s), energy drift %.3g\n", Tm, T,
+           mb_energy_drift(m, s));
+    CHECK_NEAR(Tm, T, 2e-4 * T);
+    CHECK(mb_energy_drift(m, s) < 1e-3);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+static uint64_t fnv(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *c = p;
+    for (size_t i = 0; i < n; i++) h = (h ^ c[i]) * 1099511628211ULL;
+    return h;
+}
+
+static uint64_t run_hash(const char *path)
+{
+    mb_model *m = load_model(path);
+    if (!m) return 0;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    uint64_t h = 1469598103934665603ULL;
+    if (mb_state_create(m, &s, &err) == MCS_OK) {
+        while (s->step < m->nsteps && mb_step(m, s, &err) == MCS_OK) {}
+        h = fnv(h, s->rec_body, sizeof(double) * s->nrec * m->nbody * MB_BODY_ROW);
+        h = fnv(h, s->rec_energy, sizeof(double) * s->nrec * MB_NENERGY);
+    }
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+    return h;
+}
+
+/* the same input gives the same bytes: two runs hash the same */
+static void test_determinism(void)
+{
+    uint64_t a = run_hash("scenarios/verification/two_spheres.yaml");
+    uint64_t b = run_hash("scenarios/verification/two_spheres.yaml");
+    CHECK(a != 0);
+    CHECK(a == b);
+}
+
+/* a contact far too stiff for the step (w h = 3.2 > 2) blows up: MCS_ERR_NUMERIC naming the
+ * body and the time */
+static void test_instability_is_reported(void)
+{
+    const char *y = "mcrash: 1\n"
+                    "simulation: {end_time: 0.1 s, time_step: 100 us}\n"
+                    "environment: {gravity: 9.81, ground: {height: 0}}\n"
+                    "characteristics: {stiff: {loading: [[0, 0], [0.001, 1e6]]}}\n"
+                    "bodies:\n"
+                    "  - {name: ball, mass: 1, inertia: [0.004, 0.004, 0.004],\n"
+                    "     position: [0, 0, 0.1005], velocity: [0, 0, -1],\n"
+                    "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [0.1, 0.1, "
+                    "0.1]}]}\n"
+                    "contacts: [{a: ball, b: ground, characteristic: stiff}]\n";
+    mcs_error err = {0};
+    mb_model *m = load_text(y, &err);
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    mcs_status st = MCS_OK;
+    while (!st && s->step < m->nsteps) st = mb_step(m, s, &err);
+    CHECK(st == MCS_ERR_NUMERIC);
+    CHECK_STR_CONTAINS(err.msg, "ball");
+    CHECK_STR_CONTAINS(err.msg, "t = ");
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* bad input is refused when the model is built, with FILE:LINE:COL and the key */
+static void test_build_errors_are_located(void)
+{
+    const char *head = "mcrash: 1\n"
+                       "simulation: {end_time: 0.1 s}\n"
+                       "characteristics: {pad: {loading: [[0, 0], [0.01, 1000]]},\n"
+                       "  hinge: {type: moment, loading: [[0, 0], [1, 10]]}}\n";
+    char y[2048];
+    mcs_error err = {0};
+    /* a contact with the ground but no environment.ground */
+    snprintf(y, sizeof y, "%s%s", head,
+             "bodies: [{name: b, mass: 1, inertia: [1, 1, 1], position: [0, 0, 0], velocity: "
+             "[0, 0, 0],\n  surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [1, 1, "
+             "1]}]}]\n"
+             "contacts: [{a: b, b: ground, characteristic: pad}]\n");
+    CHECK(load_text(y, &err) == NULL);
+    CHECK(err.status == MCS_ERR_KEY);
+    CHECK_STR_CONTAINS(err.msg, "test.yaml:7:");
+    CHECK_STR_CONTAINS(err.msg, "environment.ground");
+    /* a surface type stage 1 does not have */
+    mcs_error_clear(&err);
+    snprintf(y, sizeof y, "%s%s", head,
+             "bodies: [{name: b, mass: 1, inertia: [1, 1, 1], position: [0, 0, 0], velocity: "
+             "[0, 0, 0],\n  surfaces: [{type: cylinder, center: [0, 0, 0], radius: 1, length: 1, "
+             "axis: [0, 0, 1]}]}]\n");
+    CHECK(load_text(y, &err) == NULL);
+    CHECK(err.status == MCS_ERR_UNSUPPORTED);
+    CHECK_STR_CONTAINS(err.msg, "test.yaml:6:");
+    CHECK_STR_CONTAINS(err.msg, "cylinder");
+    /* a moment characteristic on a contact */
+    mcs_error_clear(&err);
+    snprintf(y, sizeof y, "%s%s", head,
+             "environment: {ground: {height: 0}}\n"
+             "bodies: [{name: b, mass: 1, inertia: [1, 1, 1], position: [0, 0, 2], velocity: "
+             "[0, 0, 0],\n  surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [1, 1, "
+             "1]}]}]\n"
+             "contacts: [{a: b, b: ground, characteristic: hinge}]\n");
+    CHECK(load_text(y, &err) == NULL);
+    CHECK(err.status == MCS_ERR_TYPE);
+    CHECK_STR_CONTAINS(err.msg, "contacts[0].characteristic");
+    /* a model file (no simulation block) cannot run */
+    mcs_error_clear(&err);
+    CHECK(load_text("mcrash: 1\nbodies: [{name: b, mass: 1, inertia: [1, 1, 1], position: [0, "
+                    "0, 0], velocity: [0, 0, 0]}]\n",
+                    &err) == NULL);
+    CHECK_STR_CONTAINS(err.msg, "simulation");
+}
+
+int main(void)
+{
+    RUN(test_elastic_bounce_returns_to_height);
+    RUN(test_damped_bounce_matches_exact_solution);
+    RUN(test_two_spheres_momentum_restitution_loop_area);
+    RUN(test_pendulum_keeps_its_period);
+    RUN(test_determinism);
+    RUN(test_instability_is_reported);
+    RUN(test_build_errors_are_located);
+    TEST_END();
+}

@@ -1,0 +1,170 @@
+/* test_mb_run_cli.c: `mcrash run` / `mcrash stage1` end to end: a scenario to a results file
+ * with the DESIGN.md layout, the --json summary, exit statuses 1 (instability, no file left)
+ * and 2 (bad input), and the dispatch of --stage. */
+#include "cli_util.h"
+#include "core/mcs_results.h"
+#include "harness.h"
+
+#include <dirent.h>
+#include <sys/stat.h>
+
+static char tmpdir[64];
+
+static void make_tmpdir(void)
+{
+    snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_s1_XXXXXX");
+    if (!mkdtemp(tmpdir)) tmpdir[0] = 0;
+}
+
+static int count_files(const char *dir)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    if (!d) return -1;
+    for (struct dirent *e; (e = readdir(d));)
+        if (e->d_name[0] != '.') n++;
+    closedir(d);
+    return n;
+}
+
+static void test_run_writes_results_and_json(void)
+{
+    char args[512], out[256];
+    snprintf(out, sizeof out, "%s/bounce.h5", tmpdir);
+    snprintf(args, sizeof args, "run scenarios/verification/two_spheres.yaml -o %s --json", out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "\"stage1\": {\"steps\": 4000");
+    CHECK_STR_CONTAINS(r->out, "\"bodies\": 2");
+    CHECK_STR_CONTAINS(r->out, "\"wall_time_s\"");
+    CHECK_STR_CONTAINS(r->out, "\"energy_drift\"");
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    mcs_array a = {0};
+    CHECK(mcs_results_read(h, "/stage1/time", &a, &err) == MCS_OK);
+    CHECK(a.n == 401); /* 40 ms at 10 kHz, t = 0 included */
+    CHECK_NEAR(a.v[400], 0.04, 1e-12);
+    CHECK(strcmp(a.unit, "s") == 0);
+    mcs_array_free(&a);
+    CHECK(mcs_results_read(h, "/stage1/bodies/b/orientation", &a, &err) == MCS_OK);
+    CHECK(a.rank == 2 && a.dims[0] == 401 && a.dims[1] == 4);
+    CHECK_NEAR(a.v[0], 1, 1e-12); /* w of the identity quaternion */
+    mcs_array_free(&a);
+    CHECK(mcs_results_read(h, "/stage1/bodies/a/velocity", &a, &err) == MCS_OK);
+    CHECK_NEAR(a.v[0], 2, 1e-12);
+    /* after impact: v_cm - e (m2 / M) (v1 - v2) = -0.25 - 0.5 * 0.75 * 3 = -1.375 m/s */
+    CHECK_NEAR(a.v[400 * 3], -1.375, 0.01);
+    mcs_array_free(&a);
+    const char *kinds[] = {"kinetic", "potential", "internal", "contact", "dissipated",
+                           "external_work", "total"};
+    for (int i = 0; i < 7; i++) {
+        char p[64];
+        snprintf(p, sizeof p, "/stage1/energy/%s", kinds[i]);
+        CHECK(mcs_results_read(h, p, &a, &err) == MCS_OK);
+        CHECK(a.n == 401 && strcmp(a.unit, "J") == 0);
+        mcs_array_free(&a);
+    }
+    CHECK(mcs_results_read(h, "/stage1/energy/total", &a, &err) == MCS_OK);
+    CHECK_NEAR(a.v[400], a.v[0], 5e-3 * a.v[0]);
+    mcs_array_free(&a);
+    char *s = NULL;
+    CHECK(mcs_results_attr_str(h, "/meta", "scenario", &s, &err) == MCS_OK);
+    CHECK_STR_CONTAINS(s, "two spheres");
+    free(s);
+    mcs_results_close(&h);
+}
+
+/* sensors become SAE J211 channels (z down): the kinematic acceleration of the falling ball is
+ * +9.81 m/s^2 in J211 z; in contact it points up (negative) */
+static void test_sensor_channels(void)
+{
+    char args[512], out[256];
+    snprintf(out, sizeof out, "%s/elastic.h5", tmpdir);
+    snprintf(args, sizeof args, "stage1 scenarios/verification/bounce_elastic.yaml -o %s --quiet",
+             out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    mcs_array a = {0};
+    CHECK(mcs_results_read(h, "/stage1/channels/ball_az", &a, &err) == MCS_OK);
+    CHECK(strcmp(a.unit, "m/s^2") == 0);
+    CHECK_NEAR(a.v[1000], 9.81, 1e-6); /* t = 0.1 s, free fall */
+    double amin = 0;
+    for (size_t i = 0; i < a.n; i++)
+        if (a.v[i] < amin) amin = a.v[i];
+    CHECK(amin < -500); /* the contact pushes up: about -(k d / m - g) = -880 m/s^2 */
+    mcs_array_free(&a);
+    char *s = NULL;
+    CHECK(mcs_results_attr_str(h, "/stage1/channels/ball_ax", "frame", &s, &err) == MCS_OK);
+    CHECK_STR_CONTAINS(s, "SAE J211");
+    free(s);
+    CHECK(mcs_results_attr_str(h, "/stage1/channels/ball_ay", "body", &s, &err) == MCS_OK);
+    CHECK_STR_CONTAINS(s, "ball");
+    free(s);
+    mcs_results_close(&h);
+}
+
+static void test_unstable_run_exits_1_without_file(void)
+{
+    char scn[256], out[256], args[768];
+    snprintf(scn, sizeof scn, "%s/unstable.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/sub/unstable.h5", tmpdir);
+    char sub[256];
+    snprintf(sub, sizeof sub, "%s/sub", tmpdir);
+    mkdir(sub, 0700);
+    FILE *f = fopen(scn, "w");
+    CHECK(f != NULL);
+    if (!f) return;
+    fputs("mcrash: 1\n"
+          "simulation: {end_time: 0.1 s, time_step: 100 us}\n"
+          "environment: {gravity: 9.81, ground: {height: 0}}\n"
+          "characteristics: {stiff: {loading: [[0, 0], [0.001, 1e6]]}}\n"
+          "bodies:\n"
+          "  - {name: ball, mass: 1, inertia: [0.004, 0.004, 0.004], position: [0, 0, 0.1005],\n"
+          "     velocity: [0, 0, -1],\n"
+          "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [0.1, 0.1, 0.1]}]}\n"
+          "contacts: [{a: ball, b: ground, characteristic: stiff}]\n",
+          f);
+    fclose(f);
+    snprintf(args, sizeof args, "run %s -o %s --quiet", scn, out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 1);
+    CHECK_STR_CONTAINS(r->err, "ball");
+    CHECK_STR_CONTAINS(r->err, "t = ");
+    CHECK(count_files(sub) == 0); /* neither the file nor its temporary */
+}
+
+static void test_bad_input_and_stage_dispatch(void)
+{
+    cli_result *r = cli_run("run scenarios/models/pendulum_arm.yaml -o /dev/null/x.h5");
+    CHECK(r->status == 2); /* a model file: no simulation block */
+    CHECK_STR_CONTAINS(r->err, "simulation");
+    r = cli_run("run scenarios/verification/two_spheres.yaml --stage 5");
+    CHECK(r->status == 2);
+    r = cli_run("run scenarios/verification/two_spheres.yaml --stage 2");
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "not built");
+    r = cli_run("run");
+    CHECK(r->status == 2);
+    r = cli_run("stage1 --help");
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "mcrash stage1");
+}
+
+int main(void)
+{
+    make_tmpdir();
+    RUN(test_run_writes_results_and_json);
+    RUN(test_sensor_channels);
+    RUN(test_unstable_run_exits_1_without_file);
+    RUN(test_bad_input_and_stage_dispatch);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
+    if (tmpdir[0] && system(cmd) != 0) fprintf(stderr, "cannot remove %s\n", tmpdir);
+    TEST_END();
+}

@@ -183,7 +183,8 @@ void fe_hex_part(const fe_model *m, fe_state *s, int ip)
             }
         double *hg = s->hex_hg + 12 * e, fh[4][3];
         if (visc) {
-            double ch = qhg * rho * c0 * cbrt(vol * vol) / 4;
+            /* a rate force needs a rate: none before the first step */
+            double ch = dt > 0 ? qhg * rho * c0 * cbrt(vol * vol) / 4 : 0;
             for (int al = 0; al < 4; al++)
                 for (int i = 0; i < 3; i++) {
                     fh[al][i] = ch * qh[al][i];

@@ -163,7 +163,7 @@ void fe_shell_part(const fe_model *m, fe_state *s, int ip)
         double *hg = s->shell_hg + 5 * (size_t)e;
         for (int i = 0; i < 5; i++) {
             if (visc) {
-                fh[i] = kk[i] * (len / c0) * qh[i];
+                fh[i] = dt > 0 ? kk[i] * (len / c0) * qh[i] : 0; /* no rate before step 1 */
                 e_hg += 0.5 * (hg[i] + fh[i]) * qh[i] * dt;
                 hg[i] = fh[i];
             } else {

@@ -106,6 +106,7 @@ void fe_integrate(const fe_model *m, fe_state *s)
 {
     const double dt = s->dt, dtp = s->dt_prev, dth = 0.5 * (dt + dtp), tn = s->time + dt;
     const double c = m->opts.damping, d0 = 1 - 0.5 * c * dth, d1 = 1 / (1 + 0.5 * c * dth);
+    const double hb = dtp > 0 ? dth : 0; /* weight of the interval before t */
     unsigned kin = 0;
     for (int w = 0; w < m->nwall; w++)
         if (m->wall[w].method == FE_WALL_KINEMATIC) kin |= 1u << w;
@@ -138,16 +139,18 @@ void fe_integrate(const fe_model *m, fe_state *s)
                 s->wall_force[3 * w + i] -= mass * dv / dth * W->normal[i];
             }
         }
-        /* trapezoidal works: backward half now, forward half pending (see fe_state.h) */
+        /* works of the forces at t: half on the interval before (now), half on the one after
+         * (pending), each weighted by the velocity-update step dth, which makes
+         * K(n+1) - K(n) = sum of the works exactly (fe_state.h); no interval before t = 0 */
         double ek = 0;
         for (int i = 0; i < 3; i++) {
             double r = mass * (vn[i] - vfree[i]) / dth; /* constraint and wall reaction */
             double fd = -c * mass * 0.5 * (vo[i] + vn[i]);
             ek += vo[i] * vn[i];
-            wb += 0.5 * (fe[i] + r) * dtp * vo[i];
-            wf += 0.5 * (fe[i] + r) * dt * vn[i];
-            db -= 0.5 * fd * dtp * vo[i];
-            dfw -= 0.5 * fd * dt * vn[i];
+            wb += 0.5 * (fe[i] + r) * hb * vo[i];
+            wf += 0.5 * (fe[i] + r) * dth * vn[i];
+            db -= 0.5 * fd * hb * vo[i];
+            dfw -= 0.5 * fd * dth * vn[i];
             v[i] = vn[i];
             x[i] += dt * vn[i];
         }
@@ -161,8 +164,8 @@ void fe_integrate(const fe_model *m, fe_state *s)
                 double wo = w[i], wn = (d0 * wo - dth * mi[i] / in) * d1;
                 if (fix & (8u << i)) wn = 0;
                 ek += 0.5 * in * wo * wn;
-                db += 0.5 * c * in * 0.5 * (wo + wn) * dtp * wo;
-                dfw += 0.5 * c * in * 0.5 * (wo + wn) * dt * wn;
+                db += 0.5 * c * in * 0.5 * (wo + wn) * hb * wo;
+                dfw += 0.5 * c * in * 0.5 * (wo + wn) * dth * wn;
                 w[i] = wn;
             }
             if (!isfinite(w[0] + w[1] + w[2]) && bad < 0) bad = n;

@@ -407,6 +407,141 @@ static void test_instability_detected(void)
     fe_builder_destroy(&b);
 }
 
+/* Hourglass control. A free unit cube moving in the x-xi-eta hourglass mode (v_x = v0 h_I,
+ * h = xi eta at the nodes) has no strain at its centre, so a one-point element alone would not
+ * resist it. The stiffness form gives the mode a stiffness k = Q (lambda + 2 mu) V sum b.b / 8
+ * (fe_hex.c); for a cube of side a, b_I = (xi, eta, zeta)_I / 4a, so
+ *   omega^2 = 64 k / (rho V) = 12 Q (lambda + 2 mu) / (rho a^2),
+ * and the kinetic energy first vanishes at t = pi / (2 omega). The viscous form dissipates it
+ * (hourglass energy takes the kinetic energy, the balance closes), and the centre stays
+ * unstrained in both. */
+static void test_hourglass_mode(void)
+{
+    for (int form = 0; form < 2; form++) {
+        mcs_error err = {0};
+        fe_builder *b;
+        fe_builder_create(&b, &err);
+        fe_part_desc d = ft_part("cube", FE_SECTION_SOLID, 70e9, 0.3, 2700);
+        d.section.hourglass = form ? FE_HG_VISCOUS : FE_HG_STIFFNESS;
+        d.mesh.generate = FE_MESH_BOX;
+        d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = 1;
+        d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 1;
+        CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+        fe_opts o = fe_opts_default();
+        fe_model *m;
+        CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+        const fe_part *p = &m->part[0];
+        const double c = p->wave_speed, Q = p->hg_coef;
+        const double omega = sqrt(12 * Q * (p->lambda + 2 * p->mu) / 2700.0);
+        fe_model_destroy(&m);
+        o.dt_max = 0.01 / omega; /* resolve the oscillation */
+        CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+        fe_state *s;
+        CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+        const double v0 = 1e-3;
+        for (int n = 0; n < 8; n++) /* generated node n = i + 2 j + 4 k */
+            s->node_v[3 * n] = v0 * (n & 1 ? 1 : -1) * (n & 2 ? 1 : -1);
+        double kmin = INFINITY, tmin = 0, ek0 = -1, emax = 0, smax = 0;
+        while (s->time < 1.2 * M_PI / (2 * omega) && fe_step(m, s) == MCS_OK) {
+            if (ek0 < 0) ek0 = s->energy[FE_E_kinetic];
+            if (s->energy[FE_E_kinetic] < kmin) kmin = s->energy[FE_E_kinetic], tmin = s->energy_time;
+            emax = fmax(emax, fabs(s->energy[FE_E_total] - s->energy0));
+            for (int i = 0; i < 6; i++) smax = fmax(smax, fabs(s->hex_sig[i]));
+        }
+        CHECK(s->err.status == MCS_OK);
+        /* centre unstrained: stresses of second order only (rho c v0 = 1.4e4 Pa for scale) */
+        CHECK(smax < 1e-3 * 2700 * c * v0);
+        printf("hourglass form %d: energy error %.2e of the initial kinetic energy\n", form,
+               emax / ek0);
+        CHECK(emax < 1e-3 * ek0);
+        if (form == 0) {
+            printf("hourglass (stiffness): kinetic energy minimum at %.5g s, pi/(2 omega) %.5g s\n",
+                   tmin, M_PI / (2 * omega));
+            CHECK_REL(tmin, M_PI / (2 * omega), 0.01);
+            CHECK(kmin < 1e-3 * ek0);
+        } else {
+            printf("hourglass (viscous): kinetic energy %.3g of the initial, hourglass energy %.3g J "
+                   "of %.3g J\n",
+                   s->energy[FE_E_kinetic] / ek0, s->energy[FE_E_hourglass], ek0);
+            CHECK(s->energy[FE_E_kinetic] < ek0);
+            CHECK(s->energy[FE_E_hourglass] > 0);
+        }
+        fe_state_destroy(&s);
+        fe_model_destroy(&m);
+        fe_builder_destroy(&b);
+    }
+}
+
+/* Determinism and independent states (STYLE.md §1): two states of one model, stepped in
+ * alternation, and a reset state, give the same bytes. */
+static void test_determinism(void)
+{
+    fe_builder *b = bar_builder(0.3, 0.02, 15, -3.0);
+    mcs_error err = {0};
+    fe_wall_desc w;
+    memset(&w, 0, sizeof w);
+    snprintf(w.name, sizeof w.name, "wall");
+    w.normal[0] = 1;
+    fe_builder_add_wall(b, &w, &err);
+    fe_model *m;
+    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+    fe_state *s1, *s2;
+    CHECK(fe_state_create(m, &s1, &err) == MCS_OK);
+    CHECK(fe_state_create(m, &s2, &err) == MCS_OK);
+    for (int i = 0; i < 150; i++) {
+        fe_step(m, s1);
+        fe_step(m, s2);
+    }
+    size_t nb = sizeof(double) * 3 * (size_t)m->nnode;
+    CHECK(memcmp(s1->node_x, s2->node_x, nb) == 0);
+    CHECK(memcmp(s1->hex_sig, s2->hex_sig, sizeof(double) * 6 * (size_t)m->nhex) == 0);
+    CHECK(memcmp(s1->energy, s2->energy, sizeof s1->energy) == 0);
+    fe_state_reset(m, s2);
+    for (int i = 0; i < 150; i++) fe_step(m, s2);
+    CHECK(memcmp(s1->node_v, s2->node_v, nb) == 0);
+    CHECK(s1->time == s2->time && s1->nstep == 150);
+    fe_state_destroy(&s1);
+    fe_state_destroy(&s2);
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+}
+
+/* (make verify) mesh convergence of the wave front: at 4x the elements the arrival time error
+ * at L/2 shrinks (dispersion of the lumped-mass one-point element, front rise ~ a few h) */
+static void test_wave_front_convergence(void)
+{
+    if (!th_verify()) return;
+    double errs[2];
+    const int nxs[2] = {100, 400};
+    for (int k = 0; k < 2; k++) {
+        const double L = 1.0, a = 0.01, v0 = 5.0;
+        fe_builder *b = bar_builder(L, a, nxs[k], -v0);
+        mcs_error err = {0};
+        fe_wall_desc w;
+        memset(&w, 0, sizeof w);
+        snprintf(w.name, sizeof w.name, "wall");
+        w.normal[0] = 1;
+        fe_builder_add_wall(b, &w, &err);
+        fe_model *m;
+        CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+        fe_state *s;
+        CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+        int mid[4];
+        CHECK(ft_nodes_at(m, 0, L / 2, 1e-9, mid, 4) == 4);
+        const double c = sqrt(E_ST / RHO_ST);
+        double t_front = -1;
+        while (t_front < 0 && s->time < L / c && fe_step(m, s) == MCS_OK)
+            if (s->node_v[3 * mid[0]] > -0.5 * v0) t_front = s->time - 0.5 * s->dt_prev;
+        errs[k] = t_front / (L / (2 * c)) - 1;
+        printf("wave front, %d elements: arrival error %+.3f %%\n", nxs[k], 100 * errs[k]);
+        fe_state_destroy(&s);
+        fe_model_destroy(&m);
+        fe_builder_destroy(&b);
+    }
+    CHECK(fabs(errs[1]) < 0.5 * fabs(errs[0]));
+    CHECK(fabs(errs[1]) < 0.005);
+}
+
 int main(void)
 {
     RUN(test_bar_impact);
@@ -416,5 +551,8 @@ int main(void)
     RUN(test_truss);
     RUN(test_moving_wall);
     RUN(test_instability_detected);
+    RUN(test_hourglass_mode);
+    RUN(test_determinism);
+    RUN(test_wave_front_convergence);
     TEST_END();
 }

@@ -59,8 +59,11 @@ int cli_stage1_scenario(const mcs_scenario *scn, const char *out_path, int quiet
         printf("{\"output\": ");
         json_string(out_path);
         printf(", \"stage1\": {\"steps\": %ld, \"bodies\": %d, \"wall_time_s\": %.6g, "
-               "\"energy_drift\": %.6g, \"end_time_s\": %.9g}}\n",
+               "\"energy_drift\": %.6g, \"end_time_s\": %.9g, \"timers_s\": {",
                sum.steps, sum.bodies, sum.wall_time_s, sum.energy_drift, sum.t_end);
+        for (int k = 0; k < MB_NTIMER; k++)
+            printf("%s\"%s\": %.4g", k ? ", " : "", mb_timer_name(k), sum.timer[k]);
+        printf("}}}\n");
     } else if (!quiet) {
         fprintf(stderr, "stage 1: %ld steps, %d bodies, %.3g s wall, energy drift %.3g -> %s\n",
                 sum.steps, sum.bodies, sum.wall_time_s, sum.energy_drift, out_path);

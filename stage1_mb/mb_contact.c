@@ -61,6 +61,14 @@ static void detect_pair(const mb_model *m, mb_state *s, int i)
     }
     mb_ellipsoid eb;
     place_ellipsoid(sb, kin_of(s, p->bb), &eb);
+    /* broad phase: bounding spheres apart -> no contact, no Newton iterations */
+    double d[3], ra = fmax(ea.semi[0], fmax(ea.semi[1], ea.semi[2]));
+    double rb = fmax(eb.semi[0], fmax(eb.semi[1], eb.semi[2]));
+    mb_sub(ea.center, eb.center, d);
+    if (mb_dot(d, d) >= (ra + rb) * (ra + rb)) {
+        c->depth = 0;
+        return;
+    }
     if (sa->sphere && sb->sphere) {
         mb_geom_sphere_sphere(ea.center, ea.semi[0], eb.center, eb.semi[0], c);
         return;

@@ -1,5 +1,7 @@
 /* mb_energy.c: the energy sub-stage of mb_step: the balance of mb_model.h at the current
- * poses (s->kin, detected after the ODE step). Contacts and one-axis restraints are evaluated
+ * poses (s->kin, detected after the ODE step), evaluated at the output samples (the drift and
+ * the growth check are therefore measured at the output rate; NaN is caught every step by
+ * mb_world_step). Contacts and one-axis restraints are evaluated
  * at the new deflection on a copy of their history (nothing is committed here); three-axis
  * restraints and attachments report the deflection of their last apply (half a step behind:
  * an O(h) term of the balance). The growth check stops a run whose total energy rises by more

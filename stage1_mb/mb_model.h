@@ -274,10 +274,18 @@ typedef struct {
     double wall_time_s; /* wall time of the time loop and output [s]                        */
     double energy_drift; /* largest |total - total0| / reference energy [-]                 */
     double t_end;       /* simulated time reached [s]                                       */
+    double timer[MB_NTIMER]; /* wall time per step sub-stage [s]                            */
 } mb_run_summary;
+
+/* name of a timer slot ("contact", "integrate", ...) */
+const char *mb_timer_name(int k);
 
 /* run the model to its end time and write the results (nothing is left on failure) */
 mcs_status mb_run(const mb_model *m, const mb_run_opts *o, mb_run_summary *sum, mcs_error *err);
+
+/* add /stage1/injury to a committed results file from its channels (mb_injury.c); *ncrit
+ * criteria written (0 when no known dummy channel exists) */
+mcs_status mb_injury_write(const char *path, int *ncrit, mcs_error *err);
 
 /* write /stage1 of the recorded state into an open results file (mb_output.c) */
 mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r, mcs_error *err);

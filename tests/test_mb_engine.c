@@ -193,6 +193,135 @@ static void test_pendulum_keeps_its_period(void)
     mb_model_destroy(&m);
 }
 
+/* run a scenario file to its end; NULL model on failure */
+static mb_state *run_file(const char *path, mb_model **pm)
+{
+    *pm = load_model(path);
+    if (!*pm) return NULL;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    if (mb_state_create(*pm, &s, &err)) return NULL;
+    while (s->step < (*pm)->nsteps)
+        if (mb_step(*pm, s, &err)) {
+            fprintf(stderr, "%s: %s\n", path, err.msg);
+            break;
+        }
+    return s;
+}
+
+/* Restrained revolute joint: I theta'' = -k theta, theta(0) = 0, theta'(0) = w0:
+ * theta = (w0 / W) sin(W t), W = sqrt(k / I); the torsional oscillator of any dynamics text.
+ * Period from the recorded angular velocity's downward zero crossings (1e-4 s samples,
+ * interpolated); energy swaps between kinetic and internal (restraint) with the total kept. */
+static void test_restraint_oscillator(void)
+{
+    mb_model *m = NULL;
+    mb_state *s = run_file("scenarios/verification/torsion_restraint.yaml", &m);
+    CHECK(s != NULL);
+    if (!s) return;
+    double W = sqrt(10 / 0.01), T = 2 * M_PI / W, amp = 1 / W;
+    double cross[8], emax_int = 0;
+    int nc = 0;
+    for (long i = 1; i < s->nrec; i++) {
+        double w0 = s->rec_body[(i - 1) * MB_BODY_ROW + 11], w1 = s->rec_body[i * MB_BODY_ROW + 11];
+        if (w0 > 0 && w1 <= 0 && nc < 8)
+            cross[nc++] = s->rec_t[i - 1] + (s->rec_t[i] - s->rec_t[i - 1]) * w0 / (w0 - w1);
+        double ei = s->rec_energy[i * MB_NENERGY + 2]; /* internal */
+        if (ei > emax_int) emax_int = ei;
+    }
+    CHECK(nc >= 2);
+    double Tm = nc >= 2 ? (cross[nc - 1] - cross[0]) / (nc - 1) : 0;
+    /* stored energy at the amplitude: k amp^2 / 2 = I w0^2 / 2 = 5 mJ */
+    printf("restraint oscillator: period %.6f s (exact %.6f s), peak stored %.6g J (exact %.6g J), "
+           "drift %.3g\n", Tm, T, emax_int, 0.5 * 10 * amp * amp, mb_energy_drift(m, s));
+    CHECK_NEAR(Tm, T, 1e-4 * T);
+    CHECK_NEAR(emax_int, 0.5 * 10 * amp * amp, 2e-3 * 0.005);
+    CHECK(mb_energy_drift(m, s) < 1e-3);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* Breakable attachment: x = (v0 / w) sin(w t) until k x = F_fail: t_b = asin(F_fail / (v0
+ * sqrt(k m))) / w = asin(0.5) / 100 s, then free flight at v0 cos(w t_b); the spring energy
+ * F_fail^2 / (2 k) = 0.125 J is lost with the break (dissipated). The break is detected at the
+ * first step past t_b, so times agree to one step. */
+static void test_attachment_breaks(void)
+{
+    mb_model *m = NULL;
+    mb_state *s = run_file("scenarios/verification/attachment_break.yaml", &m);
+    CHECK(s != NULL);
+    if (!s) return;
+    double tb = asin(0.5) / 100;
+    CHECK(s->att[0].broken == 1);
+    CHECK_NEAR(s->att[0].t_break, tb, 1.5 * m->h);
+    CHECK_NEAR(s->kin[0].vel[0], cos(asin(0.5)), 2e-3);
+    CHECK_NEAR(s->e.dissipated, 0.125, 0.125 * 0.01);
+    CHECK_NEAR(s->e.total, s->e_total0, 1e-3 * 0.5);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* Two deformable surfaces in series (thesis §3.2): the same force, deflections added, so the
+ * pair stiffness is k_a k_b / (k_a + k_b) = 7.5e4 N/m; head-on elastic impact of a
+ * mass-spring: deepest approach v sqrt(mu / k), contact time pi sqrt(mu / k), e = 1. */
+static void test_series_characteristics(void)
+{
+    mb_model *m = load_model("scenarios/verification/series_spheres.yaml");
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    double dmax = 0, t_in = -1, t_out = -1;
+    while (s->step < m->nsteps) {
+        CHECK(mb_step(m, s, &err) == MCS_OK);
+        double d = s->pair[0].depth;
+        if (d > dmax) dmax = d;
+        if (d > 0 && t_in < 0) t_in = s->t;
+        if (d == 0 && t_in > 0 && t_out < 0) t_out = s->t;
+    }
+    double k = 7.5e4, mu = 0.5, v = 2;
+    printf("series springs: depth %.6g m (exact %.6g), contact %.6g s (exact %.6g)\n", dmax,
+           v * sqrt(mu / k), t_out - t_in, M_PI * sqrt(mu / k));
+    CHECK_NEAR(dmax, v * sqrt(mu / k), 2e-3 * v * sqrt(mu / k));
+    CHECK_NEAR(t_out - t_in, M_PI * sqrt(mu / k), 2 * m->h);
+    CHECK_NEAR(s->kin[0].vel[0], -1, 5e-3); /* elastic: the velocities swap */
+    CHECK_NEAR(s->kin[1].vel[0], 1, 5e-3);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* Sliding sphere (e.g. Goldstein or any billiards analysis): friction at the contact point
+ * changes v and w until the point stops slipping; angular momentum about the contact point,
+ * m v r + I w, is kept, so v_end = m r^2 v0 / (m r^2 + I) = 5/7 v0 for a solid sphere, reached
+ * at t = 2 v0 / (7 mu g) with Coulomb friction; the kinetic energy lost (2/7 of m v0^2 / 2) is
+ * friction's dissipation (the regularised stick ramp below 10 mm/s adds an exponential tail). */
+static void test_sliding_sphere_starts_rolling(void)
+{
+    mb_model *m = NULL;
+    mb_state *s = run_file("scenarios/verification/rolling_sphere.yaml", &m);
+    CHECK(s != NULL);
+    if (!s) return;
+    double v0 = 2, r = 0.1, ve = 5.0 / 7.0 * v0;
+    double v = s->kin[0].vel[0], w = s->kin[0].angvel[1];
+    /* the time the slip ended: first sample with |v - w r| < 1 % of v0 */
+    double t_roll = -1;
+    for (long i = 0; i < s->nrec && t_roll < 0; i++) {
+        const double *row = s->rec_body + i * MB_BODY_ROW;
+        if (fabs(row[7] - row[11] * r) < 0.01 * v0) t_roll = s->rec_t[i];
+    }
+    double t_exact = 2 * v0 / (7 * 0.3 * 9.81);
+    printf("rolling: v %.6f m/s (exact %.6f), w r %.6f, slip ended %.4f s (Coulomb %.4f s), "
+           "dissipated %.5f J (exact %.5f J)\n",
+           v, ve, w * r, t_roll, t_exact, s->e.dissipated, 2.0 / 7.0 * 2);
+    CHECK_NEAR(v, ve, 1e-3 * ve);
+    CHECK_NEAR(w * r, ve, 1e-3 * ve);
+    CHECK_NEAR(t_roll, t_exact, 0.02 * t_exact);
+    CHECK_NEAR(s->e.dissipated, 2.0 / 7.0 * 2, 0.01 * 2.0 / 7.0 * 2);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 static uint64_t fnv(uint64_t h, const void *p, size_t n)
 {
     const unsigned char *c = p;
@@ -309,6 +438,10 @@ int main(void)
     RUN(test_damped_bounce_matches_exact_solution);
     RUN(test_two_spheres_momentum_restitution_loop_area);
     RUN(test_pendulum_keeps_its_period);
+    RUN(test_restraint_oscillator);
+    RUN(test_attachment_breaks);
+    RUN(test_series_characteristics);
+    RUN(test_sliding_sphere_starts_rolling);
     RUN(test_determinism);
     RUN(test_instability_is_reported);
     RUN(test_build_errors_are_located);

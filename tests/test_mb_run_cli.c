@@ -109,6 +109,44 @@ static void test_sensor_channels(void)
     mcs_results_close(&h);
 }
 
+/* /stage1/injury from a sensor named "head": the half-sine deceleration a = A sin(pi t / T),
+ * A = v0 sqrt(k / m), T = pi sqrt(m / k). HIC over a window of width w centred on the pulse:
+ * w A^2.5 (sin(u) / u)^2.5 with u = pi w / (2 T), i.e. (2 T / pi) A^2.5 sin(u)^2.5 / u^1.5,
+ * largest where tan(u) = 5 u / 3 (u = 1.0510); the pulse is 9.9 ms long, so HIC15 = HIC36.
+ * a3ms: the level exceeded for 3 ms, A sin((pi / 2)(1 - 3 ms / T)). Filtering at CFC 1000
+ * changes both by well under 1 %. */
+static void test_injury_from_head_channels(void)
+{
+    char args[512], out[256];
+    snprintf(out, sizeof out, "%s/head.h5", tmpdir);
+    snprintf(args, sizeof args, "run scenarios/verification/head_drop.yaml -o %s --quiet", out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    double k = 4.5e5, m = 4.5, v0 = 3, g = 9.80665;
+    double A = v0 * sqrt(k / m) / g, T = M_PI * sqrt(m / k);
+    double u = 1;
+    for (int i = 0; i < 50; i++) { /* Newton on tan(u) - 5u/3 */
+        double f = tan(u) - 5 * u / 3, df = 1 / (cos(u) * cos(u)) - 5.0 / 3;
+        u -= f / df;
+    }
+    double hic = 2 * T / M_PI * pow(A, 2.5) * pow(sin(u), 2.5) / pow(u, 1.5);
+    double a3 = A * sin(M_PI / 2 * (1 - 0.003 / T));
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    mcs_array a = {0};
+    CHECK(mcs_results_read(h, "/stage1/injury/hic15", &a, &err) == MCS_OK);
+    printf("head drop: HIC15 %.2f (half sine %.2f), ", a.n ? a.v[0] : NAN, hic);
+    CHECK(a.n == 1 && fabs(a.v[0] - hic) < 0.01 * hic);
+    mcs_array_free(&a);
+    CHECK(mcs_results_read(h, "/stage1/injury/head_a3ms", &a, &err) == MCS_OK);
+    printf("a3ms %.3f g (half sine %.3f g)\n", a.n ? a.v[0] : NAN, a3);
+    CHECK(a.n == 1 && fabs(a.v[0] - a3) < 0.01 * a3);
+    mcs_array_free(&a);
+    mcs_results_close(&h);
+}
+
 static void test_unstable_run_exits_1_without_file(void)
 {
     char scn[256], out[256], args[768];
@@ -161,6 +199,7 @@ int main(void)
     make_tmpdir();
     RUN(test_run_writes_results_and_json);
     RUN(test_sensor_channels);
+    RUN(test_injury_from_head_channels);
     RUN(test_unstable_run_exits_1_without_file);
     RUN(test_bad_input_and_stage_dispatch);
     char cmd[128];

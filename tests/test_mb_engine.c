@@ -322,6 +322,47 @@ static void test_sliding_sphere_starts_rolling(void)
     mb_model_destroy(&m);
 }
 
+/* Joint range stop: a free revolute joint (I = 0.01 kg m^2, no gravity) turning at 1 rad/s meets
+ * its stop at 0.1 rad, a linear spring of 1e3 N m/rad (the default without a characteristic):
+ * it overshoots by w0 sqrt(I / k) = 3.16 mrad, stays pi sqrt(I / k) = 9.93 ms in the stop and
+ * comes back at -1 rad/s (elastic). */
+static void test_revolute_range_stop(void)
+{
+    const char *y = "mcrash: 1\n"
+                    "simulation: {end_time: 0.13 s, time_step: 10 us}\n"
+                    "environment: {gravity: 0}\n"
+                    "bodies:\n"
+                    "  - {name: arm, mass: 1, inertia: [0.01, 0.01, 0.01], position: [0, 0, 1],\n"
+                    "     velocity: [0, 0, 0], angular_velocity: [0, 1, 0]}\n"
+                    "joints:\n"
+                    "  - {type: revolute, parent: ground, child: arm, anchor: [0, 0, 1],\n"
+                    "     axis: [0, 1, 0], range: [-0.1, 0.1]}\n";
+    mcs_error err = {0};
+    mb_model *m = load_text(y, &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    mb_state *s = NULL;
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    double qmax = 0, t_in = -1, t_out = -1;
+    while (s->step < m->nsteps) {
+        CHECK(mb_step(m, s, &err) == MCS_OK);
+        double q = mb_joint_position(s->world, 0);
+        if (q > qmax) qmax = q;
+        if (q > 0.1 && t_in < 0) t_in = s->t;
+        if (q <= 0.1 && t_in > 0 && t_out < 0) t_out = s->t;
+    }
+    double over = sqrt(0.01 / 1e3);
+    CHECK_NEAR(qmax, 0.1 + over, 0.01 * over);
+    CHECK_NEAR(t_out - t_in, M_PI * over, 2 * m->h);
+    CHECK_NEAR(s->kin[0].angvel[1], -1, 2e-3);
+    CHECK(mb_energy_drift(m, s) < 2e-3);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 static uint64_t fnv(uint64_t h, const void *p, size_t n)
 {
     const unsigned char *c = p;
@@ -439,6 +480,7 @@ int main(void)
     RUN(test_two_spheres_momentum_restitution_loop_area);
     RUN(test_pendulum_keeps_its_period);
     RUN(test_restraint_oscillator);
+    RUN(test_revolute_range_stop);
     RUN(test_attachment_breaks);
     RUN(test_series_characteristics);
     RUN(test_sliding_sphere_starts_rolling);

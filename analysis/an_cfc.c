@@ -94,6 +94,12 @@ mcs_status an_cfc_filter(const double *x, int n, double dt, double cfc, double *
     return MCS_OK;
 }
 
+mcs_status an_butterworth_filter(const double *x, int n, double dt, double fc, double *y,
+                                 mcs_error *err)
+{
+    return an_cfc_filter(x, n, dt, fc / AN_CFC_RATIO, y, err);
+}
+
 int an_signal_uniform(const an_signal *s, double rel, double *dt)
 {
     if (s->n < 2) return 0;

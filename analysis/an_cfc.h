@@ -24,6 +24,12 @@ mcs_status an_cfc_design(double cfc, double dt, an_cfc_coef *c, mcs_error *err);
 mcs_status an_cfc_filter(const double *x, int n, double dt, double cfc, double *y,
                          mcs_error *err);
 
+/* the thesis' ch. 7 Butterworth low-pass: the same 2-pole section with its -3 dB corner at
+ * fc [Hz] for one pass, run forward-backward (-6.02 dB at fc, zero phase); this is
+ * an_cfc_filter with CFC = fc / 2.0775 */
+mcs_status an_butterworth_filter(const double *x, int n, double dt, double fc, double *y,
+                                 mcs_error *err);
+
 /* filter a channel in place (must be uniformly sampled to 1e-6 of a step); sets s->cfc */
 mcs_status an_cfc_signal(an_signal *s, int cfc, mcs_error *err);
 

@@ -88,6 +88,20 @@ static void test_gain_3db(void)
     CHECK_NEAR(db(g), 20 * log10(1 / (1 + pow(1 / 2.0775, 4))), 0.02);
 }
 
+/* the thesis' Butterworth low-pass with corner fc: each pass is -3.01 dB at fc, so the
+ * forward-backward amplitude there is 1/2 (same fit and tolerance as above) */
+static void test_butterworth(void)
+{
+    double fs = 20000, fc = 500, dt = 1 / fs;
+    int n = (int)(300 / fc * fs);
+    double *x = malloc((size_t)n * sizeof(double));
+    for (int i = 0; i < n; i++) x[i] = sin(2 * M_PI * fc * i * dt);
+    mcs_error e = {0};
+    CHECK(an_butterworth_filter(x, n, dt, fc, x, &e) == MCS_OK);
+    CHECK_NEAR(sine_amplitude(x, n / 4, 3 * n / 4, dt, fc), 0.5, 1e-5);
+    free(x);
+}
+
 /* zero phase: a symmetric pulse stays symmetric and its peak does not move. Tolerance 1e-10
  * of the peak: with zero signal at both ends the forward and backward passes commute up to
  * round-off. */
@@ -154,6 +168,7 @@ int main(void)
     RUN(test_dc_gain);
     RUN(test_gain_at_design_frequency);
     RUN(test_gain_3db);
+    RUN(test_butterworth);
     RUN(test_zero_phase);
     RUN(test_ramp);
     RUN(test_signal_and_rate);

@@ -117,9 +117,22 @@ static mcs_status build_surface(const mb_model *m, const mcs_node *n, int body, 
         if ((st = mcs_node_vec3(mcs_node_get(n, "point"), s->center, err))) return st;
         return mb_build_dir(mcs_node_get(n, "normal"), s->normal, err);
     }
+    if (ty && strcmp(ty, "cylinder") == 0) {
+        /* a wheel: the torus of the tyre's rounded profile, crown radius R - L/2, tube L/2 */
+        double r = mcs_node_num(mcs_node_get(n, "radius"));
+        double len = mcs_node_num(mcs_node_get(n, "length"));
+        if (!(len < 2 * r))
+            return mcs_node_error(mcs_node_get(n, "length"), err, MCS_ERR_RANGE,
+                                  "a cylinder (wheel) must be shorter than its diameter %g m",
+                                  2 * r);
+        s->type = MB_SURF_CYLINDER;
+        s->radius = r - len / 2, s->tube = len / 2;
+        if ((st = mcs_node_vec3(mcs_node_get(n, "center"), s->center, err))) return st;
+        return mb_build_dir(mcs_node_get(n, "axis"), s->normal, err);
+    }
     return mcs_node_error(n, err, MCS_ERR_UNSUPPORTED,
-                          "surface type '%s' is not built yet in stage 1 (ellipsoid, plane)",
-                          ty ? ty : "?");
+                          "surface type '%s' is not built yet in stage 1 (ellipsoid, plane, "
+                          "cylinder)", ty ? ty : "?");
 }
 
 mcs_status mb_build_surfaces(const mcs_node *root, mb_model *m, mcs_error *err)
@@ -191,19 +204,39 @@ static mcs_status series_law(mb_model *m, const mcs_node *cn, mb_pair *p, int ip
     return st ? mcs_node_error(cn, err, st, "%s", e2.msg) : MCS_OK;
 }
 
-/* the pairs of two bodies' surfaces (sa on body a); count only when pairs is NULL */
-static int list_pairs(const mb_model *m, int a, int b, mb_pair *pairs)
+/* the order of two surfaces with penetration geometry (first one: ellipsoid or cylinder):
+ * 1 as given, -1 swapped, 0 none (plane-plane, and cylinders against anything but planes) */
+static int pair_order(const mb_surface *x, const mb_surface *y)
+{
+    mb_surf_type a = x->type, b = y->type;
+    if (a == MB_SURF_ELLIPSOID && b != MB_SURF_CYLINDER) return 1;
+    if (b == MB_SURF_ELLIPSOID && a != MB_SURF_CYLINDER) return -1;
+    if (a == MB_SURF_CYLINDER && b == MB_SURF_PLANE) return 1;
+    if (b == MB_SURF_CYLINDER && a == MB_SURF_PLANE) return -1;
+    return 0;
+}
+
+/* the pairs of two bodies' surfaces; count only when pairs is NULL. Pairs without geometry
+ * are skipped, and reported (once, when listing) when a cylinder is involved. */
+static int list_pairs(const mb_model *m, int a, int b, mb_pair *pairs, const char *contact)
 {
     int n = 0;
     for (int i = 0; i < m->nsurf; i++) {
         if (m->surf[i].body != a) continue;
         for (int j = 0; j < m->nsurf; j++) {
             if (m->surf[j].body != b || j == i) continue;
-            int ei = m->surf[i].type == MB_SURF_ELLIPSOID, ej = m->surf[j].type == MB_SURF_ELLIPSOID;
-            if (!ei && !ej) continue; /* plane-plane: no penetration geometry */
+            int o = pair_order(&m->surf[i], &m->surf[j]);
+            if (o == 0) {
+                if (pairs && (m->surf[i].type == MB_SURF_CYLINDER ||
+                              m->surf[j].type == MB_SURF_CYLINDER))
+                    mcs_log(MCS_LOG_WARN,
+                            "stage 1: contact %s: %s against %s is not checked (a cylinder "
+                            "meets planes only; give the body an ellipsoid too)",
+                            contact, m->surf[i].name, m->surf[j].name);
+                continue;
+            }
             if (pairs) {
-                /* the first surface of a pair is always an ellipsoid */
-                int sa = ei ? i : j, sb = ei ? j : i;
+                int sa = o > 0 ? i : j, sb = o > 0 ? j : i;
                 pairs[n] = (mb_pair){.sa = sa, .sb = sb, .ba = m->surf[sa].body,
                                      .bb = m->surf[sb].body};
             }
@@ -235,11 +268,12 @@ static mcs_status build_contact(const mcs_node *cn, mb_model *m, int ic, mcs_err
     mcs_status st = surf_char(m, mcs_node_get(cn, "characteristic"), &chr, err);
     if (st) return st;
     c->pair0 = m->npair;
-    c->npair = list_pairs(m, c->body_a, c->body_b, m->pair + m->npair);
+    c->npair = list_pairs(m, c->body_a, c->body_b, m->pair + m->npair, c->name);
     if (c->npair == 0)
         return mcs_node_error(cn, err, MCS_ERR_RANGE,
                               "no surface pair to check: give %s and %s surfaces (an ellipsoid "
-                              "on at least one side)", mcs_node_str(na), mcs_node_str(nb));
+                              "on one side, or a cylinder against a plane)", mcs_node_str(na),
+                              mcs_node_str(nb));
     double mu = mcs_node_num_or(cn, "friction", NAN);
     for (int k = 0; k < c->npair; k++) {
         mb_pair *p = &m->pair[c->pair0 + k];
@@ -265,7 +299,7 @@ mcs_status mb_build_contacts(const mcs_node *root, mb_model *m, mcs_error *err)
         const mcs_node *cn = mcs_node_at(list, i);
         int a = mb_build_body_ref(m, mcs_node_get(cn, "a"));
         int b = mb_build_body_ref(m, mcs_node_get(cn, "b"));
-        cap += list_pairs(m, a, b, NULL) + list_pairs(m, b, a, NULL);
+        cap += list_pairs(m, a, b, NULL, NULL) + list_pairs(m, b, a, NULL, NULL);
     }
     m->contact = MB_NEW(mb_contact_def, m->ncontact);
     m->pair = MB_NEW(mb_pair, cap);

@@ -1,5 +1,7 @@
 /* mb_contact.c: the contact sub-stages of mb_step.
- *   detect: every surface pair's penetration geometry (mb_geom) from the bodies' poses;
+ *   detect: every surface pair's penetration geometry (mb_geom) from the bodies' poses: an
+ *     ellipsoid against a plane or an ellipsoid, a cylinder (a wheel: torus of crown radius
+ *     R - L/2 and tube L/2, the rounded tyre profile) against a plane;
  *   forces: per pair in contact, normal force F = max(0, F_h(x) + d x') with F_h the hysteresis
  *     element on the penetration x (loading/unloading, never tensile) and x' the penetration
  *     rate; Coulomb friction |F_t| = mu F min(1, u / u_s) against the slip velocity u: a linear
@@ -46,11 +48,35 @@ static const mb_body_kin *kin_of(const mb_state *s, int b)
     return b == MB_GROUND ? NULL : &s->kin[b];
 }
 
+/* a cylinder (wheel) against a plane: the torus geometry of mb_geom_wheel_plane */
+static void detect_wheel(const mb_state *s, const mb_pair *p, const mb_surface *sa,
+                         const mb_surface *sb, mb_contact *c)
+{
+    const mb_body_kin *k = kin_of(s, p->ba);
+    mb_wheel w = {.radius = sa->radius, .tube = sa->tube};
+    mb_plane pl;
+    if (k) {
+        mb_mat_vec(k->rot, sa->center, w.center);
+        mb_add(w.center, k->pos, w.center);
+        mb_mat_vec(k->rot, sa->normal, w.axis);
+    } else {
+        mb_copy(sa->center, w.center), mb_copy(sa->normal, w.axis);
+    }
+    place_plane(sb, kin_of(s, p->bb), &pl);
+    mb_wheel_contact wc;
+    mb_geom_wheel_plane(&w, &pl, &wc);
+    *c = wc.c;
+}
+
 static void detect_pair(const mb_model *m, mb_state *s, int i)
 {
     const mb_pair *p = &m->pair[i];
     const mb_surface *sa = &m->surf[p->sa], *sb = &m->surf[p->sb];
     mb_contact *c = &s->pc[i];
+    if (sa->type == MB_SURF_CYLINDER) {
+        detect_wheel(s, p, sa, sb, c);
+        return;
+    }
     mb_ellipsoid ea;
     place_ellipsoid(sa, kin_of(s, p->ba), &ea);
     if (sb->type == MB_SURF_PLANE) {

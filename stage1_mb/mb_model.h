@@ -42,16 +42,18 @@ typedef struct {
 
 mb_opts mb_opts_default(void);
 
-typedef enum { MB_SURF_ELLIPSOID, MB_SURF_PLANE } mb_surf_type;
+typedef enum { MB_SURF_ELLIPSOID, MB_SURF_PLANE, MB_SURF_CYLINDER } mb_surf_type;
 
 typedef struct {
     char name[MB_NAME]; /* surface name or "<body>.surfaces[i]"                            */
     int body;           /* body index, MB_GROUND for the ground plane                       */
-    mb_surf_type type;  /* ellipsoid or plane (half-space)                                  */
-    double center[3];   /* ellipsoid centre / a plane point, body frame [m]                 */
+    mb_surf_type type;  /* ellipsoid, plane (half-space) or cylinder (a wheel: a torus)      */
+    double center[3];   /* ellipsoid / cylinder centre, a plane point, body frame [m]       */
     double rot[9];      /* ellipsoid axes -> body frame, row-major                          */
     double semi[3];     /* ellipsoid semi-axes [m]                                          */
-    double normal[3];   /* plane outward unit normal, body frame                            */
+    double normal[3];   /* plane outward unit normal / cylinder unit axis, body frame       */
+    double radius;      /* cylinder: crown circle radius R - L/2 [m]                        */
+    double tube;        /* cylinder: tube radius L/2 (rounded tyre profile) [m]             */
     int sphere;         /* 1: all semi-axes equal (exact sphere-sphere geometry)             */
     int chr;            /* characteristic index, -1 = none (rigid: the contact's applies)   */
 } mb_surface;
@@ -70,7 +72,7 @@ typedef struct {
  * series combination of both surfaces' characteristics) */
 typedef struct {
     int contact;          /* owning contact                                                 */
-    int sa, sb;           /* surfaces: sa an ellipsoid, sb an ellipsoid or a plane          */
+    int sa, sb;           /* surfaces: sa an ellipsoid or cylinder, sb an ellipsoid or plane */
     int ba, bb;           /* their bodies (bb may be MB_GROUND)                             */
     mcs_hyst_model hyst;  /* force vs. penetration                                          */
     double damping;       /* [N s/m]                                                        */

@@ -363,6 +363,33 @@ static void test_revolute_range_stop(void)
     mb_model_destroy(&m);
 }
 
+/* Sliding wheel (cylinder surface = tyre torus against the ground): as the sphere, angular
+ * momentum about the contact point gives v_end = v0 / (1 + I / (m R^2)) = 2 m/s for a disc,
+ * with Coulomb friction reached at t = v0 / (mu g (1 + m R^2 / I)). */
+static void test_sliding_wheel_starts_rolling(void)
+{
+    mb_model *m = NULL;
+    mb_state *s = run_file("scenarios/verification/rolling_wheel.yaml", &m);
+    CHECK(s != NULL);
+    if (!s) return;
+    double v0 = 3, R = 0.3, ve = 2;
+    double v = s->kin[0].vel[0], w = s->kin[0].angvel[1];
+    double t_roll = -1;
+    for (long i = 0; i < s->nrec && t_roll < 0; i++) {
+        const double *row = s->rec_body + i * MB_BODY_ROW;
+        if (fabs(row[7] - row[11] * R) < 0.01 * v0) t_roll = s->rec_t[i];
+    }
+    double t_exact = v0 / (0.5 * 9.81 * 3);
+    printf("wheel: v %.6f m/s (exact 2), w R %.6f, slip ended %.4f s (Coulomb %.4f s), "
+           "height %.7f m\n", v, w * R, t_roll, t_exact, s->kin[0].pos[2]);
+    CHECK_NEAR(v, ve, 1e-3 * ve);
+    CHECK_NEAR(w * R, ve, 1e-3 * ve);
+    CHECK_NEAR(t_roll, t_exact, 0.02 * t_exact);
+    CHECK_NEAR(s->kin[0].pos[2], 0.3 - 98.1 / 1e6, 1e-6); /* resting on the tyre */
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 static uint64_t fnv(uint64_t h, const void *p, size_t n)
 {
     const unsigned char *c = p;
@@ -444,16 +471,25 @@ static void test_build_errors_are_located(void)
     CHECK(err.status == MCS_ERR_KEY);
     CHECK_STR_CONTAINS(err.msg, "test.yaml:7:");
     CHECK_STR_CONTAINS(err.msg, "environment.ground");
-    /* a surface type stage 1 does not have */
+    /* a surface stage 1 does not have yet (finite planes) */
     mcs_error_clear(&err);
     snprintf(y, sizeof y, "%s%s", head,
              "bodies: [{name: b, mass: 1, inertia: [1, 1, 1], position: [0, 0, 0], velocity: "
-             "[0, 0, 0],\n  surfaces: [{type: cylinder, center: [0, 0, 0], radius: 1, length: 1, "
-             "axis: [0, 0, 1]}]}]\n");
+             "[0, 0, 0],\n  surfaces: [{type: plane, point: [0, 0, 0], normal: [0, 0, 1], "
+             "size: [1, 1]}]}]\n");
     CHECK(load_text(y, &err) == NULL);
     CHECK(err.status == MCS_ERR_UNSUPPORTED);
     CHECK_STR_CONTAINS(err.msg, "test.yaml:6:");
-    CHECK_STR_CONTAINS(err.msg, "cylinder");
+    CHECK_STR_CONTAINS(err.msg, "finite planes");
+    /* a cylinder (wheel) longer than its diameter */
+    mcs_error_clear(&err);
+    snprintf(y, sizeof y, "%s%s", head,
+             "bodies: [{name: b, mass: 1, inertia: [1, 1, 1], position: [0, 0, 0], velocity: "
+             "[0, 0, 0],\n  surfaces: [{type: cylinder, center: [0, 0, 0], radius: 0.1, length: "
+             "0.5, axis: [0, 1, 0]}]}]\n");
+    CHECK(load_text(y, &err) == NULL);
+    CHECK(err.status == MCS_ERR_RANGE);
+    CHECK_STR_CONTAINS(err.msg, "bodies[0].surfaces[0].length");
     /* a moment characteristic on a contact */
     mcs_error_clear(&err);
     snprintf(y, sizeof y, "%s%s", head,
@@ -484,6 +520,7 @@ int main(void)
     RUN(test_attachment_breaks);
     RUN(test_series_characteristics);
     RUN(test_sliding_sphere_starts_rolling);
+    RUN(test_sliding_wheel_starts_rolling);
     RUN(test_determinism);
     RUN(test_instability_is_reported);
     RUN(test_build_errors_are_located);

@@ -53,30 +53,28 @@ static int vertex_contact(const ell_frame *e, const double V[3], const double n[
     return 1;
 }
 
-/* edge P->R: minimise n.y over the slice of the ellipsoid by the plane through the edge and n.
- * y - c = Q (a n + b m): m.(y - c) = delta and (y-c)'Qi(y-c) = 1 give
- * a = -sqrt((1 - delta^2/Qmm) / (Qnn - Qnm^2/Qmm)), b = (delta - a Qnm)/Qmm. */
+/* edge P->R with unit in-plane normal m: minimise n.y over the slice of the ellipsoid by the
+ * plane through the edge and n. y - c = Q (a n + b m): m.(y - c) = delta and
+ * (y-c)'Qi(y-c) = 1 give a = -sqrt((1 - delta^2/Qmm) / (Qnn - Qnm^2/Qmm)),
+ * b = (delta - a Qnm)/Qmm. Beyond the segment's ends the maximum is at the nearer vertex. */
 static int edge_contact(const ell_frame *e, const double P[3], const double Rv[3],
-                        const double n[3], mb_contact *c)
+                        const double n[3], const double m[3], const double Qn[3], double Qnn,
+                        mb_contact *c)
 {
-    double E[3], m[3], Qn[3], Qm[3], rel[3];
-    mb_sub(Rv, P, E);
-    mb_cross(n, E, m);
-    mb_normalize(m);
+    double Qm[3], rel[3];
     mb_sub(P, e->c, rel);
     double delta = mb_dot(m, rel);
-    mb_mat_vec(e->Q, n, Qn);
     mb_mat_vec(e->Q, m, Qm);
-    double Qmm = mb_dot(m, Qm), Qnm = mb_dot(n, Qm), Qnn = mb_dot(n, Qn);
+    double Qmm = mb_dot(m, Qm);
     double r = 1 - delta * delta / Qmm;
     if (!(r > 0)) return 0; /* the edge's line misses the ellipsoid's shadow */
-    double den = Qnn - Qnm * Qnm / Qmm;
+    double Qnm = mb_dot(n, Qm), den = Qnn - Qnm * Qnm / Qmm;
     double a = -sqrt(r / den), b = (delta - a * Qnm) / Qmm;
-    double y[3];
+    double y[3], yr[3], E[3];
     for (int k = 0; k < 3; k++)
         y[k] = e->c[k] + a * Qn[k] + b * Qm[k];
-    double yr[3];
     mb_sub(y, P, yr);
+    mb_sub(Rv, P, E);
     double s = mb_dot(yr, E) / mb_dot(E, E);
     if (s < 0) return vertex_contact(e, P, n, c);
     if (s > 1) return vertex_contact(e, Rv, n, c);
@@ -89,47 +87,60 @@ static int edge_contact(const ell_frame *e, const double P[3], const double Rv[3
     return 1;
 }
 
-/* one triangle with unit outward normal n, everything in the frame of e */
-static int tri_contact(const ell_frame *e, const double *v[3], const double n[3], mb_contact *c)
+/* one triangle with unit outward normal n and unit outward in-plane edge normals m (row i for
+ * the edge v[i] -> v[i+1]), everything in the frame of e */
+static int tri_contact(const ell_frame *e, const double *v[3], const double n[3], const double m[9],
+                       mb_contact *c)
 {
     double rel[3], Qn[3];
     mb_sub(e->c, v[0], rel);
     double sd = mb_dot(n, rel);
     if (!(sd > 0)) return 0; /* centre behind the facet: not this facet's contact */
     mb_mat_vec(e->Q, n, Qn);
-    double h = sqrt(mb_dot(n, Qn));
+    double Qnn = mb_dot(n, Qn), h = sqrt(Qnn);
     double depth = h - sd;
     if (!(depth > 0)) return 0;
     /* face: the support point along -n projects inside the triangle */
-    double p[3], pb[3];
+    double p[3], pb[3], out[3];
     mb_axpy(e->c, -1.0 / h, Qn, p);
     mb_axpy(p, depth, n, pb);
-    int inside = 1;
-    for (int i = 0; i < 3 && inside; i++) {
-        double E[3], W[3], X[3];
-        mb_sub(v[(i + 1) % 3], v[i], E);
+    for (int i = 0; i < 3; i++) {
+        double W[3];
         mb_sub(pb, v[i], W);
-        mb_cross(E, W, X);
-        if (mb_dot(X, n) < 0) inside = 0;
+        out[i] = mb_dot(m + 3 * i, W);
     }
-    if (inside) {
+    if (out[0] <= 0 && out[1] <= 0 && out[2] <= 0) {
         c->depth = depth;
         mb_copy(p, c->point_a);
         mb_copy(pb, c->point_b);
         c->feature = MB_FEATURE_FACE;
         return 1;
     }
-    /* otherwise the concave depth peaks on the boundary: best edge (or vertex) */
+    /* otherwise the concave depth peaks on an edge that has pb on its outer side (KKT: the
+     * gradient at the maximum lies in the normal cone), or at one of its vertices */
     mb_contact t;
     int hit = 0;
     for (int i = 0; i < 3; i++) {
+        if (out[i] <= 0) continue;
         mb_contact_clear(&t);
-        if (edge_contact(e, v[i], v[(i + 1) % 3], n, &t) && t.depth > c->depth) {
+        if (edge_contact(e, v[i], v[(i + 1) % 3], n, m + 3 * i, Qn, Qnn, &t) &&
+            t.depth > c->depth) {
             *c = t;
             hit = 1;
         }
     }
     return hit;
+}
+
+/* unit outward in-plane normals of the three edges: (v[i+1] - v[i]) x n, normalised */
+static void edge_normals(const double *v[3], const double n[3], double m[9])
+{
+    for (int i = 0; i < 3; i++) {
+        double E[3];
+        mb_sub(v[(i + 1) % 3], v[i], E);
+        mb_cross(E, n, m + 3 * i);
+        mb_normalize(m + 3 * i);
+    }
 }
 
 static int tri_normal(const double *v0, const double *v1, const double *v2, double n[3])
@@ -160,7 +171,9 @@ int mb_geom_ellipsoid_triangle(const mb_ellipsoid *a, const double v0[3], const 
     ell_frame e;
     ell_frame_make(a->center, a->rot, a->semi, &e);
     const double *v[3] = {v0, v1, v2};
-    if (!tri_contact(&e, v, n, c)) {
+    double m[9];
+    edge_normals(v, n, m);
+    if (!tri_contact(&e, v, n, m, c)) {
         mb_contact_clear(c);
         return 0;
     }
@@ -187,6 +200,7 @@ struct mb_mesh {
     double *vert;       /* vertex coordinates, mesh frame [m] (nvert x 3) */
     int *tri;           /* vertex indices (ntri x 3) */
     double *tri_n;      /* unit outward normals (ntri x 3) */
+    double *tri_m;      /* unit outward in-plane edge normals (ntri x 3 x 3) */
     double *tri_c;      /* centroids, build only [m] (ntri x 3) */
     int *tri_order;     /* triangle indices in leaf order (ntri) */
     bvh_node *node;     /* tree nodes (nnode), root 0 */
@@ -269,11 +283,13 @@ mcs_status mb_mesh_create(mb_mesh **out, int nvert, const double *vert, int ntri
     m->vert = malloc(sizeof(double) * 3 * (size_t)nvert);
     m->tri = malloc(sizeof(int) * 3 * (size_t)ntri);
     m->tri_n = malloc(sizeof(double) * 3 * (size_t)ntri);
+    m->tri_m = malloc(sizeof(double) * 9 * (size_t)ntri);
     m->tri_c = malloc(sizeof(double) * 3 * (size_t)ntri);
     m->tri_order = malloc(sizeof(int) * (size_t)ntri);
     m->node = malloc(sizeof(bvh_node) * (2 * (size_t)ntri));
     m->scratch = malloc(sizeof(keyed_tri) * (size_t)ntri);
-    if (!m->vert || !m->tri || !m->tri_n || !m->tri_c || !m->tri_order || !m->node || !m->scratch) {
+    if (!m->vert || !m->tri || !m->tri_n || !m->tri_m || !m->tri_c || !m->tri_order || !m->node ||
+        !m->scratch) {
         mb_mesh_destroy(&m);
         return MCS_ERR(err, MCS_ERR_NOMEM, "facet mesh: out of memory (%d triangles)", ntri);
     }
@@ -287,6 +303,8 @@ mcs_status mb_mesh_create(mb_mesh **out, int nvert, const double *vert, int ntri
             mb_mesh_destroy(&m);
             return MCS_ERR(err, MCS_ERR_RANGE, "facet mesh: triangle %d has zero area", t);
         }
+        const double *v[3] = {a, b, c};
+        edge_normals(v, m->tri_n + 3 * t, m->tri_m + 9 * t);
         for (int k = 0; k < 3; k++)
             m->tri_c[3 * t + k] = (a[k] + b[k] + c[k]) / 3.0;
         m->tri_order[t] = t;
@@ -305,7 +323,8 @@ void mb_mesh_destroy(mb_mesh **pm)
 {
     if (!pm || !*pm) return;
     mb_mesh *m = *pm;
-    free(m->vert), free(m->tri), free(m->tri_n), free(m->tri_c), free(m->tri_order), free(m->node);
+    free(m->vert), free(m->tri), free(m->tri_n), free(m->tri_m), free(m->tri_c), free(m->tri_order),
+        free(m->node);
     free(m->scratch);
     free(m);
     *pm = NULL;
@@ -335,45 +354,64 @@ static void to_world(const mb_pose *pose, mb_contact *c)
     mb_copy(w, c->normal);
 }
 
-int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pose *pose,
-                           mb_contact *deepest, mb_contact *all, int max_all)
+/* the ellipsoid in the mesh frame (c' = Rm^T (c - pos), R' = Rm^T Re) and its exact
+ * axis-aligned box there (half extent sqrt(Q_kk)) */
+static void ell_in_mesh(const mb_ellipsoid *a, const mb_pose *pose, ell_frame *e, double lo[3],
+                        double hi[3])
 {
-    mb_contact_clear(deepest);
-    /* the ellipsoid in the mesh frame: c' = Rm^T (c - pos), R' = Rm^T Re */
-    ell_frame e;
     if (pose) {
         double rel[3], cl[3], Rl[9];
         mb_sub(a->center, pose->pos, rel);
         mb_mat_tvec(pose->rot, rel, cl);
         mb_mat_tmul(pose->rot, a->rot, Rl);
-        ell_frame_make(cl, Rl, a->semi, &e);
+        ell_frame_make(cl, Rl, a->semi, e);
     } else {
-        ell_frame_make(a->center, a->rot, a->semi, &e);
+        ell_frame_make(a->center, a->rot, a->semi, e);
     }
-    /* exact axis-aligned box of the ellipsoid: half extent sqrt(Q_kk) */
-    double lo[3], hi[3];
     for (int k = 0; k < 3; k++) {
-        double h = sqrt(e.Q[4 * k]);
-        lo[k] = e.c[k] - h, hi[k] = e.c[k] + h;
+        double h = sqrt(e->Q[4 * k]);
+        lo[k] = e->c[k] - h, hi[k] = e->c[k] + h;
     }
-    int stack[BVH_STACK], sp = 0, nhit = 0;
-    stack[sp++] = 0;
-    while (sp > 0) {
-        const bvh_node *nd = &m->node[stack[--sp]];
-        if (nd->lo[0] > hi[0] || nd->hi[0] < lo[0] || nd->lo[1] > hi[1] || nd->hi[1] < lo[1] ||
-            nd->lo[2] > hi[2] || nd->hi[2] < lo[2])
-            continue;
-        if (nd->count == 0) {
-            stack[sp++] = nd->first;
-            stack[sp++] = nd->first + 1;
-            continue;
-        }
+}
+
+static int box_apart(const bvh_node *nd, const double lo[3], const double hi[3])
+{
+    return nd->lo[0] > hi[0] || nd->hi[0] < lo[0] || nd->lo[1] > hi[1] || nd->hi[1] < lo[1] ||
+           nd->lo[2] > hi[2] || nd->hi[2] < lo[2];
+}
+
+/* the next leaf of the tree overlapping the box; *sp/stack carry the walk (start: sp = 1,
+ * stack[0] = 0); NULL when done */
+static const bvh_node *next_leaf(const mb_mesh *m, int *stack, int *sp, const double lo[3],
+                                 const double hi[3])
+{
+    while (*sp > 0) {
+        const bvh_node *nd = &m->node[stack[--*sp]];
+        if (box_apart(nd, lo, hi)) continue;
+        if (nd->count > 0) return nd;
+        stack[(*sp)++] = nd->first;
+        stack[(*sp)++] = nd->first + 1;
+    }
+    return NULL;
+}
+
+int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pose *pose,
+                           mb_contact *deepest, mb_contact *all, int max_all)
+{
+    mb_contact_clear(deepest);
+    ell_frame e;
+    double lo[3], hi[3];
+    ell_in_mesh(a, pose, &e, lo, hi);
+    int stack[BVH_STACK], sp = 1, nhit = 0;
+    stack[0] = 0;
+    const bvh_node *nd;
+    while ((nd = next_leaf(m, stack, &sp, lo, hi))) {
         for (int i = nd->first; i < nd->first + nd->count; i++) {
             int t = m->tri_order[i];
             const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
             mb_contact c;
             mb_contact_clear(&c);
-            if (!tri_contact(&e, v, m->tri_n + 3 * t, &c)) continue;
+            if (!tri_contact(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, &c)) continue;
             c.tri = t;
             finish(&c, m->tri_n + 3 * t);
             to_world(pose, &c);
@@ -383,4 +421,57 @@ int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pos
         }
     }
     return nhit;
+}
+
+/* deepest only: a triangle's depth never exceeds its plane depth h(n) - n.(c - v0), so a
+ * triangle is evaluated only while its plane depth beats the best contact found so far */
+int mb_geom_ellipsoid_mesh_deepest(const mb_ellipsoid *a, const mb_mesh *m, const mb_pose *pose,
+                                   mb_contact *deepest)
+{
+    enum { NCAND = 512 };
+    mb_contact_clear(deepest);
+    ell_frame e;
+    double lo[3], hi[3], dp[NCAND];
+    int cand[NCAND], nc = 0;
+    ell_in_mesh(a, pose, &e, lo, hi);
+    int stack[BVH_STACK], sp = 1;
+    stack[0] = 0;
+    const bvh_node *nd;
+    while ((nd = next_leaf(m, stack, &sp, lo, hi))) {
+        for (int i = nd->first; i < nd->first + nd->count; i++) {
+            int t = m->tri_order[i];
+            const double *n = m->tri_n + 3 * t;
+            double rel[3], Qn[3];
+            mb_sub(e.c, mesh_v(m, t, 0), rel);
+            double sd = mb_dot(n, rel);
+            if (!(sd > 0)) continue;
+            mb_mat_vec(e.Q, n, Qn);
+            double d = sqrt(mb_dot(n, Qn)) - sd;
+            if (!(d > 0)) continue;
+            if (nc == NCAND) /* more candidates than the buffer: evaluate them all */
+                return mb_geom_ellipsoid_mesh(a, m, pose, deepest, NULL, 0) > 0;
+            cand[nc] = t, dp[nc++] = d;
+        }
+    }
+    /* the largest plane depth first (usually the face contact), then only those that can
+     * still beat the best found */
+    int first = 0;
+    for (int i = 1; i < nc; i++)
+        if (dp[i] > dp[first]) first = i;
+    for (int k = -1; k < nc; k++) {
+        int i = k < 0 ? first : k;
+        if ((k >= 0 && i == first) || dp[i] <= deepest->depth) continue;
+        int t = cand[i];
+        const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
+        mb_contact c;
+        mb_contact_clear(&c);
+        if (!tri_contact(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, &c) ||
+            !(c.depth > deepest->depth))
+            continue;
+        c.tri = t;
+        finish(&c, m->tri_n + 3 * t);
+        *deepest = c;
+    }
+    if (deepest->depth > 0) to_world(pose, deepest);
+    return deepest->depth > 0;
 }

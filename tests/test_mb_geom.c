@@ -496,6 +496,14 @@ static void test_mesh_vs_loop(void)
         CHECK(n == nl);
         CHECK_NEAR(deep.depth, dl, 1e-12);
         CHECK(deep.tri == tl);
+        mb_contact d2;
+        CHECK(mb_geom_ellipsoid_mesh_deepest(&e, m, &pose, &d2) == (nl > 0));
+        CHECK_NEAR(d2.depth, dl, 1e-12);
+        if (nl > 0)
+            for (int k = 0; k < 3; k++) {
+                CHECK_NEAR(d2.point[k], deep.point[k], 1e-12);
+                CHECK_NEAR(d2.normal[k], deep.normal[k], 1e-12);
+            }
         for (int i = 0; i < n && i < 64; i++)
             CHECK(all[i].depth > 0 && all[i].depth <= deep.depth);
     }

@@ -390,6 +390,58 @@ static void test_sliding_wheel_starts_rolling(void)
     mb_model_destroy(&m);
 }
 
+/* Deforming hinge (the fork's M_def(phi), paper Fig. 7, as a restrained revolute joint): the
+ * body (I = 0.01 kg m^2, no gravity) turns at w0 into an elastic-plastic characteristic
+ * M = 1000 phi up to 0.1 rad, then 100 + 125 (phi - 0.1) N m; unloading slope k_u = 2000 N m/rad.
+ * Energy: I w0^2 / 2 = integral of M up to phi_max, so w0 = sqrt(2 * 27.5 / I) reaches
+ * phi_max = 0.3 rad (5 J + 22.5 J). Unloading along k_u from M_max = 125 N m leaves the
+ * permanent set phi_max - M_max / k_u = 0.2375 rad and gives back M_max^2 / (2 k_u) = 3.906 J:
+ * the hinge swings back at sqrt(2 * 3.906 / I) = 27.95 rad/s through its free play. */
+static void test_deforming_hinge_keeps_permanent_set(void)
+{
+    const char *y = "mcrash: 1\n"
+                    "simulation: {end_time: 0.03 s, time_step: 10 us}\n"
+                    "environment: {gravity: 0}\n"
+                    "characteristics:\n"
+                    "  fork: {type: moment, loading: [[0, 0], [0.1, 100], [0.3, 125]],\n"
+                    "         unloading_slope: 2000, elastic_limit: 0}\n"
+                    "bodies:\n"
+                    "  - {name: fork, mass: 1, inertia: [0.01, 0.01, 0.01], position: [0, 0, 1],\n"
+                    "     velocity: [0, 0, 0], angular_velocity: [0, 74.16198487095663, 0]}\n"
+                    "joints:\n"
+                    "  - {name: hinge, type: revolute, parent: ground, child: fork,\n"
+                    "     anchor: [0, 0, 1], axis: [0, 1, 0], restraint: fork}\n";
+    mcs_error err = {0};
+    mb_model *m = load_text(y, &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    mb_state *s = NULL;
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    double qmax = 0, w_back = 0, diss = 0;
+    while (s->step < m->nsteps) {
+        CHECK(mb_step(m, s, &err) == MCS_OK);
+        double q = mb_joint_position(s->world, 0);
+        if (q > qmax) qmax = q;
+        if (qmax > 0.2 && q < 0.15 && q > 0.05) { /* swinging back through the free play */
+            w_back = s->kin[0].angvel[1];
+            diss = s->e.dissipated;
+        }
+    }
+    double set = s->r1[0].h.pos.x_set;
+    printf("deforming hinge: phi_max %.5f rad (exact 0.3), set %.5f rad (exact 0.2375), back "
+           "at %.4f rad/s (exact -27.95), dissipated %.4f J (exact %.4f J)\n",
+           qmax, set, w_back, diss, 27.5 - 125.0 * 125.0 / 4000);
+    CHECK_NEAR(qmax, 0.3, 2e-4);
+    CHECK_NEAR(set, 0.3 - 125.0 / 2000, 3e-4);
+    CHECK_NEAR(w_back, -sqrt(125.0 * 125.0 / 2000 / 0.01), 0.05);
+    CHECK_NEAR(diss, 27.5 - 125.0 * 125.0 / 4000, 0.01 * 23.6);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 static uint64_t fnv(uint64_t h, const void *p, size_t n)
 {
     const unsigned char *c = p;
@@ -517,6 +569,7 @@ int main(void)
     RUN(test_pendulum_keeps_its_period);
     RUN(test_restraint_oscillator);
     RUN(test_revolute_range_stop);
+    RUN(test_deforming_hinge_keeps_permanent_set);
     RUN(test_attachment_breaks);
     RUN(test_series_characteristics);
     RUN(test_sliding_sphere_starts_rolling);

@@ -18,8 +18,9 @@ typedef struct {
 /* HIC = max over sample pairs t1 < t2 with t2 - t1 <= window of
  * (t2 - t1) [(1/(t2 - t1)) int_t1^t2 a dt / g]^2.5, the integral by trapezoids (exact for
  * the piecewise-linear signal). a: resultant acceleration [m/s^2] (n), t increasing. Windows
- * whose mean is negative count as 0. Exact maximum over all pairs (no fixed-length shortcut);
- * windows that cannot beat the best so far are pruned by a sliding-maximum bound. */
+ * whose mean is negative count as 0. Exact maximum over all pairs (no fixed-length shortcut):
+ * blocks of 64 x 64 pairs whose upper bound cannot beat the best so far are skipped (an
+ * unpruned search at 1 MHz over 0.3 s takes ~17 s, this ~0.1 s). Ties: earliest t1, t2. */
 mcs_status an_hic(const double *t, const double *a, int n, double window, an_hic_result *r,
                   mcs_error *err);
 

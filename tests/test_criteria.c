@@ -122,33 +122,44 @@ static void test_hic_half_sine(void)
     }
 }
 
-/* the pruning changes nothing: equal to an all-pairs search without it, on a rough signal with
- * uneven steps (pseudo-random, fixed seed) */
+/* the block pruning changes nothing: equal (value, t1, t2) to an all-pairs search without it,
+ * on rough signals with uneven steps, negative stretches and lengths that are not multiples
+ * of the block (pseudo-random, fixed seeds), for both windows */
 static void test_hic_pruning_exact(void)
 {
-    int n = 1500;
-    double *t = malloc((size_t)n * sizeof(double)), *a = malloc((size_t)n * sizeof(double));
-    unsigned s = 12345;
-    t[0] = 0;
-    for (int i = 0; i < n; i++) {
-        s = s * 1103515245u + 12345u;
-        double u = (s >> 8) / 16777216.0;
-        if (i) t[i] = t[i - 1] + 5e-5 * (0.5 + u);
-        a[i] = G * (40 * sin(t[i] * 90) + 30 * u - 5);
-    }
-    an_hic_result r;
-    mcs_error e = {0};
-    CHECK(an_hic(t, a, n, 0.015, &r, &e) == MCS_OK);
-    double best = 0, cum[1500];
-    cum[0] = 0;
-    for (int i = 1; i < n; i++) cum[i] = cum[i - 1] + 0.5 * (a[i] + a[i - 1]) / G * (t[i] - t[i - 1]);
-    for (int i = 0; i < n; i++)
-        for (int j = i + 1; j < n && t[j] - t[i] <= 0.015; j++) {
-            double I = cum[j] - cum[i], d = t[j] - t[i];
-            if (I > 0) best = fmax(best, d * pow(I / d, 2.5));
+    const int lens[] = {1500, 777, 2049, 130};
+    for (int c = 0; c < 4; c++) {
+        int n = lens[c];
+        double *t = malloc((size_t)n * sizeof(double)), *a = malloc((size_t)n * sizeof(double));
+        double *cum = malloc((size_t)n * sizeof(double));
+        unsigned s = 12345u + 977u * (unsigned)c;
+        t[0] = 0;
+        for (int i = 0; i < n; i++) {
+            s = s * 1103515245u + 12345u;
+            double u = (s >> 8) / 16777216.0;
+            if (i) t[i] = t[i - 1] + 5e-5 * (0.5 + u);
+            a[i] = G * (40 * sin(t[i] * (60 + 20 * c)) + 30 * u - 5);
         }
-    CHECK_REL(r.hic, best, 1e-12);
-    free(t), free(a);
+        cum[0] = 0;
+        for (int i = 1; i < n; i++)
+            cum[i] = cum[i - 1] + 0.5 * (a[i] + a[i - 1]) / G * (t[i] - t[i - 1]);
+        const double W[] = {0.015, 0.036};
+        for (int w = 0; w < 2; w++) {
+            an_hic_result r;
+            mcs_error e = {0};
+            CHECK(an_hic(t, a, n, W[w], &r, &e) == MCS_OK);
+            double best = 0, b1 = 0, b2 = 0;
+            for (int i = 0; i < n; i++)
+                for (int j = i + 1; j < n && t[j] - t[i] <= W[w]; j++) {
+                    double I = cum[j] - cum[i], d = t[j] - t[i];
+                    double v = I > 0 ? d * pow(I / d, 2.5) : 0;
+                    if (v > best) best = v, b1 = t[i], b2 = t[j];
+                }
+            CHECK_REL(r.hic, best, 1e-12);
+            CHECK(r.t1 == b1 && r.t2 == b2);
+        }
+        free(t), free(a), free(cum);
+    }
 }
 
 /* a3ms of the half-sine A sin(pi t/T): the minimum of a concave arch over [t1, t1 + tau] is at

@@ -419,10 +419,17 @@ static mcs_status ref_h5(const char *file, const char *sel, an_signal *out, mcs_
         if (!out->t || !out->y) st = MCS_ERR(err, MCS_ERR_NOMEM, "%s: out of memory", file);
     }
     if (!st) {
-        for (size_t i = 0; i < nt; i++) {
+        for (size_t i = 0; !st && i < nt; i++) {
             out->t[i] = ta.v[i];
             out->y[i] = a.v[i * w + (col < 0 ? 0 : (size_t)col)] * factor;
+            if (!isfinite(out->y[i]) || !isfinite(out->t[i]))
+                st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: sample %zu is not finite", file, sel, i);
+            else if (i > 0 && !(out->t[i] > out->t[i - 1]))
+                st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: time %zu (%g s) is not after %g s",
+                             file, tpath, i, out->t[i], out->t[i - 1]);
         }
+    }
+    if (!st) {
         out->n = (int)nt;
         snprintf(out->unit, sizeof out->unit, "%s", si);
         const char *base = strrchr(sel, '/') + 1;

@@ -257,6 +257,18 @@ static void test_ref_h5(void)
     CHECK(an_signal_read_ref(ref, &s, &e3) != MCS_OK);
     CHECK_STR_CONTAINS(e3.msg, "nope");
     CHECK(s.t == NULL && s.y == NULL);
+    /* a NaN in a results file is refused with the sample index */
+    snprintf(path, sizeof path, "%s/nan.h5", tmpdir);
+    y[20] = NAN;
+    mcs_error e4 = {0};
+    CHECK(mcs_results_create(&r, path, NULL, &e4) == MCS_OK);
+    CHECK(mcs_results_put_time(r, 1, 50, t, &e4) == MCS_OK);
+    CHECK(mcs_results_put_channel(r, 1, "x", 50, y, "m", NULL, 0, NULL, &e4) == MCS_OK);
+    CHECK(mcs_results_commit(&r, &e4) == MCS_OK);
+    snprintf(ref, sizeof ref, "%s:/stage1/channels/x", path);
+    CHECK(an_signal_read_ref(ref, &s, &e4) == MCS_ERR_FORMAT);
+    CHECK_STR_CONTAINS(e4.msg, "sample 20");
+    CHECK(s.t == NULL && s.y == NULL);
 }
 
 int main(void)

@@ -1,5 +1,7 @@
 /* cmd_signal.c: `mcrash signal hic|a3ms|cfc|nij|bric|vc|ti FILE.csv [--class CFC] [--window S]
- * [--json]`: filter the channels of a CSV file, or compute one criterion from it.
+ * [--json]`: filter the channels of a CSV file, or compute one criterion from it. FILE may
+ * also name one channel (file.mme:channel, file.h5:/stageN/channels/NAME, file.csv:column),
+ * enough for hic, a3ms, vc and cfc.
  * With --class the input channels are CFC-filtered before the criterion; without it they are
  * used as they are. `cfc` without --class picks J211's class from each column's name. */
 #include "analysis/an_cfc.h"
@@ -377,7 +379,18 @@ int cli_signal(int argc, char **argv)
     an_signal *c = NULL;
     int n = 0;
     mcs_error e = {0};
-    if (an_csv_read(a.file, &c, &n, &e)) return fail(&e);
+    /* a CSV file, or one channel by reference (file.mme:channel, file.h5:/path, file.csv:col) */
+    if (strstr(a.file, ".mme:") || strstr(a.file, ".h5:") || strstr(a.file, ".csv:")) {
+        c = calloc(1, sizeof *c);
+        if (!c) return 2;
+        if (an_signal_read_ref(a.file, c, &e)) {
+            free(c);
+            return fail(&e);
+        }
+        n = 1;
+    } else if (an_csv_read(a.file, &c, &n, &e)) {
+        return fail(&e);
+    }
     int rc = 0;
     /* optional CFC filtering of the inputs of a criterion */
     for (int k = 0; strcmp(a.sub, "cfc") != 0 && a.cfc > 0 && k < n && !rc; k++)

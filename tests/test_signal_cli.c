@@ -1,5 +1,6 @@
 /* tests for `mcrash signal`: on hand-written CSV files (tests/data/signals/) and on CSV files
  * generated here, against the closed forms of test_criteria.c; and its errors */
+#include "analysis/an_mme.h"
 #include "analysis/an_signal.h"
 #include "tests/cli_util.h"
 #include "tests/harness.h"
@@ -168,6 +169,32 @@ static void test_cfc_stdout(void)
     CHECK_STR_CONTAINS(r->err, "too low");
 }
 
+/* one channel by reference: the hand-written square pulse resultant written as ISO-MME and
+ * rated from `file.mme:channel` and `file.csv:column` gives the same HIC (tau A^2.5) */
+static void test_channel_refs(void)
+{
+    double t[31], y[31];
+    for (int i = 0; i <= 30; i++) t[i] = i * 1e-3, y[i] = (i >= 10 && i <= 20) ? 80 * 9.80665 : 0;
+    an_signal s = {.n = 31, .t = t, .y = y};
+    snprintf(s.name, sizeof s.name, "HEADRES");
+    snprintf(s.unit, sizeof s.unit, "m/s^2");
+    TMP_PATH(dir, "mme");
+    mcs_error e = {0};
+    CHECK(an_mme_write(dir, "SQ", &s, 1, &e) == MCS_OK);
+    char args[400];
+    snprintf(args, sizeof args, "signal hic %s/SQ.mme:HEADRES --json", dir);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_REL(json_num(r->out, "hic"), 0.010 * pow(80, 2.5), JREL);
+    snprintf(args, sizeof args, "signal hic %s/SQ.mme:NOPE", dir);
+    r = cli_run(args);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "NOPE");
+    r = cli_run("signal a3ms tests/data/signals/head_square.csv:ay --json");
+    CHECK(r->status == 0);
+    CHECK_REL(json_num(r->out, "a3ms"), 64, JREL);
+}
+
 /* bad input: file:line:col and exit 2; missing columns listed; usage errors */
 static void test_errors(void)
 {
@@ -227,6 +254,7 @@ int main(void)
     RUN(test_hand_others);
     RUN(test_generated_half_sine);
     RUN(test_cfc_stdout);
+    RUN(test_channel_refs);
     RUN(test_errors);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

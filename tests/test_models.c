@@ -1,0 +1,275 @@
+/* test_models.c: the shipped motorcycle and barrier models (scenarios/models/, docs/models.md)
+ * and the thesis' rigid-barrier impacts (scenarios/thesis_*_barrier_13.4.yaml) on the stage-1
+ * engine. Checks against the model's data sources (MYMOSA Table 1.1: 208 kg, wheelbase
+ * 1420 mm, 7 bodies / 12 DOF), static equilibrium on the wheels, and the barrier impact:
+ * completes, the motorcycle stops or rebounds, the fork keeps a permanent set (paper Fig. 7),
+ * the energy balance closes. Figures measured are printed (they go into docs/models.md). */
+#include "cli_util.h"
+#include "harness.h"
+#include "stage1_mb/mb_model.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MOTO "scenarios/models/motorcycles/sport_208kg.yaml"
+#define FRONTAL "scenarios/thesis_frontal_barrier_13.4.yaml"
+#define OBLIQUE "scenarios/thesis_oblique_barrier_30deg_13.4.yaml"
+
+static mb_model *build(mcs_scenario *scn)
+{
+    mcs_error err = {0};
+    mb_model *m = NULL;
+    if (scn && mb_model_build(scn, NULL, &m, &err)) fprintf(stderr, "build: %s\n", err.msg);
+    return m;
+}
+
+static mb_model *load_model(const char *path)
+{
+    mcs_scenario *scn = NULL;
+    mcs_error err = {0};
+    if (mcs_scenario_load(path, &scn, &err)) fprintf(stderr, "%s: %s\n", path, err.msg);
+    mb_model *m = build(scn);
+    mcs_scenario_destroy(&scn);
+    return m;
+}
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 4096);
+    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) n = 0;
+    if (buf) buf[n] = 0;
+    fclose(f);
+    return buf;
+}
+
+/* replace every occurrence of `from` in buf by `to` (to no longer than from) */
+static int replace_all(char *buf, const char *from, const char *to)
+{
+    size_t lf = strlen(from), lt = strlen(to);
+    int n = 0;
+    for (char *p = strstr(buf, from); p; p = strstr(p + lt, from), n++) {
+        memmove(p + lt, p + lf, strlen(p + lf) + 1);
+        memcpy(p, to, lt);
+    }
+    return n;
+}
+
+static int find_body(const mb_model *m, const char *name) { return mb_model_body(m, name); }
+
+static int find_restraint(const mb_model *m, const char *name)
+{
+    for (int i = 0; i < m->nrestraint1; i++)
+        if (strcmp(m->restraint1_name[i], name) == 0) return i;
+    return -1;
+}
+
+/* MYMOSA Table 1.1: 208 kg without dummy, wheelbase 1420 mm; Sec. 2: seven rigid bodies */
+static mb_model *load_moto_at_rest(double end_time);
+
+static void test_mass_wheelbase_bodies(void)
+{
+    mb_model *m = load_moto_at_rest(0.5);
+    CHECK(m != NULL);
+    if (!m) return;
+    double mass = 0;
+    for (int b = 0; b < m->nbody; b++) mass += m->body[b].mass;
+    CHECK(m->nbody == 7);
+    CHECK(mass >= 200 && mass <= 210);
+    int fw = find_body(m, "moto_front_wheel"), rw = find_body(m, "moto_rear_wheel");
+    CHECK(fw >= 0 && rw >= 0);
+    if (fw >= 0 && rw >= 0) CHECK_REL(m->body[fw].pos[0] - m->body[rw].pos[0], 1.42, 0.01);
+    /* 12 DOF: 6 (frame) + 6 one-DOF joints (steering, fork deformation, front suspension,
+     * swing arm, two wheel spins); every other body is attached by exactly one of them */
+    int one_dof = 0;
+    for (int j = 0; j < m->njoint; j++)
+        one_dof += m->joint[j].type == MB_J_REVOLUTE || m->joint[j].type == MB_J_TRANSLATIONAL;
+    CHECK(m->njoint == 6 && one_dof == 6);
+    CHECK(6 + one_dof == 12);
+    printf("  motorcycle: %d bodies, %.1f kg, wheelbase %.4f m, %d DOF\n", m->nbody, mass,
+           m->body[fw].pos[0] - m->body[rw].pos[0], 6 + one_dof);
+    mb_model_destroy(&m);
+}
+
+/* Static equilibrium: the model at rest (speeds replaced by 0) settles on its tyres and
+ * suspensions under gravity. Expected sag: front and rear wheel loads ~1 kN each (weight
+ * 2040 N, CG near mid-wheelbase) give ~5 mm tyre deflection (180-200 kN/m) plus the
+ * suspension travel beyond preload (600 N fork preload vs ~800 N along the fork: ~10 mm at
+ * 18 kN/m; rear 350 N m preload vs ~500 N m: ~25 mrad = 15 mm at the wheel, lever ~0.6).
+ * Check: frame CG sag between 2 and 40 mm, steady over the last 0.1 s (< 0.5 mm change,
+ * |vz| < 5 mm/s), no pitch runaway (< 2 deg), fork not deformed (still elastic). */
+/* the model file with its speeds replaced by 0, plus a simulation block */
+static mb_model *load_moto_at_rest(double end_time)
+{
+    char *txt = slurp(MOTO);
+    CHECK(txt != NULL);
+    if (!txt) return NULL;
+    CHECK(replace_all(txt, "\"13.4 m/s\"", "0") == 7);
+    CHECK(replace_all(txt, "\"44.6667 rad/s\"", "0") == 1);
+    CHECK(replace_all(txt, "\"42.5397 rad/s\"", "0") == 1);
+    char sim[256];
+    snprintf(sim, sizeof sim,
+             "\nsimulation: {end_time: %g s, time_step: 10 us, output_rate: 1 kHz}\n"
+             "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n",
+             end_time);
+    strcat(txt, sim);
+    mcs_scenario *scn = NULL;
+    mcs_error err = {0};
+    if (mcs_scenario_load_text(MOTO, txt, strlen(txt), &scn, &err))
+        fprintf(stderr, "static: %s\n", err.msg);
+    free(txt);
+    mb_model *m = build(scn);
+    mcs_scenario_destroy(&scn);
+    return m;
+}
+
+static void test_static_equilibrium(void)
+{
+    mcs_error err = {0};
+    mb_model *m = load_moto_at_rest(0.5);
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    int fr = find_body(m, "moto_frame");
+    int fk = find_restraint(m, "moto_fork_deformation");
+    double z0 = m->body[fr].pos[2], z_at_04 = 0;
+    mcs_status st = MCS_OK;
+    while (s->step < m->nsteps && !(st = mb_step(m, s, &err)))
+        if (fabs(s->t - 0.4) < 0.5 * m->h) z_at_04 = s->kin[fr].pos[2];
+    CHECK(st == MCS_OK);
+    double z1 = s->kin[fr].pos[2], sag = z0 - z1;
+    double vz = s->kin[fr].vel[2];
+    const double *q = s->kin[fr].quat; /* pitch from the quaternion (w, x, y, z) */
+    double pitch = asin(2 * (q[0] * q[2] - q[3] * q[1]));
+    double roll = atan2(2 * (q[0] * q[1] + q[2] * q[3]), 1 - 2 * (q[1] * q[1] + q[2] * q[2]));
+    printf("  static: roll %.4f deg, vx %.2e m/s, y %.2e m\n", roll * 180 / M_PI, s->kin[fr].vel[0],
+           s->kin[fr].pos[1]);
+    printf("  static: frame sag %.2f mm, change over last 0.1 s %.3f mm, vz %.2e m/s, "
+           "pitch %.3f deg, fork angle %.2e rad, drift %.2e\n",
+           sag * 1e3, (z_at_04 - z1) * 1e3, vz, pitch * 180 / M_PI, s->r1[fk].x,
+           mb_energy_drift(m, s));
+    CHECK(sag > 0.002 && sag < 0.040);
+    CHECK(fabs(z_at_04 - z1) < 5e-4);
+    CHECK(fabs(vz) < 5e-3);
+    CHECK(fabs(pitch) < 2 * M_PI / 180);
+    CHECK(fabs(s->r1[fk].x) < 0.05); /* below the elastic limit */
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+typedef struct {
+    double f_peak, t_f_peak;  /* peak total barrier contact force [N] and its time [s] */
+    double t_first;           /* first barrier contact [s] */
+    double t_plastic;         /* fork beyond its elastic limit (0.05 rad) [s] */
+    double t_stop;            /* fork at the wheel-engine stop (0.2 rad) [s] */
+    double phi_max, phi_end;  /* largest fork angle and the angle at the end [rad] */
+    double phi_set;           /* permanent set of the loaded branch [rad] */
+    double vx_min, vx_end;    /* frame CG velocity along x: smallest and at the end [m/s] */
+    double t_vx0;             /* frame forward velocity first <= 0 [s] */
+    double pitch_max;         /* largest frame pitch (nose up > 0 about -y) [deg] */
+    double drift;             /* energy drift [-] */
+    double e_kin0, e_diss;    /* initial kinetic, dissipated at the end [J] */
+    long steps;
+} impact_figs;
+
+static mcs_status run_impact(const char *path, impact_figs *f)
+{
+    memset(f, 0, sizeof *f);
+    f->t_first = f->t_plastic = f->t_stop = f->t_vx0 = NAN;
+    f->vx_min = INFINITY;
+    mb_model *m = load_model(path);
+    if (!m) return MCS_ERR_USAGE;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    mcs_status st = mb_state_create(m, &s, &err);
+    if (st) {
+        mb_model_destroy(&m);
+        return st;
+    }
+    int fr = find_body(m, "moto_frame"), bar = find_body(m, "barrier");
+    int fk = find_restraint(m, "moto_fork_deformation");
+    f->e_kin0 = s->e.kinetic;
+    while (s->step < m->nsteps && !(st = mb_step(m, s, &err))) {
+        double fsum = 0;
+        for (int p = 0; p < m->npair; p++)
+            if (m->pair[p].bb == bar || m->pair[p].ba == bar) fsum += s->pair[p].fn;
+        if (fsum > 0 && isnan(f->t_first)) f->t_first = s->t;
+        if (fsum > f->f_peak) f->f_peak = fsum, f->t_f_peak = s->t;
+        double phi = fabs(s->r1[fk].x);
+        if (phi > f->phi_max) f->phi_max = phi;
+        if (phi > 0.05 && isnan(f->t_plastic)) f->t_plastic = s->t;
+        if (phi >= 0.2 && isnan(f->t_stop)) f->t_stop = s->t;
+        double vx = s->kin[fr].vel[0];
+        if (vx < f->vx_min) f->vx_min = vx;
+        if (vx <= 0 && isnan(f->t_vx0)) f->t_vx0 = s->t;
+        const double *q = s->kin[fr].quat;
+        double pitch = -asin(2 * (q[0] * q[2] - q[3] * q[1])) * 180 / M_PI;
+        if (pitch > f->pitch_max) f->pitch_max = pitch;
+    }
+    if (st) fprintf(stderr, "%s: %s\n", path, err.msg);
+    f->phi_end = s->r1[fk].x;
+    f->phi_set = fmax(s->r1[fk].h.pos.x_set, s->r1[fk].h.neg.x_set);
+    f->vx_end = s->kin[fr].vel[0];
+    f->drift = mb_energy_drift(m, s);
+    f->e_diss = s->e.dissipated;
+    f->steps = s->step;
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+    return st;
+}
+
+static void print_figs(const char *what, const impact_figs *f)
+{
+    printf("  %s: %ld steps; first barrier contact %.2f ms; peak barrier force %.1f kN at "
+           "%.2f ms; fork plastic (> 0.05 rad) at %.2f ms, at the stop (0.2 rad) at %.2f ms, "
+           "max %.4f rad, end %.4f rad, permanent set %.4f rad; frame vx min %.2f m/s, end "
+           "%.2f m/s, vx <= 0 at %.1f ms; max pitch %.1f deg; kinetic %.0f J, dissipated %.0f J; "
+           "energy drift %.2e\n",
+           what, f->steps, f->t_first * 1e3, f->f_peak / 1e3, f->t_f_peak * 1e3,
+           f->t_plastic * 1e3, f->t_stop * 1e3, f->phi_max, f->phi_end, f->phi_set, f->vx_min,
+           f->vx_end, f->t_vx0 * 1e3, f->pitch_max, f->e_kin0, f->e_diss, f->drift);
+}
+
+/* Frontal rigid-barrier impact at 13.4 m/s (thesis): runs to the end; the frame's forward
+ * velocity reaches 0 (stops or rebounds); the fork passes its elastic limit and keeps a
+ * permanent set (> 0 at the end: paper Fig. 7, MYMOSA "the deformation will be permanent");
+ * energy balance: drift below 2 % of the largest energy (stated in docs/models.md). */
+static void test_frontal_barrier(void)
+{
+    impact_figs f;
+    CHECK(run_impact(FRONTAL, &f) == MCS_OK);
+    print_figs("frontal 13.4 m/s", &f);
+    CHECK(f.f_peak > 0);
+    CHECK(!isnan(f.t_vx0));          /* stops or rebounds */
+    CHECK(f.vx_end < 1.0);
+    CHECK(f.phi_max > 0.05);          /* beyond the elastic limit */
+    CHECK(f.phi_set > 0.01);          /* permanent set kept */
+    CHECK(f.drift < 0.02);
+    /* kinetic energy at impact: (1/2) m v^2 + wheel spin (1/2) I w^2 */
+    double ke = 0.5 * 208 * 13.4 * 13.4 + 0.5 * 0.6 * pow(13.4 / 0.30, 2) +
+                0.5 * 0.9 * pow(13.4 / 0.315, 2);
+    CHECK_REL(f.e_kin0, ke, 1e-3);
+}
+
+static void test_frontal_barrier_cli(void)
+{
+    cli_result *r = cli_run("run " FRONTAL " --stage 1 --quiet --json -o /tmp/mcrash_models_fb.h5");
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "\"steps\": 25000");
+    remove("/tmp/mcrash_models_fb.h5");
+}
+
+int main(void)
+{
+    RUN(test_mass_wheelbase_bodies);
+    RUN(test_static_equilibrium);
+    RUN(test_frontal_barrier);
+    RUN(test_frontal_barrier_cli);
+    TEST_END();
+}

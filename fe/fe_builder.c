@@ -94,7 +94,7 @@ mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_er
                            "fe: part '%s': element %d: node %d does not exist (%d nodes)",
                            b->part[part].name, b->nelem[k], nodes[i], b->nnode);
         for (int j = 0; j < i; j++)
-            if (nodes[j] == nodes[i])
+            if (nodes[j] == nodes[i] && !(k == FE_KIND_SHELL && i == 3 && j == 2))
                 return MCS_ERR(err, MCS_ERR_RANGE,
                                "fe: part '%s': element %d: node %d appears twice",
                                b->part[part].name, b->nelem[k], nodes[i]);

@@ -140,10 +140,12 @@ static mcs_status lump_masses(fe_model *m, mcs_error *err)
                                    "fe: part '%s': shell %d (nodes %d %d %d %d) has area %g m^2: "
                                    "degenerate or folded",
                                    p->name, e - p->elem_begin, c[0], c[1], c[2], c[3], area);
-                double mn = rho * t * area / 4;
+                /* a degenerate triangle (node 3 = node 4) lumps a third to each node */
+                int nn = c[2] == c[3] ? 3 : 4;
+                double mn = rho * t * area / nn;
                 /* rotary inertia scaled up to m A / 8 so rotations do not limit the step */
                 double in = mn * fmax(t * t / 12, area / 8);
-                for (int i = 0; i < 4; i++) {
+                for (int i = 0; i < nn; i++) {
                     m->node_mass[c[i]] += mn;
                     m->node_inertia[c[i]] += in;
                 }

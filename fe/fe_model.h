@@ -236,7 +236,7 @@ void fe_builder_destroy(fe_builder **p);
 /* add a part; a generated mesh is created now. Returns the part index in *index (may be NULL). */
 mcs_status fe_builder_add_part(fe_builder *b, const fe_part_desc *d, int *index, mcs_error *err);
 /* explicit meshes: a node, then elements of a part (4 nodes for shells, 8 hex, 2 truss).
- * The nodes of a part must be added while it is the last part (elements stay contiguous). */
+ * A shell with its 3rd and 4th node equal is a degenerate triangle. */
 mcs_status fe_builder_add_node(fe_builder *b, const double x[3], int *index, mcs_error *err);
 mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_error *err);
 mcs_status fe_builder_add_boundary(fe_builder *b, const fe_boundary_desc *d, mcs_error *err);

@@ -13,6 +13,8 @@
  *   in-plane  k_m = Q E t A (B.B) / 8,  out-of-plane w  k_w = Q k G t^3 A (B.B)^2 / 12
  *   (the twist stiffness of the mode), rotations k_r = Q E t^3 A (B.B) / 192.
  * The viscous form uses the same coefficients times the element transit time L/c.
+ * Degenerate triangles (node 3 = node 4) use the same one-point formulas: the uniform gradients
+ * are then those of the constant-strain triangle and every hourglass vector vanishes.
  * Not built: warping correction, thickness change, drilling stiffness. */
 #include "fe/fe_elem.h"
 
@@ -54,7 +56,9 @@ double fe_shell_length(const double xe[4][3], double area)
         double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
         lmax = fmax(lmax, fe_dot(d, d));
     }
-    return lmax > 0 ? area / sqrt(lmax) : 0;
+    /* (1 + beta) A / longest side, beta = 1 for a degenerate triangle (its smallest altitude) */
+    double beta = xe[2][0] == xe[3][0] && xe[2][1] == xe[3][1] && xe[2][2] == xe[3][2] ? 1 : 0;
+    return lmax > 0 ? (1 + beta) * area / sqrt(lmax) : 0;
 }
 
 void fe_shell_part(const fe_model *m, fe_state *s, int ip)

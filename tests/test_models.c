@@ -172,17 +172,22 @@ typedef struct {
     double phi_set;           /* permanent set of the loaded branch [rad] */
     double vx_min, vx_end;    /* frame CG velocity along x: smallest and at the end [m/s] */
     double t_vx0;             /* frame forward velocity first <= 0 [s] */
-    double pitch_max;         /* largest frame pitch (nose up > 0 about -y) [deg] */
+    double pitch_max, pitch_min; /* frame pitch extremes (nose up > 0) [deg] */
+    double rear_lift;         /* largest rise of the rear wheel centre [m] */
+    double vn_min;            /* smallest frame velocity along -(barrier normal) [m/s] */
+    double yaw_end;           /* frame yaw at the end [deg] */
     double drift;             /* energy drift [-] */
     double e_kin0, e_diss;    /* initial kinetic, dissipated at the end [J] */
     long steps;
 } impact_figs;
 
-static mcs_status run_impact(const char *path, impact_figs *f)
+/* d: unit direction into the barrier (minus its normal), to measure the approach speed */
+static mcs_status run_impact(const char *path, const double d[3], impact_figs *f)
 {
     memset(f, 0, sizeof *f);
     f->t_first = f->t_plastic = f->t_stop = f->t_vx0 = NAN;
-    f->vx_min = INFINITY;
+    f->vx_min = f->vn_min = INFINITY;
+    f->pitch_min = INFINITY, f->pitch_max = -INFINITY;
     mb_model *m = load_model(path);
     if (!m) return MCS_ERR_USAGE;
     mb_state *s = NULL;
@@ -194,6 +199,8 @@ static mcs_status run_impact(const char *path, impact_figs *f)
     }
     int fr = find_body(m, "moto_frame"), bar = find_body(m, "barrier");
     int fk = find_restraint(m, "moto_fork_deformation");
+    int rw = find_body(m, "moto_rear_wheel");
+    double z_rw0 = m->body[rw].pos[2];
     f->e_kin0 = s->e.kinetic;
     while (s->step < m->nsteps && !(st = mb_step(m, s, &err))) {
         double fsum = 0;
@@ -210,7 +217,15 @@ static mcs_status run_impact(const char *path, impact_figs *f)
         if (vx <= 0 && isnan(f->t_vx0)) f->t_vx0 = s->t;
         const double *q = s->kin[fr].quat;
         double pitch = -asin(2 * (q[0] * q[2] - q[3] * q[1])) * 180 / M_PI;
-        if (pitch > f->pitch_max) f->pitch_max = pitch;
+        f->pitch_max = fmax(f->pitch_max, pitch), f->pitch_min = fmin(f->pitch_min, pitch);
+        f->rear_lift = fmax(f->rear_lift, s->kin[rw].pos[2] - z_rw0);
+        const double *v = s->kin[fr].vel;
+        f->vn_min = fmin(f->vn_min, v[0] * d[0] + v[1] * d[1] + v[2] * d[2]);
+    }
+    {
+        const double *q = s->kin[fr].quat;
+        f->yaw_end = atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] * q[2] + q[3] * q[3])) *
+                     180 / M_PI;
     }
     if (st) fprintf(stderr, "%s: %s\n", path, err.msg);
     f->phi_end = s->r1[fk].x;
@@ -229,11 +244,13 @@ static void print_figs(const char *what, const impact_figs *f)
     printf("  %s: %ld steps; first barrier contact %.2f ms; peak barrier force %.1f kN at "
            "%.2f ms; fork plastic (> 0.05 rad) at %.2f ms, at the stop (0.2 rad) at %.2f ms, "
            "max %.4f rad, end %.4f rad, permanent set %.4f rad; frame vx min %.2f m/s, end "
-           "%.2f m/s, vx <= 0 at %.1f ms; max pitch %.1f deg; kinetic %.0f J, dissipated %.0f J; "
+           "%.2f m/s, vx <= 0 at %.1f ms; along -normal min %.2f m/s; pitch %.1f..%.1f deg; rear "
+           "wheel lift %.0f mm; yaw at end %.1f deg; kinetic %.0f J, dissipated %.0f J; "
            "energy drift %.2e\n",
            what, f->steps, f->t_first * 1e3, f->f_peak / 1e3, f->t_f_peak * 1e3,
            f->t_plastic * 1e3, f->t_stop * 1e3, f->phi_max, f->phi_end, f->phi_set, f->vx_min,
-           f->vx_end, f->t_vx0 * 1e3, f->pitch_max, f->e_kin0, f->e_diss, f->drift);
+           f->vx_end, f->t_vx0 * 1e3, f->vn_min, f->pitch_min, f->pitch_max,
+           f->rear_lift * 1e3, f->yaw_end, f->e_kin0, f->e_diss, f->drift);
 }
 
 /* Frontal rigid-barrier impact at 13.4 m/s (thesis): runs to the end; the frame's forward
@@ -243,7 +260,8 @@ static void print_figs(const char *what, const impact_figs *f)
 static void test_frontal_barrier(void)
 {
     impact_figs f;
-    CHECK(run_impact(FRONTAL, &f) == MCS_OK);
+    const double d[3] = {1, 0, 0};
+    CHECK(run_impact(FRONTAL, d, &f) == MCS_OK);
     print_figs("frontal 13.4 m/s", &f);
     CHECK(f.f_peak > 0);
     CHECK(!isnan(f.t_vx0));          /* stops or rebounds */
@@ -255,6 +273,22 @@ static void test_frontal_barrier(void)
     double ke = 0.5 * 208 * 13.4 * 13.4 + 0.5 * 0.6 * pow(13.4 / 0.30, 2) +
                 0.5 * 0.9 * pow(13.4 / 0.315, 2);
     CHECK_REL(f.e_kin0, ke, 1e-3);
+}
+
+/* Oblique impact (barrier normal at 30 deg to the heading): runs to the end, the approach
+ * speed along the barrier normal is reversed (rebound) or stopped, the fork deforms
+ * plastically, the energy balance closes (drift below 2 %). */
+static void test_oblique_barrier(void)
+{
+    impact_figs f;
+    const double d[3] = {0.8660254, 0.5, 0};
+    CHECK(run_impact(OBLIQUE, d, &f) == MCS_OK);
+    print_figs("oblique 30 deg 13.4 m/s", &f);
+    CHECK(f.f_peak > 0);
+    CHECK(f.vn_min <= 0);
+    CHECK(f.phi_max > 0.05);
+    CHECK(f.phi_set > 0.01);
+    CHECK(f.drift < 0.02);
 }
 
 static void test_frontal_barrier_cli(void)
@@ -271,5 +305,6 @@ int main(void)
     RUN(test_static_equilibrium);
     RUN(test_frontal_barrier);
     RUN(test_frontal_barrier_cli);
+    RUN(test_oblique_barrier);
     TEST_END();
 }

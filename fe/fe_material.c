@@ -84,33 +84,33 @@ double fe_mat_plane_stress(const fe_part *p, double sig[3], const double de[3], 
     double h, rf = fe_rate_factor(p, rate);
     double sy = rf * fe_flow_stress(p, epsp, &h);
     double p0 = sig[0] + sig[1], m0 = sig[0] - sig[1], t0 = sig[2];
-    double q0 = vm_ps(p0, m0, t0);
-    if (q0 <= sy) return 0;
+    double q0sq = 0.25 * p0 * p0 + 0.75 * m0 * m0 + 3 * t0 * t0;
+    if (q0sq <= sy * sy) return 0; /* elastic: no square root */
+    double q0 = sqrt(q0sq);
     /* plastic multiplier dg: p, m, t shrink by 1/(1 + a dg), 1/(1 + 2 G dg), 1/(1 + 2 G dg)
      * with a = E / (3 (1 - nu)); plastic strain increment (2/3) dg q(dg) */
     const double a = E / (3 * (1 - nu));
     /* start from the exact answer of a purely deviatoric in-plane state, q0 / (1 + 2 G dg) =
      * sy + (2/3) h dg sy: Newton then needs two or three iterations */
-    double dg = (q0 - sy) / (sy * (2 * G + 2.0 / 3.0 * rf * h)), q = q0;
-    for (int it = 0; it < 60; it++) {
-        double fp = 1 / (1 + a * dg), fm = 1 / (1 + 2 * G * dg);
+    double dg = (q0 - sy) / (sy * (2 * G + 2.0 / 3.0 * rf * h));
+    double fp = 1, fm = 1, q = q0;
+    for (int it = 0;; it++) {
+        fp = 1 / (1 + a * dg), fm = 1 / (1 + 2 * G * dg);
         double pp = p0 * fp, mm = m0 * fm, tt = t0 * fm;
         q = vm_ps(pp, mm, tt);
         double dq = (-0.25 * pp * pp * a * fp - (0.75 * mm * mm + 3 * tt * tt) * 2 * G * fm) / q;
-        double dep = 2.0 / 3.0 * dg * q;
-        double g = q - rf * fe_flow_stress(p, epsp + dep, &h);
-        double dg_d = dq - rf * h * 2.0 / 3.0 * (q + dg * dq);
-        if (fabs(g) <= FE_RETURN_TOL * q0) break;
-        double step = -g / dg_d;
+        double g = q - rf * fe_flow_stress(p, epsp + 2.0 / 3.0 * dg * q, &h);
+        /* converged (or out of iterations): fp, fm, q belong to this dg */
+        if (fabs(g) <= FE_RETURN_TOL * q0 || it == 60) break;
+        double step = -g / (dq - rf * h * 2.0 / 3.0 * (q + dg * dq));
         if (dg + step < 0) step = -0.5 * dg;
         dg += step;
     }
-    double fp = 1 / (1 + a * dg), fm = 1 / (1 + 2 * G * dg);
     double pp = p0 * fp, mm = m0 * fm;
     sig[0] = 0.5 * (pp + mm);
     sig[1] = 0.5 * (pp - mm);
     sig[2] = t0 * fm;
-    return 2.0 / 3.0 * dg * vm_ps(pp, mm, sig[2]);
+    return 2.0 / 3.0 * dg * q;
 }
 
 double fe_mat_1d(const fe_part *p, double *sig, double de, double epsp, double rate)

@@ -87,6 +87,19 @@ demo: deps
 	@$(MAKE) --no-print-directory $(MCRASH)
 	@sh scripts/demo.sh $(MCRASH)
 
+# open an exported sample results file in ParaView's XDMF readers (optional: needs pvpython,
+# Debian package python3-paraview); prints points, cells, time steps as ParaView reads them
+.PHONY: check-paraview
+check-paraview: $(MCRASH) $(BUILD)/tests/test_export
+	@command -v pvpython >/dev/null || { echo "check-paraview: pvpython not found (apt-get install python3-paraview)"; exit 1; }
+	@$(BUILD)/tests/test_export --write-sample $(BUILD)/paraview >/dev/null
+	@$(MCRASH) export $(BUILD)/paraview/sample.h5 --xdmf
+	@$(MCRASH) export $(BUILD)/paraview/sample.h5 --xdmf2 $(BUILD)/paraview/sample_xdmf2.xmf
+	@for v in "" --xdmf2; do f=$(BUILD)/paraview/sample.xmf; [ -n "$$v" ] && f=$(BUILD)/paraview/sample_xdmf2.xmf; \
+	  pvpython --force-offscreen-rendering scripts/check_xdmf_paraview.py $$v --time 0.02 $$f > $(BUILD)/paraview/pv.log 2>&1 \
+	    || { cat $(BUILD)/paraview/pv.log; exit 1; }; \
+	  echo "$$f: $$(grep '^xdmf:' $(BUILD)/paraview/pv.log)"; done
+
 format:
 	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(BENCH_SRC) $(wildcard */*.h)
 

@@ -25,8 +25,9 @@
       "filter a channel or compute one criterion from CSV")                                        \
     X(compare, "mcrash compare REF CMP [--method iso18571|cora] [--json]",                         \
       "objective rating of one curve against another")                                             \
-    X(export, "mcrash export OUT.h5 --xdmf | --csv DIR | --mme DIR | --k FILE",                    \
-      "write a results file in other formats")                                                     \
+    X(export, "mcrash export OUT.h5 --xdmf [FILE.xmf] [--stride N] | --xdmf2 [FILE.xmf] | "         \
+              "--csv DIR | --mme DIR | --k FILE",                                                  \
+      "write a results file in other formats (XDMF for ParaView, CSV)")                            \
     X(report, "mcrash report OUT.h5 -o DIR", "HTML page with plots")                               \
     X(study, "mcrash study STUDY.yaml [-o STUDY.h5]", "design of experiments")
 

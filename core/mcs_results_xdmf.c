@@ -1,0 +1,528 @@
+/* mcs_results_xdmf.c: `mcrash export --xdmf` — an XDMF 3 file that points into the results
+ * file, so ParaView shows the FE meshes deforming and the rigid bodies moving over time. */
+#include "core/mcs_results_export.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+typedef struct {
+    FILE *f;
+    mcs_results *r;
+    char h5[PATH_MAX];   /* the results file, relative to the .xmf          */
+    mcs_xdmf_opts opts;
+} xw;
+
+mcs_xdmf_opts mcs_xdmf_opts_default(void)
+{
+    return (mcs_xdmf_opts){.stride = 0, .max_frames = 2000, .legacy = 0};
+}
+
+/* ---- file names ---- */
+
+/* directory part of path, resolved; "." when there is none */
+static int real_dir(const char *path, char *out)
+{
+    char d[PATH_MAX];
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        snprintf(d, sizeof d, ".");
+    else if (slash == path)
+        snprintf(d, sizeof d, "/");
+    else
+        snprintf(d, sizeof d, "%.*s", (int)(slash - path), path);
+    return realpath(d, out) ? 0 : -1;
+}
+
+/* split an absolute path into its components (in place); returns their number */
+static int split_path(char *p, char **comp, int max)
+{
+    int n = 0;
+    char *save = NULL;
+    for (char *tok = strtok_r(p, "/", &save); tok && n < max; tok = strtok_r(NULL, "/", &save))
+        comp[n++] = tok;
+    return n;
+}
+
+/* h5 as seen from the directory of xmf: "out.h5", "../runs/out.h5" */
+static int relative_name(const char *h5, const char *xmf, char *out, size_t n)
+{
+    char a[PATH_MAX], b[PATH_MAX], *ca[256], *cb[256];
+    if (real_dir(h5, a) || real_dir(xmf, b)) return -1;
+    const char *base = strrchr(h5, '/') ? strrchr(h5, '/') + 1 : h5;
+    int na = split_path(a, ca, 256), nb = split_path(b, cb, 256), c = 0;
+    while (c < na && c < nb && strcmp(ca[c], cb[c]) == 0) c++;
+    size_t used = 0;
+    out[0] = 0;
+    for (int i = c; i < nb && used < n; i++) used += (size_t)snprintf(out + used, n - used, "../");
+    for (int i = c; i < na && used < n; i++)
+        used += (size_t)snprintf(out + used, n - used, "%s/", ca[i]);
+    if (used < n) used += (size_t)snprintf(out + used, n - used, "%s", base);
+    return used >= n ? -1 : 0;
+}
+
+/* ---- XML pieces ---- */
+
+static void put_esc(FILE *f, const char *s)
+{
+    for (; *s; s++) {
+        switch (*s) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        default: fputc(*s, f);
+        }
+    }
+}
+
+static void put_dims(FILE *f, int rank, const size_t *dims)
+{
+    for (int i = 0; i < rank; i++) fprintf(f, "%s%zu", i ? " " : "", dims[i]);
+}
+
+static void put_indent(FILE *f, int ind)
+{
+    fprintf(f, "%*s", 2 * ind, "");
+}
+
+/* <DataItem ... Format="HDF">file.h5:/path</DataItem> */
+static void item_hdf(xw *w, int ind, const char *path, int rank, const size_t *dims, int is_int)
+{
+    put_indent(w->f, ind);
+    fputs("<DataItem Dimensions=\"", w->f);
+    put_dims(w->f, rank, dims);
+    fprintf(w->f, "\" NumberType=\"%s\" Precision=\"%d\" Format=\"HDF\">", is_int ? "Int" : "Float",
+            is_int ? 4 : 8);
+    put_esc(w->f, w->h5);
+    fputc(':', w->f);
+    put_esc(w->f, path);
+    fputs("</DataItem>\n", w->f);
+}
+
+/* a block of an HDF dataset: start/count per axis of its full shape (stride 1); the result
+ * has the shape out_dims. XDMF 3 states the block in the heavy-data reference itself
+ * ("file.h5:/path|start:stride:count:shape"), which ParaView's Xdmf3 readers take; XDMF 2
+ * nests it in a HyperSlab item, which the legacy XDMF reader takes. */
+static void item_slab(xw *w, int ind, const char *path, int rank, const size_t *dims,
+                      const size_t *start, const size_t *count, int out_rank,
+                      const size_t *out_dims)
+{
+    size_t ones[MCS_RESULTS_MAXRANK] = {1, 1, 1};
+    FILE *f = w->f;
+    put_indent(f, ind);
+    fputs("<DataItem ", f);
+    if (w->opts.legacy) fputs("ItemType=\"HyperSlab\" Type=\"HyperSlab\" ", f);
+    fputs("Dimensions=\"", f);
+    put_dims(f, out_rank, out_dims);
+    fputs("\" NumberType=\"Float\" Precision=\"8\"", f);
+    if (!w->opts.legacy) {
+        fputs(" Format=\"HDF\">", f);
+        put_esc(f, w->h5);
+        fputc(':', f);
+        put_esc(f, path);
+        fputc('|', f);
+        put_dims(f, rank, start);
+        fputc(':', f);
+        put_dims(f, rank, ones);
+        fputc(':', f);
+        put_dims(f, rank, count);
+        fputc(':', f);
+        put_dims(f, rank, dims);
+        fputs("</DataItem>\n", f);
+        return;
+    }
+    fputs(">\n", f);
+    put_indent(f, ind + 1);
+    fprintf(f, "<DataItem Dimensions=\"3 %d\" NumberType=\"Int\" Format=\"XML\">", rank);
+    put_dims(f, rank, start);
+    fputc(' ', f);
+    put_dims(f, rank, ones);
+    fputc(' ', f);
+    put_dims(f, rank, count);
+    fputs("</DataItem>\n", f);
+    item_hdf(w, ind + 1, path, rank, dims, 0);
+    put_indent(f, ind);
+    fputs("</DataItem>\n", f);
+}
+
+/* ---- times ---- */
+
+/* the times of n rows: from the first candidate dataset that has n values, else 0, 1, 2 ... */
+static mcs_status read_times(mcs_results *r, const char *const *cands, size_t n, double **t,
+                             mcs_error *err)
+{
+    *t = malloc((n ? n : 1) * sizeof **t);
+    if (!*t) return MCS_ERR(err, MCS_ERR_NOMEM, "export: out of memory");
+    for (size_t i = 0; i < n; i++) (*t)[i] = (double)i;
+    for (int c = 0; cands[c]; c++) {
+        if (mcs_results_kind(r, cands[c]) != MCS_RES_DATASET) continue;
+        mcs_array a = {0};
+        mcs_status st = mcs_results_read(r, cands[c], &a, err);
+        if (st) return st;
+        int ok = a.rank == 1 && a.n == n;
+        if (ok) memcpy(*t, a.v, n * sizeof **t);
+        mcs_array_free(&a);
+        if (ok) return MCS_OK;
+    }
+    mcs_log(MCS_LOG_WARN, "%s: no time values for %zu output steps; using their index",
+            mcs_results_path(r), n);
+    return MCS_OK;
+}
+
+/* output steps to write: every stride-th, and always the last */
+static size_t frame_stride(const xw *w, size_t n)
+{
+    size_t s = (size_t)(w->opts.stride > 0 ? w->opts.stride : 1);
+    if (w->opts.stride <= 0 && w->opts.max_frames > 0 && n > (size_t)w->opts.max_frames)
+        s = (n + (size_t)w->opts.max_frames - 1) / (size_t)w->opts.max_frames;
+    return s;
+}
+
+static int next_frame(size_t i, size_t s, size_t n)
+{
+    return i + s < n ? (int)(i + s) : (i + 1 < n ? (int)(n - 1) : -1);
+}
+
+/* ---- FE meshes ---- */
+
+typedef struct {
+    char name[256];
+    char nodes[512], elems[512];
+    size_t nn, ne, k;
+    int offset;
+    const char *topo; /* XDMF topology type */
+} fe_part;
+
+static const char *topology(const char *type, size_t k)
+{
+    static const struct {
+        const char *type, *topo;
+        size_t k;
+    } t[] = {{"line2", "Polyline", 2},       {"tri3", "Triangle", 3}, {"quad4", "Quadrilateral", 4},
+             {"tet4", "Tetrahedron", 4},     {"hex8", "Hexahedron", 8}};
+    for (size_t i = 0; i < sizeof t / sizeof *t; i++)
+        if (type ? strcmp(type, t[i].type) == 0 && k == t[i].k : k == t[i].k && i != 3)
+            return t[i].topo;
+    return NULL;
+}
+
+static mcs_status read_part(mcs_results *r, int stage, const char *name, fe_part *p,
+                            mcs_error *err)
+{
+    memset(p, 0, sizeof *p);
+    snprintf(p->name, sizeof p->name, "%s", name);
+    snprintf(p->nodes, sizeof p->nodes, "/stage%d/mesh/%s/nodes", stage, name);
+    snprintf(p->elems, sizeof p->elems, "/stage%d/mesh/%s/elements", stage, name);
+    int rn, re;
+    size_t dn[3], de[3];
+    mcs_status st = mcs_results_shape(r, p->nodes, &rn, dn, err);
+    if (!st) st = mcs_results_shape(r, p->elems, &re, de, err);
+    if (st) return st;
+    if (rn != 2 || dn[1] != 3 || re != 2)
+        return MCS_ERR(err, MCS_ERR_FORMAT, "%s: part %s: nodes must be [nn,3] and elements "
+                                            "[ne,k]",
+                       mcs_results_path(r), name);
+    p->nn = dn[0];
+    p->ne = de[0];
+    p->k = de[1];
+    char *type = NULL;
+    if (mcs_results_has_attr(r, p->elems, "type") &&
+        (st = mcs_results_attr_str(r, p->elems, "type", &type, err)))
+        return st;
+    p->topo = topology(type, p->k);
+    if (!p->topo)
+        st = MCS_ERR(err, MCS_ERR_UNSUPPORTED, "%s: part %s: %zu-node elements%s%s%s: XDMF "
+                                               "export knows line2, tri3, quad4, tet4, hex8",
+                     mcs_results_path(r), name, p->k, type ? " of type \"" : "",
+                     type ? type : "", type ? "\"" : "");
+    free(type);
+    double off = 0;
+    if (!st && mcs_results_has_attr(r, p->nodes, "node_offset"))
+        st = mcs_results_attr_double(r, p->nodes, "node_offset", &off, err);
+    p->offset = (int)off;
+    return st;
+}
+
+static void put_part(xw *w, int ind, const fe_part *p, const char *disp, const size_t *ddims,
+                     size_t step)
+{
+    FILE *f = w->f;
+    size_t de[2] = {p->ne, p->k}, dn[2] = {p->nn, 3};
+    put_indent(f, ind);
+    fputs("<Grid Name=\"", f);
+    put_esc(f, p->name);
+    fputs("\" GridType=\"Uniform\">\n", f);
+    put_indent(f, ind + 1);
+    fprintf(f, "<Topology TopologyType=\"%s\" NumberOfElements=\"%zu\"", p->topo, p->ne);
+    if (strcmp(p->topo, "Polyline") == 0) fputs(" NodesPerElement=\"2\"", f);
+    fputs(">\n", f);
+    item_hdf(w, ind + 2, p->elems, 2, de, 1);
+    put_indent(f, ind + 1);
+    fputs("</Topology>\n", f);
+    put_indent(f, ind + 1);
+    fputs("<Geometry GeometryType=\"XYZ\">\n", f);
+    size_t start[3] = {step, (size_t)p->offset, 0}, count[3] = {1, p->nn, 3};
+    if (disp && w->opts.legacy) {
+        /* deformed geometry: reference nodes + displacement at this output time (the legacy
+         * reader evaluates functions; ParaView 5.11's Xdmf3 readers do not, so XDMF 3 gets the
+         * reference geometry and the displacement for Warp By Vector) */
+        put_indent(f, ind + 2);
+        fprintf(f, "<DataItem ItemType=\"Function\" Function=\"$0 + $1\" Dimensions=\"%zu 3\">\n",
+                p->nn);
+        item_hdf(w, ind + 3, p->nodes, 2, dn, 0);
+        item_slab(w, ind + 3, disp, 3, ddims, start, count, 2, dn);
+        put_indent(f, ind + 2);
+        fputs("</DataItem>\n", f);
+    } else {
+        item_hdf(w, ind + 2, p->nodes, 2, dn, 0);
+    }
+    put_indent(f, ind + 1);
+    fputs("</Geometry>\n", f);
+    if (disp) {
+        put_indent(f, ind + 1);
+        fputs("<Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n", f);
+        item_slab(w, ind + 2, disp, 3, ddims, start, count, 2, dn);
+        put_indent(f, ind + 1);
+        fputs("</Attribute>\n", f);
+    }
+    put_indent(f, ind);
+    fputs("</Grid>\n", f);
+}
+
+static mcs_status fe_stage(xw *w, int stage, int *ngrids, mcs_error *err)
+{
+    char mesh[64], disp[64], ft[64], st_t[64];
+    snprintf(mesh, sizeof mesh, "/stage%d/mesh", stage);
+    snprintf(disp, sizeof disp, "/stage%d/fields/displacement", stage);
+    snprintf(ft, sizeof ft, "/stage%d/fields/time", stage);
+    snprintf(st_t, sizeof st_t, "/stage%d/time", stage);
+    if (mcs_results_kind(w->r, mesh) != MCS_RES_GROUP) return MCS_OK;
+    char **names = NULL;
+    int np = 0;
+    mcs_status st = mcs_results_list(w->r, mesh, &names, &np, err);
+    if (st || np == 0) {
+        mcs_results_list_free(&names, np);
+        return st;
+    }
+    fe_part *parts = calloc((size_t)np, sizeof *parts);
+    if (!parts) st = MCS_ERR(err, MCS_ERR_NOMEM, "export: out of memory");
+    for (int i = 0; i < np && !st; i++) st = read_part(w->r, stage, names[i], &parts[i], err);
+    mcs_results_list_free(&names, np);
+
+    int has_disp = !st && mcs_results_kind(w->r, disp) == MCS_RES_DATASET;
+    int dr = 0;
+    size_t dd[3] = {0, 0, 0};
+    if (has_disp) st = mcs_results_shape(w->r, disp, &dr, dd, err);
+    if (has_disp && !st && (dr != 3 || dd[2] != 3))
+        st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: must be [nout, nn, 3]", mcs_results_path(w->r),
+                     disp);
+    for (int i = 0; has_disp && i < np && !st; i++)
+        if ((size_t)parts[i].offset + parts[i].nn > dd[1])
+            st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: part %s: nodes %d..%zu beyond the %zu of %s",
+                         mcs_results_path(w->r), parts[i].name, parts[i].offset,
+                         (size_t)parts[i].offset + parts[i].nn - 1, dd[1], disp);
+    double *t = NULL;
+    const char *cands[] = {ft, st_t, NULL};
+    if (!st && has_disp) st = read_times(w->r, cands, dd[0], &t, err);
+    if (!st) {
+        FILE *f = w->f;
+        if (has_disp && dd[0] > 0) {
+            fprintf(f, "    <Grid Name=\"stage%d_fe\" GridType=\"Collection\" "
+                       "CollectionType=\"Temporal\">\n", stage);
+            size_t s = frame_stride(w, dd[0]);
+            for (int i = 0; i >= 0; i = next_frame((size_t)i, s, dd[0])) {
+                fprintf(f, "      <Grid Name=\"stage%d_fe_%d\" GridType=\"Collection\" "
+                           "CollectionType=\"Spatial\">\n", stage, i);
+                fprintf(f, "        <Time Value=\"%.17g\"/>\n", t[i]);
+                for (int p = 0; p < np; p++) put_part(w, 4, &parts[p], disp, dd, (size_t)i);
+                fputs("      </Grid>\n", f);
+            }
+            fputs("    </Grid>\n", f);
+        } else {
+            fprintf(f, "    <Grid Name=\"stage%d_fe\" GridType=\"Collection\" "
+                       "CollectionType=\"Spatial\">\n", stage);
+            for (int p = 0; p < np; p++) put_part(w, 3, &parts[p], NULL, NULL, 0);
+            fputs("    </Grid>\n", f);
+        }
+        (*ngrids)++;
+    }
+    free(t);
+    free(parts);
+    return st;
+}
+
+/* ---- rigid bodies ---- */
+
+typedef struct {
+    char name[256], pos[512], ori[512];
+    int has_ori;
+} rb_body;
+
+static void put_body(xw *w, int ind, const rb_body *b, int id, size_t nt, size_t step)
+{
+    FILE *f = w->f;
+    size_t dp[2] = {nt, 3}, dq[2] = {nt, 4}, start[2] = {step, 0};
+    size_t cp[2] = {1, 3}, cq[2] = {1, 4};
+    put_indent(f, ind);
+    fputs("<Grid Name=\"", f);
+    put_esc(f, b->name);
+    fputs("\" GridType=\"Uniform\">\n", f);
+    put_indent(f, ind + 1);
+    /* the connectivity spelled out: without it the Xdmf3 readers make no vertex cell */
+    fputs("<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"1\" "
+          "NodesPerElement=\"1\">\n", f);
+    put_indent(f, ind + 2);
+    fputs("<DataItem Dimensions=\"1\" NumberType=\"Int\" Format=\"XML\">0</DataItem>\n", f);
+    put_indent(f, ind + 1);
+    fputs("</Topology>\n", f);
+    put_indent(f, ind + 1);
+    fputs("<Geometry GeometryType=\"XYZ\">\n", f);
+    item_slab(w, ind + 2, b->pos, 2, dp, start, cp, 2, cp);
+    put_indent(f, ind + 1);
+    fputs("</Geometry>\n", f);
+    if (b->has_ori) {
+        /* quaternion w, x, y, z (body -> world), as one 4-component nodal array */
+        put_indent(f, ind + 1);
+        fputs("<Attribute Name=\"orientation\" AttributeType=\"Matrix\" Center=\"Node\">\n", f);
+        item_slab(w, ind + 2, b->ori, 2, dq, start, cq, 2, cq);
+        put_indent(f, ind + 1);
+        fputs("</Attribute>\n", f);
+    }
+    put_indent(f, ind + 1);
+    fputs("<Attribute Name=\"body_id\" AttributeType=\"Scalar\" Center=\"Node\">\n", f);
+    put_indent(f, ind + 2);
+    fprintf(f, "<DataItem Dimensions=\"1\" NumberType=\"Int\" Format=\"XML\">%d</DataItem>\n", id);
+    put_indent(f, ind + 1);
+    fputs("</Attribute>\n", f);
+    put_indent(f, ind);
+    fputs("</Grid>\n", f);
+}
+
+/* bodies with a position [nt,3]; an orientation, when there is one, must be [nt,4] */
+static mcs_status read_bodies(mcs_results *r, int stage, rb_body **out, int *nb, size_t *nt,
+                              mcs_error *err)
+{
+    char g[64];
+    snprintf(g, sizeof g, "/stage%d/bodies", stage);
+    *out = NULL;
+    *nb = 0;
+    *nt = 0;
+    if (mcs_results_kind(r, g) != MCS_RES_GROUP) return MCS_OK;
+    char **names = NULL;
+    int n = 0;
+    mcs_status st = mcs_results_list(r, g, &names, &n, err);
+    rb_body *b = st ? NULL : calloc((size_t)n + 1, sizeof *b);
+    if (!st && !b) st = MCS_ERR(err, MCS_ERR_NOMEM, "export: out of memory");
+    int k = 0;
+    for (int i = 0; i < n && !st; i++) {
+        rb_body *x = &b[k];
+        snprintf(x->name, sizeof x->name, "%s", names[i]);
+        snprintf(x->pos, sizeof x->pos, "%s/%s/position", g, names[i]);
+        snprintf(x->ori, sizeof x->ori, "%s/%s/orientation", g, names[i]);
+        if (mcs_results_kind(r, x->pos) != MCS_RES_DATASET) continue;
+        int rk;
+        size_t d[3];
+        st = mcs_results_shape(r, x->pos, &rk, d, err);
+        if (!st && (rk != 2 || d[1] != 3 || (k > 0 && d[0] != *nt)))
+            st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: must be [nt,3] with the nt of the other "
+                                              "bodies",
+                         mcs_results_path(r), x->pos);
+        *nt = d[0];
+        x->has_ori = !st && mcs_results_kind(r, x->ori) == MCS_RES_DATASET;
+        if (x->has_ori) st = mcs_results_shape(r, x->ori, &rk, d, err);
+        if (x->has_ori && !st && (rk != 2 || d[0] != *nt || d[1] != 4))
+            st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: must be [nt,4]", mcs_results_path(r),
+                         x->ori);
+        k++;
+    }
+    mcs_results_list_free(&names, n);
+    if (st) {
+        free(b);
+        return st;
+    }
+    *out = b;
+    *nb = k;
+    return MCS_OK;
+}
+
+static mcs_status body_stage(xw *w, int stage, int *ngrids, mcs_error *err)
+{
+    rb_body *b;
+    int nb;
+    size_t nt;
+    mcs_status st = read_bodies(w->r, stage, &b, &nb, &nt, err);
+    if (st || nb == 0 || nt == 0) {
+        free(b);
+        return st;
+    }
+    char tp[64];
+    snprintf(tp, sizeof tp, "/stage%d/time", stage);
+    const char *cands[] = {tp, NULL};
+    double *t = NULL;
+    st = read_times(w->r, cands, nt, &t, err);
+    if (!st) {
+        FILE *f = w->f;
+        fprintf(f, "    <Grid Name=\"stage%d_bodies\" GridType=\"Collection\" "
+                   "CollectionType=\"Temporal\">\n", stage);
+        size_t s = frame_stride(w, nt);
+        for (int i = 0; i >= 0; i = next_frame((size_t)i, s, nt)) {
+            fprintf(f, "      <Grid Name=\"stage%d_bodies_%d\" GridType=\"Collection\" "
+                       "CollectionType=\"Spatial\">\n", stage, i);
+            fprintf(f, "        <Time Value=\"%.17g\"/>\n", t[i]);
+            for (int j = 0; j < nb; j++) put_body(w, 4, &b[j], j, nt, (size_t)i);
+            fputs("      </Grid>\n", f);
+        }
+        fputs("    </Grid>\n", f);
+        (*ngrids)++;
+    }
+    free(t);
+    free(b);
+    return st;
+}
+
+/* ---- the file ---- */
+
+mcs_status mcs_results_export_xdmf(mcs_results *r, const char *xmf_path,
+                                   const mcs_xdmf_opts *opts, mcs_error *err)
+{
+    int stages[64];
+    int ns = mcs_results_stages(r, stages, 64);
+    if (ns == 0)
+        return MCS_ERR(err, MCS_ERR_FORMAT, "%s: no /stageN group: nothing to export (not an "
+                                            "mcrash results file?)",
+                       mcs_results_path(r));
+    xw w = {.r = r, .opts = opts ? *opts : mcs_xdmf_opts_default()};
+    if (!xmf_path || !*xmf_path) return MCS_ERR(err, MCS_ERR_USAGE, "export --xdmf: no file");
+    if (relative_name(mcs_results_path(r), xmf_path, w.h5, sizeof w.h5))
+        return MCS_ERR(err, MCS_ERR_IO, "%s: cannot resolve the directory: %s", xmf_path,
+                       strerror(errno));
+    char tmp[PATH_MAX + 32];
+    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", xmf_path, (long)getpid());
+    w.f = fopen(tmp, "w");
+    if (!w.f) return MCS_ERR(err, MCS_ERR_IO, "%s: cannot write: %s", xmf_path, strerror(errno));
+    fprintf(w.f, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+                 "<Xdmf Version=\"%s\">\n  <Domain Name=\"mcrash\">\n",
+            w.opts.legacy ? "2.0" : "3.0");
+    mcs_status st = MCS_OK;
+    int ngrids = 0;
+    for (int i = 0; i < ns && !st; i++) {
+        st = fe_stage(&w, stages[i], &ngrids, err);
+        if (!st) st = body_stage(&w, stages[i], &ngrids, err);
+    }
+    fputs("  </Domain>\n</Xdmf>\n", w.f);
+    int bad = ferror(w.f);
+    if (fclose(w.f) != 0) bad = 1;
+    if (!st && bad) st = MCS_ERR(err, MCS_ERR_IO, "%s: write failed", xmf_path);
+    if (!st && ngrids == 0)
+        st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: no meshes (/stageN/mesh) and no bodies "
+                                          "(/stageN/bodies) to show",
+                     mcs_results_path(r));
+    if (!st && rename(tmp, xmf_path) != 0)
+        st = MCS_ERR(err, MCS_ERR_IO, "%s: cannot rename: %s", xmf_path, strerror(errno));
+    if (st) remove(tmp);
+    return st;
+}

@@ -200,6 +200,7 @@ mcs_status mcs_results_create(mcs_results **out, const char *path, const char *s
     }
     hid_t fapl = make_fapl(), fcpl = H5Pcreate(H5P_FILE_CREATE);
     H5Pset_link_creation_order(fcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
+    H5Pset_obj_track_times(fcpl, 0); /* the root group too: no time stamps */
     r->file = H5Fcreate(r->tmp, H5F_ACC_TRUNC, fcpl, fapl);
     H5Pclose(fcpl);
     H5Pclose(fapl);

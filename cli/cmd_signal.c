@@ -164,13 +164,41 @@ static void list_columns(const sig_args *a, const an_signal *c, int n, const cha
     fprintf(stderr, "\n");
 }
 
-/* three named columns (ax ay az, Fx Fz My, ...) */
+/* the one prefix P for which columns P<names[0..2]> all exist (e.g. head_ax head_ay head_az,
+ * as stage-1 exports name them); 1 and the prefix if exactly one triple exists */
+static int prefixed_triple(const an_signal *c, int n, const char *const names[3], char *prefix,
+                           size_t size)
+{
+    int found = 0;
+    for (int k = 0; k < n; k++) {
+        size_t ln = strlen(c[k].name), ls = strlen(names[0]);
+        if (ln <= ls || strcmp(c[k].name + ln - ls, names[0]) != 0 || ln - ls >= size) continue;
+        char p[64], full[128];
+        snprintf(p, sizeof p, "%.*s", (int)(ln - ls), c[k].name);
+        int all = 1;
+        for (int j = 1; j < 3 && all; j++) {
+            snprintf(full, sizeof full, "%s%s", p, names[j]);
+            all = an_signal_find(c, n, full) >= 0;
+        }
+        if (all && found++ == 0) snprintf(prefix, size, "%s", p);
+    }
+    return found == 1;
+}
+
+/* three named columns (ax ay az, Fx Fz My, ...), bare or with one common prefix */
 static int need3(const sig_args *a, const an_signal *c, int n, const char *const names[3],
                  const char *const units[3], int idx[3])
 {
+    char prefix[64] = "", full[3][128];
+    const char *use[3] = {names[0], names[1], names[2]};
+    if (an_signal_find(c, n, names[0]) < 0 && prefixed_triple(c, n, names, prefix, sizeof prefix))
+        for (int k = 0; k < 3; k++) {
+            snprintf(full[k], sizeof full[k], "%s%s", prefix, names[k]);
+            use[k] = full[k];
+        }
     int found = 0;
     for (int k = 0; k < 3; k++) {
-        found += need(a, c, n, names[k], units[k], &idx[k]);
+        found += need(a, c, n, use[k], units[k], &idx[k]);
         if (idx[k] == -2) return -1;
     }
     if (found == 3) return 1;
@@ -193,7 +221,8 @@ static int accel_channel(const sig_args *a, an_signal *c, int n, double **acc, c
         return 1;
     }
     if (n == 1 && strcmp(c[0].unit, "m/s^2") == 0) {
-        memcpy(*acc, c[0].y, (size_t)c[0].n * sizeof(double));
+        /* one axis: its resultant is its magnitude (a J211 z channel is negative in a drop) */
+        for (int i = 0; i < c[0].n; i++) (*acc)[i] = fabs(c[0].y[i]);
         *what = c[0].name;
         return 1;
     }

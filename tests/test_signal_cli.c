@@ -196,6 +196,37 @@ static void test_channel_refs(void)
 }
 
 /* bad input: file:line:col and exit 2; missing columns listed; usage errors */
+/* stage-1 exports name the axes with the sensor as prefix (head_ax head_ay head_az) and write
+ * z down (SAE J211), so a drop is negative: the same 80 g square pulse as head_square.csv,
+ * written as prefixed columns and as one negative column, must give the same HIC (resultant
+ * and |a| of one axis are the same magnitude) */
+static void test_prefixed_and_signed(void)
+{
+    TMP_PATH(p, "prefixed.csv");
+    TMP_PATH(q, "single.csv");
+    FILE *f = fopen(p, "w"), *g = fopen(q, "w");
+    CHECK(f && g);
+    if (!f || !g) return;
+    fprintf(f, "time [s], head_ax [g], head_ay [g], head_az [g], pelvis_ax [g]\n");
+    fprintf(g, "time [s], head_az [g]\n");
+    for (int i = 0; i <= 40; i++) {
+        int on = i >= 10 && i <= 20;
+        fprintf(f, "%g, %g, %g, 0, 1\n", i * 1e-3, on ? 48.0 : 0.0, on ? 64.0 : 0.0);
+        fprintf(g, "%g, %g\n", i * 1e-3, on ? -80.0 : 0.0);
+    }
+    fclose(f);
+    fclose(g);
+    char args[600];
+    snprintf(args, sizeof args, "signal hic %s --json", p);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_REL(json_num(r->out, "hic"), 0.010 * pow(80, 2.5), JREL);
+    snprintf(args, sizeof args, "signal hic %s --json", q);
+    r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_REL(json_num(r->out, "hic"), 0.010 * pow(80, 2.5), JREL);
+}
+
 static void test_errors(void)
 {
     TMP_PATH(p, "bad.csv");
@@ -255,6 +286,7 @@ int main(void)
     RUN(test_generated_half_sine);
     RUN(test_cfc_stdout);
     RUN(test_channel_refs);
+    RUN(test_prefixed_and_signed);
     RUN(test_errors);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

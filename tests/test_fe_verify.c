@@ -601,6 +601,26 @@ static void test_rigid_rotation(void)
     fe_builder_destroy(&b);
 }
 
+/* An element turned inside out during a run (one corner shot through the opposite face) stops
+ * the run with MCS_ERR_NUMERIC naming the part, the element and the time. */
+static void test_inversion_detected(void)
+{
+    fe_builder *b = bar_builder(0.01, 0.01, 1, 0.0);
+    fe_model *m;
+    mcs_error err = {0};
+    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+    fe_state *s;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    s->node_v[3 * 7 + 2] = -1e5; /* top corner through the bottom face within a few steps */
+    mcs_status st = fe_run(m, s, 1e-3);
+    CHECK(st == MCS_ERR_NUMERIC);
+    CHECK_STR_CONTAINS(s->err.msg, "part 'bar': element 0 inverted");
+    CHECK_STR_CONTAINS(s->err.msg, "t = ");
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+}
+
 int main(void)
 {
     RUN(test_bar_impact);
@@ -610,6 +630,7 @@ int main(void)
     RUN(test_truss);
     RUN(test_moving_wall);
     RUN(test_instability_detected);
+    RUN(test_inversion_detected);
     RUN(test_hourglass_mode);
     RUN(test_determinism);
     RUN(test_rigid_rotation);

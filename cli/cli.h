@@ -6,8 +6,8 @@
 
 /* X(name, usage, summary) */
 #define MCS_CLI_COMMANDS(X)                                                                        \
-    X(check, "mcrash check SCENARIO.yaml [--json]",                                                \
-      "validate a scenario; --json prints it resolved (includes merged, SI units)")                \
+    X(check, "mcrash check SCENARIO.yaml... | --json SCENARIO.yaml | --schema",                    \
+      "validate scenarios; --json prints one resolved (includes merged, SI); --schema the keys")  \
     X(run, "mcrash run SCENARIO.yaml [-o OUT.h5] [--stage 1|2|3|all] [--quiet] [--json]",         \
       "run a scenario through its stages")                                                         \
     X(stage1, "mcrash stage1 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]",                        \

@@ -68,6 +68,9 @@ const char *mcs_scenario_text(const mcs_scenario *scn);
 /* the resolved scenario as JSON (includes merged, quantities in SI); MCS_ERR_IO on write error */
 mcs_status mcs_scenario_write_json(const mcs_scenario *scn, FILE *f);
 
+/* the reference of every key the reader accepts, as Markdown (docs/scenario_keys.md) */
+mcs_status mcs_schema_write_markdown(FILE *f);
+
 /* ---- nodes (a NULL node is an absent one: kind NULL, length 0, number NaN) ---- */
 mcs_kind mcs_node_kind(const mcs_node *n);
 const char *mcs_node_kind_str(mcs_kind k);

@@ -6,29 +6,72 @@
 
 /* row makers: name, flags, then what the type needs; doc is the text of "missing" messages */
 #define Q(n, d, fl, lo_, hi_, doc_)                                                                \
-    {.name = n, .type = MCS_SK_NUM, .flags = fl, .dim = d, .lo = lo_, .hi = hi_, .doc = doc_}
+    {                                                                                              \
+        .name = n, .type = MCS_SK_NUM, .flags = fl, .dim = d, .lo = lo_, .hi = hi_, .doc = doc_    \
+    }
 #define V(n, d, n0, n1, fl, lo_, doc_)                                                             \
-    {.name = n, .type = MCS_SK_VEC, .flags = fl, .dim = d, .nmin = n0, .nmax = n1, .lo = lo_,      \
-     .doc = doc_}
+    {                                                                                              \
+        .name = n, .type = MCS_SK_VEC, .flags = fl, .dim = d, .nmin = n0, .nmax = n1, .lo = lo_,   \
+        .doc = doc_                                                                                \
+    }
 #define I(n, fl, lo_, hi_, doc_)                                                                   \
-    {.name = n, .type = MCS_SK_INT, .flags = fl, .lo = lo_, .hi = hi_, .doc = doc_}
+    {                                                                                              \
+        .name = n, .type = MCS_SK_INT, .flags = fl, .lo = lo_, .hi = hi_, .doc = doc_              \
+    }
 #define IS(n, n0, n1, fl, lo_, doc_)                                                               \
-    {.name = n, .type = MCS_SK_INTS, .flags = fl, .nmin = n0, .nmax = n1, .lo = lo_, .doc = doc_}
-#define S(n, fl, doc_) {.name = n, .type = MCS_SK_STR, .flags = fl, .doc = doc_}
-#define B(n, fl, doc_) {.name = n, .type = MCS_SK_BOOL, .flags = fl, .doc = doc_}
-#define E(n, ch, fl, doc_) {.name = n, .type = MCS_SK_ENUM, .flags = fl, .choices = ch, .doc = doc_}
-#define R(n, r, fl, doc_) {.name = n, .type = MCS_SK_REF, .flags = fl, .ref = r, .doc = doc_}
+    {                                                                                              \
+        .name = n, .type = MCS_SK_INTS, .flags = fl, .nmin = n0, .nmax = n1, .lo = lo_,            \
+        .doc = doc_                                                                                \
+    }
+#define S(n, fl, doc_)                                                                             \
+    {                                                                                              \
+        .name = n, .type = MCS_SK_STR, .flags = fl, .doc = doc_                                    \
+    }
+#define B(n, fl, doc_)                                                                             \
+    {                                                                                              \
+        .name = n, .type = MCS_SK_BOOL, .flags = fl, .doc = doc_                                   \
+    }
+#define E(n, ch, fl, doc_)                                                                         \
+    {                                                                                              \
+        .name = n, .type = MCS_SK_ENUM, .flags = fl, .choices = ch, .doc = doc_                    \
+    }
+#define R(n, r, fl, doc_)                                                                          \
+    {                                                                                              \
+        .name = n, .type = MCS_SK_REF, .flags = fl, .ref = r, .doc = doc_                          \
+    }
 #define RS(n, r, n0, fl, doc_)                                                                     \
-    {.name = n, .type = MCS_SK_REFS, .flags = fl, .ref = r, .nmin = n0, .doc = doc_}
+    {                                                                                              \
+        .name = n, .type = MCS_SK_REFS, .flags = fl, .ref = r, .nmin = n0, .doc = doc_             \
+    }
 #define C(n, dx, dy, n0, fl, lo_, doc_)                                                            \
-    {.name = n, .type = MCS_SK_CURVE, .flags = fl, .dim = dx, .dim_y = dy, .nmin = n0, .lo = lo_, \
-     .doc = doc_}
-#define M(n, s, fl, doc_) {.name = n, .type = MCS_SK_MAP, .flags = fl, .sub = &s, .doc = doc_}
-#define L(n, s, fl, doc_) {.name = n, .type = MCS_SK_LIST, .flags = fl, .sub = &s, .doc = doc_}
-#define NM(n, s, fl, doc_) {.name = n, .type = MCS_SK_NAMED, .flags = fl, .sub = &s, .doc = doc_}
-#define A(n, fl, doc_) {.name = n, .type = MCS_SK_ANY, .flags = fl, .doc = doc_}
-#define D(n, doc_) {.name = n, .type = MCS_SK_DISC, .doc = doc_}
-#define END {.name = 0}
+    {                                                                                              \
+        .name = n, .type = MCS_SK_CURVE, .flags = fl, .dim = dx, .dim_y = dy, .nmin = n0,          \
+        .lo = lo_, .doc = doc_                                                                     \
+    }
+#define M(n, s, fl, doc_)                                                                          \
+    {                                                                                              \
+        .name = n, .type = MCS_SK_MAP, .flags = fl, .sub = &s, .doc = doc_                         \
+    }
+#define L(n, s, fl, doc_)                                                                          \
+    {                                                                                              \
+        .name = n, .type = MCS_SK_LIST, .flags = fl, .sub = &s, .doc = doc_                        \
+    }
+#define NM(n, s, fl, doc_)                                                                         \
+    {                                                                                              \
+        .name = n, .type = MCS_SK_NAMED, .flags = fl, .sub = &s, .doc = doc_                       \
+    }
+#define A(n, fl, doc_)                                                                             \
+    {                                                                                              \
+        .name = n, .type = MCS_SK_ANY, .flags = fl, .doc = doc_                                    \
+    }
+#define D(n, doc_)                                                                                 \
+    {                                                                                              \
+        .name = n, .type = MCS_SK_DISC, .doc = doc_                                                \
+    }
+#define END                                                                                        \
+    {                                                                                              \
+        .name = 0                                                                                  \
+    }
 
 enum {
     REQ = MCS_SK_REQ,
@@ -64,8 +107,8 @@ static const mcs_skey sim_keys[] = {
     Q("output_rate", MCS_DIM_FREQ, GT, 0, 0, "sampling rate of the results [Hz]"),
     END,
 };
-static const mcs_smap sim_map = {.what = "simulation block", .keys = sim_keys,
-                                 .check = mcs_rule_simulation};
+static const mcs_smap sim_map = {
+    .what = "simulation block", .keys = sim_keys, .check = mcs_rule_simulation};
 
 static const mcs_skey ground_keys[] = {
     Q("height", LEN, REQ, 0, 0, "ground height z [m]"),
@@ -83,7 +126,11 @@ static const mcs_skey env_keys[] = {
 };
 static const mcs_smap env_map = {.what = "environment block", .keys = env_keys};
 
-/* ---- characteristics: force vs. penetration (default) or moment vs. angle ---- */
+/* ---- characteristics: force vs. penetration (default) or moment vs. angle ----
+ * The unloading rule of the hysteresis element (core/mcs_hysteresis.h) follows from the keys:
+ * neither unloading nor unloading_slope: elastic; unloading_slope: a line from the maximum;
+ * unloading: the curve, scaled to the maximum; both: the line down to the (absolute) unloading
+ * curve, then along it (paper Fig. 7). elastic_limit: no permanent set below it. */
 
 static const mcs_skey char_force_keys[] = {
     C("loading", LEN, FRC, 2, REQ, 0, "loading curve [[penetration m, force N], ...]"),
@@ -93,8 +140,7 @@ static const mcs_skey char_force_keys[] = {
     Q("damping", MCS_DIM_DAMPING, GE, 0, 0, "viscous damping [N s/m]"),
     END,
 };
-static const mcs_smap char_force = {.what = "force characteristic", .keys = char_force_keys,
-                                    .check = mcs_rule_characteristic};
+static const mcs_smap char_force = {.what = "force characteristic", .keys = char_force_keys};
 
 static const mcs_skey char_moment_keys[] = {
     C("loading", ANG, MCS_DIM_MOMENT, 2, REQ, 0, "loading curve [[angle rad, moment N m], ...]"),
@@ -104,8 +150,7 @@ static const mcs_skey char_moment_keys[] = {
     Q("damping", MCS_DIM_ROTDAMP, GE, 0, 0, "viscous damping [N m s/rad]"),
     END,
 };
-static const mcs_smap char_moment = {.what = "moment characteristic", .keys = char_moment_keys,
-                                     .check = mcs_rule_characteristic};
+static const mcs_smap char_moment = {.what = "moment characteristic", .keys = char_moment_keys};
 
 static const mcs_svariant char_variants[] = {{"force", &char_force}, {"moment", &char_moment}, {0}};
 
@@ -114,8 +159,11 @@ static const mcs_skey char_keys[] = {
     Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
     END,
 };
-static const mcs_smap char_map = {.what = "characteristic", .keys = char_keys, .disc = "type",
-                                  .variants = char_variants, .disc_default = "force"};
+static const mcs_smap char_map = {.what = "characteristic",
+                                  .keys = char_keys,
+                                  .disc = "type",
+                                  .variants = char_variants,
+                                  .disc_default = "force"};
 
 /* ---- bodies and their surfaces ---- */
 
@@ -152,8 +200,8 @@ static const mcs_skey surface_keys[] = {
     R("characteristic", CHR, 0, "contact characteristic"),
     END,
 };
-static const mcs_smap surface_map = {.what = "surface", .keys = surface_keys, .disc = "type",
-                                     .variants = surface_variants};
+static const mcs_smap surface_map = {
+    .what = "surface", .keys = surface_keys, .disc = "type", .variants = surface_variants};
 
 static const mcs_skey body_keys[] = {
     S("name", REQ | UNIQ | NE, "body name"),
@@ -178,11 +226,12 @@ static const mcs_skey contact_keys[] = {
     Q("friction", NONE, GE, 0, 0, "friction coefficient (overrides the characteristic's)"),
     END,
 };
-static const mcs_smap contact_map = {.what = "contact", .keys = contact_keys,
-                                     .check = mcs_rule_pair};
+static const mcs_smap contact_map = {
+    .what = "contact", .keys = contact_keys, .check = mcs_rule_pair};
 
 /* ---- joints ---- */
 
+/* range: stops beyond [min, max] of the joint position (stage 1 makes them stiff springs) */
 static const mcs_skey revolute_keys[] = {
     V("axis", NONE, 3, 3, REQ | NZ, 0, "rotation axis (world frame)"),
     V("range", ANG, 2, 2, 0, 0, "stops [min, max] [rad]"),
@@ -199,14 +248,18 @@ static const mcs_skey translational_keys[] = {
     END,
 };
 static const mcs_skey no_keys[] = {END};
-static const mcs_smap revolute_map = {.what = "revolute joint", .keys = revolute_keys};
+static const mcs_smap revolute_map = {
+    .what = "revolute joint", .keys = revolute_keys, .check = mcs_rule_range};
 static const mcs_smap universal_map = {.what = "universal joint", .keys = universal_keys};
-static const mcs_smap translational_map = {.what = "translational joint", .keys = translational_keys};
+static const mcs_smap translational_map = {
+    .what = "translational joint", .keys = translational_keys, .check = mcs_rule_range};
 static const mcs_smap spherical_map = {.what = "spherical joint", .keys = no_keys};
-static const mcs_smap fixed_map = {.what = "fixed joint", .keys = no_keys};
+static const mcs_smap fixed_map = {
+    .what = "fixed joint", .keys = no_keys, .check = mcs_rule_fixed_joint};
 static const mcs_svariant joint_variants[] = {
-    {"revolute", &revolute_map}, {"spherical", &spherical_map}, {"universal", &universal_map},
-    {"translational", &translational_map}, {"fixed", &fixed_map}, {0}};
+    {"revolute", &revolute_map},   {"spherical", &spherical_map},
+    {"universal", &universal_map}, {"translational", &translational_map},
+    {"fixed", &fixed_map},         {0}};
 
 static const mcs_skey joint_keys[] = {
     S("name", UNIQ | NE, "joint name"),
@@ -214,11 +267,15 @@ static const mcs_skey joint_keys[] = {
     R("parent", BODY_G, REQ, "parent body (or ground)"),
     R("child", BODY, REQ, "child body"),
     V("anchor", LEN, 3, 3, REQ, 0, "joint point in the world [m]"),
-    R("restraint", CHR, 0, "restraint characteristic (moment vs angle or force vs travel)"),
+    /* the same characteristic acts in both directions (moment for rotations, force for travel) */
+    R("restraint", CHR, 0, "restraint characteristic"),
     END,
 };
-static const mcs_smap joint_map = {.what = "joint", .keys = joint_keys, .disc = "type",
-                                   .variants = joint_variants, .check = mcs_rule_joint};
+static const mcs_smap joint_map = {.what = "joint",
+                                   .keys = joint_keys,
+                                   .disc = "type",
+                                   .variants = joint_variants,
+                                   .check = mcs_rule_joint};
 
 /* ---- attachments (breakable spring-dampers), sensors, impact ---- */
 
@@ -228,14 +285,15 @@ static const mcs_skey attachment_keys[] = {
     R("b", BODY_G, REQ, "second body"),
     V("point_a", LEN, 3, 3, REQ, 0, "attachment point on a (body frame) [m]"),
     V("point_b", LEN, 3, 3, REQ, 0, "attachment point on b (body frame) [m]"),
-    Q("stiffness", MCS_DIM_STIFFNESS, REQ | GE, 0, 0, "spring stiffness [N/m]"),
+    Q("stiffness", MCS_DIM_STIFFNESS, REQ | GT, 0, 0, "spring stiffness [N/m]"),
     Q("damping", MCS_DIM_DAMPING, GE, 0, 0, "damping [N s/m]"),
-    Q("failure_force", FRC, REQ | GT, 0, 0, "force at which it breaks [N]"),
-    Q("length", LEN, GE, 0, 0, "free length [m] (default: initial distance)"),
+    Q("failure_force", FRC, REQ | GT, 0, 0, "force at which it breaks for good [N]"),
+    /* absent: at rest in the initial posture; 0: the two points are pulled together */
+    Q("length", LEN, GE, 0, 0, "free length [m]"),
     END,
 };
-static const mcs_smap attachment_map = {.what = "attachment", .keys = attachment_keys,
-                                        .check = mcs_rule_pair};
+static const mcs_smap attachment_map = {
+    .what = "attachment", .keys = attachment_keys, .check = mcs_rule_pair};
 
 static const mcs_skey sensor_keys[] = {
     S("name", REQ | UNIQ | NE, "channel name"),
@@ -247,8 +305,8 @@ static const mcs_skey sensor_keys[] = {
     I("cfc", GE, 0, 0, "channel frequency class (0, 60, 180, 600, 1000)"),
     END,
 };
-static const mcs_smap sensor_map = {.what = "sensor", .keys = sensor_keys,
-                                    .check = mcs_rule_sensor};
+static const mcs_smap sensor_map = {
+    .what = "sensor", .keys = sensor_keys, .check = mcs_rule_sensor};
 
 /* open: other fields are kept as written (ISO 13232 contact codes etc.) */
 static const mcs_skey impact_keys[] = {
@@ -267,11 +325,10 @@ static const mcs_smap impact_map = {.what = "impact block", .keys = impact_keys,
 
 /* ---- fe: meshes ---- */
 
-#define MESH_COMMON                                                                                \
-    V("origin", LEN, 3, 3, 0, 0, "translation of the generated mesh [m]")
+#define MESH_COMMON V("origin", LEN, 3, 3, 0, 0, "translation of the generated mesh [m]")
 
 static const mcs_skey square_tube_keys[] = {
-    Q("side", LEN, REQ | GT, 0, 0, "outer side of the square section [m]"),
+    Q("side", LEN, REQ | GT, 0, 0, "side of the square section (mid-surface) [m]"),
     Q("length", LEN, REQ | GT, 0, 0, "tube length [m]"),
     Q("element_size", LEN, REQ | GT, 0, 0, "element edge length [m]"),
     E("axis", CHOICES_AXIS, 0, "tube axis (default z)"),
@@ -279,7 +336,7 @@ static const mcs_skey square_tube_keys[] = {
     END,
 };
 static const mcs_skey round_tube_keys[] = {
-    Q("radius", LEN, REQ | GT, 0, 0, "mid-surface radius [m]"),
+    Q("diameter", LEN, REQ | GT, 0, 0, "mid-surface diameter [m]"),
     Q("length", LEN, REQ | GT, 0, 0, "length [m]"),
     Q("element_size", LEN, REQ | GT, 0, 0, "element edge length [m]"),
     E("axis", CHOICES_AXIS, 0, "axis (default z)"),
@@ -290,20 +347,26 @@ static const mcs_skey plate_keys[] = {
     V("size", LEN, 2, 2, REQ | GT, 0, "plate size [m]"),
     IS("divisions", 2, 2, GE, 1, "elements along each side"),
     Q("element_size", LEN, GT, 0, 0, "element edge length [m]"),
-    E("normal", CHOICES_AXIS, 0, "plate normal (default z)"),
-    MESH_COMMON,
+    E("axis", CHOICES_AXIS, 0, "plate normal (default z)"),
+    V("origin", LEN, 3, 3, 0, 0, "min corner [m]"),
     END,
 };
 static const mcs_skey box_keys[] = {
     V("size", LEN, 3, 3, REQ | GT, 0, "box size [m]"),
     IS("divisions", 3, 3, REQ | GE, 1, "hex8 elements along x, y, z"),
-    MESH_COMMON,
+    V("origin", LEN, 3, 3, 0, 0, "min corner [m]"),
     END,
 };
 static const mcs_skey sphere_keys[] = {
     Q("radius", LEN, REQ | GT, 0, 0, "radius [m]"),
     Q("element_size", LEN, REQ | GT, 0, 0, "element edge length [m]"),
     MESH_COMMON,
+    END,
+};
+static const mcs_skey line_keys[] = {
+    V("origin", LEN, 3, 3, REQ, 0, "start point [m]"),
+    V("end", LEN, 3, 3, REQ, 0, "end point [m]"),
+    I("divisions", REQ | GE, 1, 0, "truss elements along the line"),
     END,
 };
 static const mcs_skey keyword_keys[] = {
@@ -315,46 +378,65 @@ static const mcs_skey keyword_keys[] = {
 static const mcs_smap square_tube_map = {.what = "square_tube mesh", .keys = square_tube_keys};
 static const mcs_smap circular_tube_map = {.what = "circular_tube mesh", .keys = round_tube_keys};
 static const mcs_smap cylinder_shell_map = {.what = "cylinder_shell mesh", .keys = round_tube_keys};
-static const mcs_smap plate_map = {.what = "plate mesh", .keys = plate_keys,
-                                   .check = mcs_rule_plate};
+static const mcs_smap plate_map = {
+    .what = "plate mesh", .keys = plate_keys, .check = mcs_rule_plate};
 static const mcs_smap box_map = {.what = "box mesh", .keys = box_keys};
 static const mcs_smap sphere_shell_map = {.what = "sphere_shell mesh", .keys = sphere_keys};
+static const mcs_smap line_map = {.what = "line mesh", .keys = line_keys};
 static const mcs_smap keyword_map = {.what = "keyword mesh", .keys = keyword_keys};
 /* "(keyword)": chosen when generate: is absent, never by name */
-static const mcs_svariant mesh_variants[] = {
-    {"square_tube", &square_tube_map}, {"circular_tube", &circular_tube_map},
-    {"cylinder_shell", &cylinder_shell_map}, {"plate", &plate_map}, {"box", &box_map},
-    {"sphere_shell", &sphere_shell_map}, {"(keyword)", &keyword_map}, {0}};
+static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
+                                             {"circular_tube", &circular_tube_map},
+                                             {"cylinder_shell", &cylinder_shell_map},
+                                             {"plate", &plate_map},
+                                             {"box", &box_map},
+                                             {"sphere_shell", &sphere_shell_map},
+                                             {"line", &line_map},
+                                             {"(keyword)", &keyword_map},
+                                             {0}};
 static const mcs_skey mesh_keys[] = {D("generate", "mesh generator"), END};
-static const mcs_smap mesh_map = {.what = "mesh", .keys = mesh_keys, .disc = "generate",
-                                  .variants = mesh_variants, .disc_default = "(keyword)"};
+static const mcs_smap mesh_map = {.what = "mesh",
+                                  .keys = mesh_keys,
+                                  .disc = "generate",
+                                  .variants = mesh_variants,
+                                  .disc_default = "(keyword)"};
 
 /* ---- fe: sections and materials ---- */
+
+#define HOURGLASS                                                                                  \
+    E("hourglass", "viscous|stiffness", 0, "hourglass control (default viscous)"),                 \
+        Q("hourglass_coefficient", NONE, GE, 0, 0, "Q_hg (default 0.1 viscous, 0.05 stiffness)")
 
 static const mcs_skey shell_keys[] = {
     Q("thickness", LEN, REQ | GT, 0, 0, "shell thickness [m]"),
     /* through-thickness points (LS-DYNA NIP); default 5 */
     I("integration_points", GE | LE, 1, 10, "through-thickness integration points"),
+    Q("shear_factor", NONE, GT | LE, 0, 1, "transverse shear factor (default 5/6)"),
+    HOURGLASS,
     END,
 };
+static const mcs_skey solid_keys[] = {HOURGLASS, END};
 static const mcs_skey membrane_keys[] = {
     Q("thickness", LEN, REQ | GT, 0, 0, "membrane thickness [m]"),
     END,
 };
 static const mcs_skey truss_keys[] = {
     Q("area", MCS_DIM_AREA, REQ | GT, 0, 0, "cross-section area [m^2]"),
+    B("tension_only", 0, "carries no compression (a cable)"),
     END,
 };
 static const mcs_smap shell_map = {.what = "shell section", .keys = shell_keys};
 static const mcs_smap membrane_map = {.what = "membrane section", .keys = membrane_keys};
-static const mcs_smap solid_map = {.what = "solid section", .keys = no_keys};
+static const mcs_smap solid_map = {.what = "solid section", .keys = solid_keys};
 static const mcs_smap truss_map = {.what = "truss section", .keys = truss_keys};
-static const mcs_svariant section_variants[] = {{"shell", &shell_map}, {"solid", &solid_map},
-                                                {"membrane", &membrane_map}, {"truss", &truss_map},
+static const mcs_svariant section_variants[] = {{"shell", &shell_map},
+                                                {"solid", &solid_map},
+                                                {"membrane", &membrane_map},
+                                                {"truss", &truss_map},
                                                 {0}};
 static const mcs_skey section_keys[] = {D("type", "section type"), END};
-static const mcs_smap section_map = {.what = "section", .keys = section_keys, .disc = "type",
-                                     .variants = section_variants};
+static const mcs_smap section_map = {
+    .what = "section", .keys = section_keys, .disc = "type", .variants = section_variants};
 
 #define ELASTIC_KEYS                                                                               \
     Q("youngs_modulus", PRS, REQ | GT, 0, 0, "Young's modulus [Pa]"),                              \
@@ -368,6 +450,9 @@ static const mcs_skey plastic_keys[] = {
     C("hardening", NONE, PRS, 1, GE, 0, "hardening curve [[plastic strain, stress Pa], ...]"),
     Q("tangent_modulus", PRS, GE, 0, 0, "bilinear hardening modulus [Pa] (without a curve)"),
     Q("failure_strain", NONE, GT, 0, 0, "effective plastic strain at erosion"),
+    /* strain-rate factor 1 + (rate/C)^(1/p) on the flow stress (mild steel: C 40.4/s, p 5) */
+    Q("cowper_symonds_c", MCS_DIM_FREQ, GT, 0, 0, "Cowper-Symonds C [1/s]"),
+    Q("cowper_symonds_p", NONE, GT, 0, 0, "Cowper-Symonds p"),
     END,
 };
 static const mcs_skey foam_keys[] = {
@@ -381,21 +466,22 @@ static const mcs_skey foam_keys[] = {
 static const mcs_skey fabric_keys[] = {ELASTIC_KEYS, END};
 static const mcs_skey rigid_keys[] = {ELASTIC_KEYS, END};
 static const mcs_smap elastic_map = {.what = "elastic material", .keys = elastic_keys};
-static const mcs_smap plastic_map = {.what = "elastic_plastic material", .keys = plastic_keys,
-                                     .check = mcs_rule_plastic};
+static const mcs_smap plastic_map = {
+    .what = "elastic_plastic material", .keys = plastic_keys, .check = mcs_rule_plastic};
 static const mcs_smap foam_map = {.what = "foam material", .keys = foam_keys};
 static const mcs_smap fabric_map = {.what = "fabric material", .keys = fabric_keys};
 static const mcs_smap rigid_map = {.what = "rigid material", .keys = rigid_keys};
 static const mcs_svariant material_variants[] = {
-    {"elastic", &elastic_map}, {"elastic_plastic", &plastic_map}, {"foam", &foam_map},
-    {"fabric", &fabric_map},   {"rigid", &rigid_map},             {0}};
+    {"elastic", &elastic_map}, {"elastic_plastic", &plastic_map},
+    {"foam", &foam_map},       {"fabric", &fabric_map},
+    {"rigid", &rigid_map},     {0}};
 static const mcs_skey material_keys[] = {
     D("model", "material model"),
     Q("density", MCS_DIM_DENSITY, REQ | GT, 0, 0, "density [kg/m^3]"),
     END,
 };
-static const mcs_smap material_map = {.what = "material", .keys = material_keys,
-                                      .disc = "model", .variants = material_variants};
+static const mcs_smap material_map = {
+    .what = "material", .keys = material_keys, .disc = "model", .variants = material_variants};
 
 /* ---- fe: parts, boundary, rigid walls, contacts ---- */
 
@@ -415,9 +501,19 @@ static const mcs_skey boundary_keys[] = {
     /* degrees of freedom held: all = translations and rotations */
     E("fix", "all|translations|rotations|x|y|z|xy|yz|xz", 0, "fixed degrees of freedom"),
     Q("tolerance", LEN, GE, 0, 0, "distance from the extreme that still counts [m]"),
+    V("velocity", VEL, 3, 3, 0, 0, "prescribed velocity of the fixed x, y, z [m/s]"),
     END,
 };
 static const mcs_smap boundary_map = {.what = "boundary condition", .keys = boundary_keys};
+
+static const mcs_skey load_keys[] = {
+    R("part", PART, REQ, "FE part"),
+    E("where", "x_min|x_max|y_min|y_max|z_min|z_max|all", REQ, "which nodes (split equally)"),
+    V("force", FRC, 3, 3, REQ, 0, "total force at scale 1 [N]"),
+    C("curve", MCS_DIM_TIME, NONE, 1, 0, 0, "[[time s, scale], ...] (default constant 1)"),
+    END,
+};
+static const mcs_smap load_map = {.what = "load", .keys = load_keys};
 
 static const mcs_skey wall_keys[] = {
     S("name", REQ | UNIQ | NE, "wall name"),
@@ -426,6 +522,9 @@ static const mcs_skey wall_keys[] = {
     V("velocity", VEL, 3, 3, 0, 0, "prescribed velocity [m/s] (default fixed)"),
     Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
     V("size", LEN, 2, 2, GT, 0, "extent of a finite wall [m] (default infinite)"),
+    E("method", "kinematic|penalty", 0, "contact treatment (default kinematic)"),
+    Q("penalty_scale", NONE, GT, 0, 0, "penalty stiffness scale (default 0.1)"),
+    RS("parts", PART, 1, 0, "parts it stops (default every part)"),
     END,
 };
 static const mcs_smap wall_map = {.what = "rigid wall", .keys = wall_keys};
@@ -455,14 +554,19 @@ static const mcs_skey fe_contact_keys[] = {
     Q("penalty_scale", NONE, GT, 0, 0, "penalty stiffness scale factor"),
     END,
 };
-static const mcs_smap fe_contact_map = {.what = "FE contact", .keys = fe_contact_keys,
-                                        .disc = "type", .variants = fe_contact_variants};
+static const mcs_smap fe_contact_map = {
+    .what = "FE contact", .keys = fe_contact_keys, .disc = "type", .variants = fe_contact_variants};
 
 static const mcs_skey fe_keys[] = {
     L("parts", part_map, REQ | NE, "FE parts"),
     L("boundary", boundary_map, 0, "boundary conditions"),
     L("rigid_walls", wall_map, 0, "rigid walls"),
     L("contacts", fe_contact_map, 0, "FE contacts"),
+    L("loads", load_map, 0, "nodal loads"),
+    Q("damping", MCS_DIM_FREQ, GE, 0, 0, "mass-proportional damping c, f = -c m v [1/s]"),
+    Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),
+    Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),
+    Q("energy_growth_limit", NONE, GE, 0, 0, "stop when total energy grows by this fraction"),
     END,
 };
 static const mcs_smap fe_map = {.what = "fe block", .keys = fe_keys};
@@ -487,5 +591,4 @@ static const mcs_skey root_keys[] = {
     M("fe", fe_map, 0, "FE block"),
     END,
 };
-const mcs_smap mcs_schema_root = {.what = "scenario", .keys = root_keys,
-                                  .check = mcs_rule_root};
+const mcs_smap mcs_schema_root = {.what = "scenario", .keys = root_keys, .check = mcs_rule_root};

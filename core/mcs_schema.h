@@ -8,21 +8,21 @@
 #include "core/mcs_units.h"
 
 typedef enum {
-    MCS_SK_NUM,     /* quantity of .dim: a number (SI) or "value unit" */
-    MCS_SK_INT,     /* integer number, no unit */
-    MCS_SK_VEC,     /* list of .nmin...nmax quantities of .dim (nmax 0: no limit) */
-    MCS_SK_INTS,    /* list of .nmin...nmax integers */
-    MCS_SK_STR,     /* any non-null scalar, kept as a string */
-    MCS_SK_BOOL,    /* true or false */
-    MCS_SK_ENUM,    /* one of .choices ("a|b|c") */
-    MCS_SK_REF,     /* name of an entity of kind .ref */
-    MCS_SK_REFS,    /* list of names of entities of kind .ref */
-    MCS_SK_CURVE,   /* [[x, y], ...]: x of .dim strictly increasing, y of .dim_y, >= .nmin points */
-    MCS_SK_MAP,     /* mapping with keys .sub */
-    MCS_SK_LIST,    /* list of mappings .sub */
-    MCS_SK_NAMED,   /* mapping {<name>: mapping .sub} */
-    MCS_SK_ANY,     /* free-form: any YAML (no NaN/Inf) */
-    MCS_SK_DISC,    /* the discriminator of a map with variants (checked when the variant is chosen) */
+    MCS_SK_NUM,   /* quantity of .dim: a number (SI) or "value unit" */
+    MCS_SK_INT,   /* integer number, no unit */
+    MCS_SK_VEC,   /* list of .nmin...nmax quantities of .dim (nmax 0: no limit) */
+    MCS_SK_INTS,  /* list of .nmin...nmax integers */
+    MCS_SK_STR,   /* any non-null scalar, kept as a string */
+    MCS_SK_BOOL,  /* true or false */
+    MCS_SK_ENUM,  /* one of .choices ("a|b|c") */
+    MCS_SK_REF,   /* name of an entity of kind .ref */
+    MCS_SK_REFS,  /* list of names of entities of kind .ref */
+    MCS_SK_CURVE, /* [[x, y], ...]: x of .dim strictly increasing, y of .dim_y, >= .nmin points */
+    MCS_SK_MAP,   /* mapping with keys .sub */
+    MCS_SK_LIST,  /* list of mappings .sub */
+    MCS_SK_NAMED, /* mapping {<name>: mapping .sub} */
+    MCS_SK_ANY,   /* free-form: any YAML (no NaN/Inf) */
+    MCS_SK_DISC, /* the discriminator of a map with variants (checked when the variant is chosen) */
 } mcs_sk_type;
 
 enum {
@@ -56,14 +56,14 @@ typedef mcs_status (*mcs_scheck_fn)(scn_walk *w, mcs_node *map);
 struct mcs_skey {
     const char *name;
     mcs_sk_type type;
-    unsigned flags;       /* MCS_SK_* */
-    mcs_dim dim, dim_y;   /* NUM, VEC: dim; CURVE: x and y */
-    double lo, hi;        /* range (with GT/GE/LT/LE), per component for VEC, on x for CURVE */
-    int nmin, nmax;       /* VEC/INTS/REFS: length range; CURVE: nmin points */
-    const char *choices;  /* ENUM: "a|b|c" */
-    const mcs_smap *sub;  /* MAP, LIST, NAMED */
-    mcs_sref ref;         /* REF, REFS */
-    const char *doc;      /* what it is, for messages and documentation */
+    unsigned flags;      /* MCS_SK_* */
+    mcs_dim dim, dim_y;  /* NUM, VEC: dim; CURVE: x and y */
+    double lo, hi;       /* range (with GT/GE/LT/LE), per component for VEC, on x for CURVE */
+    int nmin, nmax;      /* VEC/INTS/REFS: length range; CURVE: nmin points */
+    const char *choices; /* ENUM: "a|b|c" */
+    const mcs_smap *sub; /* MAP, LIST, NAMED */
+    mcs_sref ref;        /* REF, REFS */
+    const char *doc;     /* what it is, for messages and documentation */
 };
 
 typedef struct {
@@ -72,19 +72,20 @@ typedef struct {
 } mcs_svariant;
 
 struct mcs_smap {
-    const char *what;              /* "body", "mesh" (messages) */
-    const mcs_skey *keys;          /* terminated by a row with name NULL */
-    const char *disc;              /* key choosing a variant (NULL: none) */
-    const mcs_svariant *variants;  /* terminated by value NULL */
-    const char *disc_default;      /* variant when disc is absent (NULL: disc required) */
-    int open;                      /* unknown keys accepted (free-form map) */
-    mcs_scheck_fn check;           /* extra check, may be NULL */
+    const char *what;             /* "body", "mesh" (messages) */
+    const mcs_skey *keys;         /* terminated by a row with name NULL */
+    const char *disc;             /* key choosing a variant (NULL: none) */
+    const mcs_svariant *variants; /* terminated by value NULL */
+    const char *disc_default;     /* variant when disc is absent (NULL: disc required) */
+    int open;                     /* unknown keys accepted (free-form map) */
+    mcs_scheck_fn check;          /* extra check, may be NULL */
 };
 
 /* cross-key rules (core/mcs_scn_rules.c) */
 mcs_status mcs_rule_root(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_simulation(scn_walk *w, mcs_node *map);
-mcs_status mcs_rule_characteristic(scn_walk *w, mcs_node *map);
+mcs_status mcs_rule_range(scn_walk *w, mcs_node *map);
+mcs_status mcs_rule_fixed_joint(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_body(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_pair(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_joint(scn_walk *w, mcs_node *map);
@@ -114,6 +115,8 @@ mcs_status scn_check_scalar(scn_walk *w, mcs_node *v, const mcs_skey *k);
 mcs_status scn_quantity(scn_walk *w, mcs_node *v, mcs_dim d);
 mcs_status scn_range_check(scn_walk *w, const mcs_node *v, const mcs_skey *k, double x, mcs_dim d);
 const char *scn_got_str(const mcs_node *v, char *buf, size_t n);
+/* "bodies" for "body", "contacts" for "contact" (names of schema maps) */
+const char *scn_plural(const char *what, char *buf, size_t n);
 /* " (did you mean 'x'?)" or "" */
 void scn_suggest(char *buf, size_t n, const char *word, const char *const *cands, int nc);
 

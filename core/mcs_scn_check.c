@@ -93,13 +93,12 @@ static int is_scalar(const mcs_node *v)
     return v->kind == MCS_NODE_STR || v->kind == MCS_NODE_NUM || v->kind == MCS_NODE_BOOL;
 }
 
-mcs_status scn_range_check(scn_walk *w, const mcs_node *v, const mcs_skey *k, double x,
-                           mcs_dim d)
+mcs_status scn_range_check(scn_walk *w, const mcs_node *v, const mcs_skey *k, double x, mcs_dim d)
 {
     unsigned f = k->flags;
     char u[48] = "", ub[40];
     if (!mcs_dim_eq(d, (mcs_dim)MCS_DIM_NONE)) {
-        mcs_dim_format(d, ub, sizeof ub);
+        mcs_dim_si(d, ub, sizeof ub);
         snprintf(u, sizeof u, " %s", ub);
     }
     if ((f & MCS_SK_GT) && !(x > k->lo))
@@ -124,7 +123,8 @@ mcs_status scn_quantity(scn_walk *w, mcs_node *v, mcs_dim d)
     }
     if (v->kind != MCS_NODE_STR) {
         mcs_dim_describe(d, want, sizeof want);
-        return FAIL(w, v, MCS_ERR_TYPE, "expected %s, got %s", want, scn_got_str(v, got, sizeof got));
+        return FAIL(w, v, MCS_ERR_TYPE, "expected %s, got %s", want,
+                    scn_got_str(v, got, sizeof got));
     }
     char why[400];
     double si;
@@ -164,13 +164,24 @@ static mcs_status check_str(scn_walk *w, mcs_node *v, const mcs_skey *k)
 {
     char got[100];
     if (!is_scalar(v))
-        return FAIL(w, v, MCS_ERR_TYPE, "expected a string, got %s", scn_got_str(v, got, sizeof got));
+        return FAIL(w, v, MCS_ERR_TYPE, "expected a string, got %s",
+                    scn_got_str(v, got, sizeof got));
     if (v->kind == MCS_NODE_NUM && !isfinite(v->num))
         return FAIL(w, v, MCS_ERR_RANGE, "'%s' is not a finite number", v->text);
     if ((k->flags & MCS_SK_NONEMPTY) && !v->text[0])
         return FAIL(w, v, MCS_ERR_RANGE, "must not be empty");
     v->kind = MCS_NODE_STR;
     return MCS_OK;
+}
+
+const char *scn_plural(const char *what, char *buf, size_t n)
+{
+    size_t len = strlen(what);
+    if (len > 1 && what[len - 1] == 'y' && !strchr("aeiou", what[len - 2]))
+        snprintf(buf, n, "%.*sies", (int)(len - 1), what);
+    else
+        snprintf(buf, n, "%ss", what);
+    return buf;
 }
 
 /* split "a|b|c" into cands (pointers into buf) */
@@ -214,11 +225,17 @@ static mcs_status check_bool(scn_walk *w, mcs_node *v)
 mcs_status scn_check_scalar(scn_walk *w, mcs_node *v, const mcs_skey *k)
 {
     switch (k->type) {
-    case MCS_SK_NUM: return check_num(w, v, k);
-    case MCS_SK_INT: return check_int(w, v, k);
-    case MCS_SK_STR: return check_str(w, v, k);
-    case MCS_SK_ENUM: return check_enum(w, v, k);
-    case MCS_SK_BOOL: return check_bool(w, v);
-    default: return FAIL(w, v, MCS_ERR_TYPE, "internal: not a scalar key type");
+    case MCS_SK_NUM:
+        return check_num(w, v, k);
+    case MCS_SK_INT:
+        return check_int(w, v, k);
+    case MCS_SK_STR:
+        return check_str(w, v, k);
+    case MCS_SK_ENUM:
+        return check_enum(w, v, k);
+    case MCS_SK_BOOL:
+        return check_bool(w, v);
+    default:
+        return FAIL(w, v, MCS_ERR_TYPE, "internal: not a scalar key type");
     }
 }

@@ -186,7 +186,8 @@ static mcs_status load_tree(inc_ctx *c, const char *path, const mcs_node *from, 
 
 static mcs_status finish(inc_ctx *c, mcs_status st, mcs_node *root, mcs_scenario **out)
 {
-    while (c->depth) pop_file(c);
+    while (c->depth)
+        pop_file(c);
     if (st == MCS_ERR_NOMEM) MCS_ERR(c->err, st, "error: out of memory while loading a scenario");
     if (!st) {
         c->scn->root = root;

@@ -50,8 +50,8 @@ mcs_status scn_fail(mcs_error *err, mcs_status st, const mcs_node *at, const cha
                     const char *fmt, ...) __attribute__((format(printf, 5, 6)));
 
 /* read and check one file: size, NUL bytes, UTF-8; appended to scn->text */
-mcs_status scn_read_file(mcs_scenario *scn, const char *path, const mcs_node *from,
-                         char **text, size_t *len, mcs_error *err);
+mcs_status scn_read_file(mcs_scenario *scn, const char *path, const mcs_node *from, char **text,
+                         size_t *len, mcs_error *err);
 mcs_status scn_check_bytes(const char *name, const char *text, size_t len, mcs_error *err);
 void scn_add_source(mcs_scenario *scn, const char *name, const char *text, size_t len);
 

@@ -10,11 +10,21 @@ static void json_string(FILE *f, const char *s)
     fputc('"', f);
     for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
         switch (*p) {
-        case '"': fputs("\\\"", f); break;
-        case '\\': fputs("\\\\", f); break;
-        case '\n': fputs("\\n", f); break;
-        case '\r': fputs("\\r", f); break;
-        case '\t': fputs("\\t", f); break;
+        case '"':
+            fputs("\\\"", f);
+            break;
+        case '\\':
+            fputs("\\\\", f);
+            break;
+        case '\n':
+            fputs("\\n", f);
+            break;
+        case '\r':
+            fputs("\\r", f);
+            break;
+        case '\t':
+            fputs("\\t", f);
+            break;
         default:
             if (*p < 0x20 || *p == 0x7f)
                 fprintf(f, "\\u%04x", *p);
@@ -39,8 +49,10 @@ static void json_number(FILE *f, double v)
 static int is_leaf_seq(const mcs_node *n)
 {
     for (int i = 0; i < n->n; i++)
-        if (n->items[i]->kind == MCS_NODE_MAP) return 0;
-        else if (n->items[i]->kind == MCS_NODE_SEQ && !is_leaf_seq(n->items[i])) return 0;
+        if (n->items[i]->kind == MCS_NODE_MAP)
+            return 0;
+        else if (n->items[i]->kind == MCS_NODE_SEQ && !is_leaf_seq(n->items[i]))
+            return 0;
     return 1;
 }
 
@@ -75,17 +87,27 @@ static void json_map(FILE *f, const mcs_node *n, int indent)
 static void json_node(FILE *f, const mcs_node *n, int indent)
 {
     switch (n->kind) {
-    case MCS_NODE_NULL: fputs("null", f); break;
-    case MCS_NODE_BOOL: fputs(n->num != 0.0 ? "true" : "false", f); break;
+    case MCS_NODE_NULL:
+        fputs("null", f);
+        break;
+    case MCS_NODE_BOOL:
+        fputs(n->num != 0.0 ? "true" : "false", f);
+        break;
     case MCS_NODE_NUM:
         if (isfinite(n->num))
             json_number(f, n->num);
         else
             fputs("null", f); /* never in a validated tree */
         break;
-    case MCS_NODE_STR: json_string(f, n->text); break;
-    case MCS_NODE_SEQ: json_seq(f, n, indent); break;
-    case MCS_NODE_MAP: json_map(f, n, indent); break;
+    case MCS_NODE_STR:
+        json_string(f, n->text);
+        break;
+    case MCS_NODE_SEQ:
+        json_seq(f, n, indent);
+        break;
+    case MCS_NODE_MAP:
+        json_map(f, n, indent);
+        break;
     }
 }
 

@@ -28,8 +28,7 @@ static mcs_status pfail_at(pstate *ps, yaml_mark_t m, mcs_status st, const char 
 
 static int is_null_word(const char *s)
 {
-    return !*s || !strcmp(s, "~") || !strcmp(s, "null") || !strcmp(s, "Null") ||
-           !strcmp(s, "NULL");
+    return !*s || !strcmp(s, "~") || !strcmp(s, "null") || !strcmp(s, "Null") || !strcmp(s, "NULL");
 }
 
 static int bool_word(const char *s)
@@ -70,8 +69,8 @@ static mcs_status new_scalar(pstate *ps, const yaml_event_t *ev, mcs_node **out)
                                (int)ev->start_mark.line + 1, (int)ev->start_mark.column + 1);
     if (!n || !(n->text = scn_strndup(&ps->scn->arena, v, len))) return MCS_ERR_NOMEM;
     const char *tag = (const char *)ev->data.scalar.tag;
-    n->quoted = ev->data.scalar.style != YAML_PLAIN_SCALAR_STYLE ||
-                (tag && !strcmp(tag, YAML_STR_TAG));
+    n->quoted =
+        ev->data.scalar.style != YAML_PLAIN_SCALAR_STYLE || (tag && !strcmp(tag, YAML_STR_TAG));
     if (!n->quoted) resolve_plain(n);
     *out = n;
     return MCS_OK;
@@ -116,9 +115,9 @@ static mcs_status attach(pstate *ps, mcs_node *n, yaml_mark_t m)
     if (i >= 0) {
         char path[256];
         open_path(ps, path, sizeof path);
-        return MCS_ERR(ps->err, MCS_ERR_KEY, "%s:%d:%d: error: %s%s%.80s: duplicate key (first at line %d)",
-                       ps->file, n->line, n->col, path, *path ? "." : "", n->text,
-                       parent->keys[i]->line);
+        return MCS_ERR(ps->err, MCS_ERR_KEY,
+                       "%s:%d:%d: error: %s%s%.80s: duplicate key (first at line %d)", ps->file,
+                       n->line, n->col, path, *path ? "." : "", n->text, parent->keys[i]->line);
     }
     if (parent->n >= MCS_SCN_MAX_KEYS)
         return pfail_at(ps, m, MCS_ERR_FORMAT, "too many keys in one mapping%s", "");
@@ -129,8 +128,8 @@ static mcs_status attach(pstate *ps, mcs_node *n, yaml_mark_t m)
 static mcs_status open_collection(pstate *ps, const yaml_event_t *ev, mcs_kind kind)
 {
     if (ps->depth >= MCS_SCN_MAX_DEPTH)
-        return pfail_at(ps, ev->start_mark, MCS_ERR_FORMAT,
-                        "nesting deeper than %s levels", MCS_SCN_MAX_DEPTH == 64 ? "64" : "max");
+        return pfail_at(ps, ev->start_mark, MCS_ERR_FORMAT, "nesting deeper than %s levels",
+                        MCS_SCN_MAX_DEPTH == 64 ? "64" : "max");
     mcs_node *n = scn_node_new(&ps->scn->arena, kind, ps->file, (int)ev->start_mark.line + 1,
                                (int)ev->start_mark.column + 1);
     if (!n) return MCS_ERR_NOMEM;
@@ -203,7 +202,8 @@ mcs_status scn_parse(mcs_scenario *scn, const char *file, const char *text, size
 {
     pstate ps = {.scn = scn, .file = file, .err = err};
     yaml_parser_t p;
-    if (!yaml_parser_initialize(&p)) return MCS_ERR(err, MCS_ERR_NOMEM, "%s: error: out of memory", file);
+    if (!yaml_parser_initialize(&p))
+        return MCS_ERR(err, MCS_ERR_NOMEM, "%s: error: out of memory", file);
     yaml_parser_set_input_string(&p, (const unsigned char *)text, len);
     mcs_status st = run_events(&ps, &p);
     yaml_parser_delete(&p);

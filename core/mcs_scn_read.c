@@ -13,15 +13,16 @@ static size_t utf8_len(const unsigned char *p, size_t n)
     size_t k;
     unsigned lo = 0x80, hi = 0xBF; /* allowed range of the second byte */
     if (c < 0x80) return 1;
-    if (c >= 0xC2 && c <= 0xDF) k = 2;
+    if (c >= 0xC2 && c <= 0xDF)
+        k = 2;
     else if (c >= 0xE0 && c <= 0xEF) {
         k = 3;
-        if (c == 0xE0) lo = 0xA0;        /* overlong */
-        if (c == 0xED) hi = 0x9F;        /* surrogates */
+        if (c == 0xE0) lo = 0xA0; /* overlong */
+        if (c == 0xED) hi = 0x9F; /* surrogates */
     } else if (c >= 0xF0 && c <= 0xF4) {
         k = 4;
-        if (c == 0xF0) lo = 0x90;        /* overlong */
-        if (c == 0xF4) hi = 0x8F;        /* > U+10FFFF */
+        if (c == 0xF0) lo = 0x90; /* overlong */
+        if (c == 0xF4) hi = 0x8F; /* > U+10FFFF */
     } else
         return 0;
     if (n < k || p[1] < lo || p[1] > hi) return 0;
@@ -48,8 +49,7 @@ mcs_status scn_check_bytes(const char *name, const char *text, size_t len, mcs_e
     int line = 1, col = 1;
     for (size_t i = 0; i < len;) {
         unsigned c = p[i];
-        if (c == 0)
-            return byte_fail(name, line, col, err, "binary data: NUL byte%.0u", c);
+        if (c == 0) return byte_fail(name, line, col, err, "binary data: NUL byte%.0u", c);
         if (c < 0x20 && c != '\n' && c != '\r' && c != '\t')
             return byte_fail(name, line, col, err, "binary data: control byte 0x%02X", c);
         size_t k = utf8_len(p + i, len - i);
@@ -91,31 +91,43 @@ static mcs_status open_fail(const char *path, const mcs_node *from, mcs_error *e
     return MCS_ERR(err, MCS_ERR_IO, "%s: error: cannot read: %s", path, what);
 }
 
+/* the whole file into a malloc'd buffer (NUL-terminated); files over the limit are refused */
+static mcs_status slurp(FILE *f, const char *path, const mcs_node *from, char **text, size_t *len,
+                        mcs_error *err)
+{
+    size_t cap = 64 * 1024, n = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        n += fread(buf + n, 1, cap - 1 - n, f);
+        if (n < cap - 1 || cap > MCS_SCN_MAX_BYTES) break;
+        char *b = realloc(buf, 2 * cap);
+        if (!b) free(buf);
+        buf = b;
+        cap *= 2;
+    }
+    if (!buf) return MCS_ERR(err, MCS_ERR_NOMEM, "%s: error: out of memory", path);
+    if (ferror(f)) {
+        free(buf);
+        return open_fail(path, from, err, "read error (is it a directory?)");
+    }
+    buf[n] = 0;
+    *text = buf;
+    *len = n;
+    return MCS_OK;
+}
+
 mcs_status scn_read_file(mcs_scenario *scn, const char *path, const mcs_node *from, char **text,
                          size_t *len, mcs_error *err)
 {
     (void)scn;
     FILE *f = fopen(path, "rb");
     if (!f) return open_fail(path, from, err, strerror(errno));
-    char *buf = malloc(MCS_SCN_MAX_BYTES + 2);
-    if (!buf) {
-        fclose(f);
-        return MCS_ERR(err, MCS_ERR_NOMEM, "%s: error: out of memory", path);
-    }
-    size_t n = fread(buf, 1, MCS_SCN_MAX_BYTES + 1, f);
-    int bad = ferror(f);
+    mcs_status st = slurp(f, path, from, text, len, err);
     fclose(f);
-    if (bad) {
-        free(buf);
-        return open_fail(path, from, err, "read error (is it a directory?)");
+    if (!st) st = scn_check_bytes(path, *text, *len, err);
+    if (st && *text) {
+        free(*text);
+        *text = NULL;
     }
-    buf[n] = 0;
-    mcs_status st = scn_check_bytes(path, buf, n, err);
-    if (st) {
-        free(buf);
-        return st;
-    }
-    *text = buf;
-    *len = n;
-    return MCS_OK;
+    return st;
 }

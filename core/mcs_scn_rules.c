@@ -16,8 +16,8 @@ mcs_status mcs_rule_root(scn_walk *w, mcs_node *map)
     const mcs_node *v = given(map, "mcrash");
     if (v->num != 1.0)
         return mcs_node_error(v, w->err, MCS_ERR_RANGE,
-                             "schema version %g is not supported (this mcrash reads version 1)",
-                             v->num);
+                              "schema version %g is not supported (this mcrash reads version 1)",
+                              v->num);
     return MCS_OK;
 }
 
@@ -26,16 +26,17 @@ mcs_status mcs_rule_simulation(scn_walk *w, mcs_node *map)
     const mcs_node *end = given(map, "end_time"), *dt = given(map, "time_step");
     if (end && dt && dt->num > end->num)
         return mcs_node_error(dt, w->err, MCS_ERR_RANGE,
-                             "time step %g s is longer than end_time %g s", dt->num, end->num);
+                              "time step %g s is longer than end_time %g s", dt->num, end->num);
     return MCS_OK;
 }
 
-mcs_status mcs_rule_characteristic(scn_walk *w, mcs_node *map)
+/* a range [min, max] must not be empty */
+mcs_status mcs_rule_range(scn_walk *w, mcs_node *map)
 {
-    const mcs_node *s = given(map, "unloading_slope");
-    if (s && given(map, "unloading"))
-        return mcs_node_error(s, w->err, MCS_ERR_KEY,
-                             "give unloading (a curve) or unloading_slope, not both");
+    const mcs_node *r = given(map, "range");
+    if (r && !(r->items[0]->num < r->items[1]->num))
+        return mcs_node_error(r, w->err, MCS_ERR_RANGE, "min %g must be below max %g (SI units)",
+                              r->items[0]->num, r->items[1]->num);
     return MCS_OK;
 }
 
@@ -46,12 +47,12 @@ static mcs_status principal_inertia(scn_walk *w, const mcs_node *in)
     for (int i = 0; i < 3; i++) {
         if (!(I[i] > 0.0))
             return mcs_node_error(in->items[i], w->err, MCS_ERR_RANGE,
-                                 "principal moment must be > 0 kg m^2 (got %g)", I[i]);
+                                  "principal moment must be > 0 kg m^2 (got %g)", I[i]);
         double rest = I[(i + 1) % 3] + I[(i + 2) % 3];
         if (I[i] > rest * (1.0 + 1e-9))
             return mcs_node_error(in, w->err, MCS_ERR_RANGE,
-                                 "not a rigid body's inertia: %g > %g + %g (triangle inequality)",
-                                 I[i], I[(i + 1) % 3], I[(i + 2) % 3]);
+                                  "not a rigid body's inertia: %g > %g + %g (triangle inequality)",
+                                  I[i], I[(i + 1) % 3], I[(i + 2) % 3]);
     }
     return MCS_OK;
 }
@@ -60,13 +61,13 @@ static mcs_status principal_inertia(scn_walk *w, const mcs_node *in)
 static mcs_status full_inertia(scn_walk *w, const mcs_node *in)
 {
     double v[6];
-    for (int i = 0; i < 6; i++) v[i] = in->items[i]->num;
+    for (int i = 0; i < 6; i++)
+        v[i] = in->items[i]->num;
     double xx = v[0], yy = v[1], zz = v[2], xy = v[3], yz = v[4], xz = v[5];
     double m2 = xx * yy - xy * xy;
     double m3 = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
     if (!(xx > 0.0 && m2 > 0.0 && m3 > 0.0))
-        return mcs_node_error(in, w->err, MCS_ERR_RANGE,
-                             "inertia tensor is not positive definite");
+        return mcs_node_error(in, w->err, MCS_ERR_RANGE, "inertia tensor is not positive definite");
     return MCS_OK;
 }
 
@@ -75,15 +76,15 @@ mcs_status mcs_rule_body(scn_walk *w, mcs_node *map)
     const mcs_node *in = given(map, "inertia");
     if (in->n != 3 && in->n != 6)
         return mcs_node_error(in, w->err, MCS_ERR_TYPE,
-                             "expected 3 principal moments or 6 tensor components, got %d", in->n);
+                              "expected 3 principal moments or 6 tensor components, got %d", in->n);
     mcs_status st = in->n == 3 ? principal_inertia(w, in) : full_inertia(w, in);
     if (st) return st;
     const mcs_node *q = given(map, "orientation");
     if (q && q->n == 4) {
         double n2 = 0;
-        for (int i = 0; i < 4; i++) n2 += q->items[i]->num * q->items[i]->num;
-        if (!(n2 > 0.0))
-            return mcs_node_error(q, w->err, MCS_ERR_RANGE, "quaternion is zero");
+        for (int i = 0; i < 4; i++)
+            n2 += q->items[i]->num * q->items[i]->num;
+        if (!(n2 > 0.0)) return mcs_node_error(q, w->err, MCS_ERR_RANGE, "quaternion is zero");
     }
     return MCS_OK;
 }
@@ -102,6 +103,14 @@ mcs_status mcs_rule_pair(scn_walk *w, mcs_node *map)
     return distinct(w, map, "a", "b");
 }
 
+/* stage 1 has nothing to restrain in a fixed joint */
+mcs_status mcs_rule_fixed_joint(scn_walk *w, mcs_node *map)
+{
+    const mcs_node *r = given(map, "restraint");
+    if (r) return mcs_node_error(r, w->err, MCS_ERR_KEY, "a fixed joint has no restraint");
+    return MCS_OK;
+}
+
 mcs_status mcs_rule_joint(scn_walk *w, mcs_node *map)
 {
     return distinct(w, map, "parent", "child");
@@ -113,7 +122,7 @@ mcs_status mcs_rule_sensor(scn_walk *w, mcs_node *map)
     double v = c ? c->num : 0.0;
     if (v != 0.0 && v != 60.0 && v != 180.0 && v != 600.0 && v != 1000.0)
         return mcs_node_error(c, w->err, MCS_ERR_RANGE,
-                             "%g is not a SAE J211 class (0, 60, 180, 600, 1000)", v);
+                              "%g is not a SAE J211 class (0, 60, 180, 600, 1000)", v);
     return MCS_OK;
 }
 
@@ -131,12 +140,12 @@ mcs_status mcs_rule_plastic(scn_walk *w, mcs_node *map)
     const mcs_node *h = given(map, "hardening"), *sy = given(map, "yield_stress");
     if (h && given(map, "tangent_modulus"))
         return mcs_node_error(given(map, "tangent_modulus"), w->err, MCS_ERR_KEY,
-                             "give hardening (a curve) or tangent_modulus, not both");
+                              "give hardening (a curve) or tangent_modulus, not both");
     if (!h || h->items[0]->items[0]->num != 0.0) return MCS_OK;
     double s0 = h->items[0]->items[1]->num;
     if (fabs(s0 - sy->num) > 1e-6 * sy->num)
         return mcs_node_error(h->items[0], w->err, MCS_ERR_RANGE,
-                             "stress at zero plastic strain %g Pa differs from yield_stress %g Pa",
-                             s0, sy->num);
+                              "stress at zero plastic strain %g Pa differs from yield_stress %g Pa",
+                              s0, sy->num);
     return MCS_OK;
 }

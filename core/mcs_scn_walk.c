@@ -55,9 +55,12 @@ static int ref_names(const scn_walk *w, mcs_sref ref, const char **names, int ma
 static const char *ref_what(mcs_sref ref)
 {
     switch (ref) {
-    case MCS_REF_CHAR: return "characteristic";
-    case MCS_REF_FE_PART: return "FE part";
-    default: return "body";
+    case MCS_REF_CHAR:
+        return "characteristic";
+    case MCS_REF_FE_PART:
+        return "FE part";
+    default:
+        return "body";
     }
 }
 
@@ -81,10 +84,10 @@ static mcs_status want_seq(scn_walk *w, const mcs_node *v, const char *what, int
 {
     char got[100];
     if (v->kind != MCS_NODE_SEQ)
-        return FAIL(w, v, MCS_ERR_TYPE, "expected %s, got %s", what, scn_got_str(v, got, sizeof got));
+        return FAIL(w, v, MCS_ERR_TYPE, "expected %s, got %s", what,
+                    scn_got_str(v, got, sizeof got));
     if (v->n < nmin || (nmax && v->n > nmax)) {
-        if (nmax == nmin)
-            return FAIL(w, v, MCS_ERR_TYPE, "expected %d values, got %d", nmin, v->n);
+        if (nmax == nmin) return FAIL(w, v, MCS_ERR_TYPE, "expected %d values, got %d", nmin, v->n);
         if (nmax)
             return FAIL(w, v, MCS_ERR_TYPE, "expected %d to %d values, got %d", nmin, nmax, v->n);
         return FAIL(w, v, MCS_ERR_TYPE, "expected at least %d value%s, got %d", nmin,
@@ -191,8 +194,8 @@ static mcs_status check_unique(scn_walk *w, mcs_node *seq, const mcs_smap *sm)
                 const mcs_node *b = mcs_node_get(seq->items[j], k->name);
                 if (b && b->text && strcmp(a->text, b->text) == 0)
                     return mcs_node_error(a, w->err, MCS_ERR_KEY,
-                                          "duplicate %s '%.80s' (first at %s:%d)", k->name,
-                                          a->text, b->file, b->line);
+                                          "duplicate %s '%.80s' (first at %s:%d)", k->name, a->text,
+                                          b->file, b->line);
             }
         }
     }
@@ -201,8 +204,8 @@ static mcs_status check_unique(scn_walk *w, mcs_node *seq, const mcs_smap *sm)
 
 static mcs_status check_list(scn_walk *w, mcs_node *v, const mcs_skey *k)
 {
-    char what[120];
-    snprintf(what, sizeof what, "a list of %ss", k->sub->what);
+    char what[120], pl[80];
+    snprintf(what, sizeof what, "a list of %s", scn_plural(k->sub->what, pl, sizeof pl));
     mcs_status st = want_seq(w, v, what, (k->flags & MCS_SK_NONEMPTY) ? 1 : 0, 0);
     if (!st) st = each_item(w, v, k, map_item);
     if (!st) st = check_unique(w, v, k->sub);
@@ -292,15 +295,15 @@ static mcs_status unknown_key(scn_walk *w, const mcs_node *key, const mcs_smap *
     int nc = 0;
     for (const mcs_skey *k = vm ? vm->keys : NULL; k && k->name && nc < 128; k++)
         cands[nc++] = k->name;
-    for (const mcs_skey *k = sm->keys; k->name && nc < 128; k++) cands[nc++] = k->name;
+    for (const mcs_skey *k = sm->keys; k->name && nc < 128; k++)
+        cands[nc++] = k->name;
     char dym[96];
     scn_suggest(dym, sizeof dym, key->text, cands, nc);
     const char *what = vm ? vm->what : sm->what;
     return scn_walk_fail(w, key, key->text, MCS_ERR_KEY, "unknown key in a %s%s", what, dym);
 }
 
-static mcs_status walk_entries(scn_walk *w, mcs_node *map, const mcs_smap *sm,
-                               const mcs_smap *vm)
+static mcs_status walk_entries(scn_walk *w, mcs_node *map, const mcs_smap *sm, const mcs_smap *vm)
 {
     mcs_status st = MCS_OK;
     for (int i = 0; i < map->n && !st; i++) {
@@ -346,23 +349,33 @@ static mcs_status walk_value(scn_walk *w, mcs_node *v, const mcs_skey *k)
 {
     if (v->kind == MCS_NODE_NULL) return MCS_OK; /* null: not given (required: see above) */
     switch (k->type) {
-    case MCS_SK_VEC: return check_vec(w, v, k);
+    case MCS_SK_VEC:
+        return check_vec(w, v, k);
     case MCS_SK_INTS: {
         mcs_status st = want_seq(w, v, "a list of integers", k->nmin, k->nmax);
         return st ? st : each_item(w, v, k, int_item);
     }
-    case MCS_SK_REF: return check_ref(w, v, k->ref);
+    case MCS_SK_REF:
+        return check_ref(w, v, k->ref);
     case MCS_SK_REFS: {
         mcs_status st = want_seq(w, v, "a list of names", k->nmin, k->nmax);
         return st ? st : each_item(w, v, k, ref_item);
     }
-    case MCS_SK_CURVE: return check_curve(w, v, k);
-    case MCS_SK_MAP: return map_item(w, v, k);
-    case MCS_SK_LIST: return check_list(w, v, k);
-    case MCS_SK_NAMED: return check_named(w, v, k);
-    case MCS_SK_ANY: return walk_any(w, v);
-    case MCS_SK_DISC: v->kind = MCS_NODE_STR; return MCS_OK; /* checked by choose_variant */
-    default: return scn_check_scalar(w, v, k);
+    case MCS_SK_CURVE:
+        return check_curve(w, v, k);
+    case MCS_SK_MAP:
+        return map_item(w, v, k);
+    case MCS_SK_LIST:
+        return check_list(w, v, k);
+    case MCS_SK_NAMED:
+        return check_named(w, v, k);
+    case MCS_SK_ANY:
+        return walk_any(w, v);
+    case MCS_SK_DISC:
+        v->kind = MCS_NODE_STR;
+        return MCS_OK; /* checked by choose_variant */
+    default:
+        return scn_check_scalar(w, v, k);
     }
 }
 

@@ -53,8 +53,8 @@ static const struct {
     const char *sym;
     double num, den;
 } prefixes[] = {
-    {"Y", 1e24, 1}, {"Z", 1e21, 1}, {"E", 1e18, 1}, {"P", 1e15, 1}, {"T", 1e12, 1},
-    {"G", 1e9, 1},  {"M", 1e6, 1},  {"k", 1e3, 1},  {"h", 1e2, 1},  {"d", 1, 1e1},
+    {"Y", 1e24, 1}, {"Z", 1e21, 1}, {"E", 1e18, 1}, {"P", 1e15, 1},       {"T", 1e12, 1},
+    {"G", 1e9, 1},  {"M", 1e6, 1},  {"k", 1e3, 1},  {"h", 1e2, 1},        {"d", 1, 1e1},
     {"c", 1, 1e2},  {"m", 1, 1e3},  {"u", 1, 1e6},  {"\xc2\xb5", 1, 1e6}, {"\xce\xbc", 1, 1e6},
     {"n", 1, 1e9},  {"p", 1, 1e12}, {"f", 1, 1e15}, {"a", 1, 1e18}, /* µ micro sign, μ mu */
 };
@@ -97,47 +97,63 @@ void mcs_dim_format(mcs_dim d, char *buf, size_t n)
     if (k == 0) snprintf(buf, n, "1");
 }
 
+/* names and the usual SI symbol of the dimensions engineers meet */
 static const struct {
     mcs_dim dim;
-    const char *name;
+    const char *name, *si;
 } dim_names[] = {
-    {MCS_DIM_NONE, "dimensionless number"},
-    {MCS_DIM_LENGTH, "length"},
-    {MCS_DIM_MASS, "mass"},
-    {MCS_DIM_TIME, "time"},
-    {MCS_DIM_TEMP, "temperature"},
-    {MCS_DIM_ANGLE, "angle"},
-    {MCS_DIM_AREA, "area"},
-    {MCS_D(3, 0, 0, 0, 0), "volume"},
-    {MCS_DIM_VELOCITY, "velocity"},
-    {MCS_DIM_ACCEL, "acceleration"},
-    {MCS_DIM_ANGVEL, "angular velocity"},
-    {MCS_D(0, 0, -2, 0, 1), "angular acceleration"},
-    {MCS_DIM_FREQ, "frequency"},
-    {MCS_DIM_FORCE, "force"},
-    {MCS_DIM_PRESSURE, "pressure"},
-    {MCS_DIM_DENSITY, "density"},
-    {MCS_DIM_ENERGY, "energy or moment"},
-    {MCS_D(2, 1, -3, 0, 0), "power"},
-    {MCS_DIM_INERTIA, "moment of inertia"},
-    {MCS_DIM_STIFFNESS, "stiffness"},
-    {MCS_DIM_DAMPING, "damping coefficient"},
-    {MCS_DIM_ROTSTIFF, "rotational stiffness"},
-    {MCS_DIM_ROTDAMP, "rotational damping coefficient"},
-    {MCS_D(1, 1, -1, 0, 0), "momentum"},
+    {MCS_DIM_NONE, "dimensionless number", ""},
+    {MCS_DIM_LENGTH, "length", "m"},
+    {MCS_DIM_MASS, "mass", "kg"},
+    {MCS_DIM_TIME, "time", "s"},
+    {MCS_DIM_TEMP, "temperature", "K"},
+    {MCS_DIM_ANGLE, "angle", "rad"},
+    {MCS_DIM_AREA, "area", "m^2"},
+    {MCS_D(3, 0, 0, 0, 0), "volume", "m^3"},
+    {MCS_DIM_VELOCITY, "velocity", "m/s"},
+    {MCS_DIM_ACCEL, "acceleration", "m/s^2"},
+    {MCS_DIM_ANGVEL, "angular velocity", "rad/s"},
+    {MCS_D(0, 0, -2, 0, 1), "angular acceleration", "rad/s^2"},
+    {MCS_DIM_FREQ, "frequency", "Hz"},
+    {MCS_DIM_FORCE, "force", "N"},
+    {MCS_DIM_PRESSURE, "pressure", "Pa"},
+    {MCS_DIM_DENSITY, "density", "kg/m^3"},
+    {MCS_DIM_ENERGY, "energy or moment", "N m"},
+    {MCS_D(2, 1, -3, 0, 0), "power", "W"},
+    {MCS_DIM_INERTIA, "moment of inertia", "kg m^2"},
+    {MCS_DIM_STIFFNESS, "stiffness", "N/m"},
+    {MCS_DIM_DAMPING, "damping coefficient", "N s/m"},
+    {MCS_DIM_ROTSTIFF, "rotational stiffness", "N m/rad"},
+    {MCS_DIM_ROTDAMP, "rotational damping coefficient", "N m s/rad"},
+    {MCS_D(1, 1, -1, 0, 0), "momentum", "N s"},
 };
+
+static int dim_index(mcs_dim d)
+{
+    for (size_t i = 0; i < sizeof dim_names / sizeof dim_names[0]; i++)
+        if (mcs_dim_eq(d, dim_names[i].dim)) return (int)i;
+    return -1;
+}
 
 const char *mcs_dim_name(mcs_dim d)
 {
-    for (size_t i = 0; i < sizeof dim_names / sizeof dim_names[0]; i++)
-        if (mcs_dim_eq(d, dim_names[i].dim)) return dim_names[i].name;
-    return NULL;
+    int i = dim_index(d);
+    return i < 0 ? NULL : dim_names[i].name;
+}
+
+void mcs_dim_si(mcs_dim d, char *buf, size_t n)
+{
+    int i = dim_index(d);
+    if (i >= 0)
+        snprintf(buf, n, "%s", dim_names[i].si);
+    else
+        mcs_dim_format(d, buf, n);
 }
 
 void mcs_dim_describe(mcs_dim d, char *buf, size_t n)
 {
     char f[64];
-    mcs_dim_format(d, f, sizeof f);
+    mcs_dim_si(d, f, sizeof f);
     const char *name = mcs_dim_name(d);
     if (!name)
         snprintf(buf, n, "%s", f);
@@ -150,10 +166,10 @@ void mcs_dim_describe(mcs_dim d, char *buf, size_t n)
 /* ---- the expression parser ---- */
 
 typedef struct {
-    const char *s;   /* whole text */
-    const char *p;   /* cursor */
-    int g_is_accel;  /* "g" alone means standard gravity */
-    int depth;       /* parenthesis depth */
+    const char *s;  /* whole text */
+    const char *p;  /* cursor */
+    int g_is_accel; /* "g" alone means standard gravity */
+    int depth;      /* parenthesis depth */
     char *why;
     size_t nwhy;
 } uparser;
@@ -170,7 +186,8 @@ static void umul(mcs_unit *a, mcs_unit b, int power)
     a->num *= pow(n, abs(power));
     a->den *= pow(d, abs(power));
     a->factor = a->num / a->den;
-    for (int i = 0; i < MCS_NDIM; i++) a->dim.e[i] = (signed char)(a->dim.e[i] + power * b.dim.e[i]);
+    for (int i = 0; i < MCS_NDIM; i++)
+        a->dim.e[i] = (signed char)(a->dim.e[i] + power * b.dim.e[i]);
 }
 
 static int is_symbol_byte(unsigned char c)
@@ -238,7 +255,8 @@ static int lookup_symbol(uparser *u, const char *sym, size_t len, mcs_unit *out)
 
 static void skip_spaces(uparser *u)
 {
-    while (*u->p == ' ' || *u->p == '\t') u->p++;
+    while (*u->p == ' ' || *u->p == '\t')
+        u->p++;
 }
 
 /* optional power after a factor: ^n, **n, ², ³ */
@@ -258,7 +276,8 @@ static mcs_status parse_power(uparser *u, int *power)
         return MCS_OK;
     const char *start = u->p;
     if (*u->p == '-' || *u->p == '+') u->p++;
-    if (!isdigit((unsigned char)*u->p)) return ufail(u, "expected an integer power after '%s'", "^");
+    if (!isdigit((unsigned char)*u->p))
+        return ufail(u, "expected an integer power after '%s'", "^");
     long v = strtol(start, (char **)&u->p, 10);
     if (v < -12 || v > 12) return ufail(u, "power out of range in '%s'", u->s);
     *power = (int)v;
@@ -367,17 +386,20 @@ size_t mcs_number_scan(const char *s, double *v)
     const char *p = s;
     if (*p == '+' || *p == '-') p++;
     size_t nd = 0;
-    while (isdigit((unsigned char)*p)) p++, nd++;
+    while (isdigit((unsigned char)*p))
+        p++, nd++;
     if (*p == '.') {
         p++;
-        while (isdigit((unsigned char)*p)) p++, nd++;
+        while (isdigit((unsigned char)*p))
+            p++, nd++;
     }
     if (nd == 0) return 0;
     if (*p == 'e' || *p == 'E') {
         const char *q = p + 1;
         if (*q == '+' || *q == '-') q++;
         if (isdigit((unsigned char)*q)) {
-            while (isdigit((unsigned char)*q)) q++;
+            while (isdigit((unsigned char)*q))
+                q++;
             p = q;
         }
     }
@@ -420,7 +442,8 @@ static mcs_status quantity_unit(const char *text, const char *ustr, mcs_dim want
     if (mcs_dim_compatible(want, u->dim)) return MCS_OK;
     mcs_unit ug;
     char tmp[16];
-    if (mcs_unit_parse(ustr, 1, &ug, tmp, sizeof tmp) == MCS_OK && mcs_dim_compatible(want, ug.dim)) {
+    if (mcs_unit_parse(ustr, 1, &ug, tmp, sizeof tmp) == MCS_OK &&
+        mcs_dim_compatible(want, ug.dim)) {
         *u = ug;
         return MCS_OK;
     }
@@ -434,7 +457,8 @@ static mcs_status quantity_unit(const char *text, const char *ustr, mcs_dim want
 mcs_status mcs_quantity_parse(const char *text, mcs_dim want, double *si, char *why, size_t nwhy)
 {
     const char *p = text;
-    while (*p == ' ' || *p == '\t') p++;
+    while (*p == ' ' || *p == '\t')
+        p++;
     double v = 0.0;
     size_t n = mcs_number_scan(p, &v);
     if (n == 0) {
@@ -446,7 +470,8 @@ mcs_status mcs_quantity_parse(const char *text, mcs_dim want, double *si, char *
     if (!isfinite(v))
         return qfail(why, nwhy, MCS_ERR_RANGE, "'%s' is not a finite number%s", text, "");
     p += n;
-    while (*p == ' ' || *p == '\t') p++;
+    while (*p == ' ' || *p == '\t')
+        p++;
     if (!*p) { /* a bare number is SI */
         *si = v;
         return MCS_OK;

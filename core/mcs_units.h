@@ -34,7 +34,12 @@ typedef struct {
 } mcs_unit;
 
 /* initialisers for tables: MCS_D(m, kg, s, K, rad); in expressions use (mcs_dim)MCS_D(...) */
-#define MCS_D(m, kg, s, K, rad) {{(m), (kg), (s), (K), (rad)}}
+#define MCS_D(m, kg, s, K, rad)                                                                    \
+    {                                                                                              \
+        {                                                                                          \
+            (m), (kg), (s), (K), (rad)                                                             \
+        }                                                                                          \
+    }
 #define MCS_DIM_NONE MCS_D(0, 0, 0, 0, 0)
 #define MCS_DIM_LENGTH MCS_D(1, 0, 0, 0, 0)
 #define MCS_DIM_MASS MCS_D(0, 1, 0, 0, 0)
@@ -52,10 +57,10 @@ typedef struct {
 #define MCS_DIM_ENERGY MCS_D(2, 1, -2, 0, 0)
 #define MCS_DIM_MOMENT MCS_D(2, 1, -2, 0, 0)
 #define MCS_DIM_INERTIA MCS_D(2, 1, 0, 0, 0)
-#define MCS_DIM_STIFFNESS MCS_D(0, 1, -2, 0, 0)  /* N/m */
-#define MCS_DIM_DAMPING MCS_D(0, 1, -1, 0, 0)    /* N s/m */
-#define MCS_DIM_ROTSTIFF MCS_D(2, 1, -2, 0, -1)  /* N m/rad */
-#define MCS_DIM_ROTDAMP MCS_D(2, 1, -1, 0, -1)   /* N m s/rad */
+#define MCS_DIM_STIFFNESS MCS_D(0, 1, -2, 0, 0) /* N/m */
+#define MCS_DIM_DAMPING MCS_D(0, 1, -1, 0, 0)   /* N s/m */
+#define MCS_DIM_ROTSTIFF MCS_D(2, 1, -2, 0, -1) /* N m/rad */
+#define MCS_DIM_ROTDAMP MCS_D(2, 1, -1, 0, -1)  /* N m s/rad */
 
 int mcs_dim_eq(mcs_dim a, mcs_dim b);
 
@@ -68,7 +73,10 @@ void mcs_dim_format(mcs_dim d, char *buf, size_t n);
 /* a name for the dimension ("force", "velocity"), or NULL if it has none */
 const char *mcs_dim_name(mcs_dim d);
 
-/* "a force (kg m s^-2)" or "kg m^3 (kg m^3)": for messages */
+/* the usual SI unit of the dimension ("N", "N s/m", "" when dimensionless), else the base form */
+void mcs_dim_si(mcs_dim d, char *buf, size_t n);
+
+/* "a force (N)", or the base form ("m^5") for dimensions without a name: for messages */
 void mcs_dim_describe(mcs_dim d, char *buf, size_t n);
 
 /* parse a unit expression; g_is_accel: "g" alone is standard gravity instead of the gram.
@@ -86,7 +94,6 @@ int mcs_is_nonfinite_word(const char *s, size_t len);
 /* "48.5 km/h" -> 13.47 (SI). want: the dimension expected. A number with no unit is SI.
  * Errors (why filled, no location): MCS_ERR_TYPE not a number, MCS_ERR_UNIT bad unit or wrong
  * dimension, MCS_ERR_RANGE NaN or infinite. */
-mcs_status mcs_quantity_parse(const char *text, mcs_dim want, double *si, char *why,
-                              size_t nwhy);
+mcs_status mcs_quantity_parse(const char *text, mcs_dim want, double *si, char *why, size_t nwhy);
 
 #endif

@@ -83,6 +83,7 @@ static void test_units_in_every_kind_of_key(void)
     CHECK_NEAR(mcs_node_num(AT(r, "bodies", "#0", "orientation", "#1")), 5 * PI / 180, 1e-15);
     CHECK_NEAR(mcs_node_num(AT(r, "bodies", "#0", "position", "#2")), 0.9, 1e-15);
     CHECK_NEAR(mcs_node_num(AT(r, "bodies", "#1", "velocity", "#0")), 30 * 0.44704, 1e-12);
+    CHECK(strcmp(mcs_node_str(AT(r, "joints", "#1", "restraint")), "hinge") == 0);
     CHECK_NEAR(mcs_node_num(AT(r, "attachments", "#0", "stiffness")), 5e4, 0);
     CHECK_NEAR(mcs_node_num(AT(r, "attachments", "#0", "failure_force")), 2e3, 0);
     CHECK_NEAR(mcs_node_num(AT(r, "sensors", "#0", "cfc")), 1000, 0);
@@ -160,6 +161,8 @@ typedef struct {
 
 static const bad_case bad_cases[] = {
     {"alias", MCS_ERR_YAML, "14:42", "aliases (*p) are not supported"},
+    {"attachment_negative_failure", MCS_ERR_RANGE, "15:21",
+     "attachments[0].failure_force: must be > 0 N (got -5000 N)"},
     {"bad_enum_joint", MCS_ERR_RANGE, "14:12", "joints[0].type: 'sphercal' is not one of"},
     {"binary_control", MCS_ERR_FORMAT, "2:3", "binary data: control byte 0x01"},
     {"binary_nul", MCS_ERR_FORMAT, "2:8", "binary data: NUL byte"},
@@ -167,7 +170,8 @@ static const bad_case bad_cases[] = {
     {"contact_same_body", MCS_ERR_RANGE, "14:18", "contacts[0].b: 'ball' is also a"},
     {"curve_bad_point", MCS_ERR_TYPE, "6:23", "characteristics.pad.loading[1]: expected 2 values"},
     {"curve_not_increasing", MCS_ERR_RANGE, "6:36", "characteristics.pad.loading[2]: x must"},
-    {"curve_wrong_dim", MCS_ERR_UNIT, "6:31", "loading[1][1]: '1 kg' is a mass (kg), expected a force"},
+    {"curve_wrong_dim", MCS_ERR_UNIT, "6:31",
+     "loading[1][1]: '1 kg' is a mass (kg), expected a force"},
     {"deep_nesting", MCS_ERR_FORMAT, "3:68", "nesting deeper than 64 levels"},
     {"duplicate_body", MCS_ERR_KEY, "13:11", "bodies[1].name: duplicate name 'ball'"},
     {"duplicate_key", MCS_ERR_KEY, "10:5", "bodies[0].mass: duplicate key (first at line 9)"},
@@ -196,25 +200,38 @@ static const bad_case bad_cases[] = {
     {"nan_value", MCS_ERR_RANGE, "9:11", "bodies[0].mass: '.nan' is not a finite number"},
     {"negative_mass", MCS_ERR_RANGE, "9:11", "bodies[0].mass: must be > 0 kg (got -1 kg)"},
     {"not_utf8", MCS_ERR_FORMAT, "2:11", "not UTF-8 text (byte 0xE9)"},
-    {"number_expected", MCS_ERR_TYPE, "9:11", "bodies[0].mass: expected a mass (kg), got a sequence"},
+    {"number_expected", MCS_ERR_TYPE, "9:11",
+     "bodies[0].mass: expected a mass (kg), got a sequence"},
     {"overlong_utf8", MCS_ERR_FORMAT, "2:8", "not UTF-8 text (byte 0xC0)"},
     {"poisson_range", MCS_ERR_RANGE, "8:27", "material.poisson: must be < 0.5 (got 0.5)"},
     {"random_bytes", MCS_ERR_FORMAT, "1:3", "not UTF-8 text"},
+    {"restraint_on_fixed", MCS_ERR_KEY, "14:78",
+     "joints[0].restraint: a fixed joint has no restraint"},
+    {"restraint_range_empty", MCS_ERR_RANGE, "15:29",
+     "joints[0].range: min 0.174533 must be below max"},
+    {"restraint_unknown", MCS_ERR_KEY, "15:17",
+     "joints[0].restraint: unknown characteristic 'pda' (did you mean 'pad'?)"},
     {"sensor_cfc", MCS_ERR_RANGE, "14:54", "sensors[0].cfc: 100 is not a SAE J211 class"},
-    {"string_not_number", MCS_ERR_TYPE, "9:11", "bodies[0].mass: expected a mass (kg), got 'heavy'"},
+    {"string_not_number", MCS_ERR_TYPE, "9:11",
+     "bodies[0].mass: expected a mass (kg), got 'heavy'"},
     {"string_nul", MCS_ERR_FORMAT, "2:7", "NUL character in a string"},
     {"time_step_too_long", MCS_ERR_RANGE, "3:42", "simulation.time_step: time step 1 s is longer"},
     {"top_level_list", MCS_ERR_TYPE, "1:1", "a scenario must be a mapping of keys, not a sequence"},
     {"top_level_scalar", MCS_ERR_TYPE, "1:1", "a scenario must be a mapping of keys, not a string"},
-    {"unknown_body", MCS_ERR_KEY, "14:9", "contacts[0].a: unknown body 'bal' (did you mean 'ball'?)"},
-    {"unknown_characteristic", MCS_ERR_KEY, "14:42", "unknown characteristic 'pda' (did you mean 'pad'?)"},
-    {"unknown_fe_part", MCS_ERR_KEY, "9:21", "fe.boundary[0].part: unknown FE part 'tub' (did you mean 'tube'?)"},
-    {"unknown_key", MCS_ERR_KEY, "9:5", "bodies[0].mas: unknown key in a body (did you mean 'mass'?)"},
-    {"unknown_top_key", MCS_ERR_KEY, "3:1", "simulaton: unknown key in a scenario (did you mean 'simulation'?)"},
+    {"unknown_body", MCS_ERR_KEY, "14:9",
+     "contacts[0].a: unknown body 'bal' (did you mean 'ball'?)"},
+    {"unknown_characteristic", MCS_ERR_KEY, "14:42",
+     "unknown characteristic 'pda' (did you mean 'pad'?)"},
+    {"unknown_fe_part", MCS_ERR_KEY, "9:21",
+     "fe.boundary[0].part: unknown FE part 'tub' (did you mean 'tube'?)"},
+    {"unknown_key", MCS_ERR_KEY, "9:5",
+     "bodies[0].mas: unknown key in a body (did you mean 'mass'?)"},
+    {"unknown_top_key", MCS_ERR_KEY, "3:1",
+     "simulaton: unknown key in a scenario (did you mean 'simulation'?)"},
     {"unknown_unit", MCS_ERR_UNIT, "3:24", "simulation.end_time: unknown unit 'fortnight'"},
-    {"unloading_twice", MCS_ERR_KEY, "8:22", "pad.unloading_slope: give unloading (a curve) or"},
     {"vector_length", MCS_ERR_TYPE, "11:15", "bodies[0].position: expected 3 values, got 2"},
-    {"wrong_dimension", MCS_ERR_UNIT, "9:11", "bodies[0].mass: '2 kN' is a force (kg m s^-2), expected a mass (kg)"},
+    {"wrong_dimension", MCS_ERR_UNIT, "9:11",
+     "bodies[0].mass: '2 kN' is a force (N), expected a mass (kg)"},
     {"wrong_version", MCS_ERR_RANGE, "1:9", "mcrash: schema version 2 is not supported"},
     {"yaml_indent", MCS_ERR_YAML, "12:4", "YAML syntax: did not find expected '-' indicator"},
     {"yaml_syntax", MCS_ERR_YAML, "12:13", "YAML syntax: did not find expected ',' or ']'"},
@@ -341,7 +358,8 @@ static void test_cli_json_and_ok(void)
     CHECK_STR_CONTAINS(r->out, "\"thickness\": 0.0015");
     CHECK_STR_CONTAINS(r->out, "\"youngs_modulus\": 210000000000");
     CHECK_STR_CONTAINS(r->out, "\"velocity\": [0, 0, -10]");
-    CHECK_STR_CONTAINS(r->out, "\"hardening\": [[0, 250000000], [0.05, 300000000], [1, 400000000]]");
+    CHECK_STR_CONTAINS(r->out,
+                       "\"hardening\": [[0, 250000000], [0.05, 300000000], [1, 400000000]]");
     r = cli_run("check scenarios/verification/sphere_drop.yaml");
     CHECK(r->status == 0);
     CHECK_STR_CONTAINS(r->out, "sphere_drop.yaml: ok");
@@ -349,6 +367,44 @@ static void test_cli_json_and_ok(void)
     CHECK(r->status == 0);
     CHECK_STR_CONTAINS(r->out, "\"name\": \"top\"");
     CHECK(strstr(r->out, "include") == NULL);
+}
+
+/* docs/scenario_keys.md is what `mcrash check --schema` writes from the schema tables */
+static void test_key_reference_is_current(void)
+{
+    size_t len = 0, dlen = 0;
+    char *buf = NULL;
+    FILE *f = open_memstream(&buf, &len);
+    CHECK(f && mcs_schema_write_markdown(f) == MCS_OK);
+    if (f) fclose(f);
+    FILE *d = fopen("docs/scenario_keys.md", "rb");
+    char *doc = d ? malloc(len + 2) : NULL;
+    if (doc) dlen = fread(doc, 1, len + 1, d);
+    if (d) fclose(d);
+    int same = doc && buf && dlen == len && memcmp(doc, buf, len) == 0;
+    if (!same) fprintf(stderr, "run: bin/mcrash check --schema > docs/scenario_keys.md\n");
+    CHECK(same);
+    CHECK_STR_CONTAINS(buf, "| `mass` | number [kg] | yes | > 0 | mass [kg] |");
+    CHECK_STR_CONTAINS(buf, "## `fe.parts[].material` — material");
+    free(doc);
+    free(buf);
+    cli_result *r = cli_run("check --schema");
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "| *`model: elastic_plastic`* |");
+}
+
+static void test_cli_several_files(void)
+{
+    cli_result *r = cli_run("check scenarios/verification/sphere_drop.yaml " DATA
+                            "bad/negative_mass.yaml scenarios/verification/tube_crush.yaml");
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->out, "sphere_drop.yaml: ok");
+    CHECK_STR_CONTAINS(r->out, "tube_crush.yaml: ok");
+    CHECK_STR_CONTAINS(r->err, "negative_mass.yaml:9:11: error: bodies[0].mass: must be > 0 kg");
+    r = cli_run("check --json scenarios/verification/sphere_drop.yaml "
+                "scenarios/verification/tube_crush.yaml");
+    CHECK(r->status == 2); /* --json prints one scenario */
+    CHECK_STR_CONTAINS(r->err, "usage:");
 }
 
 /* ---- every shipped scenario passes `mcrash check` ---- */
@@ -418,15 +474,21 @@ static void test_fuzz_mutations(void)
             size_t pos = (size_t)(s >> 33) % n;
             unsigned char byte = (unsigned char)(s >> 20);
             int op = (int)((s >> 8) % 4);
-            if (op == 0) buf[pos] = (char)byte;                          /* replace */
-            else if (op == 1 && n > 1) memmove(buf + pos, buf + pos + 1, n - pos - 1), n--; /* delete */
-            else if (op == 2) memmove(buf + pos + 1, buf + pos, n - pos), buf[pos] = "[]{}:,-&*!|>'\"#\n "[byte % 17], n++;
-            else buf[pos] = "0123456789.e-+ ms"[byte % 17];
+            if (op == 0)
+                buf[pos] = (char)byte; /* replace */
+            else if (op == 1 && n > 1)
+                memmove(buf + pos, buf + pos + 1, n - pos - 1), n--; /* delete */
+            else if (op == 2)
+                memmove(buf + pos + 1, buf + pos, n - pos),
+                    buf[pos] = "[]{}:,-&*!|>'\"#\n "[byte % 17], n++;
+            else
+                buf[pos] = "0123456789.e-+ ms"[byte % 17];
         }
         mcs_scenario *scn = NULL;
         mcs_error err = {0};
         /* named inside scenarios/verification so its include resolves when intact */
-        mcs_status st = mcs_scenario_load_text("scenarios/verification/fuzz.yaml", buf, n, &scn, &err);
+        mcs_status st =
+            mcs_scenario_load_text("scenarios/verification/fuzz.yaml", buf, n, &scn, &err);
         if (st == MCS_OK) {
             nok++;
             FILE *f = fopen("/dev/null", "w");
@@ -457,14 +519,16 @@ static void test_limits(void)
     /* 5000 nested flow sequences stop at the depth limit */
     size_t n = 0;
     n += (size_t)sprintf(text, "mcrash: 1\nimpact: {x: ");
-    for (int i = 0; i < 5000; i++) text[n++] = '[';
+    for (int i = 0; i < 5000; i++)
+        text[n++] = '[';
     mcs_error_clear(&err);
     CHECK(mcs_scenario_load_text("deep.yaml", text, n, &scn, &err) == MCS_ERR_FORMAT);
     CHECK_STR_CONTAINS(err.msg, "deep.yaml:2:");
     CHECK_STR_CONTAINS(err.msg, "nesting deeper than 64 levels");
     /* block-style nesting too */
     n = (size_t)sprintf(text, "mcrash: 1\nimpact:\n");
-    for (int i = 0; i < 100; i++) n += (size_t)sprintf(text + n, "%*sk%d:\n", i + 1, "", i);
+    for (int i = 0; i < 100; i++)
+        n += (size_t)sprintf(text + n, "%*sk%d:\n", i + 1, "", i);
     mcs_error_clear(&err);
     CHECK(mcs_scenario_load_text("deep2.yaml", text, n, &scn, &err) == MCS_ERR_FORMAT);
     CHECK_STR_CONTAINS(err.msg, "nesting deeper than 64 levels");
@@ -490,9 +554,10 @@ static void test_accessors_on_absent_nodes(void)
     const mcs_node *m = AT(mcs_scenario_root(scn), "bodies", "#0", "mass");
     mcs_error_clear(&err);
     CHECK(mcs_node_error(m, &err, MCS_ERR_RANGE, "too light for stage %d", 1) == MCS_ERR_RANGE);
-    CHECK_STR_CONTAINS(err.msg, "sphere_drop.yaml:16:11: error: bodies[0].mass: too light for stage 1");
+    CHECK_STR_CONTAINS(err.msg,
+                       "sphere_drop.yaml:16:11: error: bodies[0].mass: too light for stage 1");
     CHECK(mcs_node_vec3(m, v, &err) == MCS_ERR_TYPE); /* a number is not a vector... */
-    CHECK_STR_CONTAINS(err.msg, "too light");          /* ...but the first error is kept */
+    CHECK_STR_CONTAINS(err.msg, "too light");         /* ...but the first error is kept */
     mcs_scenario_destroy(&scn);
 }
 
@@ -508,6 +573,8 @@ int main(void)
     RUN(test_malformed_scenarios_via_cli);
     RUN(test_json_round_trip);
     RUN(test_cli_json_and_ok);
+    RUN(test_key_reference_is_current);
+    RUN(test_cli_several_files);
     RUN(test_every_shipped_scenario_checks);
     RUN(test_fuzz_mutations);
     RUN(test_limits);

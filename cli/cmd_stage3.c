@@ -1,8 +1,93 @@
-/* cmd_stage3.c: `mcrash stage3` */
+/* cmd_stage3.c: `mcrash stage3 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]`: an FE-only
+ * scenario (its fe: block, stage3_fe) to a results file. `mcrash run` hands FE-only scenarios
+ * here. Without -o the file is <scenario basename>.h5 in the current directory. --json prints
+ * {"output": ..., "stage3": {"steps", "elements", "wall_time_s", "energy_drift", ...}}.
+ * Exit status: 0 done, 1 numerical failure (no results file left), 2 bad input. */
 #include "cli/cli.h"
+#include "cli/cli_stage1.h"
+#include "stage3_fe/s3_run.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static void json_string(const char *s)
+{
+    putchar('"');
+    for (; *s; s++) {
+        if (*s == '"' || *s == '\\')
+            printf("\\%c", *s);
+        else if ((unsigned char)*s < 0x20)
+            printf("\\u%04x", (unsigned char)*s);
+        else
+            putchar(*s);
+    }
+    putchar('"');
+}
+
+static int run_scenario(const mcs_scenario *scn, const char *out, int quiet, int json)
+{
+    mcs_error err = {0};
+    s3_problem p = {0};
+    s3_summary sum = {0};
+    mcs_status st = s3_build(scn, &p, &err);
+    if (!st) {
+        s3_run_opts o = {.out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = quiet};
+        st = s3_run(&p, &o, &sum, &err);
+    }
+    s3_problem_free(&p);
+    if (st) {
+        fprintf(stderr, "%s\n", err.msg);
+        return mcs_status_exit_code(st);
+    }
+    if (json) {
+        printf("{\"output\": ");
+        json_string(out);
+        printf(", \"stage3\": {\"steps\": %ld, \"elements\": %d, \"nodes\": %d, "
+               "\"wall_time_s\": %.6g, \"energy_drift\": %.6g, \"end_time_s\": %.9g, "
+               "\"dt_initial_s\": %.6g, \"timers_s\": {",
+               sum.steps, sum.elements, sum.nodes, sum.wall_time_s, sum.energy_drift, sum.t_end,
+               sum.dt_initial);
+        for (int k = 0; k < FE_NSTAGE; k++)
+            printf("%s\"%s\": %.4g", k ? ", " : "", fe_stage_name[k], sum.timer[k]);
+        printf("}}}\n");
+    } else if (!quiet) {
+        fprintf(stderr, "stage 3: %ld steps, %d elements, %.3g s wall, energy drift %.3g -> %s\n",
+                sum.steps, sum.elements, sum.wall_time_s, sum.energy_drift, out);
+    }
+    return fflush(stdout) ? 2 : 0;
+}
 
 int cli_stage3(int argc, char **argv)
 {
     if (cli_wants_help(argv[0], argc, argv)) return 0;
-    return cli_not_built(argv[0], "issue #5");
+    const char *path = NULL, *out = NULL;
+    int quiet = 0, json = 0;
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--json") == 0)
+            json = 1;
+        else if (strcmp(argv[i], "--quiet") == 0)
+            quiet = 1;
+        else if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
+            out = argv[++i];
+        else if (argv[i][0] == '-' && argv[i][1]) {
+            fprintf(stderr, "mcrash %s: unknown option '%s'\n", argv[0], argv[i]);
+            return cli_usage(argv[0]);
+        } else if (path)
+            return cli_usage(argv[0]);
+        else
+            path = argv[i];
+    }
+    if (!path) return cli_usage(argv[0]);
+    mcs_scenario *scn = NULL;
+    mcs_error err = {0};
+    mcs_status st = mcs_scenario_load(path, &scn, &err);
+    if (st) {
+        fprintf(stderr, "%s\n", err.msg);
+        return mcs_status_exit_code(st);
+    }
+    char def[4096];
+    if (!out) cli_default_output(path, def, sizeof def), out = def;
+    int rc = run_scenario(scn, out, quiet, json);
+    mcs_scenario_destroy(&scn);
+    return rc;
 }

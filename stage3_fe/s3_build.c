@@ -1,0 +1,292 @@
+/* s3_build.c: scenario `fe:` block -> fe_model (see s3_build.h). The kernel's descriptors carry
+ * the scenario's key names (docs/fe.md), so this file copies keys, converts the few that differ
+ * (plate `normal` -> axis, circular tube `radius` -> diameter, tangent_modulus -> a hardening
+ * table) and locates every kernel error at the scenario node it came from. */
+#include "stage3_fe/s3_build.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define S3_OUTPUT_RATE_DEFAULT 10e3 /* [Hz], as stage 1 */
+
+static const mcs_node *get(const mcs_node *m, const char *k) { return mcs_node_get(m, k); }
+
+static int given(const mcs_node *m, const char *k)
+{
+    mcs_kind kd = mcs_node_kind(get(m, k));
+    return kd != MCS_NODE_NULL;
+}
+
+static mcs_status unsupported(const mcs_node *n, mcs_error *err, const char *what)
+{
+    return mcs_node_error(n, err, MCS_ERR_UNSUPPORTED, "%s not supported yet", what);
+}
+
+/* a kernel error (no location) re-recorded at the scenario node it concerns */
+static mcs_status relocate(mcs_status st, const mcs_node *n, mcs_error *kerr, mcs_error *err)
+{
+    if (st == MCS_OK) return MCS_OK;
+    return mcs_node_error(n, err, st, "%s", kerr->msg);
+}
+
+static int axis_of(const char *s, int dflt)
+{
+    if (!s) return dflt;
+    return s[0] == 'x' ? 0 : s[0] == 'y' ? 1 : 2;
+}
+
+static mcs_status read_mesh(const mcs_node *mesh, fe_mesh_desc *d, mcs_error *err)
+{
+    const char *gen = mcs_node_str(get(mesh, "generate"));
+    if (!gen) return unsupported(mesh, err, "mesh from a keyword file");
+    if (given(mesh, "origin") && strcmp(gen, "box") && strcmp(gen, "plate")) {
+        double o[3];
+        mcs_status st = mcs_node_vec3(get(mesh, "origin"), o, err);
+        if (st) return st;
+        if (o[0] != 0 || o[1] != 0 || o[2] != 0)
+            return unsupported(get(mesh, "origin"), err, "origin of a generated tube");
+    }
+    mcs_status st = MCS_OK;
+    if (strcmp(gen, "box") == 0) {
+        d->generate = FE_MESH_BOX;
+        st = mcs_node_vec3(get(mesh, "size"), d->size, err);
+        for (int i = 0; i < 3 && !st; i++)
+            d->divisions[i] = (int)mcs_node_num(mcs_node_at(get(mesh, "divisions"), i));
+        if (!st && given(mesh, "origin")) st = mcs_node_vec3(get(mesh, "origin"), d->origin, err);
+    } else if (strcmp(gen, "plate") == 0) {
+        d->generate = FE_MESH_PLATE;
+        st = mcs_node_vec(get(mesh, "size"), d->size, 2, err);
+        d->axis = axis_of(mcs_node_str(get(mesh, "normal")), 2);
+        for (int i = 0; i < 2 && !st; i++) {
+            if (given(mesh, "divisions"))
+                d->divisions[i] = (int)mcs_node_num(mcs_node_at(get(mesh, "divisions"), i));
+            else
+                d->divisions[i] =
+                    (int)fmax(1, floor(d->size[i] / mcs_node_num(get(mesh, "element_size")) + 0.5));
+        }
+        if (!st && given(mesh, "origin")) st = mcs_node_vec3(get(mesh, "origin"), d->origin, err);
+    } else if (strcmp(gen, "square_tube") == 0) {
+        d->generate = FE_MESH_SQUARE_TUBE;
+        d->side = mcs_node_num(get(mesh, "side"));
+    } else if (strcmp(gen, "circular_tube") == 0 || strcmp(gen, "cylinder_shell") == 0) {
+        d->generate = FE_MESH_CIRCULAR_TUBE;
+        d->diameter = 2 * mcs_node_num(get(mesh, "radius"));
+    } else {
+        char what[96];
+        snprintf(what, sizeof what, "mesh generator '%s'", gen);
+        return unsupported(get(mesh, "generate"), err, what);
+    }
+    if (d->generate == FE_MESH_SQUARE_TUBE || d->generate == FE_MESH_CIRCULAR_TUBE) {
+        d->length = mcs_node_num(get(mesh, "length"));
+        d->element_size = mcs_node_num(get(mesh, "element_size"));
+        d->axis = axis_of(mcs_node_str(get(mesh, "axis")), 2);
+    }
+    return st;
+}
+
+static mcs_status read_section(const mcs_node *sec, fe_section_desc *d, mcs_error *err)
+{
+    const char *type = mcs_node_str(get(sec, "type"));
+    if (type && strcmp(type, "shell") == 0) {
+        d->type = FE_SECTION_SHELL;
+        d->thickness = mcs_node_num(get(sec, "thickness"));
+        d->integration_points = (int)mcs_node_num_or(sec, "integration_points", 5);
+        return MCS_OK;
+    }
+    if (type && strcmp(type, "solid") == 0) {
+        d->type = FE_SECTION_SOLID;
+        return MCS_OK;
+    }
+    char what[96];
+    snprintf(what, sizeof what, "section type '%s' with a generated mesh", type ? type : "?");
+    return unsupported(get(sec, "type"), err, what);
+}
+
+static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
+{
+    const char *model = mcs_node_str(get(mat, "model"));
+    int plastic = model && strcmp(model, "elastic_plastic") == 0;
+    if (!plastic && !(model && strcmp(model, "elastic") == 0)) {
+        char what[96];
+        snprintf(what, sizeof what, "material model '%s'", model ? model : "?");
+        return unsupported(get(mat, "model"), err, what);
+    }
+    d->model = plastic ? FE_MAT_ELASTIC_PLASTIC : FE_MAT_ELASTIC;
+    d->density = mcs_node_num(get(mat, "density"));
+    d->youngs_modulus = mcs_node_num(get(mat, "youngs_modulus"));
+    d->poisson = mcs_node_num(get(mat, "poisson"));
+    if (!plastic) return MCS_OK;
+    if (given(mat, "failure_strain"))
+        return unsupported(get(mat, "failure_strain"), err, "failure_strain (element erosion)");
+    d->yield_stress = mcs_node_num(get(mat, "yield_stress"));
+    const mcs_node *h = get(mat, "hardening");
+    if (given(mat, "hardening")) {
+        int n = mcs_node_curve_len(h), k = 0;
+        double x[FE_CURVE_MAX], y[FE_CURVE_MAX];
+        if (n > FE_CURVE_MAX - 1)
+            return mcs_node_error(h, err, MCS_ERR_RANGE, "at most %d points, got %d",
+                                  FE_CURVE_MAX - 1, n);
+        mcs_status st = mcs_node_curve(h, x, y, FE_CURVE_MAX, err);
+        if (st) return st;
+        if (x[0] > 0) { /* the table starts at zero plastic strain with the yield stress */
+            d->hardening[0][0] = 0;
+            d->hardening[0][1] = d->yield_stress;
+            k = 1;
+        }
+        for (int i = 0; i < n; i++, k++) {
+            d->hardening[k][0] = x[i];
+            d->hardening[k][1] = y[i];
+        }
+        d->nhardening = k;
+    } else if (given(mat, "tangent_modulus")) {
+        /* bilinear: tangent modulus Et of the stress-strain curve -> plastic modulus
+         * H = E Et / (E - Et) (the slope of stress vs. plastic strain) */
+        double E = d->youngs_modulus, Et = mcs_node_num(get(mat, "tangent_modulus"));
+        if (!(Et < E))
+            return mcs_node_error(get(mat, "tangent_modulus"), err, MCS_ERR_RANGE,
+                                  "must be below youngs_modulus %g Pa", E);
+        d->nhardening = 2;
+        d->hardening[0][0] = 0;
+        d->hardening[0][1] = d->yield_stress;
+        d->hardening[1][0] = 1;
+        d->hardening[1][1] = d->yield_stress + E * Et / (E - Et);
+    }
+    return MCS_OK;
+}
+
+static mcs_status add_parts(fe_builder *b, const mcs_node *parts, mcs_error *err)
+{
+    for (int i = 0; i < mcs_node_len(parts); i++) {
+        const mcs_node *p = mcs_node_at(parts, i);
+        fe_part_desc d = fe_part_desc_default();
+        snprintf(d.name, sizeof d.name, "%s", mcs_node_str(get(p, "name")));
+        if (strlen(mcs_node_str(get(p, "name"))) >= sizeof d.name)
+            return mcs_node_error(get(p, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
+                                  FE_NAME_MAX - 1);
+        mcs_status st = read_mesh(get(p, "mesh"), &d.mesh, err);
+        if (!st) st = read_section(get(p, "section"), &d.section, err);
+        if (!st) st = read_material(get(p, "material"), &d.material, err);
+        if (!st && given(p, "initial_velocity"))
+            st = mcs_node_vec3(get(p, "initial_velocity"), d.initial_velocity, err);
+        if (st) return st;
+        mcs_error kerr = {0};
+        st = fe_builder_add_part(b, &d, NULL, &kerr);
+        if (st) return relocate(st, p, &kerr, err);
+    }
+    return MCS_OK;
+}
+
+static unsigned fix_mask(const char *s)
+{
+    static const struct { const char *name; unsigned mask; } tab[] = {
+        {"all", FE_DOF_ALL}, {"translations", FE_DOF_TRANS}, {"rotations", FE_DOF_ROT},
+        {"x", FE_DOF_X}, {"y", FE_DOF_Y}, {"z", FE_DOF_Z},
+        {"xy", FE_DOF_X | FE_DOF_Y}, {"yz", FE_DOF_Y | FE_DOF_Z}, {"xz", FE_DOF_X | FE_DOF_Z}};
+    if (!s) return FE_DOF_ALL;
+    for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++)
+        if (strcmp(s, tab[i].name) == 0) return tab[i].mask;
+    return FE_DOF_ALL;
+}
+
+static fe_where where_of(const char *s)
+{
+    static const char *names[] = {"all", "x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+    for (int i = 0; i < 7; i++)
+        if (s && strcmp(s, names[i]) == 0) return (fe_where)i;
+    return FE_WHERE_ALL;
+}
+
+static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error *err)
+{
+    for (int i = 0; i < mcs_node_len(list); i++) {
+        const mcs_node *c = mcs_node_at(list, i);
+        if (given(c, "tolerance"))
+            return unsupported(get(c, "tolerance"), err, "boundary tolerance");
+        fe_boundary_desc d = {.where = where_of(mcs_node_str(get(c, "where"))),
+                              .fix = fix_mask(mcs_node_str(get(c, "fix")))};
+        snprintf(d.part, sizeof d.part, "%s", mcs_node_str(get(c, "part")));
+        mcs_error kerr = {0};
+        mcs_status st = fe_builder_add_boundary(b, &d, &kerr);
+        if (st) return relocate(st, c, &kerr, err);
+    }
+    return MCS_OK;
+}
+
+static mcs_status add_walls(fe_builder *b, const mcs_node *list, mcs_error *err)
+{
+    for (int i = 0; i < mcs_node_len(list); i++) {
+        const mcs_node *w = mcs_node_at(list, i);
+        if (mcs_node_num_or(w, "friction", 0) > 0)
+            return unsupported(get(w, "friction"), err, "rigid wall friction");
+        if (given(w, "size")) return unsupported(get(w, "size"), err, "finite rigid wall size");
+        const char *name = mcs_node_str(get(w, "name"));
+        if (strlen(name) >= FE_NAME_MAX)
+            return mcs_node_error(get(w, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
+                                  FE_NAME_MAX - 1);
+        fe_wall_desc d = {.method = FE_WALL_KINEMATIC};
+        snprintf(d.name, sizeof d.name, "%s", name);
+        mcs_status st = mcs_node_vec3(get(w, "point"), d.point, err);
+        if (!st) st = mcs_node_vec3(get(w, "normal"), d.normal, err);
+        if (!st && given(w, "velocity")) st = mcs_node_vec3(get(w, "velocity"), d.velocity, err);
+        if (st) return st;
+        mcs_error kerr = {0};
+        st = fe_builder_add_wall(b, &d, &kerr);
+        if (st) return relocate(st, w, &kerr, err);
+    }
+    return MCS_OK;
+}
+
+/* the kernel has no contact interfaces yet (only rigid walls) */
+static mcs_status check_contacts(const mcs_node *list, mcs_error *err)
+{
+    if (mcs_node_len(list) == 0) return MCS_OK;
+    const mcs_node *c = mcs_node_at(list, 0);
+    const char *type = mcs_node_str(get(c, "type"));
+    char what[96];
+    snprintf(what, sizeof what, "contact type %s", type ? type : "?");
+    return unsupported(given(c, "type") ? get(c, "type") : c, err, what);
+}
+
+mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
+{
+    memset(out, 0, sizeof *out);
+    const mcs_node *root = mcs_scenario_root(scn), *fe = get(root, "fe");
+    const mcs_node *sim = get(root, "simulation");
+    if (mcs_node_kind(fe) != MCS_NODE_MAP)
+        return mcs_node_error(root, err, MCS_ERR_KEY, "no fe: block (stage 3 runs an FE model)");
+    if (mcs_node_num_or(get(root, "environment"), "gravity", 0) > 0)
+        mcs_log(MCS_LOG_WARN, "%s:%d:%d: warning: environment.gravity is ignored by stage 3 "
+                              "(the fe kernel has no gravity yet)",
+                mcs_node_file(get(get(root, "environment"), "gravity")),
+                mcs_node_line(get(get(root, "environment"), "gravity")),
+                mcs_node_col(get(get(root, "environment"), "gravity")));
+    mcs_status st = check_contacts(get(fe, "contacts"), err);
+    if (st) return st;
+
+    fe_opts opts = fe_opts_default();
+    opts.dt_scale = mcs_node_num_or(sim, "time_step_scale", opts.dt_scale);
+    opts.dt_max = mcs_node_num_or(sim, "time_step", 0);
+    opts.history_capacity = 0; /* the run samples the state itself (s3_run.c) */
+    out->end_time = mcs_node_num(get(sim, "end_time"));
+    out->output_rate = mcs_node_num_or(sim, "output_rate", S3_OUTPUT_RATE_DEFAULT);
+
+    fe_builder *b = NULL;
+    mcs_error kerr = {0};
+    st = fe_builder_create(&b, &kerr);
+    if (st) return relocate(st, fe, &kerr, err);
+    st = add_parts(b, get(fe, "parts"), err);
+    if (!st) st = add_boundaries(b, get(fe, "boundary"), err);
+    if (!st) st = add_walls(b, get(fe, "rigid_walls"), err);
+    if (!st) {
+        st = fe_model_create(b, &opts, &out->model, &kerr);
+        if (st) relocate(st, fe, &kerr, err);
+    }
+    fe_builder_destroy(&b);
+    return st;
+}
+
+void s3_problem_free(s3_problem *p)
+{
+    if (p) fe_model_destroy(&p->model);
+}

@@ -1,0 +1,29 @@
+/* s3_build: the `fe:` block of a scenario (DESIGN.md "The scenario (YAML)") compiled into an
+ * fe_model for a stage-3 (FE-only) run.
+ *
+ * What it reads: simulation.{end_time, time_step (upper bound on the stable step),
+ * time_step_scale (safety factor, default 0.9), output_rate (default 10 kHz)}; fe.parts with
+ * generated meshes (box, plate, square_tube, circular_tube/cylinder_shell), shell/solid
+ * sections, elastic and elastic_plastic materials (hardening curve or tangent_modulus),
+ * initial_velocity; fe.boundary (where, fix); fe.rigid_walls (point, normal, velocity).
+ * What the kernel cannot do yet is refused with MCS_ERR_UNSUPPORTED at the key's
+ * FILE:LINE:COL (contacts, foam/fabric/rigid materials, membrane/truss sections, keyword
+ * meshes, sphere shells, wall friction and size, boundary tolerance, failure strain, origin
+ * of a tube); nothing is silently dropped except gravity, which is logged as ignored. */
+#ifndef S3_BUILD_H
+#define S3_BUILD_H
+
+#include "core/mcs_scenario.h"
+#include "fe/fe_model.h"
+
+typedef struct {
+    fe_model *model;      /* owned                                                  */
+    double end_time;      /* simulated duration [s]                                 */
+    double output_rate;   /* sampling rate of the results [Hz]                      */
+} s3_problem;
+
+/* build the model of a validated scenario; errors name FILE:LINE:COL and the key */
+mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err);
+void s3_problem_free(s3_problem *p);
+
+#endif

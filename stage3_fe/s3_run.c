@@ -1,0 +1,168 @@
+/* s3_run.c: the stage-3 time loop and its /stage3 output (see s3_run.h). Every buffer is
+ * allocated before the loop; the loop calls fe_step and appends rows to results series at
+ * the output rate. */
+#include "stage3_fe/s3_run.h"
+
+#include "core/mcs_progress.h"
+#include "core/mcs_results.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* one part's initial mesh: the rows lo..hi of the model's nodes spanned by its elements
+ * (generated meshes own a contiguous block) and its elements renumbered from lo; node_offset
+ * = lo locates the part in /stage3/fields/displacement */
+static mcs_status put_part_mesh(mcs_results *r, const fe_model *m, const fe_part *p,
+                                mcs_error *err)
+{
+    static const int width[FE_NKIND] = {8, 4, 2};
+    static const char *type[FE_NKIND] = {"hex8", "quad4", "line2"};
+    const int *conn[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node};
+    const int k = width[p->elem_kind], ne = p->elem_end - p->elem_begin;
+    const int *c = conn[p->elem_kind] + (size_t)k * (size_t)p->elem_begin;
+    if (ne <= 0) return MCS_OK;
+    int lo = m->nnode, hi = -1;
+    for (size_t i = 0; i < (size_t)k * (size_t)ne; i++) {
+        lo = c[i] < lo ? c[i] : lo;
+        hi = c[i] > hi ? c[i] : hi;
+    }
+    int *el = malloc(sizeof(int) * (size_t)ne * (size_t)k);
+    if (!el) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory writing part '%s'", p->name);
+    for (size_t i = 0; i < (size_t)k * (size_t)ne; i++) el[i] = c[i] - lo;
+    mcs_status st = mcs_results_put_mesh(r, 3, p->name, (size_t)(hi - lo + 1),
+                                         m->node_x0 + 3 * (size_t)lo, (size_t)ne, k, el,
+                                         type[p->elem_kind], lo, err);
+    free(el);
+    return st;
+}
+
+typedef struct {
+    mcs_results_series *time, *energy[FE_NENERGY], *wall_f[FE_WALL_MAX], *wall_d[FE_WALL_MAX];
+    mcs_results_series *ftime, *fdisp;
+    double *disp; /* [nnode, 3] */
+} s3_out;
+
+static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_error *err)
+{
+    char path[256];
+    mcs_status st = mcs_results_series_create(r, "/stage3/time", 1, NULL, "s", 0, &o->time, err);
+    for (int k = 0; k < FE_NENERGY && !st; k++) {
+        snprintf(path, sizeof path, "/stage3/energy/%s", fe_energy_name[k]);
+        st = mcs_results_series_create(r, path, 1, NULL, "J", 0, &o->energy[k], err);
+    }
+    for (int w = 0; w < m->nwall && !st; w++) {
+        snprintf(path, sizeof path, "/stage3/rigidwall/%s/force", m->wall[w].name);
+        st = mcs_results_series_create(r, path, 1, NULL, "N", 0, &o->wall_f[w], err);
+        snprintf(path, sizeof path, "/stage3/rigidwall/%s/displacement", m->wall[w].name);
+        if (!st) st = mcs_results_series_create(r, path, 1, NULL, "m", 0, &o->wall_d[w], err);
+    }
+    if (!st) st = mcs_results_field_series(r, 3, (size_t)m->nnode, &o->ftime, &o->fdisp, err);
+    return st;
+}
+
+static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o, mcs_error *err)
+{
+    mcs_status st = mcs_results_series_append(o->time, &s->energy_time, err);
+    for (int k = 0; k < FE_NENERGY && !st; k++)
+        st = mcs_results_series_append(o->energy[k], &s->energy[k], err);
+    for (int w = 0; w < m->nwall && !st; w++) {
+        st = mcs_results_series_append(o->wall_f[w], &s->wall_normal[w], err);
+        if (!st) st = mcs_results_series_append(o->wall_d[w], &s->wall_disp[w], err);
+    }
+    return st;
+}
+
+static mcs_status sample_field(const fe_model *m, const fe_state *s, s3_out *o, mcs_error *err)
+{
+    for (size_t i = 0; i < 3 * (size_t)m->nnode; i++) o->disp[i] = s->node_x[i] - m->node_x0[i];
+    mcs_status st = mcs_results_series_append(o->ftime, &s->time, err);
+    if (!st) st = mcs_results_series_append(o->fdisp, o->disp, err);
+    return st;
+}
+
+/* the time loop: fe_step until end_time, sampling energies (at t_n) and fields (at t_n+1) */
+static mcs_status loop(const s3_problem *p, const s3_run_opts *ro, fe_state *s, s3_out *o,
+                       mcs_error *err)
+{
+    const fe_model *m = p->model;
+    const double every = 1.0 / p->output_rate;
+    double next_e = 0, next_f = every;
+    mcs_progress prog;
+    mcs_progress_opts po = mcs_progress_opts_default();
+    po.quiet = ro->quiet;
+    po.label = "stage 3";
+    mcs_progress_start(&prog, &po, p->end_time);
+    mcs_status st = sample_field(m, s, o, err); /* t = 0: zero displacement */
+    while (!st && s->time < p->end_time) {
+        st = fe_step(m, s);
+        if (st) {
+            MCS_ERR(err, st, "stage 3: %s", s->err.msg);
+            break;
+        }
+        const double eps = 1e-9 * s->dt;
+        if (s->energy_time >= next_e - eps) {
+            st = sample_energy(m, s, o, err);
+            next_e += every * fmax(1.0, ceil((s->energy_time - next_e) / every + 1e-9));
+        }
+        if (!st && s->time >= next_f - eps) {
+            st = sample_field(m, s, o, err);
+            next_f += every * fmax(1.0, ceil((s->time - next_f) / every + 1e-9));
+        }
+        mcs_progress_update(&prog, s->time);
+    }
+    mcs_progress_finish(&prog, s->time);
+    return st;
+}
+
+mcs_status s3_run(const s3_problem *p, const s3_run_opts *ro, s3_summary *sum, mcs_error *err)
+{
+    const fe_model *m = p->model;
+    memset(sum, 0, sizeof *sum);
+    if (!(p->output_rate > 0) || !(p->end_time > 0))
+        return MCS_ERR(err, MCS_ERR_RANGE, "stage 3: end_time and output_rate must be > 0");
+    double wall0 = now_s();
+    fe_state *s = NULL;
+    mcs_results *r = NULL;
+    s3_out o = {0};
+    mcs_status st = fe_state_create(m, &s, err);
+    if (!st) st = mcs_results_create(&r, ro->out_path, ro->scenario_text, err);
+    if (!st) {
+        o.disp = malloc(sizeof(double) * 3 * (size_t)(m->nnode > 0 ? m->nnode : 1));
+        if (!o.disp) st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
+    }
+    for (int i = 0; i < m->npart && !st; i++) st = put_part_mesh(r, m, &m->part[i], err);
+    if (!st) st = open_series(r, m, &o, err);
+    if (!st) st = loop(p, ro, s, &o, err);
+    if (!st) {
+        sum->steps = s->nstep;
+        sum->elements = m->nelem;
+        sum->nodes = m->nnode;
+        sum->t_end = s->time;
+        sum->dt_initial = m->dt_initial;
+        sum->energy_drift =
+            fabs(s->energy[FE_E_total] - s->energy0) / fmax(s->energy_ref, DBL_MIN);
+        memcpy(sum->timer, s->timer, sizeof sum->timer);
+        st = mcs_results_set_attr_int(r, "/stage3", "steps", (int)fmin(s->nstep, 2147483647.0), err);
+        if (!st) st = mcs_results_set_attr_int(r, "/stage3", "elements", m->nelem, err);
+        if (!st) st = mcs_results_set_attr_int(r, "/stage3", "nodes", m->nnode, err);
+        if (!st) st = mcs_results_set_attr_double(r, "/stage3", "energy_drift", sum->energy_drift, err);
+        if (!st) st = mcs_results_set_attr_double(r, "/stage3", "output_rate", p->output_rate, err);
+        if (!st) st = mcs_results_commit(&r, err);
+    }
+    mcs_results_abort(&r);
+    free(o.disp);
+    fe_state_destroy(&s);
+    sum->wall_time_s = now_s() - wall0;
+    return st;
+}

@@ -1,7 +1,7 @@
 /* s3_build.c: scenario `fe:` block -> fe_model (see s3_build.h). The kernel's descriptors carry
  * the scenario's key names (docs/fe.md), so this file copies keys, converts the few that differ
- * (plate `normal` -> axis, circular tube `radius` -> diameter, tangent_modulus -> a hardening
- * table) and locates every kernel error at the scenario node it came from. */
+ * (axis names, tangent_modulus -> a hardening table) and locates every kernel error at the
+ * scenario node it came from. */
 #include "stage3_fe/s3_build.h"
 
 #include <math.h>
@@ -40,13 +40,6 @@ static mcs_status read_mesh(const mcs_node *mesh, fe_mesh_desc *d, mcs_error *er
 {
     const char *gen = mcs_node_str(get(mesh, "generate"));
     if (!gen) return unsupported(mesh, err, "mesh from a keyword file");
-    if (given(mesh, "origin") && strcmp(gen, "box") && strcmp(gen, "plate")) {
-        double o[3];
-        mcs_status st = mcs_node_vec3(get(mesh, "origin"), o, err);
-        if (st) return st;
-        if (o[0] != 0 || o[1] != 0 || o[2] != 0)
-            return unsupported(get(mesh, "origin"), err, "origin of a generated tube");
-    }
     mcs_status st = MCS_OK;
     if (strcmp(gen, "box") == 0) {
         d->generate = FE_MESH_BOX;
@@ -57,7 +50,7 @@ static mcs_status read_mesh(const mcs_node *mesh, fe_mesh_desc *d, mcs_error *er
     } else if (strcmp(gen, "plate") == 0) {
         d->generate = FE_MESH_PLATE;
         st = mcs_node_vec(get(mesh, "size"), d->size, 2, err);
-        d->axis = axis_of(mcs_node_str(get(mesh, "normal")), 2);
+        d->axis = axis_of(mcs_node_str(get(mesh, "axis")), 2);
         for (int i = 0; i < 2 && !st; i++) {
             if (given(mesh, "divisions"))
                 d->divisions[i] = (int)mcs_node_num(mcs_node_at(get(mesh, "divisions"), i));
@@ -66,12 +59,17 @@ static mcs_status read_mesh(const mcs_node *mesh, fe_mesh_desc *d, mcs_error *er
                     (int)fmax(1, floor(d->size[i] / mcs_node_num(get(mesh, "element_size")) + 0.5));
         }
         if (!st && given(mesh, "origin")) st = mcs_node_vec3(get(mesh, "origin"), d->origin, err);
+    } else if (strcmp(gen, "line") == 0) {
+        d->generate = FE_MESH_LINE;
+        st = mcs_node_vec3(get(mesh, "origin"), d->origin, err);
+        if (!st) st = mcs_node_vec3(get(mesh, "end"), d->end, err);
+        d->divisions[0] = (int)mcs_node_num(get(mesh, "divisions"));
     } else if (strcmp(gen, "square_tube") == 0) {
         d->generate = FE_MESH_SQUARE_TUBE;
         d->side = mcs_node_num(get(mesh, "side"));
     } else if (strcmp(gen, "circular_tube") == 0 || strcmp(gen, "cylinder_shell") == 0) {
         d->generate = FE_MESH_CIRCULAR_TUBE;
-        d->diameter = 2 * mcs_node_num(get(mesh, "radius"));
+        d->diameter = mcs_node_num(get(mesh, "diameter"));
     } else {
         char what[96];
         snprintf(what, sizeof what, "mesh generator '%s'", gen);
@@ -88,18 +86,28 @@ static mcs_status read_mesh(const mcs_node *mesh, fe_mesh_desc *d, mcs_error *er
 static mcs_status read_section(const mcs_node *sec, fe_section_desc *d, mcs_error *err)
 {
     const char *type = mcs_node_str(get(sec, "type"));
+    const char *hg = mcs_node_str(get(sec, "hourglass"));
+    if (hg) d->hourglass = strcmp(hg, "stiffness") == 0 ? FE_HG_STIFFNESS : FE_HG_VISCOUS;
+    d->hourglass_coefficient = mcs_node_num_or(sec, "hourglass_coefficient", 0);
     if (type && strcmp(type, "shell") == 0) {
         d->type = FE_SECTION_SHELL;
         d->thickness = mcs_node_num(get(sec, "thickness"));
         d->integration_points = (int)mcs_node_num_or(sec, "integration_points", 5);
+        d->shear_factor = mcs_node_num_or(sec, "shear_factor", 0);
         return MCS_OK;
     }
     if (type && strcmp(type, "solid") == 0) {
         d->type = FE_SECTION_SOLID;
         return MCS_OK;
     }
+    if (type && strcmp(type, "truss") == 0) {
+        d->type = FE_SECTION_TRUSS;
+        d->area = mcs_node_num(get(sec, "area"));
+        d->tension_only = mcs_node_bool(get(sec, "tension_only"), 0);
+        return MCS_OK;
+    }
     char what[96];
-    snprintf(what, sizeof what, "section type '%s' with a generated mesh", type ? type : "?");
+    snprintf(what, sizeof what, "section type '%s'", type ? type : "?");
     return unsupported(get(sec, "type"), err, what);
 }
 
@@ -120,6 +128,8 @@ static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_er
     if (given(mat, "failure_strain"))
         return unsupported(get(mat, "failure_strain"), err, "failure_strain (element erosion)");
     d->yield_stress = mcs_node_num(get(mat, "yield_stress"));
+    d->cowper_symonds_c = mcs_node_num_or(mat, "cowper_symonds_c", 0);
+    d->cowper_symonds_p = mcs_node_num_or(mat, "cowper_symonds_p", 0);
     const mcs_node *h = get(mat, "hardening");
     if (given(mat, "hardening")) {
         int n = mcs_node_curve_len(h), k = 0;
@@ -206,6 +216,10 @@ static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error 
         fe_boundary_desc d = {.where = where_of(mcs_node_str(get(c, "where"))),
                               .fix = fix_mask(mcs_node_str(get(c, "fix")))};
         snprintf(d.part, sizeof d.part, "%s", mcs_node_str(get(c, "part")));
+        if (given(c, "velocity")) {
+            mcs_status vs = mcs_node_vec3(get(c, "velocity"), d.velocity, err);
+            if (vs) return vs;
+        }
         mcs_error kerr = {0};
         mcs_status st = fe_builder_add_boundary(b, &d, &kerr);
         if (st) return relocate(st, c, &kerr, err);
@@ -230,9 +244,46 @@ static mcs_status add_walls(fe_builder *b, const mcs_node *list, mcs_error *err)
         if (!st) st = mcs_node_vec3(get(w, "normal"), d.normal, err);
         if (!st && given(w, "velocity")) st = mcs_node_vec3(get(w, "velocity"), d.velocity, err);
         if (st) return st;
+        const char *method = mcs_node_str(get(w, "method"));
+        if (method && strcmp(method, "penalty") == 0) d.method = FE_WALL_PENALTY;
+        d.penalty_scale = mcs_node_num_or(w, "penalty_scale", 0);
+        const mcs_node *parts = get(w, "parts");
+        if (mcs_node_len(parts) > 8)
+            return mcs_node_error(parts, err, MCS_ERR_RANGE, "at most 8 parts, got %d",
+                                  mcs_node_len(parts));
+        d.nparts = mcs_node_len(parts);
+        for (int k = 0; k < d.nparts; k++)
+            snprintf(d.parts[k], sizeof d.parts[k], "%s", mcs_node_str(mcs_node_at(parts, k)));
         mcs_error kerr = {0};
         st = fe_builder_add_wall(b, &d, &kerr);
         if (st) return relocate(st, w, &kerr, err);
+    }
+    return MCS_OK;
+}
+
+static mcs_status add_loads(fe_builder *b, const mcs_node *list, mcs_error *err)
+{
+    for (int i = 0; i < mcs_node_len(list); i++) {
+        const mcs_node *l = mcs_node_at(list, i);
+        fe_load_desc d = {.where = where_of(mcs_node_str(get(l, "where")))};
+        snprintf(d.part, sizeof d.part, "%s", mcs_node_str(get(l, "part")));
+        mcs_status st = mcs_node_vec3(get(l, "force"), d.force, err);
+        if (st) return st;
+        if (given(l, "curve")) {
+            const mcs_node *c = get(l, "curve");
+            int n = mcs_node_curve_len(c);
+            double x[FE_CURVE_MAX], y[FE_CURVE_MAX];
+            if (n > FE_CURVE_MAX)
+                return mcs_node_error(c, err, MCS_ERR_RANGE, "at most %d points, got %d",
+                                      FE_CURVE_MAX, n);
+            st = mcs_node_curve(c, x, y, FE_CURVE_MAX, err);
+            if (st) return st;
+            for (int k = 0; k < n; k++) d.curve[k][0] = x[k], d.curve[k][1] = y[k];
+            d.ncurve = n;
+        }
+        mcs_error kerr = {0};
+        st = fe_builder_add_load(b, &d, &kerr);
+        if (st) return relocate(st, l, &kerr, err);
     }
     return MCS_OK;
 }
@@ -277,6 +328,7 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     if (st) return relocate(st, fe, &kerr, err);
     st = add_parts(b, get(fe, "parts"), err);
     if (!st) st = add_boundaries(b, get(fe, "boundary"), err);
+    if (!st) st = add_loads(b, get(fe, "loads"), err);
     if (!st) st = add_walls(b, get(fe, "rigid_walls"), err);
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);

@@ -193,6 +193,60 @@ static void test_square_tube_crush(void)
     mcs_results_close(&h);
 }
 
+/* A steel rod (line mesh of trusses, L 1 m, A 1e-4 m^2) clamped at x = 0, a step load
+ * F = 1 kN suddenly applied at its free end (fe.loads), beside a clamped circular tube that is
+ * not loaded. 1-D waves (Graff 1975, sec. 2.1): the end displacement grows linearly and peaks
+ * at t = 2L/c at twice the static value, u_max = 2 F L / (E A). */
+static void test_line_mesh_step_load(void)
+{
+    char scn[128], out[128];
+    snprintf(scn, sizeof scn, "%s/rod.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/rod.h5", tmpdir);
+    write_text(scn, "mcrash: 1\nname: rod\nsimulation: {end_time: 0.6 ms, output_rate: 200 kHz}\n"
+                    "fe:\n  parts:\n    - name: rod\n"
+                    "      mesh: {generate: line, origin: [0, 0, 0], end: [1, 0, 0], divisions: 50}\n"
+                    "      section: {type: truss, area: 1e-4}\n"
+                    "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, poisson: 0.3}\n"
+                    "    - name: tube\n"
+                    "      mesh: {generate: circular_tube, diameter: 40 mm, length: 50 mm,"
+                    " element_size: 5 mm, axis: x}\n"
+                    "      section: {type: shell, thickness: 1 mm}\n"
+                    "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, poisson: 0.3}\n"
+                    "  boundary: [{part: rod, where: x_min, fix: all}, {part: tube, where: x_min}]\n"
+                    "  loads: [{part: rod, where: x_max, force: [1000 N, 0, 0]}]\n");
+    s3_summary sum;
+    mcs_error err = {0};
+    CHECK(run_file(scn, out, &sum, &err) == MCS_OK);
+    if (err.status) printf("  %s\n", err.msg);
+    mcs_results *h = NULL;
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    mcs_array nodes = {0}, disp = {0}, el = {0}, tn = {0};
+    mcs_error e2 = {0};
+    CHECK(rd(h, "/stage3/mesh/rod/nodes", &nodes) && rd(h, "/stage3/fields/displacement", &disp) &&
+          mcs_results_read_int(h, "/stage3/mesh/rod/elements", &el, &e2) == MCS_OK &&
+          rd(h, "/stage3/mesh/tube/nodes", &tn));
+    CHECK(el.dims[0] == 50 && el.dims[1] == 2 && nodes.dims[0] == 51);
+    CHECK(tn.dims[0] == 25 * 11); /* 25 around (pi 40 / 5), 10 along + 1 */
+    if (disp.rank == 3 && nodes.dims[0] == 51) {
+        int tip = 0;
+        for (int n = 0; n < 51; n++)
+            if (nodes.v[3 * n] > nodes.v[3 * tip]) tip = n;
+        double umax = 0, utube = 0;
+        for (size_t k = 0; k < disp.dims[0]; k++) {
+            umax = fmax(umax, disp.v[(k * disp.dims[1] + (size_t)tip) * 3]);
+            for (size_t n = 51; n < disp.dims[1]; n++)
+                utube = fmax(utube, fabs(disp.v[(k * disp.dims[1] + n) * 3]));
+        }
+        const double ref = 2 * 1000.0 * 1.0 / (210e9 * 1e-4);
+        printf("  rod: u_max %.5g m (2FL/EA %.5g, %+.2f %%)\n", umax, ref, 100 * (umax / ref - 1));
+        CHECK_REL(umax, ref, 0.03);
+        CHECK(utube == 0); /* nothing acts on the tube */
+    }
+    mcs_array_free(&nodes), mcs_array_free(&disp), mcs_array_free(&el), mcs_array_free(&tn);
+    mcs_results_close(&h);
+}
+
 static void test_cli_json_and_run(void)
 {
     char args[512], out[128];
@@ -275,6 +329,7 @@ int main(void)
     if (!mkdtemp(tmpdir)) return 1;
     RUN(test_bar_into_wall);
     RUN(test_square_tube_crush);
+    RUN(test_line_mesh_step_load);
     RUN(test_cli_json_and_run);
     RUN(test_numerical_failure_leaves_no_file);
     RUN(test_unsupported_is_located);

@@ -8,23 +8,9 @@
 #include "analysis/an_iso18571.h"
 #include "analysis/an_signal.h"
 #include "cli/cli.h"
+#include "cli/cli_common.h"
 
 typedef enum { METHOD_ISO, METHOD_CORA } compare_method;
-
-/* print s as a JSON string */
-static void json_str(const char *s)
-{
-    putchar('"');
-    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
-        if (*p == '"' || *p == '\\')
-            printf("\\%c", *p);
-        else if (*p < 0x20)
-            printf("\\u%04x", *p);
-        else
-            putchar(*p);
-    }
-    putchar('"');
-}
 
 static void print_channel(const char *label, const char *ref, const an_signal *s)
 {
@@ -35,9 +21,9 @@ static void print_channel(const char *label, const char *ref, const an_signal *s
 static void iso_json(const char *a, const char *b, const an_iso_result *r)
 {
     printf("{\"method\": \"iso18571\", \"reference\": ");
-    json_str(a);
+    cli_json_string(a);
     printf(", \"comparison\": ");
-    json_str(b);
+    cli_json_string(b);
     printf(", \"rating\": %.10g, \"grade\": \"%s\", \"corridor\": %.10g, \"phase\": %.10g, "
            "\"magnitude\": %.10g, \"slope\": %.10g, \"shift_s\": %.10g, \"magnitude_error\": "
            "%.10g, \"slope_error\": %.10g, \"samples\": %d, \"sample_rate_hz\": %.10g, "
@@ -65,9 +51,9 @@ static void iso_table(const an_iso_result *r, const an_iso_opts *o)
 static void cora_json(const char *a, const char *b, const an_cora_result *r)
 {
     printf("{\"method\": \"cora\", \"reference\": ");
-    json_str(a);
+    cli_json_string(a);
     printf(", \"comparison\": ");
-    json_str(b);
+    cli_json_string(b);
     printf(", \"rating\": %.10g, \"corridor\": %.10g, \"cross_correlation\": %.10g, "
            "\"phase\": %.10g, \"size\": %.10g, \"progression\": %.10g, \"shift_s\": %.10g, "
            "\"samples\": %d, \"sample_rate_hz\": %.10g, \"t_start\": %.10g, \"t_end\": %.10g}\n",

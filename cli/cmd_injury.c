@@ -2,21 +2,12 @@
  * file against their limits (the channel names are listed in analysis/an_injury.h) */
 #include "analysis/an_injury.h"
 #include "cli/cli.h"
+#include "cli/cli_common.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static void json_str(const char *s)
-{
-    putchar('"');
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\') putchar('\\');
-        if ((unsigned char)*s >= 0x20) putchar(*s);
-    }
-    putchar('"');
-}
 
 static void json_num(double v)
 {
@@ -27,17 +18,17 @@ static void json_num(double v)
 static void print_json(const char *file, int stage, const an_injury_row *r, int n)
 {
     printf("{\"file\": ");
-    json_str(file);
+    cli_json_string(file);
     printf(", \"stage\": %d, \"criteria\": [", stage);
     for (int i = 0; i < n; i++) {
         printf("%s{\"criterion\": ", i ? ", " : "");
-        json_str(r[i].key);
+        cli_json_string(r[i].key);
         printf(", \"label\": ");
-        json_str(r[i].label);
+        cli_json_string(r[i].label);
         printf(", \"value\": ");
         json_num(r[i].value);
         printf(", \"unit\": ");
-        json_str(r[i].unit);
+        cli_json_string(r[i].unit);
         printf(", \"limit\": ");
         json_num(r[i].limit);
         printf(", \"fraction\": ");
@@ -47,7 +38,7 @@ static void print_json(const char *file, int stage, const an_injury_row *r, int 
         printf(", \"t2\": ");
         json_num(r[i].t2);
         printf(", \"channel\": ");
-        json_str(r[i].channel);
+        cli_json_string(r[i].channel);
         printf(", \"cfc\": %d}", r[i].cfc);
     }
     printf("]}\n");

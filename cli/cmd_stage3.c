@@ -4,27 +4,13 @@
  * {"output": ..., "stage3": {"steps", "elements", "wall_time_s", "energy_drift", ...}}.
  * Exit status: 0 done, 1 numerical failure (no results file left), 2 bad input. */
 #include "cli/cli.h"
-#include "cli/cli_stage1.h"
+#include "cli/cli_common.h"
 #include "stage3_fe/s3_run.h"
 
 #include <stdio.h>
 #include <string.h>
 
-static void json_string(const char *s)
-{
-    putchar('"');
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\')
-            printf("\\%c", *s);
-        else if ((unsigned char)*s < 0x20)
-            printf("\\u%04x", (unsigned char)*s);
-        else
-            putchar(*s);
-    }
-    putchar('"');
-}
-
-static int run_scenario(const mcs_scenario *scn, const char *out, int quiet, int json)
+int cli_stage3_scenario(const mcs_scenario *scn, const char *out, int quiet, int json)
 {
     mcs_error err = {0};
     s3_problem p = {0};
@@ -41,7 +27,7 @@ static int run_scenario(const mcs_scenario *scn, const char *out, int quiet, int
     }
     if (json) {
         printf("{\"output\": ");
-        json_string(out);
+        cli_json_string(out);
         printf(", \"stage3\": {\"steps\": %ld, \"elements\": %d, \"nodes\": %d, "
                "\"wall_time_s\": %.6g, \"energy_drift\": %.6g, \"end_time_s\": %.9g, "
                "\"dt_initial_s\": %.6g, \"timers_s\": {",
@@ -59,35 +45,12 @@ static int run_scenario(const mcs_scenario *scn, const char *out, int quiet, int
 
 int cli_stage3(int argc, char **argv)
 {
-    if (cli_wants_help(argv[0], argc, argv)) return 0;
-    const char *path = NULL, *out = NULL;
-    int quiet = 0, json = 0;
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--json") == 0)
-            json = 1;
-        else if (strcmp(argv[i], "--quiet") == 0)
-            quiet = 1;
-        else if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
-            out = argv[++i];
-        else if (argv[i][0] == '-' && argv[i][1]) {
-            fprintf(stderr, "mcrash %s: unknown option '%s'\n", argv[0], argv[i]);
-            return cli_usage(argv[0]);
-        } else if (path)
-            return cli_usage(argv[0]);
-        else
-            path = argv[i];
-    }
-    if (!path) return cli_usage(argv[0]);
-    mcs_scenario *scn = NULL;
-    mcs_error err = {0};
-    mcs_status st = mcs_scenario_load(path, &scn, &err);
-    if (st) {
-        fprintf(stderr, "%s\n", err.msg);
-        return mcs_status_exit_code(st);
-    }
-    char def[4096];
-    if (!out) cli_default_output(path, def, sizeof def), out = def;
-    int rc = run_scenario(scn, out, quiet, json);
+    cli_run_args a;
+    int rc = cli_parse_run_args(argc, argv, 0, &a);
+    if (rc >= 0) return rc;
+    mcs_scenario *scn = cli_load_scenario(a.path, &rc);
+    if (!scn) return rc;
+    rc = cli_stage3_scenario(scn, a.out, a.quiet, a.json);
     mcs_scenario_destroy(&scn);
     return rc;
 }

@@ -1,0 +1,38 @@
+/* cli_common.h: what several subcommands share — the run arguments, loading a scenario with
+ * its error printed, the default results file, and JSON strings */
+#ifndef MCS_CLI_COMMON_H
+#define MCS_CLI_COMMON_H
+
+#include <stddef.h>
+
+#include "core/mcs_scenario.h"
+
+/* "SCENARIO [-o OUT.h5] [--quiet] [--json] [--stage 1|2|3|all]" */
+typedef struct {
+    const char *path;   /* the scenario file */
+    const char *out;    /* -o, or the default results file (def_out) */
+    const char *stage;  /* --stage, "all" when not given */
+    int quiet, json;    /* --quiet, --json */
+    char def_out[4096]; /* "<scenario basename>.h5" when -o is absent */
+} cli_run_args;
+
+/* parse argv (argv[0] is the subcommand); with_stage accepts --stage. Returns -1 when the
+ * arguments are good, otherwise the exit status to return (0 after --help, 2 on bad usage) */
+int cli_parse_run_args(int argc, char **argv, int with_stage, cli_run_args *a);
+
+/* load a scenario; on error print its FILE:LINE:COL message, set *rc and return NULL */
+mcs_scenario *cli_load_scenario(const char *path, int *rc);
+
+/* the default results file of a scenario: "<basename without .yaml/.yml>.h5" in the current
+ * directory */
+void cli_default_output(const char *scenario, char *out, size_t n);
+
+/* print s on stdout as a JSON string (quotes, backslashes and control characters escaped) */
+void cli_json_string(const char *s);
+
+/* the stage runs of a loaded scenario into out_path: print the error (stderr) or, with json,
+ * the summary object on stdout; return the exit status (0, 1 numerical, 2 bad input) */
+int cli_stage1_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
+int cli_stage3_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
+
+#endif

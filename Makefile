@@ -3,6 +3,7 @@
 # Everything depends on Debian packages only; `make deps` installs them (as root) when missing.
 
 CC       ?= cc
+JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 BUILD    ?= build
 BIN      ?= bin
 PKGS      = ode hdf5-serial yaml-0.1
@@ -66,7 +67,7 @@ $(BUILD)/bench/%: $(BUILD)/bench/%.o $(LIB)
 
 # every test binary, then one closing line `N passed, N failed`
 test: deps
-	@$(MAKE) --no-print-directory $(MCRASH) $(TEST_BIN)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(TEST_BIN)
 	@MCRASH_BIN=$(MCRASH) MCRASH_BUILD=$(BUILD) sh tests/run_tests.sh $(TEST_BIN)
 
 # the same tests under AddressSanitizer and UBSan, in their own build tree
@@ -76,15 +77,15 @@ check-asan: deps
 
 # longer verification runs (not part of `make test`)
 verify: deps
-	@$(MAKE) --no-print-directory $(MCRASH) $(TEST_BIN)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(TEST_BIN)
 	@MCRASH_VERIFY=1 MCRASH_BIN=$(MCRASH) MCRASH_BUILD=$(BUILD) sh tests/run_tests.sh $(TEST_BIN)
 
 bench: deps
-	@$(MAKE) --no-print-directory $(MCRASH) $(BENCH_BIN)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(BENCH_BIN)
 	@for b in $(BENCH_BIN); do $$b || exit 1; done
 
 demo: deps
-	@$(MAKE) --no-print-directory $(MCRASH)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH)
 	@sh scripts/demo.sh $(MCRASH)
 
 # open an exported sample results file in ParaView's XDMF readers (optional: needs pvpython,

@@ -308,20 +308,30 @@ static const mcs_skey sensor_keys[] = {
 static const mcs_smap sensor_map = {
     .what = "sensor", .keys = sensor_keys, .check = mcs_rule_sensor};
 
-/* open: other fields are kept as written (ISO 13232 contact codes etc.) */
+/* the impact configuration (stage1_mb/mb_impact.c, docs/scenario_keys.md "impact"): the
+ * motorcycle group is rotated to its heading, translated so that its contact point meets the
+ * opponent's (in plan view, less the gap), and both groups get their speeds (wheels rolling) */
 static const mcs_skey impact_keys[] = {
     S("code", 0, "ISO 13232 impact configuration code, e.g. 413-0/13.4"),
-    S("motorcycle", 0, "motorcycle model"),
-    S("opponent", 0, "opponent model"),
+    S("motorcycle", 0, "motorcycle model (a label)"),
+    S("opponent", 0, "opponent model (a label)"),
+    /* from the opponent's heading to the motorcycle's, counter-clockwise seen from above */
     Q("heading_angle", ANG, 0, 0, 0, "relative heading angle [rad]"),
-    Q("motorcycle_speed", VEL, GE, 0, 0, "motorcycle speed [m/s]"),
-    Q("opponent_speed", VEL, GE, 0, 0, "opponent speed [m/s]"),
-    V("motorcycle_contact", LEN, 3, 3, 0, 0, "contact point on the motorcycle [m]"),
-    V("opponent_contact", LEN, 3, 3, 0, 0, "contact point on the opponent [m]"),
+    Q("motorcycle_speed", VEL, GE, 0, 0, "motorcycle speed along its heading [m/s]"),
+    Q("opponent_speed", VEL, GE, 0, 0, "opponent speed along its heading [m/s]"),
+    V("motorcycle_contact", LEN, 3, 3, 0, 0, "contact point, motorcycle model frame [m]"),
+    V("opponent_contact", LEN, 3, 3, 0, 0, "contact point on the opponent, world [m]"),
     Q("roll_angle", ANG, 0, 0, 0, "motorcycle roll (lean) angle [rad]"),
+    V("opponent_heading", NONE, 3, 3, NZ, 0, "opponent's forward direction, world (default x)"),
+    Q("initial_gap", LEN, GE, 0, 0, "distance to contact along the motorcycle heading [m]"),
+    /* body names, or patterns with * and ? (default ["moto_*", "rider_*"]) */
+    A("motorcycle_bodies", 0, "bodies of the motorcycle group (names or patterns)"),
+    /* default: every body outside the motorcycle group */
+    A("opponent_bodies", 0, "bodies of the opponent group (names or patterns)"),
     END,
 };
-static const mcs_smap impact_map = {.what = "impact block", .keys = impact_keys, .open = 1};
+static const mcs_smap impact_map = {
+    .what = "impact block", .keys = impact_keys, .check = mcs_rule_impact};
 
 /* ---- fe: meshes ---- */
 

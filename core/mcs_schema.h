@@ -92,6 +92,7 @@ mcs_status mcs_rule_joint(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_sensor(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_plate(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_plastic(scn_walk *w, mcs_node *map);
+mcs_status mcs_rule_impact(scn_walk *w, mcs_node *map); /* core/mcs_scn_rule_impact.c */
 
 /* the whole scenario */
 extern const mcs_smap mcs_schema_root;

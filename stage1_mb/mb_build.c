@@ -3,6 +3,7 @@
  * scenario is silent: time_step 10 us, output_rate 10 kHz (at most one sample per step),
  * gravity 9.81 m/s^2 along -z. */
 #include "stage1_mb/mb_build_internal.h"
+#include "stage1_mb/mb_impact.h"
 #include "stage1_mb/mb_vec.h"
 
 #include <math.h>
@@ -211,6 +212,7 @@ mcs_status mb_model_build(const mcs_scenario *scn, const mb_opts *opts, mb_model
     if (!st) st = mb_build_joints(root, m, err);
     if (!st) st = mb_build_attachments(root, m, err);
     if (!st) st = build_sensors(root, m, err);
+    if (!st) st = mb_impact_apply(root, m, err); /* last: places the built motorcycle group */
     if (st) {
         mb_model_destroy(&m);
         return st;

@@ -1,0 +1,270 @@
+/* test_impact.c: the impact: block (stage1_mb/mb_impact.h) — placement of the motorcycle group
+ * (contact points coincide, heading and roll right, the group moved rigidly with its joints),
+ * speeds (total momentum m v along the heading, wheel spin v / R with the tyre's lowest point at
+ * rest), a moving opponent, the errors, and the shipped impact scenarios (check, run). */
+#include "cli_util.h"
+#include "harness.h"
+#include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_vec.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* the motorcycle model with a small opponent body (an ellipsoid "box", 500 kg) */
+#define MOTO_AND_BOX                                                                               \
+    "mcrash: 1\n"                                                                                  \
+    "include: models/motorcycles/sport_208kg.yaml\n"                                               \
+    "simulation: {end_time: 2 ms, time_step: 10 us}\n"                                             \
+    "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n"                   \
+    "characteristics: {box_c: {loading: [[0, 0], [0.1, 1e4]]}}\n"                                   \
+    "bodies:\n"                                                                                    \
+    "  - {name: box, mass: 500 kg, inertia: [50, 50, 50], position: [5, 3, 0.5],\n"                \
+    "     velocity: [0, 0, 0], surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"                  \
+    "     semi_axes: [0.5, 0.5, 0.45], characteristic: box_c}]}\n"
+
+static mb_model *build_text(const char *txt, mcs_error *err)
+{
+    mcs_scenario *scn = NULL;
+    mb_model *m = NULL;
+    if (mcs_scenario_load_text("scenarios/impact_test.yaml", txt, strlen(txt), &scn, err) ==
+        MCS_OK)
+        mb_model_build(scn, NULL, &m, err);
+    mcs_scenario_destroy(&scn);
+    return m;
+}
+
+static mb_model *build_ok(const char *txt)
+{
+    mcs_error err = {0};
+    mb_model *m = build_text(txt, &err);
+    if (!m) fprintf(stderr, "build: %s\n", err.msg);
+    return m;
+}
+
+/* the rigid motion of body b from model a to model c: x_c = R (x_a - p_a) + p_c with
+ * R = R_c R_a^T */
+static void motion_of(const mb_model *a, const mb_model *c, int b, double R[9], double pa[3],
+                      double pc[3])
+{
+    double Ra[9], Rc[9];
+    mb_quat_to_rot(a->body[b].quat, Ra);
+    mb_quat_to_rot(c->body[b].quat, Rc);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            R[3 * i + j] = Rc[3 * i] * Ra[3 * j] + Rc[3 * i + 1] * Ra[3 * j + 1] +
+                           Rc[3 * i + 2] * Ra[3 * j + 2];
+    mb_copy(a->body[b].pos, pa);
+    mb_copy(c->body[b].pos, pc);
+}
+
+static void apply(const double R[9], const double pa[3], const double pc[3], const double x[3],
+                  double out[3])
+{
+    double d[3];
+    mb_sub(x, pa, d);
+    mb_mat_vec(R, d, out);
+    mb_add(out, pc, out);
+}
+
+/* Placement: opponent heading (0.6, 0.8) (psi_op = atan2(0.8, 0.6)), heading_angle 90 deg, so
+ * the motorcycle's heading is h = (cos(psi_op + 90), sin(psi_op + 90), 0) = (-0.8, 0.6, 0).
+ * Its contact point (the front tyre's foremost point, 1.72 0 0.30 in the model) must land on
+ * opponent_contact - gap h = (4.5, 3, 0.30) - 0.01 h to 1e-9 m; the frame's x axis is h, its z
+ * axis stays vertical; every motorcycle body moved by the same rigid motion, joint anchors
+ * and axes with it; the opponent did not move. */
+static void test_placement(void)
+{
+    char txt[4096];
+    snprintf(txt, sizeof txt,
+             "%simpact: {opponent_heading: [0.6, 0.8, 0], heading_angle: 90 deg,\n"
+             "  motorcycle_contact: [1.72, 0, 0.30], opponent_contact: [4.5, 3, 0.30],\n"
+             "  initial_gap: 10 mm}\n",
+             MOTO_AND_BOX);
+    mb_model *m0 = build_ok(MOTO_AND_BOX), *m = build_ok(txt);
+    CHECK(m0 && m);
+    if (!m0 || !m) goto out;
+    int fr = mb_model_body(m, "moto_frame"), box = mb_model_body(m, "box");
+    double R[9], pa[3], pc[3], x[3];
+    motion_of(m0, m, fr, R, pa, pc);
+    const double h[3] = {-0.8, 0.6, 0}, pm[3] = {1.72, 0, 0.30};
+    apply(R, pa, pc, pm, x);
+    CHECK_NEAR(x[0], 4.5 - 0.01 * h[0], 1e-9);
+    CHECK_NEAR(x[1], 3.0 - 0.01 * h[1], 1e-9);
+    CHECK_NEAR(x[2], 0.30, 1e-9);
+    for (int i = 0; i < 3; i++) {
+        CHECK_NEAR(R[3 * i], h[i], 1e-12);           /* model x -> heading */
+        CHECK_NEAR(R[3 * i + 2], i == 2, 1e-12);     /* z stays up */
+    }
+    /* the other bodies: the same motion */
+    for (int b = 0; b < m->nbody; b++) {
+        if (b == box) continue;
+        double y[3], Rb[9], qa[3], qc[3];
+        apply(R, pa, pc, m0->body[b].pos, y);
+        for (int i = 0; i < 3; i++) CHECK_NEAR(m->body[b].pos[i], y[i], 1e-12);
+        motion_of(m0, m, b, Rb, qa, qc);
+        for (int k = 0; k < 9; k++) CHECK_NEAR(Rb[k], R[k], 1e-12);
+    }
+    for (int j = 0; j < m->njoint; j++) {
+        double y[3], ax[3];
+        apply(R, pa, pc, m0->joint[j].anchor, y);
+        mb_mat_vec(R, m0->joint[j].axis, ax);
+        for (int i = 0; i < 3; i++) {
+            CHECK_NEAR(m->joint[j].anchor[i], y[i], 1e-12);
+            CHECK_NEAR(m->joint[j].axis[i], ax[i], 1e-12);
+        }
+    }
+    for (int i = 0; i < 3; i++) CHECK_NEAR(m->body[box].pos[i], m0->body[box].pos[i], 0);
+    printf("  placement: contact point (%.12f, %.12f, %.12f), heading (%.12f, %.12f)\n", x[0],
+           x[1], x[2], R[0], R[3]);
+out:
+    mb_model_destroy(&m0);
+    mb_model_destroy(&m);
+}
+
+/* Roll: roll_angle 10 deg leans the motorcycle to the right (ISO 8855) about its x axis at the
+ * ground: the frame's z axis becomes (0, -sin 10, cos 10) for heading 0, and the contact point
+ * still coincides in plan view; its height is the model point rolled, 0.30 cos 10. */
+static void test_roll(void)
+{
+    char txt[4096];
+    snprintf(txt, sizeof txt,
+             "%simpact: {roll_angle: 10 deg, motorcycle_contact: [1.72, 0, 0.30],\n"
+             "  opponent_contact: [4.5, 3, 0.2954423259]}\n",
+             MOTO_AND_BOX);
+    mb_model *m0 = build_ok(MOTO_AND_BOX), *m = build_ok(txt);
+    CHECK(m0 && m);
+    if (!m0 || !m) goto out;
+    double R[9], pa[3], pc[3], x[3];
+    const double pm[3] = {1.72, 0, 0.30}, a = 10 * M_PI / 180;
+    motion_of(m0, m, mb_model_body(m, "moto_frame"), R, pa, pc);
+    apply(R, pa, pc, pm, x);
+    CHECK_NEAR(x[0], 4.5, 1e-9);
+    CHECK_NEAR(x[1], 3.0, 1e-9);
+    CHECK_NEAR(x[2], 0.30 * cos(a), 1e-9);
+    CHECK_NEAR(R[2], 0, 1e-12);
+    CHECK_NEAR(R[5], -sin(a), 1e-12);
+    CHECK_NEAR(R[8], cos(a), 1e-12);
+out:
+    mb_model_destroy(&m0);
+    mb_model_destroy(&m);
+}
+
+/* Speeds: motorcycle_speed v = 13.4 m/s at heading h (opponent heading +x turned by 30 deg):
+ * the total linear momentum of the motorcycle group is M v h with M = 208 kg (every body moves
+ * at v h; the wheels spin about their centres, which are their CGs), read back from the ODE
+ * state; each wheel spins at w = v / R about its axle, R = 0.300 m (front) and 0.315 m (rear),
+ * with the sign that puts its lowest point at rest: v h + w x (-R z) = 0. The opponent moves at
+ * 2 m/s along +x. */
+static void test_speeds(void)
+{
+    char txt[4096];
+    snprintf(txt, sizeof txt,
+             "%simpact: {heading_angle: 30 deg, motorcycle_speed: 13.4 m/s,\n"
+             "  opponent_speed: 2 m/s}\n",
+             MOTO_AND_BOX);
+    mb_model *m = build_ok(txt);
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    if (!s) {
+        mb_model_destroy(&m);
+        return;
+    }
+    const double v = 13.4, c = cos(M_PI / 6), sn = sin(M_PI / 6), h[3] = {c, sn, 0};
+    double p[3] = {0, 0, 0}, mass = 0;
+    int box = mb_model_body(m, "box");
+    for (int b = 0; b < m->nbody; b++) {
+        if (b == box) continue;
+        mass += m->body[b].mass;
+        mb_axpy(p, m->body[b].mass, s->kin[b].vel, p);
+    }
+    CHECK_NEAR(mass, 208, 1e-12);
+    for (int i = 0; i < 3; i++) CHECK_NEAR(p[i], mass * v * h[i], 1e-9);
+    const char *wheel[2] = {"moto_front_wheel", "moto_rear_wheel"};
+    const double radius[2] = {0.300, 0.315};
+    for (int k = 0; k < 2; k++) {
+        int b = mb_model_body(m, wheel[k]);
+        const double *w = s->kin[b].angvel;
+        /* axle along the rotated model y: (-sin 30, cos 30, 0); w = (v / R) z x h */
+        CHECK_NEAR(w[0], -v / radius[k] * sn, 1e-9);
+        CHECK_NEAR(w[1], v / radius[k] * c, 1e-9);
+        CHECK_NEAR(w[2], 0, 1e-12);
+        double r[3] = {0, 0, -radius[k]}, wr[3], vp[3];
+        mb_cross(w, r, wr);
+        mb_add(s->kin[b].vel, wr, vp);
+        CHECK_NEAR(mb_norm(vp), 0, 1e-9);
+    }
+    CHECK_NEAR(s->kin[box].vel[0], 2, 1e-12);
+    CHECK_NEAR(s->kin[box].vel[1], 0, 1e-12);
+    /* kinetic energy: (1/2) M v^2 + (1/2) I_spin (v/R)^2 per wheel (0.6 and 0.9 kg m^2) +
+     * the box's (1/2) 500 2^2 */
+    double ke = 0.5 * 208 * v * v + 0.5 * 0.6 * pow(v / 0.3, 2) + 0.5 * 0.9 * pow(v / 0.315, 2) +
+                0.5 * 500 * 4;
+    CHECK_REL(s->e.kinetic, ke, 1e-12);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* Errors, located at the key: unknown keys (the block is closed), one contact point without the
+ * other, a pattern that matches no body, overlapping groups, a vertical heading, a joint tying
+ * the motorcycle group to the opponent, a moving opponent fixed to the ground. */
+static void expect_error(const char *impact_and_more, mcs_status st, const char *what)
+{
+    char txt[4096];
+    snprintf(txt, sizeof txt, "%s%s", MOTO_AND_BOX, impact_and_more);
+    mcs_error err = {0};
+    mb_model *m = build_text(txt, &err);
+    CHECK(m == NULL);
+    CHECK(err.status == st);
+    CHECK_STR_CONTAINS(err.msg, what);
+    if (err.status != st || !strstr(err.msg, what)) fprintf(stderr, "  got: %s\n", err.msg);
+    mb_model_destroy(&m);
+}
+
+static void test_errors(void)
+{
+    expect_error("impact: {motorcycle_sped: 13.4 m/s}\n", MCS_ERR_KEY, "motorcycle_speed");
+    expect_error("impact: {motorcycle_contact: [1.72, 0, 0.3]}\n", MCS_ERR_KEY,
+                 "impact.motorcycle_contact: motorcycle_contact needs opponent_contact");
+    expect_error("impact: {motorcycle_bodies: [moto_*, bike_*]}\n", MCS_ERR_KEY,
+                 "'bike_*' matches no body");
+    expect_error("impact: {opponent_bodies: [box, moto_frame]}\n", MCS_ERR_RANGE,
+                 "'moto_frame' is in both");
+    expect_error("impact: {opponent_heading: [0, 0, 1]}\n", MCS_ERR_RANGE, "vertical");
+    expect_error("impact: {motorcycle_speed: 1 m/s, motorcycle_bodies: []}\n", MCS_ERR_RANGE,
+                 "empty");
+    expect_error("impact: {motorcycle_speed: 1 m/s}\n"
+                 "joints: [{name: tie, type: spherical, parent: moto_frame, child: box,\n"
+                 "          anchor: [5, 3, 0.5]}]\n",
+                 MCS_ERR_RANGE, "joints[6]: joint tie ties the motorcycle group to 'box'");
+    expect_error("impact: {opponent_speed: 1 m/s}\n"
+                 "joints: [{name: pin, type: fixed, parent: ground, child: box,\n"
+                 "          anchor: [5, 3, 0.5]}]\n",
+                 MCS_ERR_RANGE, "fixed to the ground");
+    expect_error("impact: {heading_angle: 10 deg, motorcycle_bodies: box, opponent_bodies: box}\n",
+                 MCS_ERR_RANGE, "in both");
+}
+
+/* the shipped impact scenarios pass mcrash check */
+#define SHIPPED                                                                                    \
+    "scenarios/thesis_frontal_barrier_13.4.yaml scenarios/thesis_oblique_barrier_30deg_13.4.yaml"
+
+static void test_shipped_check(void)
+{
+    cli_result *r = cli_run("check " SHIPPED);
+    CHECK(r->status == 0);
+    if (r->status) fprintf(stderr, "%s", r->err);
+}
+
+int main(void)
+{
+    RUN(test_placement);
+    RUN(test_roll);
+    RUN(test_speeds);
+    RUN(test_errors);
+    RUN(test_shipped_check);
+    TEST_END();
+}

@@ -383,6 +383,7 @@ mcs_status mcs_hyst2_model_check(const mcs_hyst2_model *m, const char *name, mcs
 
 void mcs_hyst2_reset(const mcs_hyst2_model *m, mcs_hyst2_state *s)
 {
+    *s = (mcs_hyst2_state){0};
     mcs_hyst_reset(&m->pos, &s->pos);
     mcs_hyst_reset(&m->neg, &s->neg);
 }
@@ -390,24 +391,74 @@ void mcs_hyst2_reset(const mcs_hyst2_model *m, mcs_hyst2_state *s)
 /* each branch carries no force outside its side, so the two simply add */
 double mcs_hyst2_force(const mcs_hyst2_model *m, const mcs_hyst2_state *s, double x)
 {
-    return mcs_hyst_force(&m->pos, &s->pos, x) - mcs_hyst_force(&m->neg, &s->neg, -x);
+    return mcs_hyst_force(&m->pos, &s->pos, x - s->o_pos) -
+           mcs_hyst_force(&m->neg, &s->neg, s->o_neg - x);
 }
 
+/* the inactive branch contributes zero (its deflection is on its open side or in its set) */
 double mcs_hyst2_stiffness(const mcs_hyst2_model *m, const mcs_hyst2_state *s, double x)
 {
-    return x >= 0 ? mcs_hyst_stiffness(&m->pos, &s->pos, x)
-                  : mcs_hyst_stiffness(&m->neg, &s->neg, -x);
+    return mcs_hyst_stiffness(&m->pos, &s->pos, x - s->o_pos) +
+           mcs_hyst_stiffness(&m->neg, &s->neg, s->o_neg - x);
+}
+
+/* move a branch's origin to o: bank its work (all dissipated: it carries no load on its open
+ * side, where it is when the other side sets), clear its history, re-enter at deflection u */
+static void branch_move(const mcs_hyst_model *m, mcs_hyst_state *b, double *banked, double u)
+{
+    *banked += b->work;
+    mcs_hyst_reset(m, b);
+    mcs_hyst_update(m, b, u);
+}
+
+/* free play of a loading curve: the end of its zero-force stretch from x = 0 (0 if none) */
+static double free_play(const mcs_curve *c)
+{
+    double xp = 0, yp = mcs_curve_eval(c, 0.0);
+    if (yp > 0) return 0.0;
+    for (int i = 0; i < c->n; i++) {
+        if (c->x[i] <= 0) continue;
+        if (c->y[i] > 0) return xp + (c->x[i] - xp) * (-yp) / (c->y[i] - yp);
+        xp = c->x[i], yp = c->y[i];
+    }
+    return xp;
+}
+
+/* plastic shift of a branch: its permanent set beyond the curve's own free play */
+static double plastic_shift(const mcs_hyst_model *m, const mcs_hyst_state *b)
+{
+    if (!(b->x_max > m->elastic_limit)) return 0.0;
+    double d = b->x_set - free_play(m->loading);
+    return d > 0 ? d : 0.0;
 }
 
 double mcs_hyst2_update(const mcs_hyst2_model *m, mcs_hyst2_state *s, double x)
 {
-    return mcs_hyst_update(&m->pos, &s->pos, x) - mcs_hyst_update(&m->neg, &s->neg, -x);
+    double dp = s->pos.x_set, dn = s->neg.x_set;
+    double f = mcs_hyst_update(&m->pos, &s->pos, x - s->o_pos) -
+               mcs_hyst_update(&m->neg, &s->neg, s->o_neg - x);
+    if (!m->follow_set || isnan(x)) return f;
+    /* a side that set further this step moves the other side's origin by its plastic shift */
+    if (s->pos.x_set != dp) {
+        double o = s->o_pos + plastic_shift(&m->pos, &s->pos);
+        if (o != s->o_neg) {
+            s->o_neg = o;
+            branch_move(&m->neg, &s->neg, &s->banked, o - x);
+        }
+    } else if (s->neg.x_set != dn) {
+        double o = s->o_neg - plastic_shift(&m->neg, &s->neg);
+        if (o != s->o_pos) {
+            s->o_pos = o;
+            branch_move(&m->pos, &s->pos, &s->banked, x - o);
+        }
+    }
+    return f;
 }
 
 /* the negative branch's F_neg d(-x) is the work of -F_neg over dx: works add */
 double mcs_hyst2_work(const mcs_hyst2_state *s)
 {
-    return s->pos.work + s->neg.work;
+    return s->pos.work + s->neg.work + s->banked;
 }
 
 double mcs_hyst2_stored(const mcs_hyst2_model *m, const mcs_hyst2_state *s)
@@ -417,5 +468,6 @@ double mcs_hyst2_stored(const mcs_hyst2_model *m, const mcs_hyst2_state *s)
 
 double mcs_hyst2_dissipated(const mcs_hyst2_model *m, const mcs_hyst2_state *s)
 {
-    return mcs_hyst_dissipated(&m->pos, &s->pos) + mcs_hyst_dissipated(&m->neg, &s->neg);
+    return mcs_hyst_dissipated(&m->pos, &s->pos) + mcs_hyst_dissipated(&m->neg, &s->neg) +
+           s->banked;
 }

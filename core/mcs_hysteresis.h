@@ -93,17 +93,27 @@ static inline double mcs_hyst_damped(double f_spring, double damping, double rat
  * x > 0 (deflection x) and `neg` for x < 0 (deflection -x); F = F_pos(x) - F_neg(-x).
  * Why independent branches: each direction is its own mechanism with its own curve (fork
  * bending rearward vs. forward, flexion vs. extension stops), as joint restraints are given
- * per side; a history on one side does not move the other side's curve. Limitation: after a
- * permanent set on one side the element carries no load between 0 and that set (free play);
- * a fork pushed back through its set meets the other branch only at x = 0. */
+ * per side. With follow_set = 0 a history on one side does not move the other side's curve:
+ * after a permanent set on one side the element carries no load between 0 and that set (free
+ * play); a fork pushed back through its set meets the other branch only at x = 0.
+ * With follow_set = 1 (kinematic shift, what stage-1 joints use) each branch has an origin:
+ * the positive branch sees x - o_pos, the negative one o_neg - x. A new permanent set of one
+ * side moves the other side's origin to that set, so a bent hinge is elastic about its set in
+ * both directions (the fork stays bent; pushed forward it meets the forward characteristic
+ * from the set on). The moved branch's history is cleared (it carried no load there: it was
+ * on its open side) and its dissipated energy is kept in `banked`. */
 typedef struct {
     mcs_hyst_model pos; /* branch for positive deflection */
     mcs_hyst_model neg; /* branch for negative deflection (given for -x, positive values) */
+    int follow_set;     /* 1: each side's origin follows the other side's permanent set */
 } mcs_hyst2_model;
 
 typedef struct {
     mcs_hyst_state pos; /* state of the positive branch */
     mcs_hyst_state neg; /* state of the negative branch */
+    double o_pos;       /* origin of the positive branch (follow_set) [m | rad]             */
+    double o_neg;       /* origin of the negative branch (follow_set) [m | rad]             */
+    double banked;      /* work of cleared branch histories, all dissipated [J]             */
 } mcs_hyst2_state;
 
 mcs_status mcs_hyst2_model_check(const mcs_hyst2_model *m, const char *name, mcs_error *err);

@@ -235,6 +235,10 @@ static const mcs_smap contact_map = {
 static const mcs_skey revolute_keys[] = {
     V("axis", NONE, 3, 3, REQ | NZ, 0, "rotation axis (world frame)"),
     V("range", ANG, 2, 2, 0, 0, "stops [min, max] [rad]"),
+    /* docs/joints.md: the restraint's zero at `neutral`; `preload` added to it (held by the
+     * negative side's characteristic, e.g. a top-out stop) */
+    Q("neutral", ANG, 0, 0, 0, "angle of the restraint's zero, from the initial angle [rad]"),
+    Q("preload", MCS_DIM_MOMENT, 0, 0, 0, "restraint preload [N m]"),
     END,
 };
 static const mcs_skey universal_keys[] = {
@@ -245,6 +249,8 @@ static const mcs_skey universal_keys[] = {
 static const mcs_skey translational_keys[] = {
     V("axis", NONE, 3, 3, REQ | NZ, 0, "sliding axis"),
     V("range", LEN, 2, 2, 0, 0, "stops [min, max] [m]"),
+    Q("neutral", LEN, 0, 0, 0, "position of the restraint's zero, from the initial one [m]"),
+    Q("preload", FRC, 0, 0, 0, "restraint preload [N]"),
     END,
 };
 static const mcs_skey no_keys[] = {END};
@@ -267,8 +273,10 @@ static const mcs_skey joint_keys[] = {
     R("parent", BODY_G, REQ, "parent body (or ground)"),
     R("child", BODY, REQ, "child body"),
     V("anchor", LEN, 3, 3, REQ, 0, "joint point in the world [m]"),
-    /* the same characteristic acts in both directions (moment for rotations, force for travel) */
+    /* the same characteristic acts in both directions (moment for rotations, force for travel)
+     * unless restraint_negative gives the negative direction's own */
     R("restraint", CHR, 0, "restraint characteristic"),
+    R("restraint_negative", CHR, 0, "restraint characteristic for negative deflection"),
     END,
 };
 static const mcs_smap joint_map = {.what = "joint",

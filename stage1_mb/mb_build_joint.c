@@ -1,7 +1,10 @@
 /* mb_build_joint.c: joints with their restraints, and breakable attachments.
  * Restraints: revolute and translational joints get mb_restraint (the characteristic on both
- * directions, mirrored; its damping), spherical and universal joints mb_restraint3 (the same
- * characteristic on the three axes of the parent's frame). A joint `range` becomes a stop: a
+ * directions, mirrored, or `restraint_negative` on the negative side; the damping of
+ * `restraint`; `neutral` and `preload`, docs/joints.md), spherical and universal joints
+ * mb_restraint3 (the same characteristics on the three axes of the parent's frame). A permanent
+ * set on one side moves the other side's origin (mcs_hyst2 follow_set: a bent hinge stays at
+ * its set). A joint `range` becomes a stop: a
  * linear one-sided spring beyond the range of 10 times the steepest slope of the restraint's
  * loading curve, or 1e3 N m/rad (revolute) / 1e5 N/m (translational) without one.
  * Attachments: zero-length isotropic spring-dampers (mb_restraint.h). Without `length` (or
@@ -25,7 +28,33 @@ static double steepest(const mcs_curve *c)
     return k;
 }
 
-static mcs_status build_restraint1(const mcs_node *jn, mb_model *m, int ij, int chr,
+/* both sides' characteristics; a bent side moves the other's origin (follow_set) */
+static mcs_hyst2_model two_sided(const mb_model *m, int chr, int neg)
+{
+    return (mcs_hyst2_model){
+        .pos = m->chr[chr].hyst, .neg = m->chr[neg >= 0 ? neg : chr].hyst, .follow_set = 1};
+}
+
+/* preload P: by default the zero sits where the negative side carries P, N^-1(P), so the
+ * joint is unloaded in its initial position (the spring held by its top-out) */
+static mcs_status preload_neutral(const mcs_node *jn, mb_restraint_model *r, mcs_error *err)
+{
+    const mcs_node *pn = mcs_node_get(jn, "preload"), *nn = mcs_node_get(jn, "neutral");
+    r->preload = mcs_node_num_or(jn, "preload", 0);
+    r->neutral = mcs_node_num_or(jn, "neutral", 0);
+    if (r->preload == 0 || mcs_node_kind(nn) == MCS_NODE_NUM) return MCS_OK;
+    const mcs_curve *c = r->spring.neg.loading;
+    double q = r->preload > 0 ? mcs_curve_inverse(c, r->preload) : NAN;
+    if (!(q >= 0 && isfinite(q)))
+        return mcs_node_error(pn, err, MCS_ERR_RANGE,
+                              "preload %g: the negative side's characteristic must rise "
+                              "strictly to it (or give neutral)",
+                              r->preload);
+    r->neutral = q;
+    return MCS_OK;
+}
+
+static mcs_status build_restraint1(const mcs_node *jn, mb_model *m, int ij, int chr, int neg,
                                    mcs_error *err)
 {
     const mb_joint_def *j = &m->joint[ij];
@@ -35,9 +64,11 @@ static mcs_status build_restraint1(const mcs_node *jn, mb_model *m, int ij, int 
     *r = (mb_restraint_model){.joint = ij, .lo = -INFINITY, .hi = INFINITY};
     if (chr >= 0) {
         r->has_spring = 1;
-        r->spring = (mcs_hyst2_model){m->chr[chr].hyst, m->chr[chr].hyst};
+        r->spring = two_sided(m, chr, neg);
         r->damping = m->chr[chr].damping;
     }
+    mcs_status st = preload_neutral(jn, r, err);
+    if (st) return st;
     if (mcs_node_kind(range) == MCS_NODE_SEQ) {
         double lr[2];
         mcs_status st = mcs_node_vec(range, lr, 2, err);
@@ -55,13 +86,13 @@ static mcs_status build_restraint1(const mcs_node *jn, mb_model *m, int ij, int 
     return MCS_OK;
 }
 
-static void build_restraint3(mb_model *m, int ij, int chr)
+static void build_restraint3(mb_model *m, int ij, int chr, int neg)
 {
     mb_restraint3_model *r = &m->restraint3[m->nrestraint3];
     *r = (mb_restraint3_model){.joint = ij, .frame = {1, 0, 0, 0, 1, 0, 0, 0, 1}};
     for (int k = 0; k < 3; k++) {
         r->has_spring[k] = 1;
-        r->spring[k] = (mcs_hyst2_model){m->chr[chr].hyst, m->chr[chr].hyst};
+        r->spring[k] = two_sided(m, chr, neg);
         r->damping[k] = m->chr[chr].damping;
         r->lo[k] = -INFINITY, r->hi[k] = INFINITY;
     }
@@ -91,16 +122,28 @@ static mcs_status build_joint(const mcs_node *jn, mb_model *m, int ij, mcs_error
         return mcs_node_error(mcs_node_get(jn, "axis2"), err, MCS_ERR_RANGE,
                               "axis2 is parallel to axis");
     const mcs_node *rn = mcs_node_get(jn, "restraint");
-    int chr = mb_build_char_ref(m, rn);
+    const mcs_node *nn = mcs_node_get(jn, "restraint_negative");
+    int chr = mb_build_char_ref(m, rn), neg = mb_build_char_ref(m, nn);
     int want_moment = j->type != MB_J_TRANSLATIONAL;
-    if (chr >= 0 && j->type == MB_J_FIXED)
-        return mcs_node_error(rn, err, MCS_ERR_RANGE, "a fixed joint has no restraint");
-    if (chr >= 0 && m->chr[chr].moment != want_moment)
-        return mcs_node_error(rn, err, MCS_ERR_TYPE, "a %s joint needs a %s characteristic",
-                              ty, want_moment ? "moment (type: moment)" : "force");
+    if ((chr >= 0 || neg >= 0) && j->type == MB_J_FIXED)
+        return mcs_node_error(chr >= 0 ? rn : nn, err, MCS_ERR_RANGE,
+                              "a fixed joint has no restraint");
+    if (neg >= 0 && chr < 0)
+        return mcs_node_error(nn, err, MCS_ERR_KEY,
+                              "restraint_negative needs restraint (the positive side)");
+    const mcs_node *pn = mcs_node_get(jn, "preload");
+    if (chr < 0 && mcs_node_kind(pn) == MCS_NODE_NUM)
+        return mcs_node_error(pn, err, MCS_ERR_KEY, "a preload needs a restraint characteristic");
+    for (int k = 0; k < 2; k++) {
+        int c = k ? neg : chr;
+        if (c >= 0 && m->chr[c].moment != want_moment)
+            return mcs_node_error(k ? nn : rn, err, MCS_ERR_TYPE,
+                                  "a %s joint needs a %s characteristic", ty,
+                                  want_moment ? "moment (type: moment)" : "force");
+    }
     if (j->type == MB_J_REVOLUTE || j->type == MB_J_TRANSLATIONAL)
-        return build_restraint1(jn, m, ij, chr, err);
-    if (chr >= 0 && j->type != MB_J_FIXED) build_restraint3(m, ij, chr);
+        return build_restraint1(jn, m, ij, chr, neg, err);
+    if (chr >= 0 && j->type != MB_J_FIXED) build_restraint3(m, ij, chr, neg);
     return MCS_OK;
 }
 

@@ -52,8 +52,7 @@ static void restraint_energy(const mb_model *m, const mb_state *s, double *store
     for (int i = 0; i < m->nrestraint1; i++) {
         const mb_restraint_model *r = &m->restraint1[i];
         mb_restraint_state t = s->r1[i];
-        t.x = mb_joint_position(s->world, r->joint);
-        if (r->has_spring) mcs_hyst2_update(&r->spring, &t.h, t.x - r->neutral);
+        mb_restraint_spring(r, &t, mb_joint_position(s->world, r->joint));
         *stored += mb_restraint_stored(r, &t);
         *diss += mb_restraint_dissipated(r, &t);
     }

@@ -21,6 +21,9 @@ mcs_status mb_restraint_check(const mb_restraint_model *m, const mb_world *w, co
         return MCS_ERR(err, MCS_ERR_RANGE, "%s: range [%g, %g] is empty", name, m->lo, m->hi);
     if (!isfinite(m->neutral))
         return MCS_ERR(err, MCS_ERR_RANGE, "%s: neutral position must be finite", name);
+    if (!isfinite(m->preload) || (m->preload != 0 && !m->has_spring))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "%s: a preload must be finite and needs a restraint characteristic", name);
     return m->has_spring ? mcs_hyst2_model_check(&m->spring, name, err) : MCS_OK;
 }
 
@@ -41,7 +44,7 @@ void mb_restraint_apply(const mb_restraint_model *m, mb_restraint_state *s, mb_w
 {
     double x = mb_joint_position(w, m->joint), rate = mb_joint_rate(w, m->joint);
     /* characteristic (history committed here, once per step) and viscous damping */
-    double f = m->has_spring ? mcs_hyst2_update(&m->spring, &s->h, x - m->neutral) : 0;
+    double f = mb_restraint_spring(m, s, x);
     double fd = m->damping * rate;
     /* stop: one-sided spring-damper beyond the range that never pulls back */
     double e = stop_excess(m, x), fs = 0, fsd = 0;
@@ -56,10 +59,17 @@ void mb_restraint_apply(const mb_restraint_model *m, mb_restraint_state *s, mb_w
     mb_joint_add_load(w, m->joint, s->load);
 }
 
+double mb_restraint_spring(const mb_restraint_model *m, mb_restraint_state *s, double x)
+{
+    s->x = x;
+    return m->has_spring ? m->preload + mcs_hyst2_update(&m->spring, &s->h, x - m->neutral) : 0;
+}
+
+/* the preload's potential is P (x - x0) with x0 = 0 the initial position */
 double mb_restraint_stored(const mb_restraint_model *m, const mb_restraint_state *s)
 {
     double e = stop_excess(m, s->x);
-    double hs = m->has_spring ? mcs_hyst2_stored(&m->spring, &s->h) : 0;
+    double hs = m->has_spring ? mcs_hyst2_stored(&m->spring, &s->h) + m->preload * s->x : 0;
     return hs + 0.5 * m->stop_stiffness * e * e;
 }
 

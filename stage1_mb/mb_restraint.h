@@ -1,8 +1,9 @@
 /* mb_restraint.h: joint restraints and breakable attachments of stage 1 (issue 4 item 2).
  *
  * Joint restraint (revolute: torque vs. angle; translational: force vs. displacement):
- *   q = x - neutral, the deflection from the unloaded position [rad | m];
- *   load on the child = -(F_h(q) + damping * rate + stop(q, rate)), the parent gets the opposite;
+ *   q = x - neutral, the deflection from the characteristic's zero [rad | m];
+ *   load on the child = -(preload + F_h(q) + damping * rate + stop(q, rate)), the parent gets
+ *   the opposite (a preloaded spring held by its top-out: docs/joints.md);
  *   F_h is the two-branch hysteresis element of core (loading/unloading per direction, permanent
  *   set: the deforming fork), stop() a stiff one-sided spring-damper beyond [lo, hi] that
  *   never pulls back.
@@ -25,6 +26,7 @@ typedef struct {
     double lo, hi;          /* range of the joint position; beyond it the stop acts [rad | m]  */
     double stop_stiffness;  /* stop spring [N m/rad | N/m], 0 = no stops                       */
     double stop_damping;    /* stop damper, acts only while in the stop [N m s/rad | N s/m]    */
+    double preload;         /* constant load added to F_h (needs has_spring) [N m | N]         */
 } mb_restraint_model;
 
 typedef struct {
@@ -40,6 +42,9 @@ mcs_status mb_restraint_check(const mb_restraint_model *m, const mb_world *w, co
 void mb_restraint_reset(const mb_restraint_model *m, mb_restraint_state *s);
 /* read the joint, advance the history, add the load for the next step of h seconds */
 void mb_restraint_apply(const mb_restraint_model *m, mb_restraint_state *s, mb_world *w, double h);
+/* the characteristic's load at joint position x on the history s->h, committed (s->h, s->x);
+ * without the damper and the stop [N m | N] */
+double mb_restraint_spring(const mb_restraint_model *m, mb_restraint_state *s, double x);
 double mb_restraint_stored(const mb_restraint_model *m, const mb_restraint_state *s);     /* J */
 double mb_restraint_dissipated(const mb_restraint_model *m, const mb_restraint_state *s); /* J */
 

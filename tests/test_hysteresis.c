@@ -510,6 +510,50 @@ static void test_free_play_set(void)
     mcs_curve_destroy(&FP);
 }
 
+/* follow_set (kinematic shift): a permanent set on one side moves the other side's origin to
+ * it, so the bent joint is elastic about its set. Fork curve (2000 N m/rad to 0.05 rad, then
+ * 80 N m/rad), unloading 2000: bend to 0.2 rad (M = 112, set 0.2 - 112/2000 = 0.144); at 0.1
+ * the negative side is 0.044 rad into its virgin curve (-88 N m; independent branches give 0
+ * here); back to 0: 0.144 rad deep, M = 100 + 80 * 0.094 = 107.52, set 0.144 - 0.05376 =
+ * 0.08824, which moves the positive origin to 0.144 - 0.08824 = 0.05576: 0.01 beyond it is the
+ * virgin 2000 * 0.01 = 20 N m. Work = stored + dissipated on a random walk. */
+static void test_follow_set(void)
+{
+    mcs_curve *M = mk(4, fork_xy, MCS_EXTRAP_LINEAR, MCS_EXTRAP_LINEAR);
+    mcs_hyst_model b = {
+        .loading = M, .unload = MCS_UNLOAD_SLOPE, .unload_slope = 2000, .elastic_limit = 0.05};
+    mcs_hyst2_model j = {.pos = b, .neg = b, .follow_set = 1};
+    mcs_hyst2_state s;
+    mcs_hyst2_reset(&j, &s);
+    CHECK_NEAR(mcs_hyst2_update(&j, &s, 0.2), 112, 1e-9);
+    CHECK_NEAR(s.o_neg, 0.144, 1e-14);
+    CHECK_NEAR(mcs_hyst2_update(&j, &s, 0.1), -88, 1e-9);
+    CHECK_NEAR(mcs_hyst2_force(&j, &s, 0.144), 0, 1e-9);
+    CHECK_NEAR(mcs_hyst2_update(&j, &s, 0.0), -107.52, 1e-9);
+    CHECK_NEAR(s.o_pos, 0.144 - (0.144 - 107.52 / 2000), 1e-14);
+    CHECK_NEAR(mcs_hyst2_update(&j, &s, s.o_pos + 0.01), 20, 1e-9);
+    CHECK_NEAR(mcs_hyst2_stiffness(&j, &s, s.o_pos + 0.01), 2000, 1e-9);
+    /* energy identity along a random history */
+    mcs_hyst2_reset(&j, &s);
+    unsigned seed = 11;
+    double x = 0;
+    int bad = 0, moved = 0;
+    for (int i = 0; i < 4000; i++) {
+        double op = s.o_pos, on = s.o_neg;
+        x += 0.03 * (rnd(&seed) - 0.5);
+        mcs_hyst2_update(&j, &s, x);
+        moved += op != s.o_pos || on != s.o_neg;
+        double w = mcs_hyst2_work(&s);
+        if (fabs(w - mcs_hyst2_stored(&j, &s) - mcs_hyst2_dissipated(&j, &s)) > 1e-9 * (1 + w))
+            bad++;
+    }
+    printf("  follow_set: %d origin moves on the random walk, energy identity broken %d times\n",
+           moved, bad);
+    CHECK(moved > 2);
+    CHECK(bad == 0);
+    mcs_curve_destroy(&M);
+}
+
 int main(void)
 {
     RUN(test_loading_follows_curve);
@@ -523,6 +567,7 @@ int main(void)
     RUN(test_slope_then_curve);
     RUN(test_work_balance_random_walk);
     RUN(test_bidirectional_joint);
+    RUN(test_follow_set);
     RUN(test_free_play_set);
     TEST_END();
 }

@@ -395,12 +395,17 @@ static void test_sliding_wheel_starts_rolling(void)
  * M = 1000 phi up to 0.1 rad, then 100 + 125 (phi - 0.1) N m; unloading slope k_u = 2000 N m/rad.
  * Energy: I w0^2 / 2 = integral of M up to phi_max, so w0 = sqrt(2 * 27.5 / I) reaches
  * phi_max = 0.3 rad (5 J + 22.5 J). Unloading along k_u from M_max = 125 N m leaves the
- * permanent set phi_max - M_max / k_u = 0.2375 rad and gives back M_max^2 / (2 k_u) = 3.906 J:
- * the hinge swings back at sqrt(2 * 3.906 / I) = 27.95 rad/s through its free play. */
+ * permanent set phi_max - M_max / k_u = 0.2375 rad and gives back E1 = M_max^2 / (2 k_u) =
+ * 3.906 J: the hinge passes its set at sqrt(2 E1 / I) = 27.95 rad/s. There the negative side
+ * (the same curve, mirrored) starts from the set (mcs_hyst2 follow_set): 500 u^2 = E1 gives
+ * u1 = 0.08839 rad, q_min = 0.2375 - u1 = 0.14911 rad; it unloads along k_u from 1000 u1 and
+ * gives back E2 = (1000 u1)^2 / (2 k_u) = E1 / 2, with its set u1 / 2; the positive side now
+ * starts from 0.2375 - u1 / 2 = 0.19331 rad and 500 u^2 = E2 gives u = 0.0625 rad:
+ * the second maximum is 0.25581 rad. */
 static void test_deforming_hinge_keeps_permanent_set(void)
 {
     const char *y = "mcrash: 1\n"
-                    "simulation: {end_time: 0.03 s, time_step: 10 us}\n"
+                    "simulation: {end_time: 0.04 s, time_step: 10 us}\n"
                     "environment: {gravity: 0}\n"
                     "characteristics:\n"
                     "  fork: {type: moment, loading: [[0, 0], [0.1, 100], [0.3, 125]],\n"
@@ -420,24 +425,34 @@ static void test_deforming_hinge_keeps_permanent_set(void)
     }
     mb_state *s = NULL;
     CHECK(mb_state_create(m, &s, &err) == MCS_OK);
-    double qmax = 0, w_back = 0, diss = 0;
+    double qmax = 0, w_back = 0, diss = 0, set = 0, qmin = 1, qmax2 = 0;
+    int phase = 0; /* 0 loading, 1 back past the set, 2 back up from q_min */
     while (s->step < m->nsteps) {
         CHECK(mb_step(m, s, &err) == MCS_OK);
-        double q = mb_joint_position(s->world, 0);
+        double q = mb_joint_position(s->world, 0), w = s->kin[0].angvel[1];
         if (q > qmax) qmax = q;
-        if (qmax > 0.2 && q < 0.15 && q > 0.05) { /* swinging back through the free play */
-            w_back = s->kin[0].angvel[1];
+        if (phase == 0 && qmax > 0.2 && q < s->r1[0].h.pos.x_set) { /* passing the set */
+            set = s->r1[0].h.pos.x_set;
+            w_back = w;
             diss = s->e.dissipated;
+            phase = 1;
         }
+        if (phase == 1) qmin = fmin(qmin, q);
+        if (phase == 1 && w > 0) phase = 2;
+        if (phase == 2) qmax2 = fmax(qmax2, q);
     }
-    double set = s->r1[0].h.pos.x_set;
+    double u1 = sqrt(125.0 * 125.0 / 4000 / 500); /* 500 u1^2 = E1 */
     printf("deforming hinge: phi_max %.5f rad (exact 0.3), set %.5f rad (exact 0.2375), back "
-           "at %.4f rad/s (exact -27.95), dissipated %.4f J (exact %.4f J)\n",
-           qmax, set, w_back, diss, 27.5 - 125.0 * 125.0 / 4000);
+           "at %.4f rad/s (exact -27.95), dissipated %.4f J (exact %.4f J), then min %.5f rad "
+           "(exact %.5f), max %.5f rad (exact %.5f)\n",
+           qmax, set, w_back, diss, 27.5 - 125.0 * 125.0 / 4000, qmin, 0.2375 - u1, qmax2,
+           0.2375 - u1 / 2 + 0.0625);
     CHECK_NEAR(qmax, 0.3, 2e-4);
     CHECK_NEAR(set, 0.3 - 125.0 / 2000, 3e-4);
     CHECK_NEAR(w_back, -sqrt(125.0 * 125.0 / 2000 / 0.01), 0.05);
     CHECK_NEAR(diss, 27.5 - 125.0 * 125.0 / 4000, 0.01 * 23.6);
+    CHECK_NEAR(qmin, 0.2375 - u1, 1e-4);
+    CHECK_NEAR(qmax2, 0.2375 - u1 / 2 + 0.0625, 1e-4);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }

@@ -306,15 +306,48 @@ static const mcs_smap attachment_map = {
 static const mcs_skey sensor_keys[] = {
     S("name", REQ | UNIQ | NE, "channel name"),
     R("body", BODY, REQ, "body carrying the sensor"),
-    E("type", "acceleration|velocity|displacement|angular_velocity|angular_acceleration", REQ,
+    E("type",
+      "acceleration|velocity|displacement|angular_velocity|angular_acceleration|load_cell", REQ,
       "quantity measured"),
     V("point", LEN, 3, 3, 0, 0, "sensor point in the body frame [m] (default: centre of mass)"),
     /* SAE J211 channel frequency class; 0 = unfiltered */
     I("cfc", GE, 0, 0, "channel frequency class (0, 60, 180, 600, 1000)"),
+    /* load_cell (stage1_mb/mb_loadcell.c): the force and moment the joint exerts on `body`
+     * (J211: the part above the cell), about `point` of `frame`, on the frame's axes */
+    S("joint", 0, "load_cell: joint whose load is measured"),
+    R("frame", BODY, 0, "load_cell: body carrying the cell's point and axes (default: body)"),
+    V("orientation", ANG, 3, 3, 0, 0, "sensor axes in the body frame: roll, pitch, yaw [rad]"),
     END,
 };
 static const mcs_smap sensor_map = {
     .what = "sensor", .keys = sensor_keys, .check = mcs_rule_sensor};
+
+/* named points on bodies (seat H-point, grips, pegs; the rider's H-point, hands, feet) */
+static const mcs_skey mount_keys[] = {
+    S("name", REQ | UNIQ | NE, "mount point name"),
+    R("body", BODY, REQ, "body carrying the point"),
+    V("point", LEN, 3, 3, REQ, 0, "point in the body frame [m]"),
+    END,
+};
+static const mcs_smap mount_map = {.what = "mount point", .keys = mount_keys};
+
+/* seating the rider on the motorcycle (stage1_mb/mb_position.c, docs/rider.md); the mount
+ * points seat_h_point, grip_l/r, peg_l/r (motorcycle) and rider_h_point, rider_grip_l/r,
+ * rider_peg_l/r (rider) must exist */
+static const mcs_skey rider_keys[] = {
+    Q("torso_lean", ANG, GE | LT, 0, 1.5707963267948966, "forward lean of the torso [rad]"),
+    Q("head_pitch", ANG, 0, 0, 0, "forward pitch of the head, 0 = upright [rad]"),
+    Q("foot_pitch", ANG, 0, 0, 0, "toes-down pitch of the feet [rad]"),
+    B("attachments", 0, "create the breakable pelvis-seat, hand-grip, foot-peg attachments"),
+    Q("seat_failure_force", FRC, GT, 0, 0, "pelvis-seat attachment failure force [N]"),
+    Q("grip_failure_force", FRC, GT, 0, 0, "hand-grip attachment failure force [N]"),
+    Q("peg_failure_force", FRC, GT, 0, 0, "foot-peg attachment failure force [N]"),
+    Q("attachment_stiffness", MCS_DIM_STIFFNESS, GT, 0, 0, "attachment stiffness [N/m]"),
+    Q("attachment_damping", MCS_DIM_DAMPING, GE, 0, 0, "attachment damping [N s/m]"),
+    END,
+};
+static const mcs_smap rider_map = {.what = "rider block", .keys = rider_keys};
+
 
 /* the impact configuration (stage1_mb/mb_impact.c, docs/scenario_keys.md "impact"): the
  * motorcycle group is rotated to its heading, translated so that its contact point meets the
@@ -607,6 +640,8 @@ static const mcs_skey root_keys[] = {
     L("sensors", sensor_map, 0, "sensors"),
     M("impact", impact_map, 0, "impact configuration"),
     M("fe", fe_map, 0, "FE block"),
+    L("mount_points", mount_map, 0, "named points on bodies"),
+    M("rider", rider_map, 0, "seat the rider on the motorcycle"),
     END,
 };
 const mcs_smap mcs_schema_root = {.what = "scenario", .keys = root_keys, .check = mcs_rule_root};

@@ -1,0 +1,372 @@
+#!/usr/bin/env python3
+"""gen_rider.py: writes the stage-1 rider models of scenarios/models/riders/ from the
+segment table below (every number and its source: docs/rider.md).
+
+  python3 scripts/gen_rider.py            # rewrites the three YAML files
+
+Hybrid III 50th-class rider: 78.2 kg, stature 1.75 m, sitting height 0.884 m (NHTSA, H3 50th).
+No public H3 segment table was found, so the segment masses, centres of mass and radii of
+gyration are de Leva (1996, J. Biomech. 29(9), Table 4, male) fractions scaled to 78.2 kg and
+1.75 m; the head takes the commonly cited H3 head mass 4.54 kg (10 lb) out of de Leva's
+head+neck. The trunk lengths are scaled (x0.871) so that the seated height is the H3's 0.884 m.
+
+Reference posture (the file's bodies): seated upright, x forward, y left, z up, every body
+frame parallel to the world: thighs horizontal forward, lower legs vertical, feet horizontal,
+upper arms hanging, forearms and hands horizontal forward. The H-point (midpoint of the hip
+joint centres) is at the sport_208kg seat point (0.52, 0, 0.955) m. The positioning step
+(stage1_mb/mb_position.c, scenario key rider:) moves the segments onto a motorcycle."""
+import math
+import os
+
+M_TOTAL = 78.2          # H3 50th [kg]
+STATURE_K = 1.75 / 1.741  # H3 stature / de Leva male mean stature
+TRUNK_K = 0.8714        # trunk shortening so that the sitting height is 0.884 m
+H = (0.52, 0.0, 0.955)  # H-point of the reference posture [m]
+
+# de Leva 1996 Table 4 (male): mass fraction, CM from the proximal/cranial end [fraction of
+# length], radii of gyration (sagittal, transverse, longitudinal) [fraction of length], length [m]
+DL = {
+    "head_neck": (0.0694, 0.5002, (0.303, 0.315, 0.261), 0.2429),
+    "upt": (0.1596, 0.5066, (0.716, 0.454, 0.659), 0.2421),
+    "mpt": (0.1633, 0.4502, (0.482, 0.383, 0.468), 0.2155),
+    "lpt": (0.1117, 0.6115, (0.615, 0.551, 0.587), 0.1457),
+    "upper_arm": (0.0271, 0.5772, (0.285, 0.269, 0.158), 0.2817),
+    "forearm": (0.0162, 0.4574, (0.276, 0.265, 0.121), 0.2689),
+    "hand": (0.0061, 0.7900, (0.628, 0.513, 0.401), 0.0862),
+    "thigh": (0.1416, 0.4095, (0.329, 0.329, 0.149), 0.4222),
+    "shank": (0.0433, 0.4395, (0.251, 0.246, 0.102), 0.4340),
+    "foot": (0.0137, 0.4415, (0.257, 0.245, 0.124), 0.2581),
+}
+HEAD_MASS = 4.54        # H3 50th head assembly (10 lb), commonly cited [S]
+
+
+def add(a, b):
+    return tuple(x + y for x, y in zip(a, b))
+
+
+def sub(a, b):
+    return tuple(x - y for x, y in zip(a, b))
+
+
+def f(v):
+    return "%.7g" % v if abs(v) >= 1e-12 else "0"
+
+
+def vec(v):
+    return "[" + ", ".join(f(x) for x in v) + "]"
+
+
+class Model:
+    def __init__(self):
+        self.bodies = []   # (name, mass, inertia, cg, surfaces, comment)
+        self.joints = []   # dict
+        self.mounts = []   # (name, body, point in body frame)
+        self.sensors = []  # dict
+
+    def body(self, name, mass, inertia, cg, surfaces, comment):
+        self.bodies.append((name, mass, inertia, cg, surfaces, comment))
+        return cg
+
+    def cg(self, name):
+        for b in self.bodies:
+            if b[0] == name:
+                return b[3]
+        raise KeyError(name)
+
+
+def radii_inertia(m, r, L, long_axis):
+    """principal inertia [Ixx, Iyy, Izz] in the reference frame from de Leva's radii
+    (sagittal = anteroposterior axis, transverse = left-right, longitudinal = along the
+    segment); long_axis 'z' (vertical segment) or 'x' (horizontal forward segment)."""
+    sag, trv, lon = (m * (k * L) ** 2 for k in r)
+    if long_axis == "z":
+        return (sag, trv, lon)
+    return (lon, trv, sag)   # horizontal: x along the segment, z the anteroposterior axis
+
+
+def ellipsoid(name, center, semi, char):
+    return "{name: %s, type: ellipsoid, center: %s, semi_axes: %s, characteristic: %s}" % (
+        name, vec(center), vec(semi), char)
+
+
+def build(neck7=False):
+    md = Model()
+    hz = H[2]
+    s = STATURE_K
+    t = STATURE_K * TRUNK_K
+    # ---- spine chain (reference: vertical through the H-point) ----
+    mp, cp, rp, Lp = DL["lpt"]
+    mm, cm, rm, Lm = DL["mpt"]
+    mu, cu, ru, Lu = DL["upt"]
+    Lp, Lm, Lu = Lp * t, Lm * t, Lu * t
+    z_omph = hz + Lp
+    z_xyph = z_omph + Lm
+    z_t1 = z_xyph + Lu
+    neck_len = 2 * 0.19 * math.sin(math.radians(37) / 2)   # MYMOSA neck arc chord
+    z_oc = z_t1 + neck_len
+    z_head = z_oc + 0.035
+    x0, y0 = H[0], H[1]
+    pelvis = md.body("rider_pelvis", mp * M_TOTAL, radii_inertia(mp * M_TOTAL, rp, Lp, "z"),
+                     (x0 - 0.02, y0, z_omph - cp * Lp),
+                     [ellipsoid("rider_pelvis", (-0.02, 0, hz - 0.005 - (z_omph - cp * Lp)),
+                                (0.13, 0.17, 0.09), "rider_pelvis")],
+                     "de Leva lower trunk (omphalion to hip centres)")
+    lt = md.body("rider_lower_torso", mm * M_TOTAL, radii_inertia(mm * M_TOTAL, rm, Lm, "z"),
+                 (x0, y0, z_xyph - cm * Lm),
+                 [ellipsoid("rider_lower_torso", (0.01, 0, 0), (0.11, 0.15, 0.11), "rider_torso")],
+                 "de Leva middle trunk (xiphoid to omphalion)")
+    ut = md.body("rider_upper_torso", mu * M_TOTAL, radii_inertia(mu * M_TOTAL, ru, Lu, "z"),
+                 (x0, y0, z_t1 - cu * Lu),
+                 [ellipsoid("rider_upper_torso", (0.02, 0, 0), (0.12, 0.17, 0.13), "rider_torso")],
+                 "de Leva upper trunk (C7 to xiphoid)")
+    md.joints.append(dict(name="rider_lumbar", type="spherical", parent="rider_pelvis",
+                          child="rider_lower_torso", anchor=(x0, y0, z_omph), restraint="rider_lumbar"))
+    md.joints.append(dict(name="rider_thoracic", type="spherical", parent="rider_lower_torso",
+                          child="rider_upper_torso", anchor=(x0, y0, z_xyph), restraint="rider_thoracic"))
+    # ---- head and neck ----
+    mhn = DL["head_neck"][0] * M_TOTAL
+    rh, Lh = DL["head_neck"][2], DL["head_neck"][3] * s
+    neck_mass = mhn - HEAD_MASS
+    md.body("rider_head", HEAD_MASS, radii_inertia(HEAD_MASS, rh, Lh, "z"), (x0, y0, z_head),
+            [ellipsoid("rider_head", (0.005, 0, 0), (0.10, 0.078, 0.115), "rider_head")],
+            "H3 head mass; de Leva head radii")
+    if not neck7:
+        r, h = 0.05, neck_len
+        md.body("rider_neck", neck_mass,
+                (neck_mass * (3 * r * r + h * h) / 12, neck_mass * (3 * r * r + h * h) / 12,
+                 neck_mass * r * r / 2), (x0, y0, (z_t1 + z_oc) / 2),
+                [ellipsoid("rider_neck", (0, 0, 0), (0.05, 0.05, 0.065), "rider_limb")],
+                "de Leva head+neck less the H3 head; a cylinder r 0.05 m")
+        md.joints.append(dict(name="rider_lower_neck", type="spherical", parent="rider_upper_torso",
+                              child="rider_neck", anchor=(x0, y0, z_t1), restraint="rider_neck"))
+        md.joints.append(dict(name="rider_upper_neck", type="spherical", parent="rider_neck",
+                              child="rider_head", anchor=(x0, y0, z_oc), restraint="rider_neck"))
+    else:
+        # MYMOSA Fig. 3.2: 7 equal vertebrae on an arc of radius 190 mm over 37 deg, T1 to OC,
+        # convex forward (cervical lordosis); 8 spherical joints T1-C7 ... C1-OC
+        R, span = 0.19, math.radians(37)
+        zc = (z_t1 + z_oc) / 2
+        xc = x0 - R * math.cos(span / 2)   # arc centre behind the chord
+
+        def arc(u):   # u in [0, 1] from T1 to OC
+            a = -span / 2 + span * u
+            return (xc + R * math.cos(a), y0, zc + R * math.sin(a))
+        pts = [arc(k / 7) for k in range(8)]
+        pts[0] = (pts[0][0], y0, z_t1)
+        pts[7] = (pts[7][0], y0, z_oc)
+        mv = neck_mass / 7
+        rv, hv = 0.035, neck_len / 7
+        names = ["rider_c%d" % (7 - k) for k in range(7)]   # c7 at the bottom
+        for k in range(7):
+            cgk = arc((k + 0.5) / 7)
+            md.body(names[k], mv, (mv * (3 * rv * rv + hv * hv) / 12,
+                                   mv * (3 * rv * rv + hv * hv) / 12, mv * rv * rv / 2), cgk,
+                    [ellipsoid(names[k], (0, 0, 0), (0.035, 0.035, 0.012), "rider_limb")],
+                    "MYMOSA vertebra (1/7 of the neck mass)")
+        parents = ["rider_upper_torso"] + names
+        children = names + ["rider_head"]
+        jn = ["rider_t1_c7"] + ["rider_c%d_c%d" % (7 - k, 6 - k) for k in range(6)] + ["rider_c1_oc"]
+        jn[-1] = "rider_upper_neck"
+        jn[0] = "rider_lower_neck"
+        for k in range(8):
+            md.joints.append(dict(name=jn[k], type="spherical", parent=parents[k], child=children[k],
+                                  anchor=pts[k], restraint="rider_neck7"))
+        # the head's CG over the OC as in the single-neck model (the OC moved forward on the arc)
+    # ---- arms ----
+    for side, sy in (("l", 1), ("r", -1)):
+        sh = (x0, y0 + sy * 0.175, z_t1 - 0.04)
+        ma, ca, ra, La = DL["upper_arm"]
+        mf, cf, rf, Lf = DL["forearm"]
+        mh, ch, rhd, Lhd = DL["hand"]
+        La, Lf, Lhd = La * s, Lf * s, Lhd * s
+        el = (sh[0], sh[1], sh[2] - La)
+        wr = (el[0] + Lf, el[1], el[2])
+        grip = (wr[0] + 0.07, wr[1], wr[2])
+        ua = md.body("rider_upper_arm_" + side, ma * M_TOTAL, radii_inertia(ma * M_TOTAL, ra, La, "z"),
+                     (sh[0], sh[1], sh[2] - ca * La),
+                     [ellipsoid("rider_upper_arm_" + side, (0, 0, ca * La - La / 2), (0.045, 0.045, 0.15), "rider_limb")],
+                     "de Leva upper arm")
+        la = md.body("rider_lower_arm_" + side, mf * M_TOTAL, radii_inertia(mf * M_TOTAL, rf, Lf, "x"),
+                     (el[0] + cf * Lf, el[1], el[2]),
+                     [ellipsoid("rider_lower_arm_" + side, (Lf / 2 - cf * Lf, 0, 0), (0.14, 0.04, 0.04), "rider_limb")],
+                     "de Leva forearm")
+        hd = md.body("rider_hand_" + side, mh * M_TOTAL, radii_inertia(mh * M_TOTAL, rhd, Lhd, "x"),
+                     (wr[0] + ch * Lhd, wr[1], wr[2]),
+                     [ellipsoid("rider_hand_" + side, (0, 0, 0), (0.05, 0.04, 0.045), "rider_limb")],
+                     "de Leva hand (wrist to 3rd knuckle)")
+        md.joints.append(dict(name="rider_shoulder_" + side, type="spherical", parent="rider_upper_torso",
+                              child="rider_upper_arm_" + side, anchor=sh, restraint="rider_shoulder"))
+        # flexion positive: the hinge axis -y turns the forearm up
+        md.joints.append(dict(name="rider_elbow_" + side, type="revolute", parent="rider_upper_arm_" + side,
+                              child="rider_lower_arm_" + side, anchor=el, axis=(0, -1, 0),
+                              restraint="rider_elbow", range=("-90 deg", "55 deg")))
+        md.joints.append(dict(name="rider_wrist_" + side, type="spherical", parent="rider_lower_arm_" + side,
+                              child="rider_hand_" + side, anchor=wr, restraint="rider_wrist"))
+        md.mounts.append(("rider_grip_" + side, "rider_hand_" + side, sub(grip, hd)))
+    # ---- legs ----
+    for side, sy in (("l", 1), ("r", -1)):
+        hip = (x0, y0 + sy * 0.085, hz)
+        mt, ct, rt, Lt = DL["thigh"]
+        ms, cs, rs, Ls = DL["shank"]
+        mft, cft, rft, Lft = DL["foot"]
+        Lt, Ls, Lft = Lt * s, Ls * s, Lft * s
+        kn = (hip[0] + Lt, hip[1], hip[2])
+        an = (kn[0], kn[1], kn[2] - Ls)
+        heel = (an[0] - 0.05, an[1], an[2] - 0.07)
+        th = md.body("rider_thigh_" + side, mt * M_TOTAL, radii_inertia(mt * M_TOTAL, rt, Lt, "x"),
+                     (hip[0] + ct * Lt, hip[1], hip[2]),
+                     [ellipsoid("rider_thigh_" + side, (Lt / 2 - ct * Lt, 0, 0), (0.23, 0.08, 0.08), "rider_limb")],
+                     "de Leva thigh")
+        sk = md.body("rider_lower_leg_" + side, ms * M_TOTAL, radii_inertia(ms * M_TOTAL, rs, Ls, "z"),
+                     (kn[0], kn[1], kn[2] - cs * Ls),
+                     [ellipsoid("rider_lower_leg_" + side, (0, 0, cs * Ls - Ls / 2), (0.05, 0.05, 0.23), "rider_limb")],
+                     "de Leva shank")
+        ft_cg = (heel[0] + cft * Lft, heel[1], an[2] - 0.04)
+        ft = md.body("rider_foot_" + side, mft * M_TOTAL, radii_inertia(mft * M_TOTAL, rft, Lft, "x"),
+                     ft_cg,
+                     [ellipsoid("rider_foot_" + side, sub((heel[0] + Lft / 2, heel[1], an[2] - 0.045), ft_cg),
+                                (0.13, 0.05, 0.04), "rider_limb")],
+                     "de Leva foot (heel to toe tip)")
+        md.joints.append(dict(name="rider_hip_" + side, type="spherical", parent="rider_pelvis",
+                              child="rider_thigh_" + side, anchor=hip, restraint="rider_hip"))
+        # flexion positive: the hinge axis +y turns the lower leg backward
+        md.joints.append(dict(name="rider_knee_" + side, type="revolute", parent="rider_thigh_" + side,
+                              child="rider_lower_leg_" + side, anchor=kn, axis=(0, 1, 0),
+                              restraint="rider_knee", range=("-90 deg", "50 deg")))
+        md.joints.append(dict(name="rider_ankle_" + side, type="spherical", parent="rider_lower_leg_" + side,
+                              child="rider_foot_" + side, anchor=an, restraint="rider_ankle"))
+        peg = (an[0] + 0.13, an[1], an[2] - 0.075)   # sole under the ball of the foot
+        md.mounts.append(("rider_peg_" + side, "rider_foot_" + side, sub(peg, ft)))
+    md.mounts.insert(0, ("rider_h_point", "rider_pelvis", sub(H, pelvis)))
+    return md
+
+
+CHARS = """\
+characteristics:
+  # ---- contact characteristics of the segments' surfaces [A], docs/rider.md ----
+  # head: skin on the skull, 3.7 MN/m, so that the H3 head drop (376 mm onto a rigid plate)
+  # peaks at ~250 g (49 CFR 572.32: 225-275 g); v sqrt(k/m) = 2.716 x 903 = 245 g
+  rider_head:
+    loading: [[0, 0], [5 mm, 18.5 kN], [10 mm, 45 kN]]
+    damping: 200 N s/m
+  rider_torso:
+    loading: [[0, 0], [10 mm, 1 kN], [30 mm, 5 kN], [60 mm, 20 kN], [80 mm, 60 kN]]
+    damping: 500 N s/m
+  rider_pelvis:
+    loading: [[0, 0], [10 mm, 1.5 kN], [30 mm, 6 kN], [60 mm, 25 kN], [80 mm, 70 kN]]
+    damping: 500 N s/m
+  rider_limb:
+    loading: [[0, 0], [10 mm, 0.5 kN], [30 mm, 3 kN], [50 mm, 15 kN], [70 mm, 50 kN]]
+    damping: 200 N s/m
+  # ---- joint restraints: moment vs. angle per axis, both directions [A], docs/rider.md ----
+  rider_lumbar:
+    type: moment
+    loading: [[0, 0], [0.2 rad, 60 N*m], [0.5 rad, 300 N*m], [0.7 rad, 2000 N*m]]
+    damping: 20 N m s/rad
+  rider_thoracic:
+    type: moment
+    loading: [[0, 0], [0.1 rad, 200 N*m], [0.3 rad, 1500 N*m]]
+    damping: 30 N m s/rad
+  rider_neck:
+    type: moment
+    loading: [[0, 0], [0.3 rad, 30 N*m], [0.6 rad, 90 N*m], [0.9 rad, 400 N*m]]
+    damping: 1.5 N m s/rad
+  rider_shoulder:
+    type: moment
+    loading: [[0, 0], [1.0 rad, 10 N*m], [1.4 rad, 60 N*m], [1.7 rad, 500 N*m]]
+    damping: 2 N m s/rad
+  rider_elbow:
+    type: moment
+    loading: [[0, 0], [0.1 rad, 2 N*m], [1.5 rad, 6 N*m]]
+    damping: 0.5 N m s/rad
+  rider_wrist:
+    type: moment
+    loading: [[0, 0], [0.6 rad, 2 N*m], [1.0 rad, 30 N*m]]
+    damping: 0.2 N m s/rad
+  rider_hip:
+    type: moment
+    loading: [[0, 0], [0.8 rad, 20 N*m], [1.2 rad, 150 N*m], [1.5 rad, 1000 N*m]]
+    damping: 5 N m s/rad
+  rider_knee:
+    type: moment
+    loading: [[0, 0], [0.1 rad, 3 N*m], [1.5 rad, 10 N*m]]
+    damping: 1 N m s/rad
+  rider_ankle:
+    type: moment
+    loading: [[0, 0], [0.4 rad, 5 N*m], [0.7 rad, 60 N*m]]
+    damping: 0.5 N m s/rad
+"""
+
+NECK7_CHAR = """\
+  # 8 joints in series instead of 2: 4 times the rider_neck moment at the same angle share
+  rider_neck7:
+    type: moment
+    loading: [[0, 0], [0.075 rad, 120 N*m], [0.15 rad, 360 N*m], [0.225 rad, 1600 N*m]]
+    damping: 1.5 N m s/rad
+"""
+
+
+def write(md, path, title, header):
+    out = [header, "mcrash: 1", 'name: "%s"' % title, CHARS.rstrip("\n")]
+    if any(j["restraint"] == "rider_neck7" for j in md.joints):
+        out.append(NECK7_CHAR.rstrip("\n"))
+    out.append("bodies:")
+    tot = 0
+    for name, m, I, cg, surfs, comment in md.bodies:
+        tot += m
+        out.append("  - name: %s    # %s" % (name, comment))
+        out.append("    mass: %s kg" % f(m))
+        out.append("    inertia: %s" % vec(I))
+        out.append("    position: %s" % vec(cg))
+        out.append("    velocity: [0, 0, 0]")
+        out.append("    surfaces:")
+        for sf in surfs:
+            out.append("      - " + sf)
+    out.append("joints:")
+    for j in md.joints:
+        extra = ""
+        if "axis" in j:
+            extra += ", axis: %s" % vec(j["axis"])
+        if "range" in j:
+            extra += ", range: [%s, %s]" % j["range"]
+        out.append("  - {name: %s, type: %s, parent: %s, child: %s,\n     anchor: %s%s, restraint: %s}" % (
+            j["name"], j["type"], j["parent"], j["child"], vec(j["anchor"]), extra, j["restraint"]))
+    out.append("mount_points:")
+    for name, body, p in md.mounts:
+        out.append("  - {name: %s, body: %s, point: %s}" % (name, body, vec(p)))
+    out.append("sensors:")
+    out.append("  - {name: head, body: rider_head, type: acceleration, cfc: 1000}")
+    out.append("  - {name: chest, body: rider_upper_torso, type: acceleration, cfc: 180}")
+    out.append("  - {name: pelvis, body: rider_pelvis, type: acceleration, cfc: 1000}")
+    with open(path, "w") as fh:
+        fh.write("\n".join(out) + "\n")
+    return tot
+
+
+HEADER = """\
+# Hybrid III 50th-class rider (issue 4 item 4): %s
+# Generated by scripts/gen_rider.py -- edit the script, not this file. Sources of every number:
+# docs/rider.md. 78.2 kg, stature 1.75 m, sitting height 0.884 m (H3 50th); segment masses,
+# centres of mass and inertias: de Leva (1996) fractions scaled to it; H3 head mass 4.54 kg.
+# Reference posture: seated upright, body frames parallel to the world (x forward, y left,
+# z up), H-point at (0.52, 0, 0.955) m (the sport_208kg seat point). A scenario's `rider:`
+# block seats it on the motorcycle (stage1_mb/mb_position.c): pelvis H-point on the seat,
+# hands on the grips, feet on the pegs, breakable attachments, the motorcycle's velocity.
+# Joint restraints act about the positioned posture (as an ATD's joints set to hold it);
+# the elbow and knee ranges are anatomical, given here about the reference posture."""
+
+
+def main():
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scenarios", "models", "riders")
+    os.makedirs(root, exist_ok=True)
+    t1 = write(build(False), os.path.join(root, "hybrid3_50th.yaml"),
+               "Hybrid III 50th-class rider, 17 segments, 78.2 kg",
+               HEADER % "17 segments, single neck")
+    t2 = write(build(True), os.path.join(root, "hybrid3_50th_neck7.yaml"),
+               "Hybrid III 50th-class rider, 7-vertebra neck (MYMOSA), 23 segments, 78.2 kg",
+               HEADER % "23 segments, MYMOSA's 7-vertebra neck (C7..C1)")
+    print("masses: %.4f kg, %.4f kg" % (t1, t2))
+
+
+if __name__ == "__main__":
+    main()

@@ -94,7 +94,7 @@ static void test_mass_and_segments(void)
     CHECK_NEAR(mass, 78.2, 1e-3);
     CHECK(m->njoint == 22);
     for (int k = 1; k <= 7; k++) {
-        char nm[16];
+        char nm[32];
         snprintf(nm, sizeof nm, "rider_c%d", k);
         CHECK(mb_model_body(m, nm) >= 0);
     }

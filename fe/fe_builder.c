@@ -1,6 +1,7 @@
 /* fe_builder: collects parts, nodes, elements, boundary conditions, loads and walls before
  * fe_model_create() validates and freezes them. Growable arrays live only here. */
 #include "fe/fe_builder_impl.h"
+#include "fe/fe_restraint.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -25,6 +26,7 @@ int fe_kind_nnode(int kind) { return kind_nnode[kind]; }
 
 int fe_section_kind(fe_section_type t)
 {
+    if (t == FE_SECTION_MEMBRANE) return FE_KIND_SHELL; /* degenerate triangles (fe_membrane.c) */
     return t == FE_SECTION_SOLID ? FE_KIND_HEX : t == FE_SECTION_SHELL ? FE_KIND_SHELL : FE_KIND_TRUSS;
 }
 
@@ -48,6 +50,7 @@ void fe_builder_destroy(fe_builder **p)
     free(b->bc);
     free(b->fix);
     free(b->load);
+    fe_restraint_list_free(b);
     free(b);
     *p = NULL;
 }
@@ -88,6 +91,13 @@ mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_er
     if (part < 0 || part >= b->npart)
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: element of unknown part index %d", part);
     int k = fe_section_kind(b->part[part].section.type), nn = kind_nnode[k];
+    if (b->part[part].section.type == FE_SECTION_MEMBRANE && nodes[2] != nodes[3]) {
+        /* a membrane quad becomes two triangles along its 1-3 diagonal */
+        const int t1[4] = {nodes[0], nodes[1], nodes[2], nodes[2]};
+        const int t2[4] = {nodes[0], nodes[2], nodes[3], nodes[3]};
+        mcs_status st = fe_builder_add_elem(b, part, t1, err);
+        return st != MCS_OK ? st : fe_builder_add_elem(b, part, t2, err);
+    }
     for (int i = 0; i < nn; i++) {
         if (nodes[i] < 0 || nodes[i] >= b->nnode)
             return MCS_ERR(err, MCS_ERR_RANGE,
@@ -119,8 +129,15 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
         return MCS_ERR(err, MCS_ERR_RANGE,
                        "fe: part '%s': material.poisson must be in (-1, 0.5), got %g", n,
                        m->poisson);
-    if (m->model != FE_MAT_ELASTIC && m->model != FE_MAT_ELASTIC_PLASTIC)
+    if (m->model != FE_MAT_ELASTIC && m->model != FE_MAT_ELASTIC_PLASTIC &&
+        m->model != FE_MAT_FABRIC)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED, "fe: part '%s': material.model not built yet", n);
+    if ((m->model == FE_MAT_FABRIC) != (d->section.type == FE_SECTION_MEMBRANE))
+        return MCS_ERR(err, MCS_ERR_TYPE,
+                       "fe: part '%s': a membrane section takes material.model fabric, and "
+                       "fabric is for membrane sections only",
+                       n);
+    if (m->model == FE_MAT_FABRIC) return fe_fabric_check(d, err);
     if (m->model == FE_MAT_ELASTIC) return MCS_OK;
     if (m->nhardening < 0 || m->nhardening > FE_CURVE_MAX)
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.hardening: 0..%d points", n,
@@ -160,6 +177,9 @@ static mcs_status check_section(const fe_part_desc *d, mcs_error *err)
             return MCS_ERR(err, MCS_ERR_RANGE,
                            "fe: part '%s': section.integration_points must be 1..%d, got %d", n,
                            FE_NIP_MAX, s->integration_points);
+    } else if (s->type == FE_SECTION_MEMBRANE) {
+        if (!(s->thickness > 0))
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': section.thickness must be > 0", n);
     } else if (s->type == FE_SECTION_TRUSS) {
         if (!(s->area > 0))
             return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': section.area must be > 0", n);
@@ -189,6 +209,7 @@ mcs_status fe_builder_add_part(fe_builder *b, const fe_part_desc *d, int *index,
     if (grow((void **)&b->part, &b->cap_part, b->npart + 1, sizeof *b->part))
         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory adding part '%s'", d->name);
     b->part[b->npart] = *d;
+    if (d->section.type == FE_SECTION_MEMBRANE) b->part[b->npart].section.integration_points = 1;
     int ip = b->npart++;
     if (index) *index = ip;
     if (d->mesh.generate != FE_MESH_NONE) {

@@ -31,6 +31,7 @@ struct fe_builder {
     fe_bload *load;
     int nwall;
     fe_wall_desc wall[FE_WALL_MAX];
+    struct fe_restraint_list *restraints; /* gas bags and retractors to add (fe_restraint.c) */
 };
 
 int fe_kind_nnode(int kind);
@@ -38,5 +39,11 @@ int fe_section_kind(fe_section_type t);
 void fe_builder_part_nodes(const fe_builder *b, int part, unsigned char *mark);
 /* generate the mesh of part ip (fe_mesh.c) */
 mcs_status fe_mesh_generate(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
+/* sphere_shell and cylinder_shell (fe_mesh_shell.c) */
+mcs_status fe_mesh_sphere(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
+mcs_status fe_mesh_cylinder(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
+/* fabric material keys of a membrane part (fe_fabric.c) */
+mcs_status fe_fabric_check(const fe_part_desc *d, mcs_error *err);
+void fe_restraint_list_free(fe_builder *b);
 
 #endif

@@ -2,6 +2,8 @@
  * part, lumped masses, gather lists, boundary conditions, loads, rigid-wall slaves. */
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_elem.h"
+#include "fe/fe_membrane.h"
+#include "fe/fe_restraint.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -30,6 +32,7 @@ void fe_model_destroy(fe_model **p)
     free(m->wall);
     free(m->nodal_load);
     free(m->load_curve);
+    fe_restraints_destroy(&m->restraints);
     free(m);
     *p = NULL;
 }
@@ -73,6 +76,7 @@ static void derive_part(fe_part *p)
                  : p->section.hourglass == FE_HG_VISCOUS ? 0.1 : 0.05;
     p->shear_factor = p->section.shear_factor > 0 ? p->section.shear_factor : 5.0 / 6.0;
     if (p->elem_kind == FE_KIND_SHELL) gauss_points(p->section.integration_points, p->ip_z, p->ip_w);
+    if (mt->model == FE_MAT_FABRIC) p->wave_speed = fe_fabric_wave_speed(mt);
 }
 
 static mcs_status alloc_arrays(fe_model *m, mcs_error *err)
@@ -145,6 +149,7 @@ static mcs_status lump_masses(fe_model *m, mcs_error *err)
                 double mn = rho * t * area / nn;
                 /* rotary inertia scaled up to m A / 8 so rotations do not limit the step */
                 double in = mn * fmax(t * t / 12, area / 8);
+                if (p->section.type == FE_SECTION_MEMBRANE) in = 0; /* no rotations */
                 for (int i = 0; i < nn; i++) {
                     m->node_mass[c[i]] += mn;
                     m->node_inertia[c[i]] += in;
@@ -395,6 +400,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
     }
     if (st == MCS_OK) st = resolve_loads(b, m, err);
     if (st == MCS_OK) st = resolve_walls(b, m, err);
+    if (st == MCS_OK) st = fe_restraints_create(b, m, err); /* may lower opts.dt_max */
     if (st == MCS_OK) {
         for (int n = 0; n < m->nnode; n++)
             for (int c = 0; c < 3; c++)
@@ -405,7 +411,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
             dt = fmin(dt, fe_part_dt(m, ip, m->node_x0, &e));
         }
         m->dt_initial = o.dt_scale * dt;
-        if (o.dt_max > 0) m->dt_initial = fmin(m->dt_initial, o.dt_max);
+        if (m->opts.dt_max > 0) m->dt_initial = fmin(m->dt_initial, m->opts.dt_max);
         m->bytes += sizeof(fe_part) * (size_t)m->npart + sizeof(fe_wall) * (size_t)m->nwall +
                     sizeof(fe_nodal_load) * (size_t)m->nnodal_load +
                     sizeof(fe_load_curve) * (size_t)m->nload;

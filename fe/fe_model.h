@@ -30,7 +30,10 @@ typedef enum {
     FE_MESH_PLATE,          /* shell plate: size[0..1], divisions[0..1], origin, axis = normal */
     FE_MESH_SQUARE_TUBE,    /* shell tube: side, length, element_size, axis    */
     FE_MESH_CIRCULAR_TUBE,  /* shell tube: diameter, length, element_size, axis */
-    FE_MESH_LINE            /* truss line: origin -> end, divisions[0]          */
+    FE_MESH_LINE,           /* truss line: origin -> end, divisions[0]          */
+    FE_MESH_SPHERE_SHELL,   /* closed sphere of quads: radius, element_size, origin = centre */
+    FE_MESH_CYLINDER_SHELL  /* circular cylinder: diameter, length, element_size, axis,
+                               origin = centre of the w = 0 end; closed: end caps (triangles) */
 } fe_mesh_kind;
 
 typedef struct {
@@ -44,9 +47,16 @@ typedef struct {
     double length;         /* tube length along the axis, from 0 to length [m]          */
     double element_size;   /* target element edge for tubes [m]                         */
     int axis;              /* tube axis / plate normal: 0 x, 1 y, 2 z [-]               */
+    double radius;         /* sphere_shell radius [m]                                   */
+    int closed;            /* cylinder_shell: add end caps (a closed surface) [-]       */
 } fe_mesh_desc;
 
-typedef enum { FE_SECTION_SOLID, FE_SECTION_SHELL, FE_SECTION_TRUSS } fe_section_type;
+typedef enum {
+    FE_SECTION_SOLID,
+    FE_SECTION_SHELL,
+    FE_SECTION_TRUSS,
+    FE_SECTION_MEMBRANE /* 3-node membrane (fe_membrane.c); stored as degenerate shells */
+} fe_section_type;
 typedef enum { FE_HG_VISCOUS, FE_HG_STIFFNESS } fe_hourglass;
 
 typedef struct {
@@ -60,7 +70,11 @@ typedef struct {
     double shear_factor;          /* shell transverse shear factor; 0 takes 5/6 [-]             */
 } fe_section_desc;
 
-typedef enum { FE_MAT_ELASTIC, FE_MAT_ELASTIC_PLASTIC } fe_mat_model;
+typedef enum {
+    FE_MAT_ELASTIC,
+    FE_MAT_ELASTIC_PLASTIC,
+    FE_MAT_FABRIC /* membranes only: no compressive stress (fe_fabric.c) */
+} fe_mat_model;
 
 typedef struct {
     fe_mat_model model;                /* elastic | elastic_plastic                          */
@@ -72,6 +86,14 @@ typedef struct {
     double hardening[FE_CURVE_MAX][2]; /* (plastic strain [-], flow stress [Pa]), from 0     */
     double cowper_symonds_c;           /* rate factor 1+(rate/C)^(1/p); 0 = off [1/s]        */
     double cowper_symonds_p;           /* [-]                                                */
+    /* fabric: youngs_modulus/poisson are the fibre-a (warp) values; orthotropic when
+       fabric_e2 > 0 (fibre b = in-plane normal to a) */
+    double fabric_e2;                  /* modulus along fibre b (weft); 0 isotropic [Pa]     */
+    double fabric_g12;                 /* in-plane shear modulus; 0: E/(2(1+nu)) [Pa]        */
+    double fabric_direction[3];        /* fibre a, projected on each element at t = 0; zero:
+                                          the element's first side [-]                        */
+    double fabric_damping;             /* stiffness-proportional damping, fraction of critical
+                                          at the element's highest frequency [-] (0)         */
 } fe_material_desc;
 
 typedef struct {
@@ -224,6 +246,7 @@ typedef struct fe_model {
     double dt_initial;     /* stable step of the undeformed mesh, safety factor applied [s] */
     double mass_total;     /* [kg]                                                        */
     size_t bytes;          /* memory held by the model [B]                                 */
+    struct fe_restraints *restraints; /* gas bags and retractors (fe_restraint.h); NULL none */
 } fe_model;
 
 /* ---- the builder ------------------------------------------------------------------------ */

@@ -1,6 +1,8 @@
 /* fe_stages: the sub-stages of fe_step (internal forces, contact, external forces,
  * accelerations, integration, stable step). Each reads and writes only what its comment says. */
 #include "fe/fe_elem.h"
+#include "fe/fe_membrane.h"
+#include "fe/fe_restraint.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -13,7 +15,10 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
     for (int ip = 0; ip < m->npart; ip++) {
         switch (m->part[ip].elem_kind) {
         case FE_KIND_HEX: fe_hex_part(m, s, ip); break;
-        case FE_KIND_SHELL: fe_shell_part(m, s, ip); break;
+        case FE_KIND_SHELL:
+            if (m->part[ip].section.type == FE_SECTION_MEMBRANE) fe_membrane_part(m, s, ip);
+            else fe_shell_part(m, s, ip);
+            break;
         default: fe_truss_part(m, s, ip); break;
         }
     }
@@ -88,6 +93,8 @@ void fe_external_forces(const fe_model *m, fe_state *s)
         }
         for (int j = 0; j < 3; j++) s->node_fext[3 * l->node + j] += sc * l->force[j];
     }
+    /* gas bag pressures and retractor pulls (fe_restraint_step.c); errors go to s->err */
+    if (m->restraints) fe_restraint_forces(m, s);
 }
 
 /* reads node_fext, node_fint, masses; writes node_a */

@@ -1,5 +1,6 @@
 /* fe_state: allocation (once), reset, energy names and per-part energies. */
 #include "fe/fe_elem.h"
+#include "fe/fe_restraint.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -28,6 +29,7 @@ void fe_state_destroy(fe_state **p)
     FE_STATE_ARRAYS(FE_X_FREE)
 #undef FE_X_FREE
     mcs_arena_destroy(&s->arena);
+    fe_restraint_state_destroy(&s->restraint);
     free(s);
     *p = NULL;
 }
@@ -51,6 +53,7 @@ mcs_status fe_state_create(const fe_model *m, fe_state **out, mcs_error *err)
     FE_STATE_ARRAYS(FE_X_ALLOC)
 #undef FE_X_ALLOC
     mcs_status st = mcs_arena_create(FE_ARENA_BYTES, &s->arena, err);
+    if (st == MCS_OK) st = fe_restraint_state_create(m, &s->restraint, &s->bytes, err);
     if (st != MCS_OK) {
         fe_state_destroy(&s);
         return st;
@@ -83,6 +86,7 @@ void fe_state_reset(const fe_model *m, fe_state *s)
     s->hist_next = 0;
     mcs_error_clear(&s->err);
     mcs_arena_reset(s->arena, 0);
+    fe_restraint_state_reset(m, s);
 }
 
 double fe_part_energy(const fe_model *m, const fe_state *s, int part, fe_energy_kind k)

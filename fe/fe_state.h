@@ -108,6 +108,7 @@ typedef struct fe_state {
     mcs_error err;                /* why the run stopped (MCS_ERR_NUMERIC ...), else MCS_OK     */
     mcs_arena *arena;             /* scratch for per-step temporaries                          */
     size_t bytes;                 /* memory held by the state, arena included [B]              */
+    struct fe_restraint_state *restraint; /* gas and retractor states (fe_restraint.h); NULL none */
 
 #define FE_X_DECL(T, name, n, k, unit, doc) T *name;
     FE_STATE_ARRAYS(FE_X_DECL)

@@ -27,6 +27,7 @@ mcs_status fe_step(const fe_model *m, fe_state *s)
     TIMED(contact, fe_contact_forces(m, s));
     /* t, load curves -> node_fext += nodal loads */
     TIMED(external, fe_external_forces(m, s));
+    if (s->err.status != MCS_OK) return s->err.status; /* a gas bag or retractor failed */
     /* node_fext, node_fint, masses -> node_a */
     TIMED(accelerate, fe_accelerations(m, s));
     /* a, moments -> v, w (t + dt/2) with constraints and kinematic walls; x(t + dt); works */

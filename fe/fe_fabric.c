@@ -1,0 +1,121 @@
+/* fe_fabric: the fabric membrane material — linear elastic in the fibre frame (St. Venant-
+ * Kirchhoff: second Piola-Kirchhoff stress S linear in the Green strain E, so large rotations
+ * are exact) with no compressive stress (tension-field theory, wrinkling).
+ *
+ * Isotropic fabric (fabric_e2 = 0): the mixed principal-strain / principal-stress wrinkling
+ * criterion of tension-field theory (Roddeman et al. 1987, J. Appl. Mech. 54:884-892; Kang & Im
+ * 1997, J. Appl. Mech. 64:263-269). With principal strains e1 >= e2 and directions n1, n2:
+ *   taut      e2 >= -nu e1 (both principal stresses >= 0):   S = Q : E
+ *   slack     e1 <= 0:                                       S = 0
+ *   wrinkled  otherwise: uniaxial tension along n1,          S = E e1 n1 n1
+ * (the wrinkled energy E e1^2 / 2 is the relaxed strain energy; it joins the taut and slack
+ * ones continuously, so the material stays hyperelastic and conserves energy).
+ * Orthotropic fabric (fabric_e2 > 0, fibre a along fabric_direction, b normal to it in the
+ * plane): S = Q : E in the fibre frame, then its compressive principal stresses are set to zero
+ * (S = sum max(s_i, 0) n_i n_i) — principal-stress elimination; this one is not derived from a
+ * potential, so a fabric strained through wrinkled states may show a small energy residual.
+ * Strains and stresses are (xx, yy, xy) tensor components in the fibre frame. */
+#include "fe/fe_builder_impl.h"
+#include "fe/fe_membrane.h"
+
+#include <math.h>
+
+void fe_fabric_constants(const fe_material_desc *mt, fe_fabric_c *c)
+{
+    const double E1 = mt->youngs_modulus, nu = mt->poisson;
+    c->iso = !(mt->fabric_e2 > 0);
+    c->E = E1;
+    c->nu = nu;
+    if (c->iso) {
+        double q = E1 / (1 - nu * nu);
+        c->q11 = c->q22 = q;
+        c->q12 = nu * q;
+        c->q66 = E1 / (2 * (1 + nu));
+        return;
+    }
+    const double E2 = mt->fabric_e2, nu21 = nu * E2 / E1, d = 1 - nu * nu21;
+    c->q11 = E1 / d;
+    c->q22 = E2 / d;
+    c->q12 = nu * E2 / d;
+    c->q66 = mt->fabric_g12 > 0 ? mt->fabric_g12 : E1 / (2 * (1 + nu));
+}
+
+double fe_fabric_wave_speed(const fe_material_desc *mt)
+{
+    fe_fabric_c c;
+    fe_fabric_constants(mt, &c);
+    double q = fmax(fmax(c.q11, c.q22), c.q66);
+    double z = mt->fabric_damping;
+    /* stiffness-proportional damping at ratio z of the top frequency shrinks the central-
+     * difference limit 2/w to (2/w)(sqrt(1 + z^2) - z) (Belytschko, Liu & Moran 2000, §6.3) */
+    return sqrt(q / mt->density) / (sqrt(1 + z * z) - z);
+}
+
+/* principal values (a >= b) and the direction (cs, sn) of a of the symmetric 2x2 tensor t */
+static void principal(const double t[3], double *a, double *b, double *cs, double *sn)
+{
+    double m = 0.5 * (t[0] + t[1]), h = 0.5 * (t[0] - t[1]), r = sqrt(h * h + t[2] * t[2]);
+    *a = m + r;
+    *b = m - r;
+    double th = 0.5 * atan2(t[2], h);
+    *cs = cos(th);
+    *sn = sin(th);
+}
+
+int fe_fabric_stress(const fe_fabric_c *c, const double e[3], double s[3])
+{
+    double e1, e2, cs, sn;
+    if (c->iso) {
+        principal(e, &e1, &e2, &cs, &sn);
+        if (e1 <= 0) {
+            s[0] = s[1] = s[2] = 0;
+            return FE_FABRIC_SLACK;
+        }
+        if (e2 < -c->nu * e1) {
+            double f = c->E * e1;
+            s[0] = f * cs * cs;
+            s[1] = f * sn * sn;
+            s[2] = f * cs * sn;
+            return FE_FABRIC_WRINKLED;
+        }
+    }
+    s[0] = c->q11 * e[0] + c->q12 * e[1];
+    s[1] = c->q12 * e[0] + c->q22 * e[1];
+    s[2] = 2 * c->q66 * e[2];
+    if (c->iso) return FE_FABRIC_TAUT;
+    double s1, s2;
+    principal(s, &s1, &s2, &cs, &sn);
+    if (s1 <= 0) {
+        s[0] = s[1] = s[2] = 0;
+        return FE_FABRIC_SLACK;
+    }
+    if (s2 < 0) {
+        s[0] = s1 * cs * cs;
+        s[1] = s1 * sn * sn;
+        s[2] = s1 * cs * sn;
+        return FE_FABRIC_WRINKLED;
+    }
+    return FE_FABRIC_TAUT;
+}
+
+mcs_status fe_fabric_check(const fe_part_desc *d, mcs_error *err)
+{
+    const fe_material_desc *m = &d->material;
+    const char *n = d->name;
+    if (!(m->fabric_e2 >= 0) || !(m->fabric_g12 >= 0) || !isfinite(m->fabric_e2 + m->fabric_g12))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: part '%s': material.youngs_modulus_b and shear_modulus must be >= 0",
+                       n);
+    if (m->fabric_e2 > 0 && !(m->poisson * m->poisson * m->fabric_e2 < m->youngs_modulus))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: part '%s': material: poisson^2 E_b < E_a is needed for a positive "
+                       "definite fabric",
+                       n);
+    if (!(m->fabric_damping >= 0 && m->fabric_damping <= 1))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.damping must be in [0, 1]", n);
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(m->fabric_direction[i]))
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.direction is not finite",
+                           n);
+    return MCS_OK;
+}

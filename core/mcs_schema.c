@@ -608,6 +608,35 @@ static const mcs_skey fe_contact_keys[] = {
 static const mcs_smap fe_contact_map = {
     .what = "FE contact", .keys = fe_contact_keys, .disc = "type", .variants = fe_contact_variants};
 
+/* ---- fe: discrete springs and dampers, point masses (fe/fe_discrete.c) ---- */
+
+static const mcs_skey spring_end_keys[] = {
+    /* a node of a part (the one nearest to point), or without part a fixed anchor point */
+    R("part", PART, 0, "FE part whose node nearest to point is the end (none: fixed anchor)"),
+    V("point", LEN, 3, 3, REQ, 0, "point [m]"),
+    END,
+};
+static const mcs_smap spring_end_map = {.what = "spring end", .keys = spring_end_keys};
+static const mcs_skey spring_keys[] = {
+    S("name", 0, "spring name"),
+    M("a", spring_end_map, REQ, "first end"),
+    M("b", spring_end_map, REQ, "second end"),
+    Q("stiffness", MCS_DIM_STIFFNESS, GE, 0, 0, "linear stiffness, F = k (l - l0) [N/m]"),
+    C("curve", LEN, FRC, 2, 0, 0, "[[elongation m, force N], ...] instead of stiffness"),
+    Q("damping", MCS_DIM_DAMPING, GE, 0, 0, "viscous damping, F = c dl/dt [N s/m]"),
+    END,
+};
+static const mcs_smap spring_map = {.what = "spring", .keys = spring_keys};
+static const mcs_skey fe_mass_keys[] = {
+    R("part", PART, REQ, "FE part"),
+    /* one of where (split equally) or point (the nearest node) */
+    E("where", "x_min|x_max|y_min|y_max|z_min|z_max|all", 0, "nodes sharing the mass equally"),
+    V("point", LEN, 3, 3, 0, 0, "the part's node nearest to this point carries the mass [m]"),
+    Q("mass", MCS_DIM_MASS, REQ | GT, 0, 0, "added mass [kg]"),
+    END,
+};
+static const mcs_smap fe_mass_map = {.what = "point mass", .keys = fe_mass_keys};
+
 static const mcs_skey fe_keys[] = {
     L("parts", part_map, REQ | NE, "FE parts"),
     L("boundary", boundary_map, 0, "boundary conditions"),
@@ -618,6 +647,8 @@ static const mcs_skey fe_keys[] = {
     Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),
     Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),
     Q("energy_growth_limit", NONE, GE, 0, 0, "stop when total energy grows by this fraction"),
+    L("springs", spring_map, 0, "discrete springs and dampers"),
+    L("masses", fe_mass_map, 0, "point masses"),
     END,
 };
 static const mcs_smap fe_map = {.what = "fe block", .keys = fe_keys};

@@ -51,6 +51,8 @@ void fe_builder_destroy(fe_builder **p)
     free(b->fix);
     free(b->load);
     fe_restraint_list_free(b);
+    free(b->spring);
+    free(b->mass);
     free(b);
     *p = NULL;
 }

@@ -32,6 +32,10 @@ struct fe_builder {
     int nwall;
     fe_wall_desc wall[FE_WALL_MAX];
     struct fe_restraint_list *restraints; /* gas bags and retractors to add (fe_restraint.c) */
+    int nspring, cap_spring;                      /* discrete springs (fe_discrete.c) */
+    fe_spring_desc *spring;
+    int nmass, cap_mass;                          /* point masses                      */
+    fe_mass_desc *mass;
 };
 
 int fe_kind_nnode(int kind);

@@ -4,6 +4,7 @@
 #include "fe/fe_elem.h"
 #include "fe/fe_membrane.h"
 #include "fe/fe_restraint.h"
+#include "fe/fe_solid.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -33,6 +34,7 @@ void fe_model_destroy(fe_model **p)
     free(m->nodal_load);
     free(m->load_curve);
     fe_restraints_destroy(&m->restraints);
+    fe_solid_free(m);
     free(m);
     *p = NULL;
 }
@@ -389,6 +391,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
         sort_elements(b, m);
         st = lump_masses(m, err);
     }
+    if (st == MCS_OK) st = fe_solid_build(b, m, err); /* point masses, springs, rigid bodies */
     if (st == MCS_OK) {
         build_gather(m);
         /* initial velocities by part, then prescribed velocities of fixed dofs */
@@ -410,6 +413,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
             int e;
             dt = fmin(dt, fe_part_dt(m, ip, m->node_x0, &e));
         }
+        dt = fmin(dt, m->dt_discrete);
         m->dt_initial = o.dt_scale * dt;
         if (m->opts.dt_max > 0) m->dt_initial = fmin(m->dt_initial, m->opts.dt_max);
         m->bytes += sizeof(fe_part) * (size_t)m->npart + sizeof(fe_wall) * (size_t)m->nwall +

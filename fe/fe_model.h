@@ -58,6 +58,9 @@ typedef enum {
     FE_SECTION_MEMBRANE /* 3-node membrane (fe_membrane.c); stored as degenerate shells */
 } fe_section_type;
 typedef enum { FE_HG_VISCOUS, FE_HG_STIFFNESS } fe_hourglass;
+/* hex8 formulation: one point + hourglass control (default), or 2x2x2 Gauss with the mean
+ * dilatation (B-bar) volumetric term (fe_hex_full.c) */
+typedef enum { FE_HEX_ONE_POINT, FE_HEX_FULL } fe_hex_formulation;
 
 typedef struct {
     fe_section_type type;         /* solid (hex8) | shell (BT quad) | truss (2-node)           */
@@ -68,13 +71,18 @@ typedef struct {
     fe_hourglass hourglass;       /* hourglass control form                                     */
     double hourglass_coefficient; /* Q_hg [-]; 0 takes the default (0.1 viscous, 0.05 stiffness) */
     double shear_factor;          /* shell transverse shear factor; 0 takes 5/6 [-]             */
+    fe_hex_formulation formulation; /* solid: one point (default) or fully integrated          */
 } fe_section_desc;
 
 typedef enum {
     FE_MAT_ELASTIC,
     FE_MAT_ELASTIC_PLASTIC,
-    FE_MAT_FABRIC /* membranes only: no compressive stress (fe_fabric.c) */
+    FE_MAT_FABRIC, /* membranes only: no compressive stress (fe_fabric.c) */
+    FE_MAT_FOAM,   /* hex8: rate-dependent hysteretic foam (fe_foam.c) */
+    FE_MAT_RIGID   /* any element: the part is one 6-DOF body (fe_rigid.c) */
 } fe_mat_model;
+
+#define FE_FOAM_NCURVE 8 /* most loading curves (strain rates) of a foam */
 
 typedef struct {
     fe_mat_model model;                /* elastic | elastic_plastic                          */
@@ -94,6 +102,14 @@ typedef struct {
                                           the element's first side [-]                        */
     double fabric_damping;             /* stiffness-proportional damping, fraction of critical
                                           at the element's highest frequency [-] (0)         */
+    /* foam (fe_foam.c): nominal stress vs. engineering compressive strain, one curve per rate */
+    int nfoam_curve;                   /* loading curves (1..FE_FOAM_NCURVE) [-]               */
+    double foam_rate[FE_FOAM_NCURVE];  /* their engineering strain rates, increasing [1/s]    */
+    int foam_npoint[FE_FOAM_NCURVE];   /* points of each curve (2..FE_CURVE_MAX) [-]          */
+    double foam_curve[FE_FOAM_NCURVE][FE_CURVE_MAX][2]; /* (strain [-], stress [Pa]) from (0,0) */
+    double foam_hysteresis;            /* unloading factor HU in (0, 1]; 1: no hysteresis [-]  */
+    double foam_shape;                 /* unloading shape exponent (> 0; 0 takes 1) [-]        */
+    double foam_tension_cutoff;        /* largest tensile stress (0: no cutoff) [Pa]           */
 } fe_material_desc;
 
 typedef struct {
@@ -157,6 +173,9 @@ typedef struct {
                                    the largest energy seen [-] (0.05); 0 disables            */
     double history_interval;    /* sampling interval of the history arrays [s] (0: every step) */
     int history_capacity;       /* samples kept (0: none) [-]                                  */
+    double gravity[3];          /* acceleration of gravity on every node with mass [m/s^2] (0) */
+    double mass_scaling_dt;     /* target step, safety factor included: elements whose step is
+                                   smaller get mass so theirs is this (LS-DYNA DT2MS < 0); 0 off [s] */
 } fe_opts;
 
 fe_opts fe_opts_default(void);
@@ -180,6 +199,8 @@ typedef struct {
     double shear_factor;/* shell transverse shear factor [-]                            */
     double ip_z[FE_NIP_MAX]; /* shell point positions in [-1/2, 1/2] of the thickness [-] */
     double ip_w[FE_NIP_MAX]; /* their weights, summing to 1 [-]                           */
+    int gp_begin;       /* fully integrated hex: first of its 8 x nelem Gauss points in hex_gp */
+    int body;           /* rigid part: its body (fe_rigid.c); -1 otherwise [-]          */
 } fe_part;
 
 enum { FE_KIND_HEX, FE_KIND_SHELL, FE_KIND_TRUSS, FE_NKIND };
@@ -220,7 +241,8 @@ typedef struct {
     X(int, shell_node, nshell, 4, "-", "shell connectivity, counter-clockwise about the normal")   \
     X(int, shell_part, nshell, 1, "-", "part of each shell")                                       \
     X(int, truss_node, ntruss, 2, "-", "truss connectivity")                                       \
-    X(int, truss_part, ntruss, 1, "-", "part of each truss")
+    X(int, truss_part, ntruss, 1, "-", "part of each truss")                                     \
+    X(int, node_body, nnode, 1, "-", "rigid body carrying the node, -1 none")
 
 typedef struct fe_model {
     /* sizes */
@@ -247,6 +269,20 @@ typedef struct fe_model {
     double mass_total;     /* [kg]                                                        */
     size_t bytes;          /* memory held by the model [B]                                 */
     struct fe_restraints *restraints; /* gas bags and retractors (fe_restraint.h); NULL none */
+
+    /* discrete springs and dampers, rigid bodies, mass scaling (fe_discrete.c, fe_rigid.c,
+     * fe_massscale.c) */
+    int nspring;           /* discrete springs/dampers [-]                                 */
+    struct fe_spring *spring; /* (nspring)                                                 */
+    double dt_discrete;    /* stable step of the springs, no safety factor (inf: none) [s]  */
+    int nbody, nbody_node; /* rigid bodies; nodes they carry [-]                           */
+    struct fe_body *body;  /* (nbody)                                                      */
+    int *body_node;        /* nodes of the bodies, body by body (nbody_node)               */
+    double *body_r0;       /* those nodes about their body's centre of mass at t = 0 [m] (nbody_node x 3) */
+    int nhex_gp;           /* Gauss points of fully integrated hexes (8 each) [-]          */
+    double *elem_dt_factor; /* mass scaling: element step factor, hex then shell then truss
+                               (nelem), NULL without mass scaling [-]                       */
+    double mass_added;     /* mass added by mass scaling [kg]                              */
 } fe_model;
 
 /* ---- the builder ------------------------------------------------------------------------ */
@@ -283,5 +319,38 @@ void fe_model_destroy(fe_model **p);
 
 /* descriptors with the documented defaults (zeros elsewhere) */
 fe_part_desc fe_part_desc_default(void);
+
+/* ---- discrete springs and dampers, point masses (fe_discrete.c) ------------------------- */
+
+/* a spring end: a node; or (node -1) the node of `part` nearest to `point`; or (node -1,
+ * part "") a fixed anchor at `point` */
+typedef struct {
+    int node;               /* node index, or -1 [-]                                      */
+    char part[FE_NAME_MAX]; /* part to pick the node from ("" with node -1: anchor)       */
+    double point[3];        /* [m]                                                        */
+} fe_spring_end;
+
+typedef struct {
+    char name[FE_NAME_MAX];        /* for messages                                          */
+    fe_spring_end end[2];
+    double stiffness;              /* F = k (l - l0), tension positive [N/m]                */
+    int ncurve;                    /* > 0: F = curve(l - l0) instead of k [-]              */
+    double curve[FE_CURVE_MAX][2]; /* (elongation [m], force [N]), elongation increasing    */
+    double damping;                /* F = c dl/dt [N s/m]                                   */
+} fe_spring_desc;
+
+/* a point mass: on one node, on the node of a part nearest to a point, or split equally
+ * over a part's nodes on a side (`where`) */
+typedef struct {
+    int node;               /* node index, or -1: select in part [-]                      */
+    char part[FE_NAME_MAX];
+    fe_where where;         /* with at_point 0                                            */
+    int at_point;           /* 1: the node of part nearest to point [-]                    */
+    double point[3];        /* [m]                                                        */
+    double mass;            /* total added mass [kg]                                      */
+} fe_mass_desc;
+
+mcs_status fe_builder_add_spring(fe_builder *b, const fe_spring_desc *d, mcs_error *err);
+mcs_status fe_builder_add_mass(fe_builder *b, const fe_mass_desc *d, mcs_error *err);
 
 #endif

@@ -3,6 +3,7 @@
 #include "fe/fe_elem.h"
 #include "fe/fe_membrane.h"
 #include "fe/fe_restraint.h"
+#include "fe/fe_solid.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -43,6 +44,7 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
         fi[0] = f0, fi[1] = f1, fi[2] = f2;
         mi[0] = m0, mi[1] = m1, mi[2] = m2;
     }
+    fe_discrete_forces(m, s); /* springs and dampers add to node_fint */
 }
 
 /* reads x, time; writes node_fext (zeroed here, then penalty rigid-wall forces) and the
@@ -95,6 +97,7 @@ void fe_external_forces(const fe_model *m, fe_state *s)
     }
     /* gas bag pressures and retractor pulls (fe_restraint_step.c); errors go to s->err */
     if (m->restraints) fe_restraint_forces(m, s);
+    fe_gravity_forces(m, s);
 }
 
 /* reads node_fext, node_fint, masses; writes node_a */
@@ -219,7 +222,8 @@ static void record_history(const fe_model *m, fe_state *s)
 mcs_status fe_stable_step(const fe_model *m, fe_state *s)
 {
     const double t = s->time;
-    double e_int = 0, e_hg = 0, e_diss = s->work_damp, dtmin = INFINITY;
+    double e_int = s->free_energy[FE_E_internal], e_hg = 0;
+    double e_diss = s->work_damp + s->free_energy[FE_E_dissipated], dtmin = m->dt_discrete;
     for (int ip = 0; ip < m->npart; ip++) {
         const double *pe = s->part_energy + FE_NENERGY * ip;
         e_int += pe[FE_E_internal];

@@ -1,6 +1,7 @@
 /* fe_state: allocation (once), reset, energy names and per-part energies. */
 #include "fe/fe_elem.h"
 #include "fe/fe_restraint.h"
+#include "fe/fe_solid.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -87,6 +88,7 @@ void fe_state_reset(const fe_model *m, fe_state *s)
     mcs_error_clear(&s->err);
     mcs_arena_reset(s->arena, 0);
     fe_restraint_state_reset(m, s);
+    fe_solid_reset(m, s);
 }
 
 double fe_part_energy(const fe_model *m, const fe_state *s, int part, fe_energy_kind k)

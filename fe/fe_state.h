@@ -84,7 +84,17 @@ extern const char *const fe_stage_name[FE_NSTAGE];
     X(double, hist_time, opts.history_capacity, 1, "s", "history sample times")                  \
     X(double, hist_energy, opts.history_capacity, FE_NENERGY, "J", "energies at samples")        \
     X(double, hist_wall_force, opts.history_capacity, FE_WALL_MAX, "N", "wall normal force")     \
-    X(double, hist_wall_disp, opts.history_capacity, FE_WALL_MAX, "m", "wall displacement")
+    X(double, hist_wall_disp, opts.history_capacity, FE_WALL_MAX, "m", "wall displacement")     \
+    X(double, spring_f, nspring, 1, "N", "spring force, tension positive")                         \
+    X(double, spring_fd, nspring, 1, "N", "damper force, tension positive")                        \
+    X(double, spring_d, nspring, 1, "m", "elongation at the last force evaluation")                \
+    X(double, body_x, nbody, 3, "m", "rigid body centre of mass")                                  \
+    X(double, body_v, nbody, 3, "m/s", "rigid body velocity at t + dt/2")                          \
+    X(double, body_rot, nbody, 9, "-", "rigid body rotation from t = 0 (row-major)")              \
+    X(double, body_l, nbody, 3, "N m s", "rigid body angular momentum at t + dt/2")                \
+    X(double, body_w, nbody, 3, "rad/s", "rigid body angular velocity at t + dt/2")                \
+    X(double, body_fm, nbody, 6, "N, N m", "force and moment on the body at t")                    \
+    X(double, hex_gp, nhex_gp, 7, "Pa", "full hex: stress (6), plastic strain or foam history")
 
 typedef struct fe_state {
     double time;                  /* t [s]                                                     */
@@ -113,6 +123,8 @@ typedef struct fe_state {
 #define FE_X_DECL(T, name, n, k, unit, doc) T *name;
     FE_STATE_ARRAYS(FE_X_DECL)
 #undef FE_X_DECL
+    double free_energy[FE_NENERGY]; /* energies of what belongs to no part: springs and dampers
+                                     (internal, dissipated) [J]                                */
 } fe_state;
 
 /* allocate every array once (and the scratch arena), then fe_state_reset */

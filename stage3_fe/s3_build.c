@@ -3,6 +3,7 @@
  * (axis names, tangent_modulus -> a hardening table) and locates every kernel error at the
  * scenario node it came from. */
 #include "stage3_fe/s3_build.h"
+#include "stage3_fe/s3_build_solid.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -306,12 +307,6 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     const mcs_node *sim = get(root, "simulation");
     if (mcs_node_kind(fe) != MCS_NODE_MAP)
         return mcs_node_error(root, err, MCS_ERR_KEY, "no fe: block (stage 3 runs an FE model)");
-    if (mcs_node_num_or(get(root, "environment"), "gravity", 0) > 0)
-        mcs_log(MCS_LOG_WARN, "%s:%d:%d: warning: environment.gravity is ignored by stage 3 "
-                              "(the fe kernel has no gravity yet)",
-                mcs_node_file(get(get(root, "environment"), "gravity")),
-                mcs_node_line(get(get(root, "environment"), "gravity")),
-                mcs_node_col(get(get(root, "environment"), "gravity")));
     mcs_status st = check_contacts(get(fe, "contacts"), err);
     if (st) return st;
 
@@ -319,6 +314,7 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     opts.dt_scale = mcs_node_num_or(sim, "time_step_scale", opts.dt_scale);
     opts.dt_max = mcs_node_num_or(sim, "time_step", 0);
     opts.history_capacity = 0; /* the run samples the state itself (s3_run.c) */
+    s3_solid_opts(root, &opts); /* gravity, mass scaling */
     out->end_time = mcs_node_num(get(sim, "end_time"));
     out->output_rate = mcs_node_num_or(sim, "output_rate", S3_OUTPUT_RATE_DEFAULT);
 
@@ -330,6 +326,7 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     if (!st) st = add_boundaries(b, get(fe, "boundary"), err);
     if (!st) st = add_loads(b, get(fe, "loads"), err);
     if (!st) st = add_walls(b, get(fe, "rigid_walls"), err);
+    if (!st) st = s3_solid_add(b, fe, err); /* springs, point masses */
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
         if (st) relocate(st, fe, &kerr, err);

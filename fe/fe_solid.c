@@ -1,0 +1,51 @@
+/* fe_solid: model-building and state-reset entry points of the discrete, rigid, foam,
+ * fully integrated hex and mass scaling modules (fe_solid.h), called once each from
+ * fe_model_create, fe_model_destroy and fe_state_reset. */
+#include "fe/fe_elem.h"
+#include "fe/fe_solid.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static mcs_status check_opts(const fe_model *m, mcs_error *err)
+{
+    const fe_opts *o = &m->opts;
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(o->gravity[i]))
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: options: gravity is not finite");
+    if (!(o->mass_scaling_dt >= 0) || !isfinite(o->mass_scaling_dt))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: options: mass scaling time step must be >= 0");
+    return MCS_OK;
+}
+
+mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err)
+{
+    mcs_status st = check_opts(m, err);
+    if (st) return st;
+    for (int n = 0; n < m->nnode; n++) m->node_body[n] = -1;
+    for (int ip = 0; ip < m->npart; ip++) m->part[ip].body = -1;
+    st = fe_discrete_build(b, m, err);
+    if (!st) st = fe_discrete_steps(m, err);
+    return st;
+}
+
+void fe_solid_free(fe_model *m)
+{
+    free(m->spring);
+    free(m->body);
+    free(m->body_node);
+    free(m->body_r0);
+    free(m->elem_dt_factor);
+    m->spring = NULL;
+    m->body = NULL;
+    m->body_node = NULL;
+    m->body_r0 = NULL;
+    m->elem_dt_factor = NULL;
+}
+
+void fe_solid_reset(const fe_model *m, fe_state *s)
+{
+    (void)m;
+    memset(s->free_energy, 0, sizeof s->free_energy);
+}

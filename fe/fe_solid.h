@@ -1,0 +1,78 @@
+/* fe_solid: private interface of the discrete springs and dampers, point masses, gravity,
+ * foam, rigid bodies, the fully integrated hex and mass scaling (fe_discrete.c, fe_gravity.c,
+ * fe_foam.c, fe_rigid.c, fe_hex_full.c, fe_massscale.c) and the hooks the kernel calls.
+ * Not a public header. */
+#ifndef FE_SOLID_H
+#define FE_SOLID_H
+
+#include "fe/fe_builder_impl.h"
+#include "fe/fe_state.h"
+
+/* a discrete spring/damper of the frozen model */
+typedef struct fe_spring {
+    int node[2];                   /* nodes; -1: the end is the fixed anchor [-]              */
+    double anchor[2][3];           /* fixed ends [m]                                          */
+    double length0;                /* length at t = 0 [m]                                     */
+    double stiffness;              /* [N/m]                                                   */
+    int ncurve;                    /* > 0: tabulated force [-]                                */
+    double curve[FE_CURVE_MAX][2]; /* (elongation [m], force [N])                             */
+    double damping;                /* [N s/m]                                                 */
+    char name[FE_NAME_MAX];
+} fe_spring;
+
+/* a rigid body: one rigid part's nodes moving as one 6-DOF body */
+typedef struct fe_body {
+    int part;                 /* the rigid part [-]                                          */
+    int node_begin, node_end; /* its nodes in m->body_node / m->body_r0 [-]                  */
+    double mass;              /* sum of the nodal masses [kg]                                */
+    double x0[3];             /* centre of mass at t = 0 [m]                                 */
+    double inertia0[3][3];    /* inertia about x0 in the t = 0 axes [kg m^2]                  */
+    double inertia0_inv[3][3];/* its inverse [1/(kg m^2)]                                    */
+} fe_body;
+
+/* ---- model building (fe_model_create calls fe_solid_build after lumping the masses) ---- */
+
+/* point masses, springs, mass scaling, rigid bodies, fully integrated hex Gauss points */
+mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err);
+/* frees what fe_solid_build allocated */
+void fe_solid_free(fe_model *m);
+/* builder-side checks of the foam keys and the rigid/full-hex section (fe_builder_add_part) */
+mcs_status fe_foam_check(const fe_part_desc *d, mcs_error *err);
+/* derived constants of a foam part (wave speed from the stiffest curve) */
+void fe_foam_derive(fe_part *p);
+
+mcs_status fe_discrete_build(const fe_builder *b, fe_model *m, mcs_error *err);
+/* stable step of the springs (m->dt_discrete) from the final nodal masses */
+mcs_status fe_discrete_steps(fe_model *m, mcs_error *err);
+mcs_status fe_rigid_build(fe_model *m, mcs_error *err);
+mcs_status fe_massscale_build(fe_model *m, mcs_error *err);
+
+/* ---- the time loop ---- */
+
+/* state reset: bodies at rest at t = 0 with the nodes' initial velocities */
+void fe_solid_reset(const fe_model *m, fe_state *s);
+/* reads x, v (t - dt/2); adds spring/damper forces to node_fint, energies to free_energy */
+void fe_discrete_forces(const fe_model *m, fe_state *s);
+/* adds m g to node_fext of every node with mass */
+void fe_gravity_forces(const fe_model *m, fe_state *s);
+/* after the node update: moves the rigid bodies and their nodes, kinetic energy and works */
+void fe_rigid_integrate(const fe_model *m, fe_state *s);
+/* element loop of a fully integrated hex part (fe_hex_part hands over) */
+void fe_hex_full_part(const fe_model *m, fe_state *s, int ip);
+/* foam stress from the deformation gradient F (t = 0 -> t) and the rate of deformation D:
+ * Cauchy stress sig (xx yy zz xy yz zx) written, *emax (largest compressive strain seen) and
+ * *rate (filtered engineering strain rate) updated */
+void fe_foam_stress(const fe_part *p, const double F[3][3], const double D[3][3], double sig[6],
+                    double *emax, double *rate);
+/* deformation gradient at the centre of a hex: x (current) against x0 (t = 0) */
+void fe_hex_deformation(const double x0[8][3], const double x[8][3], double F[3][3]);
+
+/* element step factor of mass scaling (1 without); kind FE_KIND_*, e the index in the kind */
+static inline double fe_dt_factor(const fe_model *m, int kind, int e)
+{
+    if (!m->elem_dt_factor) return 1;
+    int off = kind == FE_KIND_HEX ? 0 : kind == FE_KIND_SHELL ? m->nhex : m->nhex + m->nshell;
+    return m->elem_dt_factor[off + e];
+}
+
+#endif

@@ -1,0 +1,119 @@
+/* s3_build_solid.c: see s3_build_solid.h. */
+#include "stage3_fe/s3_build_solid.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static const mcs_node *get(const mcs_node *m, const char *k) { return mcs_node_get(m, k); }
+
+static int given(const mcs_node *m, const char *k)
+{
+    return mcs_node_kind(get(m, k)) != MCS_NODE_NULL;
+}
+
+static mcs_status relocate(mcs_status st, const mcs_node *n, mcs_error *kerr, mcs_error *err)
+{
+    if (st == MCS_OK) return MCS_OK;
+    return mcs_node_error(n, err, st, "%s", kerr->msg);
+}
+
+static fe_where where_of(const char *s)
+{
+    static const char *names[] = {"all", "x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+    for (int i = 0; i < 7; i++)
+        if (s && strcmp(s, names[i]) == 0) return (fe_where)i;
+    return FE_WHERE_ALL;
+}
+
+void s3_solid_opts(const mcs_node *root, fe_opts *opts)
+{
+    /* DESIGN.md: z up, gravity a magnitude acting along -z */
+    opts->gravity[2] = -mcs_node_num_or(get(root, "environment"), "gravity", 0);
+    opts->mass_scaling_dt =
+        mcs_node_num_or(get(get(root, "fe"), "mass_scaling"), "time_step", 0);
+}
+
+/* a table [[x, y], ...] of at most FE_CURVE_MAX points into c */
+static mcs_status read_table(const mcs_node *n, double (*c)[2], int *np, mcs_error *err)
+{
+    int len = mcs_node_curve_len(n);
+    double x[FE_CURVE_MAX], y[FE_CURVE_MAX];
+    if (len > FE_CURVE_MAX)
+        return mcs_node_error(n, err, MCS_ERR_RANGE, "at most %d points, got %d", FE_CURVE_MAX,
+                              len);
+    mcs_status st = mcs_node_curve(n, x, y, FE_CURVE_MAX, err);
+    if (st) return st;
+    for (int i = 0; i < len; i++) c[i][0] = x[i], c[i][1] = y[i];
+    *np = len;
+    return MCS_OK;
+}
+
+static mcs_status read_end(const mcs_node *e, fe_spring_end *d, mcs_error *err)
+{
+    d->node = -1;
+    const char *part = mcs_node_str(get(e, "part"));
+    if (part) snprintf(d->part, sizeof d->part, "%s", part);
+    return mcs_node_vec3(get(e, "point"), d->point, err);
+}
+
+static mcs_status add_springs(fe_builder *b, const mcs_node *list, mcs_error *err)
+{
+    for (int i = 0; i < mcs_node_len(list); i++) {
+        const mcs_node *n = mcs_node_at(list, i);
+        fe_spring_desc d;
+        memset(&d, 0, sizeof d);
+        const char *name = mcs_node_str(get(n, "name"));
+        snprintf(d.name, sizeof d.name, "%s", name ? name : "");
+        if (!name) snprintf(d.name, sizeof d.name, "springs[%d]", i);
+        if (!given(n, "stiffness") && !given(n, "curve") && !given(n, "damping"))
+            return mcs_node_error(n, err, MCS_ERR_KEY, "a spring needs stiffness, curve or damping");
+        if (given(n, "stiffness") && given(n, "curve"))
+            return mcs_node_error(get(n, "curve"), err, MCS_ERR_KEY,
+                                  "give stiffness or curve, not both");
+        if (!given(get(n, "a"), "part") && !given(get(n, "b"), "part"))
+            return mcs_node_error(n, err, MCS_ERR_KEY,
+                                  "both ends are fixed anchors: give a part for a or b");
+        mcs_status st = read_end(get(n, "a"), &d.end[0], err);
+        if (!st) st = read_end(get(n, "b"), &d.end[1], err);
+        d.stiffness = mcs_node_num_or(n, "stiffness", 0);
+        d.damping = mcs_node_num_or(n, "damping", 0);
+        if (!st && given(n, "curve")) st = read_table(get(n, "curve"), d.curve, &d.ncurve, err);
+        if (st) return st;
+        mcs_error kerr = {0};
+        st = fe_builder_add_spring(b, &d, &kerr);
+        if (st) return relocate(st, n, &kerr, err);
+    }
+    return MCS_OK;
+}
+
+static mcs_status add_masses(fe_builder *b, const mcs_node *list, mcs_error *err)
+{
+    for (int i = 0; i < mcs_node_len(list); i++) {
+        const mcs_node *n = mcs_node_at(list, i);
+        fe_mass_desc d;
+        memset(&d, 0, sizeof d);
+        d.node = -1;
+        snprintf(d.part, sizeof d.part, "%s", mcs_node_str(get(n, "part")));
+        d.mass = mcs_node_num(get(n, "mass"));
+        if (given(n, "where") == given(n, "point"))
+            return mcs_node_error(n, err, MCS_ERR_KEY, "give one of where or point");
+        d.where = where_of(mcs_node_str(get(n, "where")));
+        if (given(n, "point")) {
+            d.at_point = 1;
+            mcs_status st = mcs_node_vec3(get(n, "point"), d.point, err);
+            if (st) return st;
+        }
+        mcs_error kerr = {0};
+        mcs_status st = fe_builder_add_mass(b, &d, &kerr);
+        if (st) return relocate(st, n, &kerr, err);
+    }
+    return MCS_OK;
+}
+
+mcs_status s3_solid_add(fe_builder *b, const mcs_node *fe, mcs_error *err)
+{
+    mcs_status st = add_springs(b, get(fe, "springs"), err);
+    if (!st) st = add_masses(b, get(fe, "masses"), err);
+    return st;
+}

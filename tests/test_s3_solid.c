@@ -1,0 +1,122 @@
+/* test_s3_solid.c: the stage-3 keys of springs, point masses and gravity (and later foam,
+ * rigid parts, the fully integrated hex, mass scaling) from a scenario file to /stage3. */
+#include "cli_util.h"
+#include "core/mcs_results.h"
+#include "harness.h"
+#include "stage3_fe/s3_run.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static char tmpdir[64];
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) return;
+    fputs(text, f);
+    fclose(f);
+}
+
+static mcs_status run_file(const char *scenario, const char *out, s3_summary *sum,
+                           mcs_error *err)
+{
+    mcs_scenario *scn = NULL;
+    mcs_status st = mcs_scenario_load(scenario, &scn, err);
+    s3_problem p = {0};
+    if (!st) st = s3_build(scn, &p, err);
+    if (!st) {
+        s3_run_opts o = {.out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = 1};
+        st = s3_run(&p, &o, sum, err);
+    }
+    s3_problem_free(&p);
+    mcs_scenario_destroy(&scn);
+    return st;
+}
+
+static double last_of(mcs_results *h, const char *path)
+{
+    mcs_array a = {0};
+    mcs_error err = {0};
+    double v = NAN;
+    if (mcs_results_read(h, path, &a, &err) == MCS_OK && a.n > 0) v = a.v[a.n - 1];
+    mcs_array_free(&a);
+    return v;
+}
+
+/* a block with a 0.5 kg point mass falls under 1 g for 2 ms: the work of gravity is
+ * M g^2 t^2 / 2 with M = rho V + 0.5 kg, all of it kinetic, the total constant; a spring
+ * between two blocks at rest and with no gravity on them is not here (test_fe_discrete) */
+static void test_free_fall_with_mass(void)
+{
+    char scn[128], out[128];
+    snprintf(scn, sizeof scn, "%s/fall.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/fall.h5", tmpdir);
+    write_text(scn, "mcrash: 1\nname: fall\nsimulation: {end_time: 2 ms, output_rate: 50 kHz}\n"
+                    "environment: {gravity: 9.81 m/s^2}\n"
+                    "fe:\n  parts:\n    - name: block\n"
+                    "      mesh: {generate: box, size: [20 mm, 20 mm, 20 mm], divisions: [2, 2, 2]}\n"
+                    "      section: {type: solid}\n"
+                    "      material: {model: elastic, density: 1000, youngs_modulus: 10 MPa, poisson: 0.3}\n"
+                    "  masses: [{part: block, where: all, mass: 0.5 kg}]\n");
+    s3_summary sum;
+    mcs_error err = {0};
+    CHECK(run_file(scn, out, &sum, &err) == MCS_OK);
+    if (err.status) printf("  %s\n", err.msg);
+    mcs_results *h = NULL;
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    double t = last_of(h, "/stage3/time"), M = 1000 * 8e-6 + 0.5, g = 9.81;
+    CHECK(t > 1.9e-3);
+    CHECK_REL(last_of(h, "/stage3/energy/external_work"), 0.5 * M * g * g * t * t, 1e-3);
+    CHECK_REL(last_of(h, "/stage3/energy/kinetic"), 0.5 * M * g * g * t * t, 1e-3);
+    CHECK(fabs(last_of(h, "/stage3/energy/total")) < 1e-6 * 0.5 * M * g * g * t * t);
+    mcs_results_close(&h);
+}
+
+/* bad spring and mass keys are located at FILE:LINE:COL */
+static void test_spring_keys_located(void)
+{
+    char scn[128], args[512], out[128];
+    snprintf(scn, sizeof scn, "%s/bad.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/bad.h5", tmpdir);
+    write_text(scn, "mcrash: 1\nname: bad\nsimulation: {end_time: 1 ms}\n"
+                    "fe:\n  parts:\n    - name: block\n"
+                    "      mesh: {generate: box, size: [20 mm, 20 mm, 20 mm], divisions: [1, 1, 1]}\n"
+                    "      section: {type: solid}\n"
+                    "      material: {model: elastic, density: 1000, youngs_modulus: 10 MPa, poisson: 0.3}\n"
+                    "  springs:\n"
+                    "    - {name: s, a: {part: block, point: [0, 0, 0]}, b: {point: [0, 0, -1]},\n"
+                    "       stiffness: 1 N/mm, curve: [[0, 0], [1 mm, 1 N]]}\n");
+    snprintf(args, sizeof args, "stage3 %s -o %s", scn, out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "bad.yaml:12:");
+    CHECK_STR_CONTAINS(r->err, "give stiffness or curve, not both");
+    write_text(scn, "mcrash: 1\nname: bad\nsimulation: {end_time: 1 ms}\n"
+                    "fe:\n  parts:\n    - name: block\n"
+                    "      mesh: {generate: box, size: [20 mm, 20 mm, 20 mm], divisions: [1, 1, 1]}\n"
+                    "      section: {type: solid}\n"
+                    "      material: {model: elastic, density: 1000, youngs_modulus: 10 MPa, poisson: 0.3}\n"
+                    "  springs:\n"
+                    "    - {name: s, a: {point: [0, 0, 0]}, b: {point: [0, 0, -1]}, stiffness: 1 N/mm}\n");
+    r = cli_run(args);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "bad.yaml:11:");
+    CHECK_STR_CONTAINS(r->err, "both ends are fixed anchors");
+}
+
+int main(void)
+{
+    snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_s3s_XXXXXX");
+    if (!mkdtemp(tmpdir)) return 1;
+    RUN(test_free_fall_with_mass);
+    RUN(test_spring_keys_located);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
+    if (system(cmd) != 0) return 1;
+    TEST_END();
+}

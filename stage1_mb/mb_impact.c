@@ -129,7 +129,8 @@ static mcs_status check_ties(const mcs_node *root, const mcs_node *imp, const mb
 }
 
 /* the rolling spin of a wheel body (its first cylinder surface) moving at v along h: w and the
- * CG velocity it adds; 0 when the body has no cylinder, -1 when its axle is along h */
+ * CG velocity it adds; 0 when the body has no cylinder, -1 when its axle is along h. Called
+ * after the placement (poses final). */
 static int wheel_spin(const mb_model *m, int b, double v, const double h[3], double w[3],
                       double dv[3])
 {
@@ -145,7 +146,17 @@ static int wheel_spin(const mb_model *m, int b, double v, const double h[3], dou
     mb_cross(ez, h, lat); /* the spin axis of rolling along h: w x (-z) R = -v h */
     double al = mb_dot(a, lat);
     if (fabs(al) < 0.5) return -1;
-    double R = s->radius + s->tube;
+    /* rolling radius: where the engine applies the road friction -- midway between the
+     * tyre's deepest point (R below the centre in the wheel plane) and the road -- so that
+     * point has no slip from t = 0: r = (h + R) / 2 with h the centre's distance to the road
+     * in the wheel plane, when the tyre is loaded (h < R); else R */
+    double R = s->radius + s->tube, cw[3];
+    mb_mat_vec(Rb, s->center, cw);
+    mb_add(cw, m->body[b].pos, cw);
+    if (m->ground_surf >= 0) {
+        double hc = (cw[2] - m->surf[m->ground_surf].center[2]) / sqrt(1 - a[2] * a[2]);
+        if (hc > 0 && hc < R) R = 0.5 * (hc + R);
+    }
     mb_scale(a, (al > 0 ? 1 : -1) * v / R, w);
     mb_mat_vec(Rb, s->center, c); /* CG - centre = -c */
     mb_cross(w, c, dv);

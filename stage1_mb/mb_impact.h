@@ -21,9 +21,12 @@
  *
  * Speeds. Motorcycle bodies get motorcycle_speed along h_mc added to their (rotated) model
  * velocity; opponent bodies opponent_speed along the opponent's heading. A body of either group
- * carrying a cylinder surface (a wheel) also rolls: spin v/R about its axle, R = the cylinder's
- * radius, signed so that the wheel's lowest point is at rest, and its CG velocity includes the
- * spin about the cylinder's centre.
+ * carrying a cylinder surface (a wheel) also rolls: spin v/R about its axle, signed so that the
+ * wheel's lowest point is at rest, and its CG velocity includes the spin about the cylinder's
+ * centre. R is the rolling radius: the cylinder's radius, or for a tyre loaded into the road
+ * (its centre at h < R from the road in the wheel plane) (h + R) / 2, the distance to the point
+ * where the engine applies the road friction (midway between the tyre's deepest point and the
+ * road), so that no point slips at t = 0.
  *
  * Errors (FILE:LINE:COL and key): a joint or an attachment between the motorcycle group and a
  * body outside it, a moving opponent fixed to the ground, a wheel whose axle is not across its

@@ -250,13 +250,242 @@ static void test_errors(void)
 
 /* the shipped impact scenarios pass mcrash check */
 #define SHIPPED                                                                                    \
-    "scenarios/thesis_frontal_barrier_13.4.yaml scenarios/thesis_oblique_barrier_30deg_13.4.yaml"
+    "scenarios/thesis_frontal_barrier_13.4.yaml scenarios/thesis_oblique_barrier_30deg_13.4.yaml " \
+    "scenarios/iso13232_413-0_13.4_sedan.yaml scenarios/mymosa_lateral_car_1100kg.yaml "           \
+    "scenarios/moving_car_413-6.7_13.4_sedan.yaml scenarios/models/opponents/sedan_1668kg.yaml"
 
 static void test_shipped_check(void)
 {
     cli_result *r = cli_run("check " SHIPPED);
     CHECK(r->status == 0);
     if (r->status) fprintf(stderr, "%s", r->err);
+}
+
+
+/* ---- the shipped car scenarios: figures over a run ------------------------------------ */
+
+typedef struct {
+    double t_contact;        /* first motorcycle-opponent contact [s] */
+    double v_opp_contact;    /* opponent speed along its heading up to that step [m/s] */
+    double t_plastic, t_stop; /* fork beyond its elastic limit (0.05 rad) and at 0.2 rad [s] */
+    double phi_max, t_phi_max; /* largest fork angle [rad] and when [s] */
+    double vcar_max;         /* largest opponent CG speed along the motorcycle heading [m/s] */
+    double t_vcar_max;       /* when [s] */
+    double vcar_end;         /* at the end [m/s] */
+    double vmoto_end;        /* motorcycle frame speed along its heading at the end [m/s] */
+    double f_peak, t_f_peak; /* largest total motorcycle-opponent normal force [N] and when */
+    double drift;            /* energy drift [-] */
+    double m_moto, m_opp;    /* group masses [kg] */
+    long steps;
+} car_figs;
+
+static int prefixed(const char *name, const char *p) { return strncmp(name, p, strlen(p)) == 0; }
+
+/* run a scenario and collect the figures; series: when not NULL, a CSV file of t [ms], fork
+ * angle [rad], opponent speed along the heading [m/s], frame speed along the heading [m/s],
+ * total contact force [kN], every 0.1 ms */
+static mcs_status run_car(const char *path, const char *opp, car_figs *f, FILE *series)
+{
+    memset(f, 0, sizeof *f);
+    f->t_contact = f->t_plastic = f->t_stop = NAN;
+    mcs_scenario *scn = NULL;
+    mcs_error err = {0};
+    mb_model *m = NULL;
+    mcs_status st = mcs_scenario_load(path, &scn, &err);
+    if (!st) st = mb_model_build(scn, NULL, &m, &err);
+    mcs_scenario_destroy(&scn);
+    mb_state *s = NULL;
+    if (!st) st = mb_state_create(m, &s, &err);
+    if (st) {
+        fprintf(stderr, "%s: %s\n", path, err.msg);
+        mb_model_destroy(&m);
+        return st;
+    }
+    int car = mb_model_body(m, opp), fr = mb_model_body(m, "moto_frame");
+    int fk = -1;
+    for (int i = 0; i < m->nrestraint1; i++)
+        if (strcmp(m->restraint1_name[i], "moto_fork_deformation") == 0) fk = i;
+    for (int b = 0; b < m->nbody; b++)
+        if (prefixed(m->body_name[b], "moto_"))
+            f->m_moto += m->body[b].mass;
+        else
+            f->m_opp += m->body[b].mass;
+    /* the motorcycle's heading: its frame's x axis; the opponent's: its initial velocity */
+    double h[3] = {s->kin[fr].rot[0], s->kin[fr].rot[3], 0}, hop[3] = {0, 0, 0};
+    mb_normalize(h);
+    double v0 = mb_norm(s->kin[car].vel);
+    if (v0 > 0) mb_scale(s->kin[car].vel, 1 / v0, hop);
+    double v_before = mb_dot(s->kin[car].vel, hop); /* opponent speed before this step */
+    while (s->step < m->nsteps && !(st = mb_step(m, s, &err))) {
+        double fsum = 0;
+        for (int p = 0; p < m->npair; p++) {
+            int a = m->pair[p].ba, b = m->pair[p].bb;
+            if (a < 0 || b < 0) continue;
+            if (prefixed(m->body_name[a], "moto_") != prefixed(m->body_name[b], "moto_"))
+                fsum += s->pair[p].fn;
+        }
+        if (fsum > 0 && isnan(f->t_contact)) {
+            f->t_contact = s->t;
+            f->v_opp_contact = v_before;
+        }
+        v_before = mb_dot(s->kin[car].vel, hop);
+        if (fsum > f->f_peak) f->f_peak = fsum, f->t_f_peak = s->t;
+        double phi = fk >= 0 ? fabs(s->r1[fk].x) : 0;
+        if (phi > f->phi_max) f->phi_max = phi, f->t_phi_max = s->t;
+        if (phi > 0.05 && isnan(f->t_plastic)) f->t_plastic = s->t;
+        if (phi >= 0.2 && isnan(f->t_stop)) f->t_stop = s->t;
+        double vc = mb_dot(s->kin[car].vel, h);
+        if (vc > f->vcar_max) f->vcar_max = vc, f->t_vcar_max = s->t;
+        if (series && s->step % 10 == 0)
+            fprintf(series, "%.2f,%.5f,%.5f,%.5f,%.4f\n", s->t * 1e3, phi, vc,
+                    mb_dot(s->kin[fr].vel, h), fsum / 1e3);
+    }
+    if (st) fprintf(stderr, "%s: %s\n", path, err.msg);
+    f->vcar_end = mb_dot(s->kin[car].vel, h);
+    f->vmoto_end = mb_dot(s->kin[fr].vel, h);
+    f->drift = mb_energy_drift(m, s);
+    f->steps = s->step;
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+    return st;
+}
+
+static void print_car(const char *what, const car_figs *f)
+{
+    printf("  %s: %ld steps; first contact %.2f ms (opponent %.4f m/s); fork plastic %.1f ms, "
+           "stop %.1f ms, max %.3f rad at %.1f ms; peak force %.1f kN at %.1f ms; opponent "
+           "speed max %.3f m/s at %.1f ms, end %.3f m/s; motorcycle frame end %.2f m/s; "
+           "common velocity %.3f m/s; drift %.2e\n",
+           what, f->steps, f->t_contact * 1e3, f->v_opp_contact, f->t_plastic * 1e3,
+           f->t_stop * 1e3, f->phi_max, f->t_phi_max * 1e3, f->f_peak / 1e3, f->t_f_peak * 1e3,
+           f->vcar_max, f->t_vcar_max * 1e3, f->vcar_end, f->vmoto_end,
+           f->m_moto * 13.4 / (f->m_moto + f->m_opp), f->drift);
+}
+
+#define S413 "scenarios/iso13232_413-0_13.4_sedan.yaml"
+#define SMYMOSA "scenarios/mymosa_lateral_car_1100kg.yaml"
+#define SMOVING "scenarios/moving_car_413-6.7_13.4_sedan.yaml"
+
+/* ISO 13232 413-0/13.4 into the stationary 1668 kg sedan. First contact after the 5 mm gap at
+ * 13.4 m/s: 0.373 ms (the first step with a force, h = 10 us). Momentum along the heading:
+ * m1 v = m1 v1(t) + m2 v2(t) + J(t), J >= 0 the road friction's impulse while both move
+ * forward, so v2 = (m1 (v - v1) - J) / m2 and, as long as the motorcycle does not move back
+ * relative to the car (v1 >= v2), (m1 + m2) v2 <= m1 v: the car's speed stays below the common
+ * velocity m1 v / (m1 + m2) = 208 x 13.4 / 1876 = 1.4857 m/s. It must also take a good part of
+ * it (> 0.5, the impact is mostly plastic). The fork passes its elastic limit (0.05 rad); the
+ * energy balance closes (drift < 1e-2). */
+static void test_413(void)
+{
+    car_figs f;
+    CHECK(run_car(S413, "sedan", &f, NULL) == MCS_OK);
+    print_car("413-0/13.4 sedan", &f);
+    double common = 208 * 13.4 / (208 + 1668.0);
+    CHECK_NEAR(f.m_moto, 208, 1e-9);
+    CHECK_NEAR(f.m_opp, 1668, 1e-9);
+    CHECK_NEAR(f.t_contact, 0.005 / 13.4, 2e-5);
+    CHECK(f.vcar_max <= common);
+    CHECK(f.vcar_max > 0.5 * common);
+    CHECK(f.phi_max > 0.05);
+    CHECK(f.drift < 1e-2);
+}
+
+/* MYMOSA's lateral impact (1100 kg car on a translational joint along the heading): the car's
+ * peak speed lies between 0 and the elastic two-body value 2 m1 v / (m1 + m2) = 4.26 m/s; the
+ * fork sequence is printed against MYMOSA Fig. 5.2 (docs/validation_stage1.md). */
+static void test_mymosa(void)
+{
+    car_figs f;
+    CHECK(run_car(SMYMOSA, "car", &f, NULL) == MCS_OK);
+    print_car("MYMOSA lateral 1100 kg", &f);
+    CHECK(f.vcar_max > 0 && f.vcar_max < 2 * 208 * 13.4 / 1308);
+    CHECK(f.phi_max > 0.05 && f.t_plastic < f.t_stop);
+    CHECK(f.drift < 1e-2);
+}
+
+/* The moving sedan (6.7 m/s along its heading, wheels rolling) keeps its speed until the first
+ * contact (0.37 ms), to 1e-6 m/s (at the start of the step in which the contact force appears);
+ * the energy balance closes. */
+static void test_moving(void)
+{
+    car_figs f;
+    CHECK(run_car(SMOVING, "sedan", &f, NULL) == MCS_OK);
+    print_car("moving sedan 6.7 m/s", &f);
+    CHECK_NEAR(f.v_opp_contact, 6.7, 1e-6);
+    CHECK(f.drift < 1e-2);
+}
+
+/* The sedan alone: at rest it stays on its static deflection (CG within 1 mm over 0.3 s, each
+ * wheel carrying 1668 g / 4 = 4090.8 N within 1 %); moving at 6.7 m/s with its wheels rolling
+ * (w = v / r, r = (h + R) / 2 = 0.2789 m for the loaded tyre) it keeps its speed over 0.3 s to
+ * 1e-3 m/s (no slip, no rolling loss: the tyre law is elastic and its depth is steady). */
+static void test_sedan_alone(void)
+{
+    const char *base = "mcrash: 1\n"
+                       "include: models/opponents/sedan_1668kg.yaml\n"
+                       "simulation: {end_time: 0.3 s, time_step: 10 us, output_rate: 1 kHz}\n"
+                       "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n";
+    for (int moving = 0; moving < 2; moving++) {
+        char txt[1024];
+        snprintf(txt, sizeof txt, "%s%s", base,
+                 moving ? "impact: {opponent_heading: [0, -1, 0], opponent_speed: 6.7 m/s}\n" : "");
+        mb_model *m = build_ok(txt);
+        CHECK(m != NULL);
+        if (!m) return;
+        mb_state *s = NULL;
+        mcs_error err = {0};
+        CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+        int car = mb_model_body(m, "sedan");
+        double z0 = s->kin[car].pos[2], dz = 0;
+        mcs_status st = MCS_OK;
+        while (s->step < m->nsteps && !(st = mb_step(m, s, &err)))
+            dz = fmax(dz, fabs(s->kin[car].pos[2] - z0));
+        CHECK(st == MCS_OK);
+        CHECK(dz < 1e-3);
+        if (moving) {
+            CHECK_NEAR(s->kin[car].vel[1], -6.7, 1e-3);
+            CHECK_NEAR(s->kin[car].vel[0], 0, 1e-6);
+        } else {
+            int loaded = 0;
+            for (int p = 0; p < m->npair; p++)
+                if (s->pair[p].fn > 0) {
+                    loaded++;
+                    CHECK_REL(s->pair[p].fn, 1668 * 9.81 / 4, 0.01);
+                }
+            CHECK(loaded == 4);
+        }
+        printf("  sedan %s: CG height moved at most %.3f mm; velocity (%.2e, %.6f) m/s; drift "
+               "%.2e\n", moving ? "rolling at 6.7 m/s" : "at rest", dz * 1e3, s->kin[car].vel[0],
+               s->kin[car].vel[1], mb_energy_drift(m, s));
+        mb_state_destroy(&s);
+        mb_model_destroy(&m);
+    }
+}
+
+/* every shipped impact scenario runs from the command line (exit 0, energy drift < 1e-2); the
+ * 413 case always, the others with MCRASH_VERIFY=1 (make verify) */
+static void run_cli(const char *path)
+{
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "run %s --stage 1 --quiet --json -o /tmp/mcrash_impact_%d.h5", path,
+             (int)getpid());
+    cli_result *r = cli_run(cmd);
+    CHECK(r->status == 0);
+    const char *d = strstr(r->out, "\"energy_drift\": ");
+    CHECK(d != NULL);
+    if (d) CHECK(atof(d + 16) < 1e-2);
+    if (r->status) fprintf(stderr, "%s: %s\n", path, r->err);
+    snprintf(cmd, sizeof cmd, "/tmp/mcrash_impact_%d.h5", (int)getpid());
+    remove(cmd);
+}
+
+static void test_shipped_run(void)
+{
+    run_cli(S413);
+    if (!th_verify()) return;
+    run_cli(SMYMOSA);
+    run_cli(SMOVING);
+    run_cli("scenarios/thesis_frontal_barrier_13.4.yaml");
+    run_cli("scenarios/thesis_oblique_barrier_30deg_13.4.yaml");
 }
 
 int main(void)
@@ -266,5 +495,10 @@ int main(void)
     RUN(test_speeds);
     RUN(test_errors);
     RUN(test_shipped_check);
+    RUN(test_413);
+    RUN(test_mymosa);
+    RUN(test_moving);
+    RUN(test_sedan_alone);
+    RUN(test_shipped_run);
     TEST_END();
 }

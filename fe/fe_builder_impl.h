@@ -2,6 +2,7 @@
 #ifndef FE_BUILDER_IMPL_H
 #define FE_BUILDER_IMPL_H
 
+#include "fe/fe_contact.h"
 #include "fe/fe_model.h"
 
 typedef struct {
@@ -36,6 +37,9 @@ struct fe_builder {
     fe_spring_desc *spring;
     int nmass, cap_mass;                          /* point masses                      */
     fe_mass_desc *mass;
+    int ncontact, nellipsoid;                     /* contact descriptors (fe_contact.h) */
+    fe_contact_desc contact[FE_CONTACT_MAX];
+    fe_ellipsoid_desc ellipsoid[FE_ELLIPSOID_MAX];
 };
 
 int fe_kind_nnode(int kind);

@@ -1,6 +1,7 @@
 /* fe_model: validation and freezing of a builder into the immutable model: elements sorted by
  * part, lumped masses, gather lists, boundary conditions, loads, rigid-wall slaves. */
 #include "fe/fe_builder_impl.h"
+#include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
 #include "fe/fe_membrane.h"
 #include "fe/fe_restraint.h"
@@ -35,6 +36,7 @@ void fe_model_destroy(fe_model **p)
     free(m->load_curve);
     fe_restraints_destroy(&m->restraints);
     fe_solid_free(m);
+    fe_contact_model_free(m);
     free(m);
     *p = NULL;
 }
@@ -419,6 +421,9 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
         m->bytes += sizeof(fe_part) * (size_t)m->npart + sizeof(fe_wall) * (size_t)m->nwall +
                     sizeof(fe_nodal_load) * (size_t)m->nnodal_load +
                     sizeof(fe_load_curve) * (size_t)m->nload;
+        st = fe_contact_model_build(b, m, err);
+    }
+    if (st == MCS_OK) {
         *out = m;
         return MCS_OK;
     }

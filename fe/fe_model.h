@@ -244,6 +244,8 @@ typedef struct {
     X(int, truss_part, ntruss, 1, "-", "part of each truss")                                     \
     X(int, node_body, nnode, 1, "-", "rigid body carrying the node, -1 none")
 
+struct fe_contact_model;
+
 typedef struct fe_model {
     /* sizes */
     int nnode, nelem;      /* nodes; elements of every kind                              */
@@ -283,6 +285,7 @@ typedef struct fe_model {
     double *elem_dt_factor; /* mass scaling: element step factor, hex then shell then truss
                                (nelem), NULL without mass scaling [-]                       */
     double mass_added;     /* mass added by mass scaling [kg]                              */
+    struct fe_contact_model *contact; /* contact interfaces (fe_contact.h), NULL if none   */
 } fe_model;
 
 /* ---- the builder ------------------------------------------------------------------------ */

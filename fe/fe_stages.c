@@ -1,5 +1,6 @@
 /* fe_stages: the sub-stages of fe_step (internal forces, contact, external forces,
  * accelerations, integration, stable step). Each reads and writes only what its comment says. */
+#include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
 #include "fe/fe_membrane.h"
 #include "fe/fe_restraint.h"
@@ -53,6 +54,7 @@ void fe_contact_forces(const fe_model *m, fe_state *s)
 {
     memset(s->node_fext, 0, sizeof(double) * 3 * (size_t)m->nnode);
     memset(s->wall_force, 0, sizeof(double) * 3 * (size_t)m->nwall);
+    if (m->contact) fe_contact_interfaces(m, s);
     unsigned pen = 0;
     for (int w = 0; w < m->nwall; w++)
         if (m->wall[w].method == FE_WALL_PENALTY) pen |= 1u << w;
@@ -248,15 +250,16 @@ mcs_status fe_stable_step(const fe_model *m, fe_state *s)
     double *en = s->energy;
     en[FE_E_potential] = 0;
     en[FE_E_internal] = e_int;
-    en[FE_E_contact] = 0;
+    en[FE_E_contact] = m->contact ? fe_contact_energy(m, s) : 0;
     en[FE_E_hourglass] = e_hg;
     en[FE_E_dissipated] = e_diss;
-    en[FE_E_external_work] = s->work_ext;
+    /* contact forces are internal to the structure: their work leaves the external work */
+    en[FE_E_external_work] = s->work_ext - (m->contact ? fe_contact_work(m, s) : 0);
     en[FE_E_total] = en[FE_E_kinetic] + en[FE_E_potential] + e_int + en[FE_E_contact] + e_hg +
-                     e_diss - s->work_ext;
+                     e_diss - en[FE_E_external_work];
     s->energy_time = t;
     if (s->nstep == 0) s->energy0 = en[FE_E_total];
-    double ref = fmax(fmax(en[FE_E_kinetic], e_int + e_hg), fabs(s->work_ext));
+    double ref = fmax(fmax(en[FE_E_kinetic], e_int + e_hg), fabs(en[FE_E_external_work]));
     s->energy_ref = fmax(fmax(s->energy_ref, ref), fabs(s->energy0));
     double growth = en[FE_E_total] - s->energy0;
     if (!isfinite(en[FE_E_total]))

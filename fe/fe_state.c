@@ -1,4 +1,5 @@
 /* fe_state: allocation (once), reset, energy names and per-part energies. */
+#include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
 #include "fe/fe_restraint.h"
 #include "fe/fe_solid.h"
@@ -31,6 +32,7 @@ void fe_state_destroy(fe_state **p)
 #undef FE_X_FREE
     mcs_arena_destroy(&s->arena);
     fe_restraint_state_destroy(&s->restraint);
+    fe_contact_state_destroy(&s->contact);
     free(s);
     *p = NULL;
 }
@@ -55,6 +57,10 @@ mcs_status fe_state_create(const fe_model *m, fe_state **out, mcs_error *err)
 #undef FE_X_ALLOC
     mcs_status st = mcs_arena_create(FE_ARENA_BYTES, &s->arena, err);
     if (st == MCS_OK) st = fe_restraint_state_create(m, &s->restraint, &s->bytes, err);
+    if (st == MCS_OK && m->contact) {
+        st = fe_contact_state_create(m, &s->contact, err);
+        if (st == MCS_OK) s->bytes += s->contact->bytes;
+    }
     if (st != MCS_OK) {
         fe_state_destroy(&s);
         return st;
@@ -89,6 +95,7 @@ void fe_state_reset(const fe_model *m, fe_state *s)
     mcs_arena_reset(s->arena, 0);
     fe_restraint_state_reset(m, s);
     fe_solid_reset(m, s);
+    if (s->contact) fe_contact_state_reset(m, s->contact);
 }
 
 double fe_part_energy(const fe_model *m, const fe_state *s, int part, fe_energy_kind k)

@@ -19,7 +19,7 @@
     X(kinetic)       /* translational + rotational                                      */        \
     X(potential)     /* gravity (none yet: 0)                                            */        \
     X(internal)      /* stress power of the elements (elastic + plastic work)           */        \
-    X(contact)       /* contact interfaces (none yet: 0)                                 */        \
+    X(contact)       /* contact interfaces: elastic + frictional (fe_contact.h)          */        \
     X(hourglass)     /* work of the hourglass forces                                     */        \
     X(dissipated)    /* bulk viscosity and mass damping                                  */        \
     X(external_work) /* loads, prescribed motion and rigid walls on the structure        */        \
@@ -96,6 +96,8 @@ extern const char *const fe_stage_name[FE_NSTAGE];
     X(double, body_fm, nbody, 6, "N, N m", "force and moment on the body at t")                    \
     X(double, hex_gp, nhex_gp, 7, "Pa", "full hex: stress (6), plastic strain or foam history")
 
+struct fe_contact_state;
+
 typedef struct fe_state {
     double time;                  /* t [s]                                                     */
     double dt;                    /* step from t to t + dt, used by the next fe_step [s]       */
@@ -125,6 +127,7 @@ typedef struct fe_state {
 #undef FE_X_DECL
     double free_energy[FE_NENERGY]; /* energies of what belongs to no part: springs and dampers
                                      (internal, dissipated) [J]                                */
+    struct fe_contact_state *contact; /* contact interfaces (fe_contact.h), NULL if none */
 } fe_state;
 
 /* allocate every array once (and the scratch arena), then fe_state_reset */

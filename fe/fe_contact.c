@@ -1,0 +1,477 @@
+/* fe_contact: the contact sub-stage (penalty node-to-segment and rigid ellipsoids), its
+ * state and its energy bookkeeping. See fe_contact.h and docs/fe.md "Contact".
+ *
+ * Phase 1 (each slave entry on its own, writing only its own slots): find the segments within
+ * contact distance in the node's bucket, keep the deepest and the deepest on the other side
+ * (a node pinched between two layers), penalty normal force and friction. Phase 2 (serial):
+ * scatter each slot's force to the slave node and, with the nearest point's weights, to the
+ * segment nodes; energies per part and per interface. Phase 3: the ellipsoids (a node's force
+ * depends on the node only). Then node_fc goes into node_fext and the contact-force work is
+ * summed with the integrator's trapezoidal weights, so fe_stable_step can take it out of the
+ * external work: total energy then checks contact energy = -(work of the contact forces). */
+#include "fe/fe_contact_impl.h"
+#include "fe/fe_elem.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define FE_CONTACT_HITS 16 /* segments within contact distance kept per node per step */
+
+void fe_contact_state_destroy(fe_contact_state **p)
+{
+    if (!p || !*p) return;
+    fe_contact_state *c = *p;
+    free(c->x_ref), free(c->seg_box), free(c->cell_off), free(c->cell_item), free(c->seg_cells);
+    free(c->pass_hash), free(c->pass_cell_base), free(c->pass_cell);
+    free(c->ent_seg), free(c->ent_w), free(c->ent_f), free(c->ent_ft), free(c->ent_et);
+    free(c->ent_el), free(c->ent_d), free(c->ent_g), free(c->ell_ft), free(c->ell_et);
+    free(c->node_fc), free(c->part_fric), free(c->part_elastic), free(c->if_force);
+    free(c->if_energy), free(c->if_fric), free(c->ell_c), free(c->ell_R), free(c->ell_v);
+    free(c->ell_force);
+    free(c);
+    *p = NULL;
+}
+
+static void *zalloc(size_t n, size_t sz, size_t *bytes)
+{
+    *bytes += n * sz;
+    return calloc(n ? n : 1, sz);
+}
+
+mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mcs_error *err)
+{
+    const fe_contact_model *c = m->contact;
+    *out = NULL;
+    fe_contact_state *s = calloc(1, sizeof *s);
+    if (!s) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact state)");
+    size_t b = sizeof *s, ncell = 0;
+    s->pass_hash = zalloc((size_t)c->npass, sizeof(int), &b);
+    s->pass_cell_base = zalloc((size_t)c->npass, sizeof(int), &b);
+    if (s->pass_hash && s->pass_cell_base)
+        for (int p = 0; p < c->npass; p++) {
+            s->pass_hash[p] = fe_contact_hash_size(c, p);
+            s->pass_cell_base[p] = (int)ncell;
+            ncell += (size_t)s->pass_hash[p] + 1;
+        }
+    size_t ne2 = 2 * (size_t)c->nent, nseg = (size_t)c->nseg;
+    s->pass_cell = zalloc(4 * (size_t)c->npass, sizeof(double), &b);
+    s->x_ref = zalloc(3 * (size_t)c->nnode_touch, sizeof(double), &b);
+    s->seg_box = zalloc(6 * nseg, sizeof(double), &b);
+    s->cell_off = zalloc(ncell, sizeof(int), &b);
+    s->cell_item = zalloc(8 * nseg, sizeof(int), &b);
+    s->seg_cells = zalloc(8 * nseg, sizeof(int), &b);
+    s->ent_seg = zalloc(ne2, sizeof(int), &b);
+    s->ent_w = zalloc(4 * ne2, sizeof(double), &b);
+    s->ent_f = zalloc(3 * ne2, sizeof(double), &b);
+    s->ent_ft = zalloc(3 * ne2, sizeof(double), &b);
+    s->ent_et = zalloc(ne2, sizeof(double), &b);
+    s->ent_el = zalloc(ne2, sizeof(double), &b);
+    s->ent_d = zalloc(ne2, sizeof(double), &b);
+    s->ent_g = zalloc(ne2, sizeof(double), &b);
+    s->ell_ft = zalloc(3 * (size_t)c->nell_node, sizeof(double), &b);
+    s->ell_et = zalloc((size_t)c->nell_node, sizeof(double), &b);
+    s->node_fc = zalloc(3 * (size_t)m->nnode, sizeof(double), &b);
+    s->part_fric = zalloc((size_t)m->npart, sizeof(double), &b);
+    s->part_elastic = zalloc((size_t)m->npart, sizeof(double), &b);
+    s->if_force = zalloc(3 * (size_t)c->nif, sizeof(double), &b);
+    s->if_energy = zalloc((size_t)c->nif, sizeof(double), &b);
+    s->if_fric = zalloc((size_t)c->nif, sizeof(double), &b);
+    s->ell_c = zalloc(3 * (size_t)c->nell, sizeof(double), &b);
+    s->ell_R = zalloc(9 * (size_t)c->nell, sizeof(double), &b);
+    s->ell_v = zalloc(3 * (size_t)c->nell, sizeof(double), &b);
+    s->ell_force = zalloc(3 * (size_t)c->nell, sizeof(double), &b);
+    s->bytes = b;
+    if (!s->pass_hash || !s->pass_cell_base || !s->pass_cell || !s->x_ref || !s->seg_box ||
+        !s->cell_off || !s->cell_item || !s->seg_cells || !s->ent_seg || !s->ent_w ||
+        !s->ent_f || !s->ent_ft || !s->ent_et || !s->ent_el || !s->ent_d || !s->ent_g ||
+        !s->ell_ft || !s->ell_et || !s->node_fc || !s->part_fric || !s->part_elastic ||
+        !s->if_force || !s->if_energy || !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v ||
+        !s->ell_force) {
+        fe_contact_state_destroy(&s);
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact state)");
+    }
+    fe_contact_state_reset(m, s);
+    *out = s;
+    return MCS_OK;
+}
+
+void fe_contact_state_reset(const fe_model *m, fe_contact_state *s)
+{
+    const fe_contact_model *c = m->contact;
+    size_t ne2 = 2 * (size_t)c->nent;
+    for (size_t i = 0; i < ne2; i++) s->ent_seg[i] = -1;
+    memset(s->ent_ft, 0, 3 * ne2 * sizeof(double));
+    memset(s->ent_f, 0, 3 * ne2 * sizeof(double));
+    memset(s->ent_et, 0, ne2 * sizeof(double));
+    memset(s->ent_el, 0, ne2 * sizeof(double));
+    memset(s->ent_d, 0, ne2 * sizeof(double));
+    memset(s->ent_g, 0, ne2 * sizeof(double));
+    memset(s->ell_ft, 0, 3 * (size_t)c->nell_node * sizeof(double));
+    memset(s->ell_et, 0, (size_t)c->nell_node * sizeof(double));
+    memset(s->node_fc, 0, 3 * (size_t)m->nnode * sizeof(double));
+    memset(s->part_fric, 0, (size_t)m->npart * sizeof(double));
+    memset(s->part_elastic, 0, (size_t)m->npart * sizeof(double));
+    memset(s->if_force, 0, 3 * (size_t)c->nif * sizeof(double));
+    memset(s->if_energy, 0, (size_t)c->nif * sizeof(double));
+    memset(s->if_fric, 0, (size_t)c->nif * sizeof(double));
+    memset(s->ell_force, 0, 3 * (size_t)c->nell * sizeof(double));
+    for (int i = 0; i < c->nell; i++) {
+        memcpy(s->ell_c + 3 * i, c->ell[i].center, 3 * sizeof(double));
+        memcpy(s->ell_R + 9 * i, c->ell[i].R, 9 * sizeof(double));
+        memcpy(s->ell_v + 3 * i, c->ell[i].velocity, 3 * sizeof(double));
+    }
+    s->work_nodes = s->work_bodies = s->dth_prev = s->pen_max = s->energy = 0;
+    s->nrebuild = 0;
+    s->need_rebuild = 1;
+}
+
+void fe_contact_set_ellipsoid(const fe_model *m, fe_state *s, int i, const double c[3],
+                              const double R[9], const double v[3])
+{
+    if (!m->contact || !s->contact || i < 0 || i >= m->contact->nell) return;
+    fe_contact_state *cs = s->contact;
+    memcpy(cs->ell_c + 3 * i, c, 3 * sizeof(double));
+    if (R) memcpy(cs->ell_R + 9 * i, R, 9 * sizeof(double));
+    memcpy(cs->ell_v + 3 * i, v, 3 * sizeof(double));
+}
+
+/* ---- phase 1: one slave entry ------------------------------------------------------------ */
+
+typedef struct {
+    double gap, dir[3], w[4];
+    int seg;
+} hit;
+
+static int seg_has_nbr(const fe_contact_model *c, const int *q, int node)
+{
+    for (int j = c->nbr_off[node]; j < c->nbr_off[node + 1]; j++) {
+        int v = c->nbr[j];
+        if (q[0] == v || q[1] == v || q[2] == v || q[3] == v) return 1;
+    }
+    return 0;
+}
+
+/* gap of node x to segment sg (< 0 in contact), direction pushing the node out, weights */
+static int seg_gap(const fe_contact_model *c, const double *X, int sg, const double x[3],
+                   double ht, hit *h)
+{
+    const int *q = c->seg_node + 4 * sg;
+    const double *a = X + 3 * q[0], *b = X + 3 * q[1], *cc = X + 3 * q[2], *d = X + 3 * q[3];
+    double w1[3], w2[3] = {0, 0, 0};
+    double d1 = fe_tri_nearest(x, a, b, cc, w1), d2 = INFINITY;
+    if (q[3] != q[2]) d2 = fe_tri_nearest(x, a, cc, d, w2);
+    if (d2 < d1) {
+        h->w[0] = w2[0], h->w[1] = 0, h->w[2] = w2[1], h->w[3] = w2[2];
+        d1 = d2;
+    } else {
+        h->w[0] = w1[0], h->w[1] = w1[1], h->w[2] = w1[2], h->w[3] = 0;
+    }
+    double off = ht + c->seg_ht[sg], dist = sqrt(d1), p[3], r[3];
+    if (dist - off >= 0 && !c->seg_solid[sg]) return 0;
+    for (int i = 0; i < 3; i++) {
+        p[i] = h->w[0] * a[i] + h->w[1] * b[i] + h->w[2] * cc[i] + h->w[3] * d[i];
+        r[i] = x[i] - p[i];
+    }
+    double e1[3], e2[3], n[3];
+    for (int i = 0; i < 3; i++) e1[i] = cc[i] - a[i], e2[i] = d[i] - b[i];
+    if (q[3] == q[2])
+        for (int i = 0; i < 3; i++) e2[i] = cc[i] - b[i], e1[i] = b[i] - a[i];
+    fe_cross(e1, e2, n);
+    double nn = sqrt(fe_dot(n, n));
+    if (!(nn > 0)) return 0;
+    for (int i = 0; i < 3; i++) n[i] /= nn;
+    double sn = fe_dot(r, n);
+    if (c->seg_solid[sg]) {
+        /* one-sided: outside along the outward normal, inside down to the depth limit */
+        if (sn >= 0) {
+            h->gap = dist - off;
+            for (int i = 0; i < 3; i++) h->dir[i] = dist > 0 ? r[i] / dist : n[i];
+        } else {
+            /* inside only where the node projects onto the face: beyond an edge the node
+             * belongs to the neighbouring face (coplanar sides of two blocks touch there) */
+            if (-sn < 0.7 * dist) return 0;
+            h->gap = -dist - off;
+            if (h->gap < -c->seg_depth[sg]) return 0;
+            for (int i = 0; i < 3; i++) h->dir[i] = n[i];
+        }
+    } else {
+        /* two-sided shell: pushed away from the mid-surface on the side it is */
+        h->gap = dist - off;
+        double sg_ = sn >= 0 ? 1 : -1;
+        for (int i = 0; i < 3; i++) h->dir[i] = dist > 1e-12 * off ? r[i] / dist : sg_ * n[i];
+    }
+    h->seg = sg;
+    return h->gap < 0;
+}
+
+static void entry_forces(const fe_model *m, fe_state *s, int e)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
+    const int node = c->ent_node[e], p = c->ent_pass[e];
+    const fe_contact_pass *P = &c->pass[p];
+    const fe_contact_if *I = &c->iface[P->iface];
+    const double *x = s->node_x + 3 * node;
+    hit hits[FE_CONTACT_HITS];
+    int nh = 0, b0, b1;
+    fe_contact_bucket(cs, p, x, &b0, &b1);
+    const int *item = cs->cell_item + 8 * (size_t)P->seg_begin;
+    for (int k = b0; k < b1; k++) {
+        int sg = item[k];
+        const double *bx = cs->seg_box + 6 * sg;
+        if (x[0] < bx[0] || x[0] > bx[3] || x[1] < bx[1] || x[1] > bx[4] || x[2] < bx[2] ||
+            x[2] > bx[5])
+            continue;
+        const int *q = c->seg_node + 4 * sg;
+        if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) continue;
+        hit h;
+        if (!seg_gap(c, s->node_x, sg, x, c->ent_ht[e], &h)) continue;
+        if (P->self && seg_has_nbr(c, q, node)) continue;
+        if (nh < FE_CONTACT_HITS) hits[nh++] = h;
+        else { /* keep the deepest */
+            int wmax = 0;
+            for (int i = 1; i < nh; i++)
+                if (hits[i].gap > hits[wmax].gap) wmax = i;
+            if (h.gap < hits[wmax].gap) hits[wmax] = h;
+        }
+    }
+    /* slot 0: deepest; slot 1: deepest of those pushing the other way */
+    int best[2] = {-1, -1};
+    for (int i = 0; i < nh; i++)
+        if (best[0] < 0 || hits[i].gap < hits[best[0]].gap) best[0] = i;
+    for (int i = 0; i < nh && best[0] >= 0; i++)
+        if (fe_dot(hits[i].dir, hits[best[0]].dir) < 0 &&
+            (best[1] < 0 || hits[i].gap < hits[best[1]].gap))
+            best[1] = i;
+    const double minv = 1 / m->node_mass[node], dt0 = c->dt0, dtp = s->dt_prev;
+    for (int k = 0; k < 2; k++) {
+        const int slot = 2 * e + k;
+        double *f = cs->ent_f + 3 * slot, *ft = cs->ent_ft + 3 * slot;
+        cs->ent_d[slot] = 0;
+        if (best[k] < 0) {
+            /* released: the stick spring's energy is dissipated */
+            cs->ent_d[slot] = cs->ent_et[slot];
+            cs->ent_et[slot] = cs->ent_el[slot] = cs->ent_g[slot] = 0;
+            cs->ent_seg[slot] = -1;
+            f[0] = f[1] = f[2] = ft[0] = ft[1] = ft[2] = 0;
+            continue;
+        }
+        const hit *h = &hits[best[k]];
+        const int sg = h->seg, *q = c->seg_node + 4 * sg;
+        double kp = fmin(c->seg_k[sg], c->k_cap / (dt0 * dt0 * (minv + c->seg_minv[sg])));
+        double fn = -kp * h->gap, el = 0.5 * kp * h->gap * h->gap;
+        for (int i = 0; i < 3; i++) f[i] = fn * h->dir[i];
+        if (I->mu_s > 0) {
+            double vr[3], du[3];
+            for (int i = 0; i < 3; i++) {
+                vr[i] = s->node_v[3 * node + i];
+                for (int j = 0; j < 4; j++) vr[i] -= h->w[j] * s->node_v[3 * q[j] + i];
+            }
+            double vn = fe_dot(vr, h->dir), vt = 0;
+            for (int i = 0; i < 3; i++) {
+                du[i] = (vr[i] - vn * h->dir[i]) * dtp;
+                vt += (vr[i] - vn * h->dir[i]) * (vr[i] - vn * h->dir[i]);
+            }
+            double mu = I->mu_d + (I->mu_s - I->mu_d) * exp(-I->decay * sqrt(vt)), taken;
+            double et = fe_friction_update(ft, h->dir, du, kp, mu * fn, &taken);
+            cs->ent_d[slot] = taken - (et - cs->ent_et[slot]);
+            cs->ent_et[slot] = et;
+            el += et;
+            for (int i = 0; i < 3; i++) f[i] += ft[i];
+        }
+        cs->ent_el[slot] = el;
+        cs->ent_g[slot] = h->gap;
+        cs->ent_seg[slot] = sg;
+        memcpy(cs->ent_w + 4 * slot, h->w, sizeof h->w);
+    }
+}
+
+/* ---- phase 3: rigid ellipsoids ---------------------------------------------------------- */
+
+static void ellipsoid_forces(const fe_model *m, fe_state *s)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
+    const double dt0 = c->dt0, dtp = s->dt_prev;
+    for (int i = 0; i < c->nell; i++) {
+        const fe_contact_ellipsoid *E = &c->ell[i];
+        const double *C = cs->ell_c + 3 * i, *R = cs->ell_R + 9 * i, *V = cs->ell_v + 3 * i;
+        const double amax = fmax(E->semi[0], fmax(E->semi[1], E->semi[2]));
+        double *F = cs->ell_force + 3 * i;
+        F[0] = F[1] = F[2] = 0;
+        for (int j = E->node_begin; j < E->node_end; j++) {
+            const int n = c->ell_node[j];
+            const double *x = s->node_x + 3 * n;
+            double *ft = cs->ell_ft + 3 * j;
+            double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]}, pb[3], qb[3], dir[3];
+            const double ht = 0; /* nodes meet the ellipsoid with their mid-surface */
+            if (fe_dot(r, r) > (amax + ht) * (amax + ht)) goto release;
+            for (int k = 0; k < 3; k++) pb[k] = R[k] * r[0] + R[3 + k] * r[1] + R[6 + k] * r[2];
+            double g = fe_ellipsoid_nearest(E->semi, pb, qb) - ht;
+            if (g >= 0) goto release;
+            {
+                /* outward direction: from the nearest point to the node, or the surface
+                 * normal (gradient) when the node sits on the surface */
+                double db[3], nb[3], len = 0;
+                for (int k = 0; k < 3; k++) {
+                    nb[k] = qb[k] / (E->semi[k] * E->semi[k]);
+                    len += nb[k] * nb[k];
+                }
+                len = sqrt(len);
+                for (int k = 0; k < 3; k++) db[k] = nb[k] / len;
+                for (int k = 0; k < 3; k++)
+                    dir[k] = R[3 * k] * db[0] + R[3 * k + 1] * db[1] + R[3 * k + 2] * db[2];
+                double kp = E->scale * m->node_mass[n] / (dt0 * dt0), fn = -kp * g;
+                double f[3], el = 0.5 * kp * g * g, d = 0;
+                for (int k = 0; k < 3; k++) f[k] = fn * dir[k];
+                if (E->mu > 0) {
+                    const double *v = s->node_v + 3 * n;
+                    double vr[3] = {v[0] - V[0], v[1] - V[1], v[2] - V[2]}, du[3], taken;
+                    double vn = fe_dot(vr, dir);
+                    for (int k = 0; k < 3; k++) du[k] = (vr[k] - vn * dir[k]) * dtp;
+                    double et = fe_friction_update(ft, dir, du, kp, E->mu * fn, &taken);
+                    d = taken - (et - cs->ell_et[j]);
+                    cs->ell_et[j] = et;
+                    el += et;
+                    for (int k = 0; k < 3; k++) f[k] += ft[k];
+                }
+                for (int k = 0; k < 3; k++) {
+                    cs->node_fc[3 * n + k] += f[k];
+                    F[k] -= f[k];
+                }
+                int ip = m->node_part[n];
+                if (ip >= 0) {
+                    cs->part_elastic[ip] += el;
+                    cs->part_fric[ip] += d;
+                }
+                cs->pen_max = fmax(cs->pen_max, -g);
+                continue;
+            }
+        release:
+            if (cs->ell_et[j] > 0 && m->node_part[n] >= 0) cs->part_fric[m->node_part[n]] += cs->ell_et[j];
+            cs->ell_et[j] = 0;
+            ft[0] = ft[1] = ft[2] = 0;
+        }
+    }
+}
+
+/* ---- the sub-stage ----------------------------------------------------------------------- */
+
+static double touch_power(const fe_contact_model *c, const fe_state *s)
+{
+    double p = 0;
+    for (int t = 0; t < c->nnode_touch; t++) {
+        int n = c->touch[t];
+        p += fe_dot(s->contact->node_fc + 3 * n, s->node_v + 3 * n);
+    }
+    return p;
+}
+
+static double body_power(const fe_contact_model *c, const fe_contact_state *cs)
+{
+    double p = 0;
+    for (int i = 0; i < c->nell; i++) p -= fe_dot(cs->ell_force + 3 * i, cs->ell_v + 3 * i);
+    return p;
+}
+
+static int moved_past_margin(const fe_contact_model *c, const fe_state *s)
+{
+    const double m2 = c->margin * c->margin;
+    for (int t = 0; t < c->nnode_touch; t++) {
+        const double *x = s->node_x + 3 * c->touch[t], *r = s->contact->x_ref + 3 * t;
+        double d0 = x[0] - r[0], d1 = x[1] - r[1], d2 = x[2] - r[2];
+        if (d0 * d0 + d1 * d1 + d2 * d2 > m2) return 1;
+    }
+    return 0;
+}
+
+void fe_contact_interfaces(const fe_model *m, fe_state *s)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
+    const double dth = 0.5 * (s->dt + s->dt_prev), hb = s->dt_prev > 0 ? dth : 0;
+    /* forward half of the previous step's contact work (velocities now at t - dt/2) */
+    cs->work_nodes += 0.5 * cs->dth_prev * touch_power(c, s);
+    cs->work_bodies += 0.5 * cs->dth_prev * body_power(c, cs);
+    if (c->npass > 0 && (cs->need_rebuild || moved_past_margin(c, s))) fe_contact_search(m, s);
+    /* phase 1: entries are independent (each writes its own slots) */
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 256)
+#endif
+    for (int e = 0; e < c->nent; e++) entry_forces(m, s, e);
+    /* phase 2: scatter */
+    for (int t = 0; t < c->nnode_touch; t++) {
+        double *f = cs->node_fc + 3 * c->touch[t];
+        f[0] = f[1] = f[2] = 0;
+    }
+    memset(cs->part_elastic, 0, sizeof(double) * (size_t)m->npart);
+    memset(cs->if_force, 0, sizeof(double) * 3 * (size_t)c->nif);
+    memset(cs->if_energy, 0, sizeof(double) * (size_t)c->nif);
+    for (int e = 0; e < c->nent; e++) {
+        const int node = c->ent_node[e], ifc = c->pass[c->ent_pass[e]].iface;
+        const int rev = c->pass[c->ent_pass[e]].reverse;
+        const int ps = m->node_part[node];
+        for (int k = 0; k < 2; k++) {
+            const int slot = 2 * e + k, sg = cs->ent_seg[slot];
+            const double d = cs->ent_d[slot];
+            if (d != 0) {
+                cs->if_fric[ifc] += d;
+                if (sg >= 0) {
+                    cs->part_fric[ps] += 0.5 * d;
+                    cs->part_fric[c->seg_part[sg]] += 0.5 * d;
+                } else {
+                    cs->part_fric[ps] += d;
+                }
+            }
+            if (sg < 0) continue;
+            const double *f = cs->ent_f + 3 * slot, *w = cs->ent_w + 4 * slot;
+            const int *q = c->seg_node + 4 * sg;
+            for (int i = 0; i < 3; i++) {
+                cs->node_fc[3 * node + i] += f[i];
+                cs->if_force[3 * ifc + i] += rev ? -f[i] : f[i];
+            }
+            for (int j = 0; j < 4; j++)
+                if (w[j] != 0)
+                    for (int i = 0; i < 3; i++) cs->node_fc[3 * q[j] + i] -= w[j] * f[i];
+            const double el = cs->ent_el[slot];
+            cs->part_elastic[ps] += 0.5 * el;
+            cs->part_elastic[c->seg_part[sg]] += 0.5 * el;
+            cs->if_energy[ifc] += el;
+            cs->pen_max = fmax(cs->pen_max, -cs->ent_g[slot]);
+        }
+    }
+    for (int i = 0; i < c->nif; i++) cs->if_energy[i] += cs->if_fric[i];
+    /* phase 3: ellipsoids add to node_fc */
+    ellipsoid_forces(m, s);
+    /* into the external-force accumulator; back half of this step's contact work */
+    for (int t = 0; t < c->nnode_touch; t++) {
+        const int n = c->touch[t];
+        for (int i = 0; i < 3; i++) s->node_fext[3 * n + i] += cs->node_fc[3 * n + i];
+    }
+    cs->work_nodes += 0.5 * hb * touch_power(c, s);
+    cs->work_bodies += 0.5 * hb * body_power(c, cs);
+    cs->dth_prev = dth;
+    /* energies at t */
+    double e = 0;
+    for (int ip = 0; ip < m->npart; ip++) {
+        double pe = cs->part_elastic[ip] + cs->part_fric[ip];
+        s->part_energy[FE_NENERGY * ip + FE_E_contact] = pe;
+        e += pe;
+    }
+    cs->energy = e;
+    /* the ellipsoids move on with their velocity */
+    for (int i = 0; i < 3 * c->nell; i++) cs->ell_c[i] += s->dt * cs->ell_v[i];
+}
+
+double fe_contact_energy(const fe_model *m, const fe_state *s)
+{
+    (void)m;
+    return s->contact ? s->contact->energy : 0;
+}
+
+double fe_contact_work(const fe_model *m, const fe_state *s)
+{
+    (void)m;
+    return s->contact ? s->contact->work_nodes - s->contact->work_bodies : 0;
+}

@@ -1,0 +1,178 @@
+/* fe_contact: penalty contact interfaces of the explicit FE kernel (DESIGN.md `fe.contacts`):
+ * node-to-segment contact against shell and hex-face segments (two-surface, one-way and
+ * single-surface/self), Coulomb friction with an elastic stick, and nodes against rigid
+ * ellipsoids (for coupling stage-1 bodies). docs/fe.md "Contact" gives the formulas.
+ *
+ * Model side (built once by fe_model_create from the builder's descriptors): segments, slave
+ * node lists, penalty stiffnesses, neighbour lists for self-contact. State side: the bucket
+ * grid (rebuilt when a segment node has moved more than the search margin), friction history,
+ * contact energies and force histories. fe_contact_forces (fe_stages.c) calls
+ * fe_contact_interfaces, which adds the contact forces to node_fext. */
+#ifndef FE_CONTACT_H
+#define FE_CONTACT_H
+
+#include <stddef.h>
+
+#include "fe/fe_model.h"
+
+#define FE_CONTACT_MAX 16    /* most contact interfaces                                      */
+#define FE_CONTACT_PARTS 8   /* most parts on each side of an interface                      */
+#define FE_ELLIPSOID_MAX 32  /* most rigid ellipsoids                                        */
+
+typedef enum {
+    FE_CONTACT_TWO_SURFACE,     /* slave nodes vs master segments and master nodes vs slave
+                                   segments (symmetric, two passes; LS-DYNA SURFACE_TO_SURFACE) */
+    FE_CONTACT_NODE_TO_SURFACE, /* slave nodes vs master segments only (one pass)               */
+    FE_CONTACT_SINGLE_SURFACE   /* every node of the parts vs every segment of the parts that
+                                   neither contains it nor neighbours one that does (self) */
+} fe_contact_type;
+
+typedef struct {
+    char name[FE_NAME_MAX];                   /* results: /stage3/contact/<name>            */
+    fe_contact_type type;
+    int nslave;                               /* slave parts (single surface: the parts) [-] */
+    char slave[FE_CONTACT_PARTS][FE_NAME_MAX];
+    int nmaster;                              /* master parts (unused for single surface) [-] */
+    char master[FE_CONTACT_PARTS][FE_NAME_MAX];
+    double friction;                          /* static Coulomb coefficient mu_s [-]          */
+    double friction_dynamic;                  /* dynamic mu_d; < 0 takes mu_s [-]             */
+    double friction_decay;                    /* mu = mu_d + (mu_s - mu_d) exp(-dc |v_t|) [s/m] */
+    double penalty_scale;                     /* s of k = s K A^2/V, s K A/diag; 0 -> 0.1 [-] */
+    double thickness_scale;                   /* on the shell offsets t/2; 0 -> 1 [-]         */
+} fe_contact_desc;
+
+typedef struct {
+    char name[FE_NAME_MAX];
+    double center[3];        /* at t = 0 [m]                                                   */
+    double semi_axes[3];     /* along the body axes [m]                                        */
+    double orientation[4];   /* body -> world quaternion w, x, y, z (0 0 0 0 takes identity) [-] */
+    double velocity[3];      /* prescribed translational velocity [m/s]                        */
+    double penalty_scale;    /* k = s m_node / dt0^2 per node; 0 -> 0.1 [-]                     */
+    double friction;         /* Coulomb coefficient [-]                                        */
+    int nparts;              /* 0: every node with mass                                        */
+    char parts[FE_CONTACT_PARTS][FE_NAME_MAX];
+} fe_ellipsoid_desc;
+
+fe_contact_desc fe_contact_desc_default(void);
+
+/* the builder keeps the descriptors; fe_model_create resolves them */
+mcs_status fe_builder_add_contact(fe_builder *b, const fe_contact_desc *d, mcs_error *err);
+mcs_status fe_builder_add_ellipsoid(fe_builder *b, const fe_ellipsoid_desc *d, mcs_error *err);
+
+/* ---- the frozen contact model (fe_model.contact; NULL when there is no contact) --------- */
+
+typedef struct {
+    char name[FE_NAME_MAX];
+    double mu_s, mu_d, decay;  /* friction law [-], [-], [s/m]                                 */
+} fe_contact_if;
+
+typedef struct {
+    int iface;                 /* interface it belongs to [-]                                  */
+    int self;                  /* single surface: topological exclusion of neighbours [-]     */
+    int reverse;               /* second pass of a two-surface contact: masters as slaves [-] */
+    int ent_begin, ent_end;    /* its slave entries [-]                                        */
+    int seg_begin, seg_end;    /* its segments [-]                                             */
+} fe_contact_pass;
+
+typedef struct {
+    double center[3], R[9];    /* initial pose: centre [m], body -> world rotation (row major) */
+    double semi[3];            /* semi-axes [m]                                                */
+    double velocity[3];        /* prescribed velocity [m/s]                                    */
+    double scale, mu;          /* penalty scale, friction [-]                                  */
+    int node_begin, node_end;  /* its nodes in ell_node [-]                                    */
+    char name[FE_NAME_MAX];
+} fe_contact_ellipsoid;
+
+typedef struct fe_contact_model {
+    int nif, npass, nseg, nent, nnode_touch, nell, nell_node;
+    fe_contact_if *iface;        /* (nif)                                                      */
+    fe_contact_pass *pass;       /* (npass)                                                    */
+    int *seg_node;               /* (nseg x 4) segment nodes (triangle: 4th = 3rd)             */
+    int *seg_part;               /* (nseg) part of each segment                                */
+    unsigned char *seg_solid;    /* (nseg) 1: hex face (one-sided), 0: shell (two-sided)       */
+    double *seg_ht;              /* (nseg) half thickness of the surface offset [m]            */
+    double *seg_k;               /* (nseg) penalty stiffness (LS-DYNA form) [N/m]              */
+    double *seg_minv;            /* (nseg) 1 / smallest node mass of the segment [1/kg]        */
+    double *seg_depth;           /* (nseg) deepest penetration still taken (solids) [m]        */
+    int *ent_node;               /* (nent) slave node of each entry                            */
+    int *ent_pass;               /* (nent) its pass                                            */
+    double *ent_ht;              /* (nent) half shell thickness at the slave node (0 solid) [m] */
+    int *nbr_off, *nbr;          /* (nnode + 1), (...) nodes sharing an element with a node    */
+    int *touch;                  /* (nnode_touch) nodes of any contact (slave or segment)       */
+    fe_contact_ellipsoid *ell;   /* (nell)                                                     */
+    int *ell_node;               /* (nell_node) nodes each ellipsoid acts on                   */
+    double margin;               /* search margin: rebuild when a node moved this far [m]      */
+    double k_cap;                /* stiffness cap: k (1/m_s + 1/m_m) dt0^2 <= k_cap [-]        */
+    double dt0;                  /* stable step the cap refers to [s]                          */
+    size_t bytes;                /* memory held [B]                                            */
+} fe_contact_model;
+
+/* called by fe_model_create once the model is frozen (masses, dt_initial known) */
+mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *err);
+void fe_contact_model_free(fe_model *m);
+
+/* ---- the contact state (fe_state.contact) ------------------------------------------------ */
+
+typedef struct fe_contact_state {
+    /* search */
+    double *x_ref;          /* (nnode_touch x 3) positions at the last rebuild [m]           */
+    double *seg_box;        /* (nseg x 6) inflated boxes at the last rebuild [m]             */
+    int *cell_off;          /* (per pass: hash size + 1) bucket offsets                       */
+    int *cell_item;         /* (8 nseg) segments of each bucket                              */
+    int *seg_cells;         /* (8 nseg) scratch: the distinct buckets of each segment         */
+    int *pass_hash;         /* (npass) hash size (power of two) of each pass [-]             */
+    int *pass_cell_base;    /* (npass) first offset of each pass in cell_off [-]            */
+    double *pass_cell;      /* (npass x 4) grid origin [m] and cell size [m]                 */
+    long nrebuild;          /* searches done [-]                                              */
+    int need_rebuild;
+    /* per slave entry, two slots (nearest segment, nearest one on the other side) */
+    int *ent_seg;           /* (nent x 2) segment in contact, -1 none                        */
+    double *ent_w;          /* (nent x 2 x 4) weights of the segment nodes [-]               */
+    double *ent_f;          /* (nent x 2 x 3) force on the slave node [N]                    */
+    double *ent_ft;         /* (nent x 2 x 3) friction force history [N]                     */
+    double *ent_et;         /* (nent x 2) tangential (stick) elastic energy of the slot [J]  */
+    double *ent_el;         /* (nent x 2) elastic energy of the slot now [J]                 */
+    double *ent_d;          /* (nent x 2) friction dissipated this step [J]                  */
+    double *ent_g;          /* (nent x 2) gap (< 0: penetration past the offset) [m]         */
+    double *ell_ft;         /* (nell_node x 3) ellipsoid friction history [N]               */
+    double *ell_et;         /* (nell_node) its tangential elastic energy [J]                 */
+    /* nodal contact forces and the energy bookkeeping */
+    double *node_fc;        /* (nnode x 3) contact force at t [N]                            */
+    double *part_fric;      /* (npart) frictional dissipation so far [J]                     */
+    double *part_elastic;   /* (npart) elastic energy stored now [J]                          */
+    double *if_force;       /* (nif x 3) resultant force on the slave side at t [N]          */
+    double *if_energy;      /* (nif) elastic + dissipated energy of the interface [J]       */
+    double *if_fric;        /* (nif) frictional dissipation so far [J]                        */
+    double *ell_c, *ell_R, *ell_v; /* (nell x 3, 9, 3) current ellipsoid poses [m], [-], [m/s] */
+    double *ell_force;      /* (nell x 3) force of the structure on each ellipsoid at t [N]  */
+    double work_nodes;      /* work of contact forces on the nodes, synchronised with work_ext [J] */
+    double work_bodies;     /* work of moving rigid bodies through contact [J]               */
+    double dth_prev;        /* velocity-update step of the previous step [s]                 */
+    double pen_max;         /* deepest penetration seen, relative to the offset [m]           */
+    double energy;          /* elastic + frictional energy of every interface at t [J]      */
+    size_t bytes;
+} fe_contact_state;
+
+mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mcs_error *err);
+void fe_contact_state_destroy(fe_contact_state **p);
+void fe_contact_state_reset(const fe_model *m, fe_contact_state *c);
+
+/* reads x, v (t - dt/2), time; adds contact forces to node_fext; updates the contact
+ * energies (part_energy[FE_E_contact]) and the contact work that fe_stable_step takes out
+ * of the external work (the contact is internal to the structure) */
+struct fe_state;
+void fe_contact_interfaces(const fe_model *m, struct fe_state *s);
+/* contact energy at t (elastic + dissipated) and the contact work included in work_ext [J] */
+double fe_contact_energy(const fe_model *m, const struct fe_state *s);
+double fe_contact_work(const fe_model *m, const struct fe_state *s);
+
+/* move an ellipsoid (stage-1 coupling): centre [m], rotation body -> world (row major) [-],
+ * velocity [m/s]; R may be NULL to keep the orientation */
+void fe_contact_set_ellipsoid(const fe_model *m, struct fe_state *s, int i, const double c[3],
+                              const double R[9], const double v[3]);
+
+/* nearest point of an ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1 (body frame) to p; returns
+ * the signed distance (< 0 inside) and the point in q [m] */
+double fe_ellipsoid_nearest(const double semi[3], const double p[3], double q[3]);
+
+#endif

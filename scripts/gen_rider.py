@@ -259,9 +259,11 @@ characteristics:
     loading: [[0, 0], [10 mm, 0.5 kN], [30 mm, 3 kN], [50 mm, 15 kN], [70 mm, 50 kN]]
     damping: 200 N s/m
   # ---- joint restraints: moment vs. angle per axis, both directions [A], docs/rider.md ----
+  # About the seated posture, stiff enough to hold it under 1 g with a few degrees of sag (as
+  # an ATD's joints are set to hold a posture), then stiffening to the end of the range.
   rider_lumbar:
     type: moment
-    loading: [[0, 0], [0.2 rad, 60 N*m], [0.5 rad, 300 N*m], [0.7 rad, 2000 N*m]]
+    loading: [[0, 0], [0.1 rad, 60 N*m], [0.3 rad, 250 N*m], [0.6 rad, 1500 N*m]]
     damping: 20 N m s/rad
   rider_thoracic:
     type: moment
@@ -273,27 +275,27 @@ characteristics:
     damping: 1.5 N m s/rad
   rider_shoulder:
     type: moment
-    loading: [[0, 0], [1.0 rad, 10 N*m], [1.4 rad, 60 N*m], [1.7 rad, 500 N*m]]
-    damping: 2 N m s/rad
+    loading: [[0, 0], [0.2 rad, 30 N*m], [0.8 rad, 80 N*m], [1.4 rad, 300 N*m], [1.7 rad, 1500 N*m]]
+    damping: 3 N m s/rad
   rider_elbow:
     type: moment
-    loading: [[0, 0], [0.1 rad, 2 N*m], [1.5 rad, 6 N*m]]
-    damping: 0.5 N m s/rad
+    loading: [[0, 0], [0.2 rad, 30 N*m], [1.5 rad, 60 N*m]]
+    damping: 2 N m s/rad
   rider_wrist:
     type: moment
-    loading: [[0, 0], [0.6 rad, 2 N*m], [1.0 rad, 30 N*m]]
-    damping: 0.2 N m s/rad
+    loading: [[0, 0], [0.2 rad, 10 N*m], [0.8 rad, 30 N*m], [1.2 rad, 200 N*m]]
+    damping: 0.5 N m s/rad
   rider_hip:
     type: moment
-    loading: [[0, 0], [0.8 rad, 20 N*m], [1.2 rad, 150 N*m], [1.5 rad, 1000 N*m]]
+    loading: [[0, 0], [0.2 rad, 60 N*m], [0.6 rad, 200 N*m], [1.0 rad, 600 N*m], [1.4 rad, 3000 N*m]]
     damping: 5 N m s/rad
   rider_knee:
     type: moment
-    loading: [[0, 0], [0.1 rad, 3 N*m], [1.5 rad, 10 N*m]]
-    damping: 1 N m s/rad
+    loading: [[0, 0], [0.2 rad, 30 N*m], [1.5 rad, 60 N*m]]
+    damping: 3 N m s/rad
   rider_ankle:
     type: moment
-    loading: [[0, 0], [0.4 rad, 5 N*m], [0.7 rad, 60 N*m]]
+    loading: [[0, 0], [0.2 rad, 15 N*m], [0.6 rad, 40 N*m], [0.9 rad, 300 N*m]]
     damping: 0.5 N m s/rad
 """
 

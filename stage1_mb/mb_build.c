@@ -4,6 +4,7 @@
  * gravity 9.81 m/s^2 along -z. */
 #include "stage1_mb/mb_build_internal.h"
 #include "stage1_mb/mb_impact.h"
+#include "stage1_mb/mb_position.h"
 #include "stage1_mb/mb_vec.h"
 
 #include <math.h>
@@ -210,7 +211,9 @@ mcs_status mb_model_build(const mcs_scenario *scn, const mb_opts *opts, mb_model
     if (!st) st = mb_build_surfaces(root, m, err);
     if (!st) st = mb_build_contacts(root, m, err);
     if (!st) st = mb_build_joints(root, m, err);
+    if (!st) st = mb_position_rider(root, m, err); /* seat the rider before the attachments */
     if (!st) st = mb_build_attachments(root, m, err);
+    if (!st) st = mb_position_attach(root, m, err);
     if (!st) st = build_sensors(root, m, err);
     if (!st) st = mb_impact_apply(root, m, err); /* last: places the built motorcycle group */
     if (st) {

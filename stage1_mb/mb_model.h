@@ -146,6 +146,8 @@ typedef struct {
     int out_every;       /* steps between output samples                                     */
     long nout;           /* output samples, t = 0 included                                   */
     mb_opts opts;
+    double rider_residual; /* largest rider mount point to motorcycle mount point distance after
+                              seating the rider (mb_position.c) [m]; -1 without a rider: block */
 } mb_model;
 
 /* build from a loaded scenario; every error names FILE:LINE:COL and the key */

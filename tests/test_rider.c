@@ -5,6 +5,8 @@
  * the joint ranges. Figures measured are printed (they go into docs/rider.md). */
 #include "harness.h"
 #include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_position.h"
+#include "stage1_mb/mb_vec.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -101,8 +103,196 @@ static void test_mass_and_segments(void)
     mb_model_destroy(&m);
 }
 
+/* ---- seated on the motorcycle ---- */
+
+#define SEATED_HEAD                                                                                \
+    "mcrash: 1\n"                                                                                  \
+    "include: [models/motorcycles/sport_208kg.yaml, models/riders/hybrid3_50th.yaml]\n"            \
+    "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n"
+
+/* the rider seated on the motorcycle at rest on the ground: seat, tank and thigh contacts */
+static mb_model *seated(const char *rider_block, double t_end, mcs_error *err)
+{
+    char txt[2048];
+    snprintf(txt, sizeof txt,
+             SEATED_HEAD "simulation: {end_time: %g s, time_step: 10 us, output_rate: 10 kHz}\n"
+                         "rider: %s\n"
+                         "contacts:\n"
+                         "  - {a: rider_pelvis, b: moto_frame, characteristic: seat}\n"
+                         "  - {a: rider_thigh_l, b: moto_frame, characteristic: tank}\n"
+                         "  - {a: rider_thigh_r, b: moto_frame, characteristic: tank}\n"
+                         "  - {a: rider_lower_torso, b: moto_frame, characteristic: tank}\n",
+             t_end, rider_block);
+    return build_text("scenarios/rider_seated.yaml", txt, err);
+}
+
+static double dist_mounts(const mcs_node *root, const mb_model *m, const char *a, const char *b)
+{
+    double pa[3], pb[3], d[3];
+    if (mb_mount_world(root, m, a, pa) || mb_mount_world(root, m, b, pb)) return INFINITY;
+    mb_sub(pa, pb, d);
+    return mb_norm(d);
+}
+
+/* world point of a body-frame point */
+static void world_of(const mb_model *m, int b, const double p[3], double out[3])
+{
+    double R[9];
+    mb_quat_to_rot(m->body[b].quat, R);
+    mb_mat_vec(R, p, out);
+    mb_add(out, m->body[b].pos, out);
+}
+
+/* residuals of the seated posture: every rider mount point on its motorcycle mount point
+ * (< 1 mm asked; the closed-form two-link solution gives round-off), every joint closed, the
+ * segment lengths kept, the elbow and knee ranges moved by the posture */
+static void test_positioning(void)
+{
+    static const char *const pairs[5][2] = {{"rider_h_point", "seat_h_point"},
+                                            {"rider_grip_l", "grip_l"},
+                                            {"rider_grip_r", "grip_r"},
+                                            {"rider_peg_l", "peg_l"},
+                                            {"rider_peg_r", "peg_r"}};
+    char txt[2048];
+    snprintf(txt, sizeof txt,
+             SEATED_HEAD "simulation: {end_time: 1 ms}\nrider: {torso_lean: 40 deg}\n");
+    mcs_scenario *scn = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_scenario_load_text("scenarios/rider_seated.yaml", txt, strlen(txt), &scn, &err) == 0);
+    mb_model *m = NULL;
+    if (scn && mb_model_build(scn, NULL, &m, &err)) fprintf(stderr, "%s\n", err.msg);
+    CHECK(m != NULL);
+    if (!m) {
+        mcs_scenario_destroy(&scn);
+        return;
+    }
+    const mcs_node *root = mcs_scenario_root(scn);
+    double worst = 0;
+    for (int k = 0; k < 5; k++) worst = fmax(worst, dist_mounts(root, m, pairs[k][0], pairs[k][1]));
+    printf("  seated at 40 deg: largest mount-point residual %.3g m (model %.3g m)\n", worst,
+           m->rider_residual);
+    CHECK(worst < 1e-3);
+    CHECK(worst < 1e-12); /* closed form: round-off only */
+    CHECK(m->rider_residual >= 0 && m->rider_residual < 1e-12);
+    /* joints closed: the anchor is the same material point of parent and child */
+    mb_model *m0 = rider_alone(RIDER);
+    CHECK(m0 != NULL);
+    double gap = 0;
+    for (int j = 0; m0 && j < m->njoint; j++) {
+        const mb_joint_def *jd = &m->joint[j];
+        if (jd->parent < 0 || strncmp(m->body_name[jd->parent], "rider_", 6)) continue;
+        for (int side = 0; side < 2; side++) {
+            int b = side ? jd->child : jd->parent;
+            int b0 = mb_model_body(m0, m->body_name[b]);
+            /* the anchor in the body frame of the model file */
+            double R0[9], d[3], loc[3], w[3];
+            mb_quat_to_rot(m0->body[b0].quat, R0);
+            mb_sub(m0->joint[j - (m->njoint - m0->njoint)].anchor, m0->body[b0].pos, d);
+            mb_mat_tvec(R0, d, loc);
+            world_of(m, b, loc, w);
+            mb_sub(w, jd->anchor, d);
+            gap = fmax(gap, mb_norm(d));
+        }
+    }
+    printf("  largest joint gap after seating %.3g m\n", gap);
+    CHECK(gap < 1e-12);
+    /* the elbow's range: straight (flexion 0) sits at -flexion of the seated posture, which
+     * the geometry gives: flexion = pi - angle(shoulder-elbow-grip) */
+    for (int side = 0; side < 2; side++) {
+        const char *sfx = side ? "r" : "l";
+        char nm[64];
+        snprintf(nm, sizeof nm, "rider_elbow_%s", sfx);
+        int je = -1, js = -1;
+        for (int j = 0; j < m->njoint; j++) {
+            if (!strcmp(m->joint[j].name, nm)) je = j;
+            char sh[64];
+            snprintf(sh, sizeof sh, "rider_shoulder_%s", sfx);
+            if (!strcmp(m->joint[j].name, sh)) js = j;
+        }
+        CHECK(je >= 0 && js >= 0 && m->joint[je].restraint >= 0);
+        if (je < 0 || js < 0 || m->joint[je].restraint < 0) continue;
+        double grip[3], u[3], f[3];
+        snprintf(nm, sizeof nm, "grip_%s", sfx);
+        CHECK(mb_mount_world(root, m, nm, grip) == 0);
+        mb_sub(m->joint[js].anchor, m->joint[je].anchor, u);
+        mb_sub(grip, m->joint[je].anchor, f);
+        double flex = M_PI - acos(mb_dot(u, f) / (mb_norm(u) * mb_norm(f)));
+        const mb_restraint_model *r = &m->restraint1[m->joint[je].restraint];
+        printf("  elbow %s: flexion %.2f deg, range now [%.2f, %.2f] deg\n", sfx,
+               flex * 180 / M_PI, r->lo * 180 / M_PI, r->hi * 180 / M_PI);
+        CHECK_NEAR(r->lo, -flex, 1e-9);
+        CHECK_NEAR(r->hi, 145 * M_PI / 180 - flex, 1e-9);
+    }
+    /* velocities: the motorcycle's (at rest in the model file) */
+    for (int b = 0; b < m->nbody; b++) CHECK(mb_norm(m->body[b].vel) == 0);
+    mb_model_destroy(&m0);
+    mb_model_destroy(&m);
+    mcs_scenario_destroy(&scn);
+
+    /* unreachable: upright, the grips are beyond the stretched arms */
+    m = seated("{torso_lean: 0 deg}", 1e-3, &err);
+    CHECK(m == NULL);
+    CHECK_STR_CONTAINS(err.msg, "cannot reach");
+    CHECK_STR_CONTAINS(err.msg, "arm");
+    printf("  refused: %s\n", err.msg);
+    /* a missing mount point is named */
+    err = (mcs_error){0};
+    snprintf(txt, sizeof txt,
+             "mcrash: 1\ninclude: [models/riders/hybrid3_50th.yaml]\n"
+             "simulation: {end_time: 1 ms}\nrider: {torso_lean: 40 deg}\n");
+    m = build_text("scenarios/rider_nobike.yaml", txt, &err);
+    CHECK(m == NULL);
+    CHECK_STR_CONTAINS(err.msg, "seat_h_point");
+    CHECK_STR_CONTAINS(err.msg, "rider_nobike.yaml");
+}
+
+/* under gravity the seated rider settles on the seat, pegs and grips: no energy growth (the
+ * engine's growth stop would end the run), the energy balance closes, the attachments hold
+ * and the H-point stays within a few cm of the seat point */
+static void test_seated_settles(void)
+{
+    mcs_error err = {0};
+    mb_model *m = seated("{torso_lean: 40 deg}", 0.2, &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    CHECK(m->nattach == 5);
+    mb_state *s = NULL;
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    mcs_status st = MCS_OK;
+    double e0 = s->e.total, emax = e0;
+    while (s && !st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        emax = fmax(emax, s->e.total);
+    }
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    int broken = 0;
+    for (int i = 0; s && i < m->nattach; i++) broken += s->att[i].broken;
+    int pel = mb_model_body(m, "rider_pelvis"), fr = mb_model_body(m, "moto_frame");
+    mb_body_kin kp, kf;
+    mb_body_get(s->world, pel, &kp);
+    mb_body_get(s->world, fr, &kf);
+    double rel0[3], rel[3], d[3];
+    mb_sub(m->body[pel].pos, m->body[fr].pos, rel0);
+    mb_sub(kp.pos, kf.pos, rel);
+    mb_sub(rel, rel0, d);
+    printf("  seated 0.2 s: energy drift %.3g, total grew at most %.3g J of %.1f J kinetic+stored "
+           "reference, pelvis moved %.1f mm relative to the frame, %d attachments broken\n",
+           mb_energy_drift(m, s), emax - e0, s->e_ref, 1e3 * mb_norm(d), broken);
+    CHECK(mb_energy_drift(m, s) < 1e-2);
+    CHECK(broken == 0);
+    CHECK(mb_norm(d) < 0.05);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 int main(void)
 {
     RUN(test_mass_and_segments);
+    RUN(test_positioning);
+    RUN(test_seated_settles);
     TEST_END();
 }

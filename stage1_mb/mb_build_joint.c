@@ -7,9 +7,9 @@
  * its set). A joint `range` becomes a stop: a
  * linear one-sided spring beyond the range of 10 times the steepest slope of the restraint's
  * loading curve, or 1e3 N m/rad (revolute) / 1e5 N/m (translational) without one.
- * Attachments: zero-length isotropic spring-dampers (mb_restraint.h). Without `length` (or
- * with length 0 and coinciding points) they are at rest in the initial posture: the point on b
- * is taken where point_a is at t = 0. A non-zero free length is not built yet. */
+ * Attachments: spring-dampers (mb_restraint.h). Without `length` they are at rest in the
+ * initial posture: the point on b is taken where point_a is at t = 0 (zero free length). With
+ * `length` L the points are as given and the spring acts on |b - a| - L (L = 0: isotropic). */
 #include "stage1_mb/mb_build_internal.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -203,12 +203,8 @@ static mcs_status build_attachment(const mcs_node *n, mb_model *m, int i, mcs_er
     if (!(a->stiffness > 0))
         return mcs_node_error(mcs_node_get(n, "stiffness"), err, MCS_ERR_RANGE,
                               "an attachment needs a stiffness > 0 N/m");
-    const mcs_node *len = mcs_node_get(n, "length");
     double L = mcs_node_num_or(n, "length", NAN);
-    if (!isnan(L) && L != 0)
-        return mcs_node_error(len, err, MCS_ERR_UNSUPPORTED,
-                              "attachments of non-zero free length are not built yet "
-                              "(omit length: at rest in the initial posture)");
+    a->length = isnan(L) ? 0 : L; /* given: the points as given, spring on |b - a| - L */
     if (isnan(L)) { /* at rest now: b's point where a's point is */
         double wa[3];
         initial_world_point(m, a->body_a, a->pa, wa);

@@ -168,6 +168,7 @@ static void pair_force(const mb_model *m, mb_state *s, int i)
     double x = c->depth > 0 ? c->depth : 0;
     double fs = mcs_hyst_update(&p->hyst, &ps->h, x);
     ps->depth = x, ps->fn = 0;
+    ps->ft[0] = ps->ft[1] = ps->ft[2] = 0;
     if (!(x > 0)) return;
     double va[3], vb[3], rel[3], slip[3], ft[3], pf;
     point_velocity(s, p->ba, c->point, va);
@@ -180,6 +181,7 @@ static void pair_force(const mb_model *m, mb_state *s, int i)
     friction(m, s, p, c->point, fn, slip, ft, &pf);
     ps->e_fric += pf * m->h;
     ps->fn = fn;
+    mb_copy(ft, ps->ft);
     double f[3];
     mb_axpy(ft, fn, c->normal, f);
     mb_body_add_force_at_pos(s->world, p->ba, f, c->point);

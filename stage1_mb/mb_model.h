@@ -192,6 +192,7 @@ typedef struct {
     double e_fric;     /* energy dissipated by friction [J]                                 */
     double fn;         /* normal force at the last step [N]                                 */
     double depth;      /* penetration at the last step [m]                                  */
+    double ft[3];      /* friction force on a at the last step, world [N]                    */
 } mb_pair_state;
 
 typedef struct mb_state mb_state;
@@ -242,6 +243,7 @@ struct mb_state {
     double *rec_energy;       /* (nout x MB_NENERGY) [J]                                    */
     double timer[MB_NTIMER];  /* wall time per sub-stage [s]                                */
     int timing;               /* 1: read the clock around sub-stages                        */
+    double *rec_chan;         /* contact and joint channels (nout x mb_channels_count) SI    */
 };
 
 #define MB_NENERGY 7
@@ -259,6 +261,8 @@ void mb_contact_forces(const mb_model *m, mb_state *s);
 void mb_restraints_apply(const mb_model *m, mb_state *s);
 void mb_energy_update(const mb_model *m, mb_state *s);
 mcs_status mb_energy_check(const mb_model *m, mb_state *s, mcs_error *err);
+/* every step, after the force stages: growth or NaN of the total from running sums */
+mcs_status mb_energy_check_step(const mb_model *m, mb_state *s, mcs_error *err);
 /* the energy error: largest |total - total0| over the largest kinetic + stored energy [-] */
 double mb_energy_drift(const mb_model *m, const mb_state *s);
 void mb_kinematics_update(const mb_model *m, mb_state *s);
@@ -290,6 +294,13 @@ mcs_status mb_run(const mb_model *m, const mb_run_opts *o, mb_run_summary *sum, 
 /* add /stage1/injury to a committed results file from its channels (mb_injury.c); *ncrit
  * criteria written (0 when no known dummy channel exists) */
 mcs_status mb_injury_write(const char *path, int *ncrit, mcs_error *err);
+
+/* contact and joint channels (mb_channels.c): per contact <contact>_fn, _ft, _pen; per joint
+ * with a one-axis restraint <joint>_angle|_disp and _moment|_force (docs/contracts.md) */
+int mb_channels_count(const mb_model *m);
+void mb_channels_sample(const mb_model *m, const mb_state *s, double *row);
+mcs_status mb_channels_write(const mb_model *m, const mb_state *s, mcs_results *r, double *buf,
+                             mcs_error *err);
 
 /* write /stage1 of the recorded state into an open results file (mb_output.c) */
 mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r, mcs_error *err);

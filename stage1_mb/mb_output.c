@@ -87,6 +87,7 @@ mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r,
     if (!st) st = write_bodies(m, s, r, buf, err);
     if (!st) st = write_channels(m, s, r, buf, err);
     if (!st) st = write_energy(s, r, buf, err);
+    if (!st) st = mb_channels_write(m, s, r, buf, err);
     if (!st) st = mcs_results_set_attr_double(r, "/stage1", "time_step", m->h, err);
     if (!st) st = mcs_results_set_attr_double(r, "/stage1", "output_rate", m->output_rate, err);
     if (!st) st = mcs_results_set_attr_int(r, "/stage1", "steps", (int)s->step, err);

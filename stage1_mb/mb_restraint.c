@@ -92,6 +92,9 @@ mcs_status mb_attach_check(const mb_attach_model *m, const mb_world *w, const ch
         return MCS_ERR(err, MCS_ERR_RANGE,
                        "%s: stiffness %g N/m must be > 0 and damping %g N s/m >= 0", name,
                        m->stiffness, m->damping);
+    if (!(m->length >= 0) || !isfinite(m->length))
+        return MCS_ERR(err, MCS_ERR_RANGE, "%s: free length %g m must be finite and >= 0", name,
+                       m->length);
     if (!(m->fail_force > 0))
         return MCS_ERR(err, MCS_ERR_RANGE, "%s: failure force %g N must be > 0", name,
                        m->fail_force);
@@ -131,12 +134,15 @@ void mb_attach_apply(const mb_attach_model *m, mb_attach_state *s, mb_world *w, 
     attach_point(w, m->body_b, m->pb, pb, vb);
     mb_sub(pb, pa, s->stretch);
     mb_sub(vb, va, dv);
+    /* spring on the extension |d| - L along d (L = 0: k d); at |d| = 0 < L no direction: 0 */
+    double d = mb_norm(s->stretch), ks = m->stiffness;
+    if (m->length > 0) ks = d > 0 ? m->stiffness * (d - m->length) / d : 0;
     for (int k = 0; k < 3; k++)
-        s->force[k] = m->stiffness * s->stretch[k] + m->damping * dv[k];
+        s->force[k] = ks * s->stretch[k] + m->damping * dv[k];
     if (mb_norm(s->force) > m->fail_force) {
+        s->e_lost = mb_attach_stored(m, s);
         s->broken = 1;
         s->t_break = mb_world_time(w);
-        s->e_lost = 0.5 * m->stiffness * mb_dot(s->stretch, s->stretch);
         s->force[0] = s->force[1] = s->force[2] = 0;
         return;
     }
@@ -151,5 +157,7 @@ void mb_attach_apply(const mb_attach_model *m, mb_attach_state *s, mb_world *w, 
 
 double mb_attach_stored(const mb_attach_model *m, const mb_attach_state *s)
 {
-    return s->broken ? 0 : 0.5 * m->stiffness * mb_dot(s->stretch, s->stretch);
+    if (s->broken) return 0;
+    double e = mb_norm(s->stretch) - m->length;
+    return 0.5 * m->stiffness * e * e;
 }

@@ -8,8 +8,9 @@
  *   set: the deforming fork), stop() a stiff one-sided spring-damper beyond [lo, hi] that
  *   never pulls back.
  * Attachment (MYMOSA's rider pelvis-seat, hands-grips, feet-pegs): a linear spring-damper between
- *   a point of body a and a point of body b (or the world) with zero rest length; it breaks for
- *   good the first step its force exceeds fail_force.
+ *   a point of body a and a point of body b (or the world) of free length L (0: an isotropic
+ *   spring k d; L > 0: k (|d| - L) along d), isotropic damper; it breaks for good the first
+ *   step its force exceeds fail_force.
  * Each is applied once per step, before mb_world_step; energies are tracked for the balance. */
 #ifndef MB_RESTRAINT_H
 #define MB_RESTRAINT_H
@@ -56,6 +57,7 @@ typedef struct {
     double stiffness;  /* isotropic spring [N/m], > 0                                   */
     double damping;    /* isotropic damper [N s/m], >= 0                                */
     double fail_force; /* breaks when |force| exceeds it [N], > 0; INFINITY = never     */
+    double length;     /* free length [m], >= 0: the spring acts on |b - a| - length     */
 } mb_attach_model;
 
 typedef struct {

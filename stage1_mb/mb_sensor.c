@@ -78,6 +78,7 @@ static void record_row(const mb_model *m, const mb_state *s, long row)
 #define MB_X_COPY(name, unit) e[j++] = s->e.name;
     MB_ENERGY_FIELDS(MB_X_COPY)
 #undef MB_X_COPY
+    mb_channels_sample(m, s, s->rec_chan + (size_t)row * mb_channels_count(m));
 }
 
 /* output: at t = 0 and every out_every steps, the bodies, sensors and energies */

@@ -33,8 +33,12 @@ mcs_status mb_step(const mb_model *m, mb_state *s, mcs_error *err)
     lap(s, MB_T_restraint, &t0);
     /* external: gravity is ODE's world gravity (model gravity); no other external loads yet */
     lap(s, MB_T_external, &t0);
+    /* energy check: the committed works and s->kin -> growth or NaN stops the run (each step) */
+    mcs_status st = mb_energy_check_step(m, s, err);
+    if (st) return st;
+    lap(s, MB_T_energy, &t0);
     /* integrate: forces -> new velocities and poses (dWorldStep, checked for NaN) */
-    mcs_status st = mb_world_step(s->world, m->h, err);
+    st = mb_world_step(s->world, m->h, err);
     if (st) return st;
     s->step++;
     s->t = (double)s->step * m->h;

@@ -168,6 +168,44 @@ static void test_bent_hinge_stays_at_its_set(void)
     mb_model_destroy(&m);
 }
 
+/* An attachment of free length L = 0.3 m from the world point (0, 0, 1) to a 2 kg ball
+ * released at rest 0.35 m below it (no gravity): the ball oscillates along the line about L,
+ * r(t) = L + A cos(w t), A = 0.05 m, w = sqrt(k/m) = sqrt(800/2) = 20 rad/s: it reaches
+ * L - A = 0.25 m at t = pi/w = 0.15708 s; energy k A^2 / 2 = 1 J is kept. */
+static void test_attachment_free_length(void)
+{
+    const char *y = "mcrash: 1\n"
+                    "simulation: {end_time: 0.3 s, time_step: 10 us}\n"
+                    "environment: {gravity: 0}\n"
+                    "bodies:\n"
+                    "  - {name: ball, mass: 2, inertia: [0.01, 0.01, 0.01], position: [0, 0, 0.65],\n"
+                    "     velocity: [0, 0, 0]}\n"
+                    "attachments:\n"
+                    "  - {name: tether, a: ball, b: ground, point_a: [0, 0, 0], point_b: [0, 0, 1],\n"
+                    "     stiffness: 800 N/m, failure_force: 1 kN, length: 0.3 m}\n";
+    mb_model *m = load_text(y);
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    double rmin = 1, tmin = 0, worst_e = 0;
+    while (s->step < m->nsteps && mb_step(m, s, &err) == MCS_OK) {
+        double r = 1 - s->kin[0].pos[2];
+        if (r < rmin) rmin = r, tmin = s->t;
+        double v = s->kin[0].vel[2], e = 0.5 * 2 * v * v + 0.5 * 800 * (r - 0.3) * (r - 0.3);
+        worst_e = fmax(worst_e, fabs(e - 1.0));
+    }
+    printf("  attachment of free length: min %.6f m (exact 0.25) at %.5f s (exact %.5f), energy "
+           "error %.1e J\n",
+           rmin, tmin, M_PI / 20, worst_e);
+    CHECK_NEAR(rmin, 0.25, 1e-6);
+    CHECK_NEAR(tmin, M_PI / 20, 2e-5);
+    CHECK(worst_e < 1e-3); /* w h / 2 = 1e-4 of the energy (symplectic step) */
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 /* wrong uses are located errors */
 static void test_restraint_key_errors(void)
 {
@@ -209,6 +247,7 @@ int main(void)
     RUN(test_preload_holds_static_load);
     RUN(test_per_direction_period);
     RUN(test_bent_hinge_stays_at_its_set);
+    RUN(test_attachment_free_length);
     RUN(test_restraint_key_errors);
     TEST_END();
 }

@@ -5,6 +5,7 @@
  * completes, the motorcycle stops or rebounds, the fork keeps a permanent set (paper Fig. 7),
  * the energy balance closes. Figures measured are printed (they go into docs/models.md). */
 #include "cli_util.h"
+#include "core/mcs_results.h"
 #include "harness.h"
 #include "stage1_mb/mb_model.h"
 
@@ -296,11 +297,54 @@ static void test_oblique_barrier(void)
     CHECK(f.drift < 0.02);
 }
 
+/* the barrier force from `mcrash run`: the sum of the barrier contacts' <contact>_fn channels
+ * equals, at every output sample, the sum over the barrier's pairs used above (s->pair[p].fn) */
+static void barrier_force_channels(const char *h5)
+{
+    static const char *const names[] = {"front_tyre_barrier", "frame_barrier",
+                                        "handlebar_barrier", "fork_barrier", "rear_tyre_barrier"};
+    mcs_results *r = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&r, h5, &err) == MCS_OK);
+    if (!r) return;
+    mcs_array a[5] = {{0}};
+    for (int c = 0; c < 5; c++) {
+        char ds[128];
+        snprintf(ds, sizeof ds, "/stage1/channels/%s_fn", names[c]);
+        CHECK(mcs_results_read(r, ds, &a[c], &err) == MCS_OK);
+    }
+    mcs_results_close(&r);
+    mb_model *m = load_model(FRONTAL);
+    mb_state *s = NULL;
+    CHECK(m && mb_state_create(m, &s, &err) == MCS_OK);
+    int bar = m ? find_body(m, "barrier") : -1, bad = 0;
+    size_t row = 1;
+    double peak = 0, tpeak = 0;
+    while (s && s->step < m->nsteps && mb_step(m, s, &err) == MCS_OK) {
+        if (s->step % m->out_every != 0 || row >= a[0].n) continue;
+        double fsum = 0, fch = 0;
+        for (int p = 0; p < m->npair; p++)
+            if (m->pair[p].bb == bar || m->pair[p].ba == bar) fsum += s->pair[p].fn;
+        for (int c = 0; c < 5; c++) fch += a[c].n == a[0].n ? a[c].v[row] : NAN;
+        if (!(fabs(fch - fsum) <= 1e-9 * (1 + fsum))) bad++;
+        if (fch > peak) peak = fch, tpeak = s->t;
+        row++;
+    }
+    printf("  barrier force channels: %zu samples, peak %.1f kN at %.2f ms (10 kHz samples), "
+           "%d differ from the pairs' sum\n",
+           row, peak / 1e3, tpeak * 1e3, bad);
+    CHECK(row == a[0].n && bad == 0 && peak > 0);
+    for (int c = 0; c < 5; c++) mcs_array_free(&a[c]);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 static void test_frontal_barrier_cli(void)
 {
     cli_result *r = cli_run("run " FRONTAL " --stage 1 --quiet --json -o /tmp/mcrash_models_fb.h5");
     CHECK(r->status == 0);
     CHECK_STR_CONTAINS(r->out, "\"steps\": 25000");
+    barrier_force_channels("/tmp/mcrash_models_fb.h5");
     remove("/tmp/mcrash_models_fb.h5");
 }
 

@@ -1,0 +1,88 @@
+/* mb_channels.c: contact and joint channels of /stage1/channels (docs/contracts.md).
+ * Per contact (its surface pairs summed, at the last step's forces):
+ *   <contact>_fn   normal force, sum of the pairs' normal forces [N] (>= 0)
+ *   <contact>_ft   friction force, magnitude of the pairs' summed friction vectors [N]
+ *   <contact>_pen  penetration, the deepest pair [m]
+ * Per revolute / translational joint with a restraint (or range stops):
+ *   <joint>_angle | <joint>_disp    joint position from the initial one [rad | m]
+ *   <joint>_moment | <joint>_force  restraint load resisting the deflection: characteristic,
+ *                                   preload, damper and stop, as applied (the child receives
+ *                                   minus this about / along the joint axis) [N m | N]
+ * Unfiltered (cfc 0); attribute body: the contact's body a, the joint's child. */
+#include "core/mcs_results.h"
+#include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_vec.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#define MB_CH_CONTACT 3 /* channels per contact */
+#define MB_CH_JOINT 2   /* channels per one-axis restraint */
+
+int mb_channels_count(const mb_model *m)
+{
+    return MB_CH_CONTACT * m->ncontact + MB_CH_JOINT * m->nrestraint1;
+}
+
+/* one output row: reads the pair and restraint states, writes row[mb_channels_count] */
+void mb_channels_sample(const mb_model *m, const mb_state *s, double *row)
+{
+    for (int c = 0; c < m->ncontact; c++) {
+        const mb_contact_def *d = &m->contact[c];
+        double fn = 0, ft[3] = {0, 0, 0}, pen = 0;
+        for (int p = d->pair0; p < d->pair0 + d->npair; p++) {
+            fn += s->pair[p].fn;
+            mb_add(ft, s->pair[p].ft, ft);
+            pen = fmax(pen, s->pair[p].depth);
+        }
+        row[MB_CH_CONTACT * c] = fn;
+        row[MB_CH_CONTACT * c + 1] = mb_norm(ft);
+        row[MB_CH_CONTACT * c + 2] = pen;
+    }
+    double *jr = row + MB_CH_CONTACT * m->ncontact;
+    for (int i = 0; i < m->nrestraint1; i++) {
+        jr[MB_CH_JOINT * i] = s->r1[i].x;
+        jr[MB_CH_JOINT * i + 1] = -s->r1[i].load;
+    }
+}
+
+static mcs_status put(const mb_model *m, const mb_state *s, mcs_results *r, double *buf, int col,
+                      const char *name, const char *unit, const char *frame, int body,
+                      mcs_error *err)
+{
+    size_t nt = (size_t)s->nrec;
+    int nch = mb_channels_count(m);
+    for (size_t t = 0; t < nt; t++) buf[t] = s->rec_chan[t * (size_t)nch + (size_t)col];
+    return mcs_results_put_channel(r, 1, name, nt, buf, unit, frame, 0,
+                                   body >= 0 ? m->body_name[body] : "ground", err);
+}
+
+mcs_status mb_channels_write(const mb_model *m, const mb_state *s, mcs_results *r, double *buf,
+                             mcs_error *err)
+{
+    static const char *const csuf[] = {"fn", "ft", "pen"};
+    static const char *const cunit[] = {"N", "N", "m"};
+    static const char *const cframe[] = {"contact normal", "contact plane (magnitude)",
+                                         "contact normal"};
+    char name[MB_NAME + 16];
+    mcs_status st = MCS_OK;
+    for (int c = 0; c < m->ncontact && !st; c++)
+        for (int k = 0; k < MB_CH_CONTACT && !st; k++) {
+            snprintf(name, sizeof name, "%s_%s", m->contact[c].name, csuf[k]);
+            st = put(m, s, r, buf, MB_CH_CONTACT * c + k, name, cunit[k], cframe[k],
+                     m->contact[c].body_a, err);
+        }
+    int base = MB_CH_CONTACT * m->ncontact;
+    for (int i = 0; i < m->nrestraint1 && !st; i++) {
+        const mb_joint_def *j = &m->joint[m->restraint1[i].joint];
+        int rot = j->type == MB_J_REVOLUTE;
+        snprintf(name, sizeof name, "%s_%s", j->name, rot ? "angle" : "disp");
+        st = put(m, s, r, buf, base + MB_CH_JOINT * i, name, rot ? "rad" : "m", "joint axis",
+                 j->child, err);
+        if (st) break;
+        snprintf(name, sizeof name, "%s_%s", j->name, rot ? "moment" : "force");
+        st = put(m, s, r, buf, base + MB_CH_JOINT * i + 1, name, rot ? "N m" : "N", "joint axis",
+                 j->child, err);
+    }
+    return st;
+}

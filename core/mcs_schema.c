@@ -428,7 +428,17 @@ static const mcs_skey keyword_keys[] = {
 };
 static const mcs_smap square_tube_map = {.what = "square_tube mesh", .keys = square_tube_keys};
 static const mcs_smap circular_tube_map = {.what = "circular_tube mesh", .keys = round_tube_keys};
-static const mcs_smap cylinder_shell_map = {.what = "cylinder_shell mesh", .keys = round_tube_keys};
+static const mcs_skey cylinder_shell_keys[] = {
+    Q("diameter", LEN, REQ | GT, 0, 0, "mid-surface diameter [m]"),
+    Q("length", LEN, REQ | GT, 0, 0, "length [m]"),
+    Q("element_size", LEN, REQ | GT, 0, 0, "element edge length [m]"),
+    E("axis", CHOICES_AXIS, 0, "axis (default z)"),
+    B("closed", 0, "add flat end caps: a closed surface (default false)"),
+    V("origin", LEN, 3, 3, 0, 0, "centre of the first end [m]"),
+    END,
+};
+static const mcs_smap cylinder_shell_map = {.what = "cylinder_shell mesh",
+                                            .keys = cylinder_shell_keys};
 static const mcs_smap plate_map = {
     .what = "plate mesh", .keys = plate_keys, .check = mcs_rule_plate};
 static const mcs_smap box_map = {.what = "box mesh", .keys = box_keys};
@@ -514,7 +524,15 @@ static const mcs_skey foam_keys[] = {
     Q("damping", NONE, GE | LE, 0, 1, "viscous damping fraction"),
     END,
 };
-static const mcs_skey fabric_keys[] = {ELASTIC_KEYS, END};
+/* fabric (membranes): linear in the fibre frame, no compressive stress (docs/fe.md) */
+static const mcs_skey fabric_keys[] = {
+    ELASTIC_KEYS,
+    Q("youngs_modulus_b", PRS, GT, 0, 0, "modulus along fibre b, the weft [Pa] (default isotropic)"),
+    Q("shear_modulus", PRS, GT, 0, 0, "in-plane shear modulus [Pa] (default E/(2(1+nu)))"),
+    V("direction", NONE, 3, 3, NZ, 0, "fibre a (warp) direction, projected on each element"),
+    Q("damping", NONE, GE | LE, 0, 1, "stiffness damping, fraction of critical (top frequency)"),
+    END,
+};
 static const mcs_skey rigid_keys[] = {ELASTIC_KEYS, END};
 static const mcs_smap elastic_map = {.what = "elastic material", .keys = elastic_keys};
 static const mcs_smap plastic_map = {
@@ -636,6 +654,67 @@ static const mcs_skey fe_mass_keys[] = {
     END,
 };
 static const mcs_smap fe_mass_map = {.what = "point mass", .keys = fe_mass_keys};
+/* ---- fe: gas bags and belt retractors (fe/fe_restraint.h) ---- */
+
+#define MASSFLOW MCS_D(0, 1, -1, 0, 0)
+#define GASCONST MCS_D(2, 0, -2, -1, 0) /* J/(kg K) */
+
+static const mcs_skey inflator_keys[] = {
+    Q("fire_time", MCS_DIM_TIME, 0, 0, 0, "firing time [s] (default 0)"),
+    C("mass_flow", MCS_DIM_TIME, MASSFLOW, 1, REQ | GE, 0, "[[time since firing s, kg/s], ...]"),
+    C("temperature", MCS_DIM_TIME, MCS_DIM_TEMP, 1, REQ | GE, 0, "[[time s, gas temperature K], ...]"),
+    END,
+};
+static const mcs_smap inflator_map = {.what = "inflator", .keys = inflator_keys};
+static const mcs_skey vent_keys[] = {
+    Q("area", MCS_DIM_AREA, REQ | GE, 0, 0, "orifice area [m^2]"),
+    Q("discharge_coefficient", NONE, GT | LE, 0, 1, "C_d (default 1)"),
+    Q("open_pressure", PRS, GE, 0, 0, "gauge pressure that opens it [Pa] (default 0: open)"),
+    END,
+};
+static const mcs_smap vent_map = {.what = "vent", .keys = vent_keys};
+static const mcs_skey leakage_keys[] = {
+    Q("area", MCS_DIM_AREA, GE, 0, 0, "effective leak area [m^2]"),
+    Q("porosity", NONE, GE | LT, 0, 1, "leak area per fabric area"),
+    Q("discharge_coefficient", NONE, GT | LE, 0, 1, "C_d of the leakage (default 1)"),
+    END,
+};
+static const mcs_smap leakage_map = {.what = "leakage", .keys = leakage_keys};
+static const mcs_skey airbag_keys[] = {
+    S("name", REQ | UNIQ | NE, "gas bag name (results /stage3/airbag/<name>)"),
+    RS("parts", PART, 1, REQ, "shell or membrane parts forming the closed surface"),
+    M("inflator", inflator_map, 0, "inflator tables"),
+    L("vents", vent_map, 0, "exhaust vents (at most 8)"),
+    M("leakage", leakage_map, 0, "fabric and seam leakage"),
+    Q("gamma", NONE, GT | LT, 1, 2, "cp/cv of the gas (default 1.4)"),
+    Q("gas_constant", GASCONST, GT, 0, 0, "specific gas constant [J/(kg K)] (default 287.05)"),
+    Q("molar_mass", NONE, GT, 0, 0, "molar mass [kg/mol] (instead of gas_constant)"),
+    Q("cp", GASCONST, GT, 0, 0, "specific heat at constant pressure [J/(kg K)] (with cv)"),
+    Q("cv", GASCONST, GT, 0, 0, "specific heat at constant volume [J/(kg K)] (with cp)"),
+    Q("ambient_pressure", PRS, GT, 0, 0, "[Pa] (default 101325)"),
+    Q("ambient_temperature", MCS_DIM_TEMP, GT, 0, 0, "also the initial gas [K] (default 293.15)"),
+    Q("initial_pressure", PRS, GT, 0, 0, "absolute pressure at t = 0 [Pa] (default ambient)"),
+    Q("initial_temperature", MCS_DIM_TEMP, GT, 0, 0, "gas at t = 0 [K] (default ambient)"),
+    END,
+};
+static const mcs_smap airbag_map = {.what = "gas bag", .keys = airbag_keys};
+static const mcs_skey retractor_keys[] = {
+    S("name", REQ | UNIQ | NE, "retractor name (results /stage3/retractor/<name>)"),
+    R("part", PART, REQ, "belt part (truss) whose end node is pulled"),
+    E("where", "x_min|x_max|y_min|y_max|z_min|z_max", REQ, "the belt end (one node)"),
+    V("anchor", LEN, 3, 3, REQ, 0, "retractor position (fixed) [m]"),
+    Q("stiffness", MCS_DIM_STIFFNESS, GT, 0, 0, "webbing to the anchor [N/m] (default E A / l0)"),
+    Q("fire_time", MCS_DIM_TIME, 0, 0, 0, "pretensioner firing time [s] (default 12 ms)"),
+    C("payin", MCS_DIM_TIME, LEN, 1, 0, 0, "[[time since firing s, payout <= 0 m], ...] (Eq. 3)"),
+    Q("pretensioner_max_force", FRC, GE, 0, 0, "stall force [N] (default none)"),
+    Q("load_limit", FRC, GE, 0, 0, "load-limiter force [N] (default 2 kN; 0 none)"),
+    Q("spool_stiffness", MCS_DIM_STIFFNESS, GE, 0, 0, "film spool once locked [N/m] (0 rigid)"),
+    Q("spool_force", FRC, GE, 0, 0, "tension of the unlocked spool [N] (default 5)"),
+    Q("lock_time", MCS_DIM_TIME, GE, 0, 0, "locks at this time (default: at firing)"),
+    Q("lock_payout_rate", VEL, GT, 0, 0, "webbing sensor: locks above this payout rate [m/s]"),
+    END,
+};
+static const mcs_smap retractor_map = {.what = "retractor", .keys = retractor_keys};
 
 static const mcs_skey fe_keys[] = {
     L("parts", part_map, REQ | NE, "FE parts"),
@@ -643,6 +722,8 @@ static const mcs_skey fe_keys[] = {
     L("rigid_walls", wall_map, 0, "rigid walls"),
     L("contacts", fe_contact_map, 0, "FE contacts"),
     L("loads", load_map, 0, "nodal loads"),
+    L("airbags", airbag_map, 0, "gas bags (uniform pressure) bounded by membrane parts"),
+    L("retractors", retractor_map, 0, "belt retractors at truss belt ends"),
     Q("damping", MCS_DIM_FREQ, GE, 0, 0, "mass-proportional damping c, f = -c m v [1/s]"),
     Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),
     Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),

@@ -5,6 +5,7 @@
 #include "fe/fe_surface_volume.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -136,7 +137,9 @@ static mcs_status bag_surface(const fe_builder *b, const fe_model *m, const fe_a
             if (f[2] == f[3]) f[3] = -1;
         }
     }
-    mcs_status st = fe_surface_check(d->name, m->nnode, bag->nface, bag->face, err);
+    char label[FE_NAME_MAX + 16];
+    snprintf(label, sizeof label, "fe: gas bag '%s'", d->name);
+    mcs_status st = fe_surface_check(label, m->nnode, bag->nface, bag->face, err);
     if (st != MCS_OK) return st;
     bag->volume0 = fe_surface_volume(bag->nface, bag->face, m->node_x0);
     if (bag->volume0 < 0) { /* consistently inward: turn every face round */
@@ -162,8 +165,10 @@ static mcs_status make_bag(const fe_builder *b, fe_model *m, const fe_airbag_des
                            fe_airbag *bag, mcs_error *err)
 {
     memcpy(bag->name, d->name, FE_NAME_MAX);
+    char label[FE_NAME_MAX + 16];
+    snprintf(label, sizeof label, "fe: gas bag '%s'", d->name);
     mcs_status st = bag_surface(b, m, d, bag, err);
-    if (st == MCS_OK) st = fe_gasbag_model_create(d->name, &d->gas, &bag->gas, err);
+    if (st == MCS_OK) st = fe_gasbag_model_create(label, &d->gas, &bag->gas, err);
     if (st != MCS_OK) return st;
     bag->p0 = d->initial_pressure > 0 ? d->initial_pressure : bag->gas->ambient_pressure;
     bag->T0 = d->initial_temperature > 0 ? d->initial_temperature : bag->gas->ambient_temperature;
@@ -221,7 +226,9 @@ static mcs_status make_retractor(const fe_builder *b, fe_model *m,
     /* the segment's step 2/w, w^2 = 2k/m (the node's other springs counted as stiff as it) */
     double dtr = m->opts.dt_scale * 2 * sqrt(m->node_mass[r->node] / (2 * r->k));
     m->opts.dt_max = m->opts.dt_max > 0 ? fmin(m->opts.dt_max, dtr) : dtr;
-    mcs_status st = fe_retractor_model_create(d->name, &d->retractor, &r->model, err);
+    char label[FE_NAME_MAX + 16];
+    snprintf(label, sizeof label, "fe: retractor '%s'", d->name);
+    mcs_status st = fe_retractor_model_create(label, &d->retractor, &r->model, err);
     if (st == MCS_OK) m->bytes += sizeof *r->model;
     return st;
 }

@@ -17,7 +17,7 @@ static void bags(const fe_model *m, fe_state *s)
         mcs_status st = fe_gasbag_step_surface(b->gas, &s->restraint->bag[i], b->nface, b->face,
                                                s->node_x, s->dt_prev, s->node_fext, &e);
         if (st != MCS_OK) {
-            MCS_ERR(&s->err, st, "fe: gas bag %s", e.msg);
+            MCS_ERR(&s->err, st, "%s", e.msg); /* names the bag and the time */
             return;
         }
     }
@@ -39,7 +39,7 @@ static void retractors(const fe_model *m, fe_state *s)
             mcs_error e = {0};
             mcs_status st = fe_retractor_advance(b->model, rs, s->dt_prev, trial, b->k, &e);
             if (st != MCS_OK) {
-                MCS_ERR(&s->err, st, "fe: retractor %s", e.msg);
+                MCS_ERR(&s->err, st, "%s", e.msg);
                 return;
             }
         }

@@ -4,6 +4,7 @@
  * scenario node it came from. */
 #include "stage3_fe/s3_build.h"
 #include "stage3_fe/s3_build_solid.h"
+#include "stage3_fe/s3_restraints.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -68,9 +69,11 @@ static mcs_status read_mesh(const mcs_node *mesh, fe_mesh_desc *d, mcs_error *er
     } else if (strcmp(gen, "square_tube") == 0) {
         d->generate = FE_MESH_SQUARE_TUBE;
         d->side = mcs_node_num(get(mesh, "side"));
-    } else if (strcmp(gen, "circular_tube") == 0 || strcmp(gen, "cylinder_shell") == 0) {
+    } else if (strcmp(gen, "circular_tube") == 0) {
         d->generate = FE_MESH_CIRCULAR_TUBE;
         d->diameter = mcs_node_num(get(mesh, "diameter"));
+    } else if (strcmp(gen, "cylinder_shell") == 0 || strcmp(gen, "sphere_shell") == 0) {
+        return s3_read_shell_mesh(mesh, gen, d, err); /* s3_restraints.c */
     } else {
         char what[96];
         snprintf(what, sizeof what, "mesh generator '%s'", gen);
@@ -101,6 +104,11 @@ static mcs_status read_section(const mcs_node *sec, fe_section_desc *d, mcs_erro
         d->type = FE_SECTION_SOLID;
         return MCS_OK;
     }
+    if (type && strcmp(type, "membrane") == 0) {
+        d->type = FE_SECTION_MEMBRANE;
+        d->thickness = mcs_node_num(get(sec, "thickness"));
+        return MCS_OK;
+    }
     if (type && strcmp(type, "truss") == 0) {
         d->type = FE_SECTION_TRUSS;
         d->area = mcs_node_num(get(sec, "area"));
@@ -116,6 +124,7 @@ static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_er
 {
     const char *model = mcs_node_str(get(mat, "model"));
     int plastic = model && strcmp(model, "elastic_plastic") == 0;
+    if (model && strcmp(model, "fabric") == 0) return s3_read_fabric(mat, d, err);
     if (!plastic && !(model && strcmp(model, "elastic") == 0)) {
         char what[96];
         snprintf(what, sizeof what, "material model '%s'", model ? model : "?");
@@ -327,9 +336,10 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     if (!st) st = add_loads(b, get(fe, "loads"), err);
     if (!st) st = add_walls(b, get(fe, "rigid_walls"), err);
     if (!st) st = s3_solid_add(b, fe, err); /* springs, point masses */
+    if (!st) st = s3_add_restraints(b, fe, err); /* airbags, retractors (s3_restraints.c) */
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
-        if (st) relocate(st, fe, &kerr, err);
+        if (st) relocate(st, s3_restraint_node(fe, kerr.msg), &kerr, err);
     }
     fe_builder_destroy(&b);
     return st;

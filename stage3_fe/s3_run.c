@@ -2,6 +2,7 @@
  * allocated before the loop; the loop calls fe_step and appends rows to results series at
  * the output rate. */
 #include "stage3_fe/s3_run.h"
+#include "stage3_fe/s3_restraints.h"
 
 #include "core/mcs_progress.h"
 #include "core/mcs_results.h"
@@ -51,6 +52,7 @@ typedef struct {
     mcs_results_series *time, *energy[FE_NENERGY], *wall_f[FE_WALL_MAX], *wall_d[FE_WALL_MAX];
     mcs_results_series *ftime, *fdisp;
     double *disp; /* [nnode, 3] */
+    s3_restraint_out rest; /* airbags and retractors (s3_restraints.c) */
 } s3_out;
 
 static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_error *err)
@@ -68,6 +70,7 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
         if (!st) st = mcs_results_series_create(r, path, 1, NULL, "m", 0, &o->wall_d[w], err);
     }
     if (!st) st = mcs_results_field_series(r, 3, (size_t)m->nnode, &o->ftime, &o->fdisp, err);
+    if (!st) st = s3_restraint_open(r, m, &o->rest, err);
     return st;
 }
 
@@ -80,6 +83,7 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
         st = mcs_results_series_append(o->wall_f[w], &s->wall_normal[w], err);
         if (!st) st = mcs_results_series_append(o->wall_d[w], &s->wall_disp[w], err);
     }
+    if (!st) st = s3_restraint_sample(s, &o->rest, err);
     return st;
 }
 
@@ -162,6 +166,7 @@ mcs_status s3_run(const s3_problem *p, const s3_run_opts *ro, s3_summary *sum, m
     }
     mcs_results_abort(&r);
     free(o.disp);
+    s3_restraint_out_free(&o.rest);
     fe_state_destroy(&s);
     sum->wall_time_s = now_s() - wall0;
     return st;

@@ -14,9 +14,12 @@ PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
 
 OPT      ?= -O2 -g
+# OpenMP threads the FE element and node loops (OMP_NUM_THREADS; results do not depend on it);
+# `make OMP=` builds without it
+OMP      ?= -fopenmp
 CFLAGS   += -std=c17 -Wall -Wextra -Werror -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE \
-            $(OPT) -MMD -MP -I. $(PKG_CFLAGS) $(SAN)
-LDFLAGS  += $(SAN)
+            $(OPT) $(OMP) -MMD -MP -I. $(PKG_CFLAGS) $(SAN)
+LDFLAGS  += $(SAN) $(OMP)
 LDLIBS   += $(PKG_LIBS) -lsundials_cvode -lsundials_nvecserial -llapack -lblas -lm
 
 MODULES  = core analysis fe stage1_mb stage2_fe stage3_fe translators

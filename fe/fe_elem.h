@@ -45,10 +45,80 @@ double fe_mat_plane_stress(const fe_part *p, double sig[3], const double de[3], 
 /* uniaxial */
 double fe_mat_1d(const fe_part *p, double *sig, double de, double epsp, double rate);
 
+/* plane-stress constants of one part, computed once per part and step so that the element
+ * loop does no divisions for them (fe_mat_plane_stress and the shell loop share them) */
+typedef struct {
+    const fe_part *p;
+    double c, cnu, G;  /* E/(1-nu^2), nu E/(1-nu^2), shear modulus [Pa]              */
+    double a;          /* E/(3(1-nu)): rate at which sxx + syy shrinks in the return [Pa] */
+    int plastic;       /* J2 (else linear elastic) [-]                                  */
+    int nseg;          /* hardening segments (0: constant flow stress) [-]              */
+    double s0;         /* flow stress when nseg = 0 [Pa]                                */
+    double slope[FE_CURVE_MAX]; /* slope of each hardening segment [Pa]                 */
+} fe_ps_const;
+
+void fe_ps_const_init(const fe_part *p, fe_ps_const *k);
+
+/* flow stress and slope at epsp (as fe_flow_stress, without divisions); *seg gets the segment */
+static inline double fe_ps_flow(const fe_ps_const *k, double epsp, double *slope, int *seg)
+{
+    if (k->nseg == 0) {
+        *slope = 0, *seg = 0;
+        return k->s0;
+    }
+    const double(*hd)[2] = k->p->material.hardening;
+    int i = 0;
+    while (i < k->nseg - 1 && epsp >= hd[i + 1][0]) i++;
+    *seg = i;
+    *slope = k->slope[i];
+    return hd[i][1] + k->slope[i] * (epsp - hd[i][0]);
+}
+
+/* the plastic part of the plane-stress update: sig holds the elastic trial stress, q0sq its
+ * von Mises stress squared, which exceeds the flow stress; rf the rate factor. Returns the
+ * plastic strain increment and leaves the returned stress in sig. */
+double fe_ps_return(const fe_ps_const *k, double sig[3], double q0sq, double epsp, double rf);
+
+/* the whole plane-stress update with precomputed constants (fe_mat_plane_stress's result);
+ * rate only matters with Cowper-Symonds: its factor is computed only when the trial stress
+ * exceeds the static flow stress (the factor is >= 1) */
+static inline double fe_ps_update(const fe_ps_const *k, double sig[3], const double de[3],
+                                  double epsp, double rate)
+{
+    sig[0] += k->c * de[0] + k->cnu * de[1];
+    sig[1] += k->c * de[1] + k->cnu * de[0];
+    sig[2] += k->G * de[2];
+    if (!k->plastic) return 0;
+    double pp = sig[0] + sig[1], mm = sig[0] - sig[1], tt = sig[2];
+    double q0sq = 0.25 * pp * pp + 0.75 * mm * mm + 3 * tt * tt;
+    double h;
+    int seg;
+    double sy = fe_ps_flow(k, epsp, &h, &seg);
+    if (q0sq <= sy * sy) return 0; /* elastic at the static flow stress: no rate factor */
+    double rf = fe_rate_factor(k->p, rate);
+    if (rf != 1 && q0sq <= rf * rf * sy * sy) return 0;
+    return fe_ps_return(k, sig, q0sq, epsp, rf);
+}
+
 /* element loops of one part: stresses, slot forces, energies, smallest element step */
 void fe_hex_part(const fe_model *m, fe_state *s, int ip);
 void fe_shell_part(const fe_model *m, fe_state *s, int ip);
 void fe_truss_part(const fe_model *m, fe_state *s, int ip);
+/* the same on elements e0..e1-1 of part ip, partial sums into *acc (threaded chunks) */
+void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chunk_acc *acc);
+void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chunk_acc *acc);
+void fe_truss_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chunk_acc *acc);
+/* add a part's partial sums to its energies, step and first bad element */
+void fe_chunk_commit(fe_state *s, int ip, const fe_chunk_acc *acc);
+/* element chunks of the model (fe_model_create, after the elements are sorted by part) */
+void fe_build_chunks(fe_model *m);
+/* add the partial sums of the next chunk of the same part (chunk order) */
+void fe_chunk_merge(fe_chunk_acc *into, const fe_chunk_acc *a);
+/* partial sums of a node chunk in fe_integrate: kinetic energy, works before and after t of
+ * loads and constraints, damping before and after, first bad node; then the kinetic energy
+ * of each part and the force on each wall */
+enum { FE_ACC_KE, FE_ACC_WB, FE_ACC_WF, FE_ACC_DB, FE_ACC_DF, FE_ACC_BAD, FE_NACC_FIXED };
+
 /* element steps of the part at positions x (no safety factor); *elem gets the smallest */
 double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem);
 

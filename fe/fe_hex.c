@@ -100,7 +100,7 @@ static void gather8(const double *src, const int *c, double out[8][3])
     }
 }
 
-void fe_hex_part(const fe_model *m, fe_state *s, int ip)
+void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chunk_acc *acc)
 {
     const fe_part *p = &m->part[ip];
     const double dt = s->dt_prev, rho = p->material.density, c0 = p->wave_speed;
@@ -108,7 +108,7 @@ void fe_hex_part(const fe_model *m, fe_state *s, int ip)
     const int visc = p->section.hourglass == FE_HG_VISCOUS;
     double e_int = 0, e_hg = 0, e_diss = 0, dtmin = INFINITY;
     int dtel = -1, bad = -1;
-    for (int e = p->elem_begin; e < p->elem_end; e++) {
+    for (int e = e0; e < e1; e++) {
         const int *c = m->hex_node + 8 * e;
         double xe[8][3], ve[8][3], b[8][3], a[8][3];
         gather8(s->node_x, c, xe);
@@ -212,11 +212,17 @@ void fe_hex_part(const fe_model *m, fe_state *s, int ip)
                 f[3 * n + i] += fh[0][i] * gam[0][n] + fh[1][i] * gam[1][n] +
                                 fh[2][i] * gam[2][n] + fh[3][i] * gam[3][n];
     }
-    double *pe = s->part_energy + FE_NENERGY * ip;
-    pe[FE_E_internal] += e_int;
-    pe[FE_E_hourglass] += e_hg;
-    pe[FE_E_dissipated] += e_diss;
-    s->part_dt[ip] = dtmin;
-    s->part_dt_elem[ip] = dtel;
-    if (bad >= 0 && s->part_bad_elem[ip] < 0) s->part_bad_elem[ip] = bad;
+    acc->e_int = e_int;
+    acc->e_hg = e_hg;
+    acc->e_diss = e_diss;
+    acc->dtmin = dtmin;
+    acc->dtel = dtel;
+    acc->bad = bad;
+}
+
+void fe_hex_part(const fe_model *m, fe_state *s, int ip)
+{
+    fe_chunk_acc acc;
+    fe_hex_range(m, s, ip, m->part[ip].elem_begin, m->part[ip].elem_end, &acc);
+    fe_chunk_commit(s, ip, &acc);
 }

@@ -66,51 +66,92 @@ double fe_mat_3d(const fe_part *p, double sig[6], const double de[6], double eps
     return dp;
 }
 
-/* von Mises stress of a plane stress state from p = sxx + syy, m = sxx - syy, t = sxy */
-static double vm_ps(double pp, double mm, double t)
+void fe_ps_const_init(const fe_part *p, fe_ps_const *k)
 {
-    return sqrt(0.25 * pp * pp + 0.75 * mm * mm + 3 * t * t);
+    const fe_material_desc *mt = &p->material;
+    const double E = mt->youngs_modulus, nu = mt->poisson;
+    k->p = p;
+    k->c = E / (1 - nu * nu);
+    k->cnu = nu * k->c;
+    k->G = p->mu;
+    k->a = E / (3 * (1 - nu));
+    k->plastic = mt->model == FE_MAT_ELASTIC_PLASTIC;
+    /* fe_flow_stress's table: n = 0 the yield stress, n = 1 its one value, else segments
+     * with the last one's slope continuing beyond the table */
+    k->nseg = mt->nhardening >= 2 ? mt->nhardening - 1 : 0;
+    k->s0 = mt->nhardening == 1 ? mt->hardening[0][1] : mt->yield_stress;
+    for (int i = 0; i < k->nseg; i++)
+        k->slope[i] = (mt->hardening[i + 1][1] - mt->hardening[i][1]) /
+                      (mt->hardening[i + 1][0] - mt->hardening[i][0]);
+}
+
+/* Plane-stress J2 return (Simo & Taylor 1986; Simo & Hughes 1998, Box 3.3/3.4). With
+ * p = sxx + syy, m = sxx - syy, t = sxy the return scales the trial values as
+ *     p = p0 / (1 + a x),  m = m0 / (1 + b x),  t = t0 / (1 + b x),
+ *     a = E / (3 (1 - nu)),  b = 2 G,  x = plastic multiplier,
+ * and the plastic strain increment is dp = (2/3) x q (q the von Mises stress). On a hardening
+ * segment the flow stress is Y + H dp (Y: the segment's line at the start epsp, H its slope,
+ * both times the rate factor); at the solution q = Y + H dp, so q (1 - c x) = Y, c = (2/3) H,
+ * and x is the root of the square-root-free residual
+ *     r(x) = (A fp^2 + B fm^2) (1 - c x)^2 - Y^2,  A = p0^2 / 4,  B = 3 m0^2 / 4 + 3 t0^2,
+ *     fp = 1 / (1 + a x), fm = 1 / (1 + b x),
+ * which is convex and decreasing (c >= 0), so Newton converges monotonically. The start is
+ * the exact root when both rates are equal (one-rate model q0 / (1 + k x), k matched to the
+ * slope of q at x = 0), which leaves an error of order ((a - b) x)^2: two Newton steps then
+ * reach round-off. Newton stops when its step is below 1e-7 x (the error left is of the
+ * order of the step squared). A crossed segment end restarts on the next segment. */
+double fe_ps_return(const fe_ps_const *k, double sig[3], double q0sq, double epsp, double rf)
+{
+    const double a = k->a, b = 2 * k->G;
+    const double p0 = sig[0] + sig[1], m0 = sig[0] - sig[1], t0 = sig[2];
+    const double A = 0.25 * p0 * p0, B = q0sq - A;
+    double h;
+    int seg;
+    double Y = rf * fe_ps_flow(k, epsp, &h, &seg), c = 2.0 / 3.0 * rf * h;
+    const double q0 = sqrt(q0sq);
+    double x = (q0 - Y) * q0sq / (q0 * c * q0sq + Y * (a * A + b * B));
+    if (!(x > 0)) x = 0;
+    for (int it = 0; it < 60; it++) {
+        const double ua = 1 + a * x, ub = 1 + b * x, inv = 1 / (ua * ub);
+        const double fp = ub * inv, fm = ua * inv;
+        const double Ap = A * fp * fp, Bm = B * fm * fm, Q = Ap + Bm;
+        const double dQ = -2 * (a * Ap * fp + b * Bm * fm);
+        const double g = 1 - c * x;
+        const double r = Q * g * g - Y * Y, dr = g * (dQ * g - 2 * c * Q);
+        double step = dr < 0 ? -r / dr : 0;
+        if (x + step < 0) step = -0.5 * x;
+        x += step;
+        if (fabs(step) <= 1e-7 * x || !(dr < 0)) {
+            /* on the next segment when the plastic strain crossed this one's end */
+            if (seg < k->nseg - 1) {
+                double ep1 = k->p->material.hardening[seg + 1][0];
+                if (epsp + 2.0 / 3.0 * x * Y / (1 - c * x) >= ep1) {
+                    const double *hs = k->p->material.hardening[seg + 1];
+                    seg++;
+                    h = k->slope[seg];
+                    Y = rf * (hs[1] + h * (epsp - hs[0]));
+                    c = 2.0 / 3.0 * rf * h;
+                    continue;
+                }
+            }
+            break;
+        }
+    }
+    const double ua = 1 + a * x, ub = 1 + b * x, inv = 1 / (ua * ub);
+    const double fp = ub * inv, fm = ua * inv;
+    const double pp = p0 * fp, mm = m0 * fm;
+    sig[0] = 0.5 * (pp + mm);
+    sig[1] = 0.5 * (pp - mm);
+    sig[2] = t0 * fm;
+    return 2.0 / 3.0 * x * Y / (1 - c * x);
 }
 
 double fe_mat_plane_stress(const fe_part *p, double sig[3], const double de[3], double epsp,
                            double rate)
 {
-    const double E = p->material.youngs_modulus, nu = p->material.poisson, G = p->mu;
-    const double c = E / (1 - nu * nu);
-    sig[0] += c * (de[0] + nu * de[1]);
-    sig[1] += c * (de[1] + nu * de[0]);
-    sig[2] += G * de[2];
-    if (p->material.model != FE_MAT_ELASTIC_PLASTIC) return 0;
-    double h, rf = fe_rate_factor(p, rate);
-    double sy = rf * fe_flow_stress(p, epsp, &h);
-    double p0 = sig[0] + sig[1], m0 = sig[0] - sig[1], t0 = sig[2];
-    double q0sq = 0.25 * p0 * p0 + 0.75 * m0 * m0 + 3 * t0 * t0;
-    if (q0sq <= sy * sy) return 0; /* elastic: no square root */
-    double q0 = sqrt(q0sq);
-    /* plastic multiplier dg: p, m, t shrink by 1/(1 + a dg), 1/(1 + 2 G dg), 1/(1 + 2 G dg)
-     * with a = E / (3 (1 - nu)); plastic strain increment (2/3) dg q(dg) */
-    const double a = E / (3 * (1 - nu));
-    /* start from the exact answer of a purely deviatoric in-plane state, q0 / (1 + 2 G dg) =
-     * sy + (2/3) h dg sy: Newton then needs two or three iterations */
-    double dg = (q0 - sy) / (sy * (2 * G + 2.0 / 3.0 * rf * h));
-    double fp = 1, fm = 1, q = q0;
-    for (int it = 0;; it++) {
-        fp = 1 / (1 + a * dg), fm = 1 / (1 + 2 * G * dg);
-        double pp = p0 * fp, mm = m0 * fm, tt = t0 * fm;
-        q = vm_ps(pp, mm, tt);
-        double dq = (-0.25 * pp * pp * a * fp - (0.75 * mm * mm + 3 * tt * tt) * 2 * G * fm) / q;
-        double g = q - rf * fe_flow_stress(p, epsp + 2.0 / 3.0 * dg * q, &h);
-        /* converged (or out of iterations): fp, fm, q belong to this dg */
-        if (fabs(g) <= FE_RETURN_TOL * q0 || it == 60) break;
-        double step = -g / (dq - rf * h * 2.0 / 3.0 * (q + dg * dq));
-        if (dg + step < 0) step = -0.5 * dg;
-        dg += step;
-    }
-    double pp = p0 * fp, mm = m0 * fm;
-    sig[0] = 0.5 * (pp + mm);
-    sig[1] = 0.5 * (pp - mm);
-    sig[2] = t0 * fm;
-    return 2.0 / 3.0 * dg * q;
+    fe_ps_const k;
+    fe_ps_const_init(p, &k);
+    return fe_ps_update(&k, sig, de, epsp, rate);
 }
 
 double fe_mat_1d(const fe_part *p, double *sig, double de, double epsp, double rate)

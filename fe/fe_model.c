@@ -384,6 +384,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
             m->nip_max = d->section.integration_points;
         if (count[ip] == 0)
             st = MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s' has no elements", p->name);
+        m->nchunk += (count[ip] + FE_CHUNK_ELEMS - 1) / FE_CHUNK_ELEMS;
     }
     free(count);
     m->nshell_ip = m->nshell * m->nip_max;
@@ -391,6 +392,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
     if (st == MCS_OK) {
         memcpy(m->node_x0, b->x, sizeof(double) * 3 * (size_t)m->nnode);
         sort_elements(b, m);
+        fe_build_chunks(m);
         st = lump_masses(m, err);
     }
     if (st == MCS_OK) st = fe_solid_build(b, m, err); /* point masses, springs, rigid bodies */

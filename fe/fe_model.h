@@ -242,7 +242,9 @@ typedef struct {
     X(int, shell_part, nshell, 1, "-", "part of each shell")                                       \
     X(int, truss_node, ntruss, 2, "-", "truss connectivity")                                       \
     X(int, truss_part, ntruss, 1, "-", "part of each truss")                                     \
-    X(int, node_body, nnode, 1, "-", "rigid body carrying the node, -1 none")
+    X(int, node_body, nnode, 1, "-", "rigid body carrying the node, -1 none")                      \
+    X(int, chunk_part, nchunk, 1, "-", "part of each element chunk (threaded element loops)")      \
+    X(int, chunk_elem, nchunk, 1, "-", "first element of each chunk, index in its kind")
 
 struct fe_contact_model;
 
@@ -286,7 +288,19 @@ typedef struct fe_model {
                                (nelem), NULL without mass scaling [-]                       */
     double mass_added;     /* mass added by mass scaling [kg]                              */
     struct fe_contact_model *contact; /* contact interfaces (fe_contact.h), NULL if none   */
+    /* threaded loops (fe_parallel.c): elements in chunks of FE_CHUNK_ELEMS within a part and
+     * nodes in chunks of FE_CHUNK_NODES, each reduced in chunk order (thread-count independent) */
+    int nchunk;            /* element chunks [-]                                           */
+    int nnode_chunk;       /* node chunks [-]                                              */
+    int node_acc_stride;   /* partial sums per node chunk: FE_NACC_FIXED + npart + 3 FE_WALL_MAX */
+    int nnode_acc;         /* nnode_chunk x node_acc_stride [-]                            */
 } fe_model;
+
+#define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */
+#define FE_CHUNK_NODES 512 /* nodes per chunk of a threaded node loop [-]                  */
+/* smaller models run their loops on one thread (a parallel region costs microseconds) */
+#define FE_PAR_MIN_CHUNKS 8      /* element chunks [-]                                   */
+#define FE_PAR_MIN_NODE_CHUNKS 4 /* node chunks [-]                                      */
 
 /* ---- the builder ------------------------------------------------------------------------ */
 

@@ -21,7 +21,9 @@
 #include <math.h>
 #include <string.h>
 
-double fe_shell_frame(const double xe[4][3], double e[3][3], double xl[4], double yl[4])
+/* the frame and local coordinates (fe_shell_frame), inlined in the element loop */
+static inline double shell_frame(const double xe[4][3], double e[3][3], double xl[4],
+                                 double yl[4])
 {
     double d1[3], d2[3], s1[3], cen[3];
     for (int i = 0; i < 3; i++) {
@@ -31,14 +33,16 @@ double fe_shell_frame(const double xe[4][3], double e[3][3], double xl[4], doubl
         cen[i] = 0.25 * (xe[0][i] + xe[1][i] + xe[2][i] + xe[3][i]);
     }
     fe_cross(d1, d2, e[2]);
-    double n = sqrt(fe_dot(e[2], e[2]));
+    double n = fe_dot(e[2], e[2]);
     if (!(n > 0)) return 0;
-    for (int i = 0; i < 3; i++) e[2][i] /= n;
+    n = 1 / sqrt(n);
+    for (int i = 0; i < 3; i++) e[2][i] *= n;
     double sd = fe_dot(s1, e[2]);
     for (int i = 0; i < 3; i++) e[0][i] = s1[i] - sd * e[2][i];
-    n = sqrt(fe_dot(e[0], e[0]));
+    n = fe_dot(e[0], e[0]);
     if (!(n > 0)) return 0;
-    for (int i = 0; i < 3; i++) e[0][i] /= n;
+    n = 1 / sqrt(n);
+    for (int i = 0; i < 3; i++) e[0][i] *= n;
     fe_cross(e[2], e[0], e[1]);
     for (int k = 0; k < 4; k++) {
         double r[3] = {xe[k][0] - cen[0], xe[k][1] - cen[1], xe[k][2] - cen[2]};
@@ -48,7 +52,8 @@ double fe_shell_frame(const double xe[4][3], double e[3][3], double xl[4], doubl
     return 0.5 * ((xl[2] - xl[0]) * (yl[3] - yl[1]) + (xl[1] - xl[3]) * (yl[2] - yl[0]));
 }
 
-double fe_shell_length(const double xe[4][3], double area)
+/* squared longest side, and whether the quad is a degenerate triangle (node 3 = node 4) */
+static inline double shell_side2(const double xe[4][3], int *tri)
 {
     double lmax = 0;
     for (int k = 0; k < 4; k++) {
@@ -56,28 +61,54 @@ double fe_shell_length(const double xe[4][3], double area)
         double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
         lmax = fmax(lmax, fe_dot(d, d));
     }
-    /* (1 + beta) A / longest side, beta = 1 for a degenerate triangle (its smallest altitude) */
-    double beta = xe[2][0] == xe[3][0] && xe[2][1] == xe[3][1] && xe[2][2] == xe[3][2] ? 1 : 0;
-    return lmax > 0 ? (1 + beta) * area / sqrt(lmax) : 0;
+    *tri = xe[2][0] == xe[3][0] && xe[2][1] == xe[3][1] && xe[2][2] == xe[3][2];
+    return lmax;
 }
 
-void fe_shell_part(const fe_model *m, fe_state *s, int ip)
+double fe_shell_frame(const double xe[4][3], double e[3][3], double xl[4], double yl[4])
+{
+    return shell_frame(xe, e, xl, yl);
+}
+
+double fe_shell_length(const double xe[4][3], double area)
+{
+    int tri;
+    double lmax = shell_side2(xe, &tri);
+    /* (1 + beta) A / longest side, beta = 1 for a degenerate triangle (its smallest altitude) */
+    return lmax > 0 ? (1 + tri) * area / sqrt(lmax) : 0;
+}
+
+void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chunk_acc *acc)
 {
     const fe_part *p = &m->part[ip];
     const double dt = s->dt_prev, t = p->section.thickness, c0 = p->wave_speed;
     const double E = p->material.youngs_modulus, G = p->mu, ks = p->shear_factor;
     const int nip = p->section.integration_points, stride = m->nip_max;
     const int visc = p->section.hourglass == FE_HG_VISCOUS;
-    const double qhg = p->hg_coef;
+    const int cs = p->material.cowper_symonds_c > 0;
+    const double qhg = p->hg_coef, ic0 = 1 / c0, idt = dt > 0 ? 1 / dt : 0;
+    /* per-part constants: plane stress, point positions and weights, hourglass stiffnesses */
+    fe_ps_const k;
+    fe_ps_const_init(p, &k);
+    double zt[FE_NIP_MAX], wt[FE_NIP_MAX], wz[FE_NIP_MAX];
+    for (int g = 0; g < nip; g++) {
+        zt[g] = p->ip_z[g] * t;
+        wt[g] = p->ip_w[g] * t;
+        wz[g] = wt[g] * zt[g];
+    }
+    const double km0 = qhg * E * t / 8, kw0 = qhg * ks * G * t * t * t / 12,
+                 kr0 = qhg * E * t * t * t / 192, ksg = ks * G * dt;
+    const double *restrict X = s->node_x, *restrict V = s->node_v, *restrict W = s->node_w;
+    double *restrict sig_all = s->shell_sig, *restrict epsp_all = s->shell_epsp;
     double e_int = 0, e_hg = 0, dtmin = INFINITY;
     int dtel = -1, bad = -1;
-    for (int e = p->elem_begin; e < p->elem_end; e++) {
+    for (int e = e0; e < e1; e++) {
         const int *c = m->shell_node + 4 * e;
         double xe[4][3], fr[3][3], xl[4], yl[4];
-        for (int k = 0; k < 4; k++) memcpy(xe[k], s->node_x + 3 * c[k], sizeof xe[k]);
-        double A = fe_shell_frame(xe, fr, xl, yl);
-        double *f = s->slot_f + 3 * ((size_t)m->slot_base[FE_KIND_SHELL] + 4 * (size_t)e);
-        double *mo = s->shell_m + 12 * (size_t)e;
+        for (int q = 0; q < 4; q++) memcpy(xe[q], X + 3 * c[q], sizeof xe[q]);
+        double A = shell_frame(xe, fr, xl, yl);
+        double *restrict f = s->slot_f + 3 * ((size_t)m->slot_base[FE_KIND_SHELL] + 4 * (size_t)e);
+        double *restrict mo = s->shell_m + 12 * (size_t)e;
         if (!(A > 0)) {
             if (bad < 0) bad = e;
             memset(f, 0, 12 * sizeof(double));
@@ -86,13 +117,13 @@ void fe_shell_part(const fe_model *m, fe_state *s, int ip)
         }
         /* local velocities */
         double vx[4], vy[4], vz[4], wx[4], wy[4];
-        for (int k = 0; k < 4; k++) {
-            const double *v = s->node_v + 3 * c[k], *w = s->node_w + 3 * c[k];
-            vx[k] = fe_dot(v, fr[0]);
-            vy[k] = fe_dot(v, fr[1]);
-            vz[k] = fe_dot(v, fr[2]);
-            wx[k] = fe_dot(w, fr[0]);
-            wy[k] = fe_dot(w, fr[1]);
+        for (int q = 0; q < 4; q++) {
+            const double *v = V + 3 * c[q], *w = W + 3 * c[q];
+            vx[q] = fe_dot(v, fr[0]);
+            vy[q] = fe_dot(v, fr[1]);
+            vz[q] = fe_dot(v, fr[2]);
+            wx[q] = fe_dot(w, fr[0]);
+            wy[q] = fe_dot(w, fr[1]);
         }
         const double i2a = 0.5 / A;
         const double B1[4] = {i2a * (yl[1] - yl[3]), i2a * (yl[2] - yl[0]), i2a * (yl[3] - yl[1]),
@@ -100,74 +131,70 @@ void fe_shell_part(const fe_model *m, fe_state *s, int ip)
         const double B2[4] = {i2a * (xl[3] - xl[1]), i2a * (xl[0] - xl[2]), i2a * (xl[1] - xl[3]),
                               i2a * (xl[2] - xl[0])};
         double dm[3] = {0}, kp[3] = {0}, gs[2] = {0};
-        for (int k = 0; k < 4; k++) {
-            dm[0] += B1[k] * vx[k];
-            dm[1] += B2[k] * vy[k];
-            dm[2] += B2[k] * vx[k] + B1[k] * vy[k];
-            kp[0] += B1[k] * wy[k];
-            kp[1] -= B2[k] * wx[k];
-            kp[2] += B2[k] * wy[k] - B1[k] * wx[k];
-            gs[0] += B1[k] * vz[k] + 0.25 * wy[k];
-            gs[1] += B2[k] * vz[k] - 0.25 * wx[k];
+        for (int q = 0; q < 4; q++) {
+            dm[0] += B1[q] * vx[q];
+            dm[1] += B2[q] * vy[q];
+            dm[2] += B2[q] * vx[q] + B1[q] * vy[q];
+            kp[0] += B1[q] * wy[q];
+            kp[1] -= B2[q] * wx[q];
+            kp[2] += B2[q] * wy[q] - B1[q] * wx[q];
+            gs[0] += B1[q] * vz[q] + 0.25 * wy[q];
+            gs[1] += B2[q] * vz[q] - 0.25 * wx[q];
         }
         /* through-thickness points: plane stress update, resultants N and M */
         double N[3] = {0}, M[3] = {0}, w_int = 0;
-        double *sg = s->shell_sig + 3 * (size_t)stride * e, *ep = s->shell_epsp + (size_t)stride * e;
+        double *sg = sig_all + 3 * (size_t)stride * e, *ep = epsp_all + (size_t)stride * e;
         for (int g = 0; g < nip; g++) {
-            double z = p->ip_z[g] * t, wt = p->ip_w[g] * t;
+            const double z = zt[g];
             double de[3] = {(dm[0] + z * kp[0]) * dt, (dm[1] + z * kp[1]) * dt,
                             (dm[2] + z * kp[2]) * dt};
             double *sp = sg + 3 * g, old[3] = {sp[0], sp[1], sp[2]};
             double rate = 0;
-            if (dt > 0) {
-                double ex = de[0] / dt, ey = de[1] / dt, gxy = de[2] / dt;
-                rate = sqrt(4.0 / 3.0 * (ex * ex + ey * ey + ex * ey) + gxy * gxy / 3);
-            }
-            if (p->material.cowper_symonds_c > 0) {
+            if (cs) {
+                /* effective strain rate (only the Cowper-Symonds factor uses it) */
+                double ex = de[0] * idt, ey = de[1] * idt, gxy = de[2] * idt;
                 double *rf = s->shell_rate + (size_t)stride * e + g;
+                rate = dt > 0 ? sqrt(4.0 / 3.0 * (ex * ex + ey * ey + ex * ey) + gxy * gxy / 3) : 0;
                 rate = *rf = fe_rate_filter(*rf, rate);
             }
-            ep[g] += fe_mat_plane_stress(p, sp, de, ep[g], rate);
-            w_int += wt * ((old[0] + sp[0]) * de[0] + (old[1] + sp[1]) * de[1] +
-                           (old[2] + sp[2]) * de[2]);
+            ep[g] += fe_ps_update(&k, sp, de, ep[g], rate);
+            w_int += wt[g] * ((old[0] + sp[0]) * de[0] + (old[1] + sp[1]) * de[1] +
+                              (old[2] + sp[2]) * de[2]);
             for (int i = 0; i < 3; i++) {
-                N[i] += wt * sp[i];
-                M[i] += wt * z * sp[i];
+                N[i] += wt[g] * sp[i];
+                M[i] += wz[g] * sp[i];
             }
         }
         double *tau = s->shell_tau + 2 * (size_t)e, Q[2];
         for (int i = 0; i < 2; i++) {
             double t0 = tau[i];
-            tau[i] += ks * G * gs[i] * dt;
+            tau[i] += ksg * gs[i];
             w_int += t * (t0 + tau[i]) * gs[i] * dt;
             Q[i] = t * tau[i];
         }
         e_int += 0.5 * A * w_int;
         /* hourglass */
-        const double h[4] = {1, -1, 1, -1};
-        double hx = 0, hy = 0, bb = 0;
-        for (int k = 0; k < 4; k++) {
-            hx += h[k] * xl[k];
-            hy += h[k] * yl[k];
-            bb += B1[k] * B1[k] + B2[k] * B2[k];
-        }
+        const double hx = xl[0] - xl[1] + xl[2] - xl[3], hy = yl[0] - yl[1] + yl[2] - yl[3];
+        double bb = 0;
+        for (int q = 0; q < 4; q++) bb += B1[q] * B1[q] + B2[q] * B2[q];
         double gam[4], qh[5] = {0};
-        for (int k = 0; k < 4; k++) {
-            gam[k] = h[k] - hx * B1[k] - hy * B2[k];
-            qh[0] += gam[k] * vx[k];
-            qh[1] += gam[k] * vy[k];
-            qh[2] += gam[k] * vz[k];
-            qh[3] += gam[k] * wx[k];
-            qh[4] += gam[k] * wy[k];
+        for (int q = 0; q < 4; q++) {
+            gam[q] = (q & 1 ? -1 : 1) - hx * B1[q] - hy * B2[q];
+            qh[0] += gam[q] * vx[q];
+            qh[1] += gam[q] * vy[q];
+            qh[2] += gam[q] * vz[q];
+            qh[3] += gam[q] * wx[q];
+            qh[4] += gam[q] * wy[q];
         }
-        double km = qhg * E * t * A * bb / 8, kw = qhg * ks * G * t * t * t * A * bb * bb / 12,
-               kr = qhg * E * t * t * t * A * bb / 192;
-        double kk[5] = {km, km, kw, kr, kr}, fh[5];
-        double len = fe_shell_length(xe, A);
-        double *hg = s->shell_hg + 5 * (size_t)e;
+        const double km = km0 * A * bb, kw = kw0 * A * bb * bb, kr = kr0 * A * bb;
+        const double kk[5] = {km, km, kw, kr, kr};
+        int tri;
+        const double side2 = shell_side2(xe, &tri);
+        const double len = side2 > 0 ? (1 + tri) * A / sqrt(side2) : 0, dte = len * ic0;
+        double *hg = s->shell_hg + 5 * (size_t)e, fh[5];
         for (int i = 0; i < 5; i++) {
             if (visc) {
-                fh[i] = dt > 0 ? kk[i] * (len / c0) * qh[i] : 0; /* no rate before step 1 */
+                fh[i] = dt > 0 ? kk[i] * dte * qh[i] : 0; /* no rate before step 1 */
                 e_hg += 0.5 * (hg[i] + fh[i]) * qh[i] * dt;
                 hg[i] = fh[i];
             } else {
@@ -178,24 +205,30 @@ void fe_shell_part(const fe_model *m, fe_state *s, int ip)
             }
         }
         /* resisting local forces and moments, back to the global frame */
-        for (int k = 0; k < 4; k++) {
-            double fx = A * (B1[k] * N[0] + B2[k] * N[2]) + fh[0] * gam[k];
-            double fy = A * (B2[k] * N[1] + B1[k] * N[2]) + fh[1] * gam[k];
-            double fz = A * (B1[k] * Q[0] + B2[k] * Q[1]) + fh[2] * gam[k];
-            double mx = A * (-B2[k] * M[1] - B1[k] * M[2] - 0.25 * Q[1]) + fh[3] * gam[k];
-            double my = A * (B1[k] * M[0] + B2[k] * M[2] + 0.25 * Q[0]) + fh[4] * gam[k];
+        for (int q = 0; q < 4; q++) {
+            double fx = A * (B1[q] * N[0] + B2[q] * N[2]) + fh[0] * gam[q];
+            double fy = A * (B2[q] * N[1] + B1[q] * N[2]) + fh[1] * gam[q];
+            double fz = A * (B1[q] * Q[0] + B2[q] * Q[1]) + fh[2] * gam[q];
+            double mx = A * (-B2[q] * M[1] - B1[q] * M[2] - 0.25 * Q[1]) + fh[3] * gam[q];
+            double my = A * (B1[q] * M[0] + B2[q] * M[2] + 0.25 * Q[0]) + fh[4] * gam[q];
             for (int i = 0; i < 3; i++) {
-                f[3 * k + i] = fx * fr[0][i] + fy * fr[1][i] + fz * fr[2][i];
-                mo[3 * k + i] = mx * fr[0][i] + my * fr[1][i];
+                f[3 * q + i] = fx * fr[0][i] + fy * fr[1][i] + fz * fr[2][i];
+                mo[3 * q + i] = mx * fr[0][i] + my * fr[1][i];
             }
         }
-        double dte = len / c0;
         if (dte < dtmin) dtmin = dte, dtel = e;
     }
-    double *pe = s->part_energy + FE_NENERGY * ip;
-    pe[FE_E_internal] += e_int;
-    pe[FE_E_hourglass] += e_hg;
-    s->part_dt[ip] = dtmin;
-    s->part_dt_elem[ip] = dtel;
-    if (bad >= 0 && s->part_bad_elem[ip] < 0) s->part_bad_elem[ip] = bad;
+    acc->e_int = e_int;
+    acc->e_hg = e_hg;
+    acc->e_diss = 0;
+    acc->dtmin = dtmin;
+    acc->dtel = dtel;
+    acc->bad = bad;
+}
+
+void fe_shell_part(const fe_model *m, fe_state *s, int ip)
+{
+    fe_chunk_acc acc;
+    fe_shell_range(m, s, ip, m->part[ip].elem_begin, m->part[ip].elem_end, &acc);
+    fe_chunk_commit(s, ip, &acc);
 }

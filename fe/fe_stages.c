@@ -10,40 +10,67 @@
 #include <stdio.h>
 #include <string.h>
 
+/* parts whose elements run in threaded chunks (fe_*_range) */
+static int chunked_part(const fe_part *p)
+{
+    return p->elem_kind == FE_KIND_HEX || p->elem_kind == FE_KIND_TRUSS ||
+           (p->elem_kind == FE_KIND_SHELL && p->section.type != FE_SECTION_MEMBRANE);
+}
+
 /* reads x, v (t - dt/2), stresses; writes stresses, slot forces, node_fint, node_mint,
- * part internal/hourglass/dissipated energies and part element steps */
+ * part internal/hourglass/dissipated energies and part element steps. Threaded over element
+ * chunks, then over nodes (fe_parallel.c: the result does not depend on the thread count). */
 void fe_internal_forces(const fe_model *m, fe_state *s)
 {
-    for (int ip = 0; ip < m->npart; ip++) {
-        switch (m->part[ip].elem_kind) {
-        case FE_KIND_HEX: fe_hex_part(m, s, ip); break;
-        case FE_KIND_SHELL:
-            if (m->part[ip].section.type == FE_SECTION_MEMBRANE) fe_membrane_part(m, s, ip);
-            else fe_shell_part(m, s, ip);
-            break;
-        default: fe_truss_part(m, s, ip); break;
-        }
-    }
-    /* gather: each node sums its element slots (no element writes to a shared node) */
+    const int nch = m->nchunk, nnode = m->nnode;
+    /* parts without a chunked kernel: whole part at a time, before the gather */
+    for (int ip = 0; ip < m->npart; ip++)
+        if (m->part[ip].elem_kind == FE_KIND_SHELL && m->part[ip].section.type == FE_SECTION_MEMBRANE)
+            fe_membrane_part(m, s, ip);
     const int sb = m->slot_base[FE_KIND_SHELL], se = m->slot_base[FE_KIND_TRUSS];
-    for (int n = 0; n < m->nnode; n++) {
-        double f0 = 0, f1 = 0, f2 = 0, m0 = 0, m1 = 0, m2 = 0;
-        for (int j = m->node_slot_off[n]; j < m->node_slot_off[n + 1]; j++) {
-            int sl = m->node_slot[j];
-            const double *f = s->slot_f + 3 * (size_t)sl;
-            f0 += f[0];
-            f1 += f[1];
-            f2 += f[2];
-            if (sl >= sb && sl < se) {
-                const double *mm = s->shell_m + 3 * (size_t)(sl - sb);
-                m0 += mm[0];
-                m1 += mm[1];
-                m2 += mm[2];
+    fe_chunk_acc *ca = s->chunk_acc;
+#pragma omp parallel if (nch >= FE_PAR_MIN_CHUNKS)
+    {
+#pragma omp for schedule(dynamic, 1)
+        for (int k = 0; k < nch; k++) {
+            const int ip = m->chunk_part[k], e0 = m->chunk_elem[k];
+            const int e1 = e0 + FE_CHUNK_ELEMS < m->part[ip].elem_end ? e0 + FE_CHUNK_ELEMS
+                                                                     : m->part[ip].elem_end;
+            if (!chunked_part(m->part + ip)) continue;
+            switch (m->part[ip].elem_kind) {
+            case FE_KIND_HEX: fe_hex_range(m, s, ip, e0, e1, ca + k); break;
+            case FE_KIND_SHELL: fe_shell_range(m, s, ip, e0, e1, ca + k); break;
+            default: fe_truss_range(m, s, ip, e0, e1, ca + k); break;
             }
         }
-        double *fi = s->node_fint + 3 * n, *mi = s->node_mint + 3 * n;
-        fi[0] = f0, fi[1] = f1, fi[2] = f2;
-        mi[0] = m0, mi[1] = m1, mi[2] = m2;
+        /* gather: each node sums its element slots (no element writes to a shared node) */
+#pragma omp for schedule(static)
+        for (int n = 0; n < nnode; n++) {
+            double f0 = 0, f1 = 0, f2 = 0, m0 = 0, m1 = 0, m2 = 0;
+            for (int j = m->node_slot_off[n]; j < m->node_slot_off[n + 1]; j++) {
+                int sl = m->node_slot[j];
+                const double *f = s->slot_f + 3 * (size_t)sl;
+                f0 += f[0];
+                f1 += f[1];
+                f2 += f[2];
+                if (sl >= sb && sl < se) {
+                    const double *mm = s->shell_m + 3 * (size_t)(sl - sb);
+                    m0 += mm[0];
+                    m1 += mm[1];
+                    m2 += mm[2];
+                }
+            }
+            double *fi = s->node_fint + 3 * n, *mi = s->node_mint + 3 * n;
+            fi[0] = f0, fi[1] = f1, fi[2] = f2;
+            mi[0] = m0, mi[1] = m1, mi[2] = m2;
+        }
+    }
+    /* partial sums of each part in chunk order */
+    for (int k = 0; k < nch;) {
+        const int ip = m->chunk_part[k];
+        fe_chunk_acc acc = ca[k++];
+        while (k < nch && m->chunk_part[k] == ip) fe_chunk_merge(&acc, ca + k++);
+        if (chunked_part(m->part + ip)) fe_chunk_commit(s, ip, &acc);
     }
     fe_discrete_forces(m, s); /* springs and dampers add to node_fint */
 }
@@ -105,7 +132,9 @@ void fe_external_forces(const fe_model *m, fe_state *s)
 /* reads node_fext, node_fint, masses; writes node_a */
 void fe_accelerations(const fe_model *m, fe_state *s)
 {
-    for (int n = 0; n < m->nnode; n++) {
+    const int nnode = m->nnode;
+#pragma omp parallel for schedule(static) if (m->nnode_chunk >= FE_PAR_MIN_NODE_CHUNKS)
+    for (int n = 0; n < nnode; n++) {
         double mass = m->node_mass[n], inv = mass > 0 ? 1 / mass : 0;
         for (int i = 0; i < 3; i++)
             s->node_a[3 * n + i] = (s->node_fext[3 * n + i] - s->node_fint[3 * n + i]) * inv;
@@ -113,7 +142,8 @@ void fe_accelerations(const fe_model *m, fe_state *s)
 }
 
 /* reads node_a, node_mint, v, w, x; writes v, w (t + dt/2), x (t + dt), the kinematic
- * walls' forces, kinetic energy and the works of loads, constraints and damping (at t) */
+ * walls' forces, kinetic energy and the works of loads, constraints and damping (at t).
+ * Threaded over node chunks; each chunk's sums go to node_acc and are added in chunk order. */
 void fe_integrate(const fe_model *m, fe_state *s)
 {
     const double dt = s->dt, dtp = s->dt_prev, dth = 0.5 * (dt + dtp), tn = s->time + dt;
@@ -122,68 +152,97 @@ void fe_integrate(const fe_model *m, fe_state *s)
     unsigned kin = 0;
     for (int w = 0; w < m->nwall; w++)
         if (m->wall[w].method == FE_WALL_KINEMATIC) kin |= 1u << w;
+    const int nch = m->nnode_chunk, stride = m->node_acc_stride, npart = m->npart;
+    const int nwall = m->nwall;
+#pragma omp parallel for schedule(static) if (nch >= FE_PAR_MIN_NODE_CHUNKS)
+    for (int k = 0; k < nch; k++) {
+        double *acc = s->node_acc + (size_t)stride * k, *pke = acc + FE_NACC_FIXED;
+        double *wf_acc = pke + npart;
+        for (int i = 0; i < FE_NACC_FIXED + npart + 3 * nwall; i++) acc[i] = 0;
+        double ke = 0, wb = 0, wf = 0, db = 0, dfw = 0;
+        int bad = -1;
+        const int n1 = (k + 1) * FE_CHUNK_NODES < m->nnode ? (k + 1) * FE_CHUNK_NODES : m->nnode;
+        for (int n = k * FE_CHUNK_NODES; n < n1; n++) {
+            const double mass = m->node_mass[n];
+            if (!(mass > 0)) continue;
+            double *v = s->node_v + 3 * n, *x = s->node_x + 3 * n;
+            const double *a = s->node_a + 3 * n, *fe = s->node_fext + 3 * n;
+            const unsigned fix = m->node_fix[n];
+            double vo[3] = {v[0], v[1], v[2]}, vn[3], vfree[3];
+            for (int i = 0; i < 3; i++) vn[i] = vfree[i] = (d0 * vo[i] + dth * a[i]) * d1;
+            for (int i = 0; i < 3; i++)
+                if (fix & (1u << i)) vn[i] = m->node_vfix[3 * n + i];
+            unsigned mask = m->node_walls[n] & kin;
+            while (mask) {
+                int w = __builtin_ctz(mask);
+                mask &= mask - 1;
+                const fe_wall *W = &m->wall[w];
+                double g = 0;
+                for (int i = 0; i < 3; i++)
+                    g += (x[i] + dt * vn[i] - W->point[i] - W->velocity[i] * tn) * W->normal[i];
+                if (g >= 0) continue;
+                /* land on the wall: remove the normal velocity that would penetrate */
+                double dv = -g / dt;
+                for (int i = 0; i < 3; i++) {
+                    vn[i] += dv * W->normal[i];
+                    wf_acc[3 * w + i] -= mass * dv / dth * W->normal[i];
+                }
+            }
+            /* works of the forces at t: half on the interval before (now), half on the one
+             * after (pending), each weighted by the velocity-update step dth, which makes
+             * K(n+1) - K(n) = sum of the works exactly (fe_state.h); no interval before t = 0 */
+            double ek = 0;
+            for (int i = 0; i < 3; i++) {
+                double r = mass * (vn[i] - vfree[i]) / dth; /* constraint and wall reaction */
+                double fd = -c * mass * 0.5 * (vo[i] + vn[i]);
+                ek += vo[i] * vn[i];
+                wb += 0.5 * (fe[i] + r) * hb * vo[i];
+                wf += 0.5 * (fe[i] + r) * dth * vn[i];
+                db -= 0.5 * fd * hb * vo[i];
+                dfw -= 0.5 * fd * dth * vn[i];
+                v[i] = vn[i];
+                x[i] += dt * vn[i];
+            }
+            if (!isfinite(vn[0] + vn[1] + vn[2]) && bad < 0) bad = n;
+            ek *= 0.5 * mass;
+            const double in = m->node_inertia[n];
+            if (in > 0) {
+                double *w = s->node_w + 3 * n;
+                const double *mi = s->node_mint + 3 * n;
+                for (int i = 0; i < 3; i++) {
+                    double wo = w[i], wn = (d0 * wo - dth * mi[i] / in) * d1;
+                    if (fix & (8u << i)) wn = 0;
+                    ek += 0.5 * in * wo * wn;
+                    db += 0.5 * c * in * 0.5 * (wo + wn) * hb * wo;
+                    dfw += 0.5 * c * in * 0.5 * (wo + wn) * dth * wn;
+                    w[i] = wn;
+                }
+                if (!isfinite(w[0] + w[1] + w[2]) && bad < 0) bad = n;
+            }
+            ke += ek;
+            if (m->node_part[n] >= 0) pke[m->node_part[n]] += ek;
+        }
+        acc[FE_ACC_KE] = ke;
+        acc[FE_ACC_WB] = wb;
+        acc[FE_ACC_WF] = wf;
+        acc[FE_ACC_DB] = db;
+        acc[FE_ACC_DF] = dfw;
+        acc[FE_ACC_BAD] = bad;
+    }
     double ke = 0, wb = 0, wf = 0, db = 0, dfw = 0;
     int bad = -1;
-    for (int ip = 0; ip < m->npart; ip++) s->part_energy[FE_NENERGY * ip + FE_E_kinetic] = 0;
-    for (int n = 0; n < m->nnode; n++) {
-        const double mass = m->node_mass[n];
-        if (!(mass > 0)) continue;
-        double *v = s->node_v + 3 * n, *x = s->node_x + 3 * n;
-        const double *a = s->node_a + 3 * n, *fe = s->node_fext + 3 * n;
-        const unsigned fix = m->node_fix[n];
-        double vo[3] = {v[0], v[1], v[2]}, vn[3], vfree[3];
-        for (int i = 0; i < 3; i++) vn[i] = vfree[i] = (d0 * vo[i] + dth * a[i]) * d1;
-        for (int i = 0; i < 3; i++)
-            if (fix & (1u << i)) vn[i] = m->node_vfix[3 * n + i];
-        unsigned mask = m->node_walls[n] & kin;
-        while (mask) {
-            int w = __builtin_ctz(mask);
-            mask &= mask - 1;
-            const fe_wall *W = &m->wall[w];
-            double g = 0;
-            for (int i = 0; i < 3; i++)
-                g += (x[i] + dt * vn[i] - W->point[i] - W->velocity[i] * tn) * W->normal[i];
-            if (g >= 0) continue;
-            /* land on the wall: remove the normal velocity that would penetrate */
-            double dv = -g / dt;
-            for (int i = 0; i < 3; i++) {
-                vn[i] += dv * W->normal[i];
-                s->wall_force[3 * w + i] -= mass * dv / dth * W->normal[i];
-            }
-        }
-        /* works of the forces at t: half on the interval before (now), half on the one after
-         * (pending), each weighted by the velocity-update step dth, which makes
-         * K(n+1) - K(n) = sum of the works exactly (fe_state.h); no interval before t = 0 */
-        double ek = 0;
-        for (int i = 0; i < 3; i++) {
-            double r = mass * (vn[i] - vfree[i]) / dth; /* constraint and wall reaction */
-            double fd = -c * mass * 0.5 * (vo[i] + vn[i]);
-            ek += vo[i] * vn[i];
-            wb += 0.5 * (fe[i] + r) * hb * vo[i];
-            wf += 0.5 * (fe[i] + r) * dth * vn[i];
-            db -= 0.5 * fd * hb * vo[i];
-            dfw -= 0.5 * fd * dth * vn[i];
-            v[i] = vn[i];
-            x[i] += dt * vn[i];
-        }
-        if (!isfinite(vn[0] + vn[1] + vn[2]) && bad < 0) bad = n;
-        ek *= 0.5 * mass;
-        const double in = m->node_inertia[n];
-        if (in > 0) {
-            double *w = s->node_w + 3 * n;
-            const double *mi = s->node_mint + 3 * n;
-            for (int i = 0; i < 3; i++) {
-                double wo = w[i], wn = (d0 * wo - dth * mi[i] / in) * d1;
-                if (fix & (8u << i)) wn = 0;
-                ek += 0.5 * in * wo * wn;
-                db += 0.5 * c * in * 0.5 * (wo + wn) * hb * wo;
-                dfw += 0.5 * c * in * 0.5 * (wo + wn) * dth * wn;
-                w[i] = wn;
-            }
-            if (!isfinite(w[0] + w[1] + w[2]) && bad < 0) bad = n;
-        }
-        ke += ek;
-        if (m->node_part[n] >= 0) s->part_energy[FE_NENERGY * m->node_part[n] + FE_E_kinetic] += ek;
+    for (int ip = 0; ip < npart; ip++) s->part_energy[FE_NENERGY * ip + FE_E_kinetic] = 0;
+    for (int k = 0; k < nch; k++) {
+        const double *acc = s->node_acc + (size_t)stride * k, *pke = acc + FE_NACC_FIXED;
+        ke += acc[FE_ACC_KE];
+        wb += acc[FE_ACC_WB];
+        wf += acc[FE_ACC_WF];
+        db += acc[FE_ACC_DB];
+        dfw += acc[FE_ACC_DF];
+        if (bad < 0 && acc[FE_ACC_BAD] >= 0) bad = (int)acc[FE_ACC_BAD];
+        for (int ip = 0; ip < npart; ip++)
+            s->part_energy[FE_NENERGY * ip + FE_E_kinetic] += pke[ip];
+        for (int i = 0; i < 3 * nwall; i++) s->wall_force[i] += pke[npart + i];
     }
     s->energy[FE_E_kinetic] = ke;
     s->work_ext += wb + s->work_pending[0];

@@ -52,6 +52,14 @@ typedef enum {
 
 extern const char *const fe_stage_name[FE_NSTAGE];
 
+/* partial sums of one chunk of elements: threaded element loops reduce them in chunk order,
+ * so results do not depend on the number of threads */
+typedef struct {
+    double e_int, e_hg, e_diss; /* internal, hourglass, dissipated energy this step [J]     */
+    double dtmin;               /* smallest element step, no safety factor [s]              */
+    int dtel, bad;              /* element giving dtmin; first inverted element, -1 none [-] */
+} fe_chunk_acc;
+
 /* the state's arrays: X(type, name, count (a model size), components, unit, what) */
 #define FE_STATE_ARRAYS(X)                                                                         \
     X(double, node_x, nnode, 3, "m", "position")                                                   \
@@ -94,7 +102,9 @@ extern const char *const fe_stage_name[FE_NSTAGE];
     X(double, body_l, nbody, 3, "N m s", "rigid body angular momentum at t + dt/2")                \
     X(double, body_w, nbody, 3, "rad/s", "rigid body angular velocity at t + dt/2")                \
     X(double, body_fm, nbody, 6, "N, N m", "force and moment on the body at t")                    \
-    X(double, hex_gp, nhex_gp, 7, "Pa", "full hex: stress (6), plastic strain or foam history")
+    X(double, hex_gp, nhex_gp, 7, "Pa", "full hex: stress (6), plastic strain or foam history")   \
+    X(fe_chunk_acc, chunk_acc, nchunk, 1, "-", "partial sums of each element chunk")             \
+    X(double, node_acc, nnode_acc, 1, "-", "partial sums of each node chunk (fe_integrate)")
 
 struct fe_contact_state;
 
@@ -149,6 +159,11 @@ void fe_external_forces(const fe_model *m, fe_state *s);
 void fe_accelerations(const fe_model *m, fe_state *s);
 void fe_integrate(const fe_model *m, fe_state *s);
 mcs_status fe_stable_step(const fe_model *m, fe_state *s);
+
+/* threads of the element and node loops: OMP_NUM_THREADS, or fe_set_threads (> 0); 1 when
+ * built without OpenMP. Results do not depend on it (fe_parallel.c). */
+int fe_threads(void);
+void fe_set_threads(int n);
 
 /* smallest stable step of the current geometry, safety factor applied [s] */
 double fe_stable_dt(const fe_model *m, const fe_state *s);

@@ -6,14 +6,14 @@
 
 #include <math.h>
 
-void fe_truss_part(const fe_model *m, fe_state *s, int ip)
+void fe_truss_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chunk_acc *acc)
 {
     const fe_part *p = &m->part[ip];
     const double dt = s->dt_prev, area = p->section.area, c0 = p->wave_speed;
     const int tonly = p->section.tension_only;
     double e_int = 0, dtmin = INFINITY;
     int dtel = -1, bad = -1;
-    for (int e = p->elem_begin; e < p->elem_end; e++) {
+    for (int e = e0; e < e1; e++) {
         const int a = m->truss_node[2 * e], b = m->truss_node[2 * e + 1];
         double d[3], dv[3];
         for (int i = 0; i < 3; i++) {
@@ -44,11 +44,19 @@ void fe_truss_part(const fe_model *m, fe_state *s, int ip)
         double dte = len / c0;
         if (dte < dtmin) dtmin = dte, dtel = e;
     }
-    double *pe = s->part_energy + FE_NENERGY * ip;
-    pe[FE_E_internal] += e_int;
-    s->part_dt[ip] = dtmin;
-    s->part_dt_elem[ip] = dtel;
-    if (bad >= 0 && s->part_bad_elem[ip] < 0) s->part_bad_elem[ip] = bad;
+    acc->e_int = e_int;
+    acc->e_hg = 0;
+    acc->e_diss = 0;
+    acc->dtmin = dtmin;
+    acc->dtel = dtel;
+    acc->bad = bad;
+}
+
+void fe_truss_part(const fe_model *m, fe_state *s, int ip)
+{
+    fe_chunk_acc acc;
+    fe_truss_range(m, s, ip, m->part[ip].elem_begin, m->part[ip].elem_end, &acc);
+    fe_chunk_commit(s, ip, &acc);
 }
 
 /* element steps from geometry alone (model build and state reset; no bulk viscosity) */

@@ -516,11 +516,24 @@ static const mcs_skey plastic_keys[] = {
     Q("cowper_symonds_p", NONE, GT, 0, 0, "Cowper-Symonds p"),
     END,
 };
+/* foam (fe/fe_foam.c, in the spirit of LS-DYNA MAT_083 and MAT_057): nominal stress vs.
+ * engineering strain per principal direction (Poisson 0), curves at several strain rates
+ * interpolated in log rate, hysteretic unloading; give stress_strain or curves */
+static const mcs_skey foam_curve_keys[] = {
+    Q("rate", MCS_DIM_FREQ, REQ | GE, 0, 0, "engineering strain rate of the curve [1/s]"),
+    C("points", NONE, PRS, 1, REQ | GE, 0, "[[strain, nominal stress Pa], ...]"),
+    END,
+};
+static const mcs_smap foam_curve_map = {.what = "foam curve", .keys = foam_curve_keys};
 static const mcs_skey foam_keys[] = {
-    /* crushable foam (LS-DYNA *MAT_063 style): stress vs. volumetric strain, E for unloading */
-    Q("youngs_modulus", PRS, REQ | GT, 0, 0, "unloading modulus [Pa]"),
-    Q("poisson", NONE, GE | LT, 0, 0.5, "Poisson's ratio (default 0)"),
-    C("stress_strain", NONE, PRS, 2, REQ | GE, 0, "[[volumetric strain, stress Pa], ...]"),
+    Q("youngs_modulus", PRS, REQ | GT, 0, 0, "modulus in tension [Pa]"),
+    Q("poisson", NONE, GE | LE, 0, 0, "Poisson's ratio (0 only)"),
+    C("stress_strain", NONE, PRS, 1, GE, 0, "one curve [[strain, nominal stress Pa], ...]"),
+    L("curves", foam_curve_map, 0, "loading curves at increasing strain rates"),
+    /* LS-DYNA *MAT_057 HU and SHAPE; 1 (default): no hysteresis */
+    Q("hysteresis", NONE, GT | LE, 0, 1, "unloading factor HU (default 1: none)"),
+    Q("shape", NONE, GT, 0, 0, "unloading shape exponent (default 1)"),
+    Q("tension_cutoff", PRS, GT, 0, 0, "largest tensile stress [Pa] (default none)"),
     Q("damping", NONE, GE | LE, 0, 1, "viscous damping fraction"),
     END,
 };

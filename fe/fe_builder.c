@@ -2,6 +2,7 @@
  * fe_model_create() validates and freezes them. Growable arrays live only here. */
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_restraint.h"
+#include "fe/fe_solid.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -132,7 +133,7 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
                        "fe: part '%s': material.poisson must be in (-1, 0.5), got %g", n,
                        m->poisson);
     if (m->model != FE_MAT_ELASTIC && m->model != FE_MAT_ELASTIC_PLASTIC &&
-        m->model != FE_MAT_FABRIC)
+        m->model != FE_MAT_FABRIC && m->model != FE_MAT_FOAM && m->model != FE_MAT_RIGID)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED, "fe: part '%s': material.model not built yet", n);
     if ((m->model == FE_MAT_FABRIC) != (d->section.type == FE_SECTION_MEMBRANE))
         return MCS_ERR(err, MCS_ERR_TYPE,
@@ -140,6 +141,8 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
                        "fabric is for membrane sections only",
                        n);
     if (m->model == FE_MAT_FABRIC) return fe_fabric_check(d, err);
+    if (m->model == FE_MAT_FOAM) return fe_foam_check(d, err);
+    if (m->model == FE_MAT_RIGID) return MCS_OK;
     if (m->model == FE_MAT_ELASTIC) return MCS_OK;
     if (m->nhardening < 0 || m->nhardening > FE_CURVE_MAX)
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.hardening: 0..%d points", n,

@@ -12,6 +12,7 @@
  * spin. Stress: Jaumann rate, strain increment D dt at the current configuration; bulk
  * viscosity q = rho L (q1 L eps_v'^2 - q2 c eps_v') in compression (Wilkins/LS-DYNA form). */
 #include "fe/fe_elem.h"
+#include "fe/fe_solid.h"
 
 #include <math.h>
 #include <string.h>
@@ -148,8 +149,12 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
                                      2 * (de[3] * de[3] + de[4] * de[4] + de[5] * de[5]))) /
                                    dt
                              : 0;
-        if (p->material.cowper_symonds_c > 0) rate = s->hex_rate[e] = fe_rate_filter(s->hex_rate[e], rate);
-        s->hex_epsp[e] += fe_mat_3d(p, sg, de, s->hex_epsp[e], rate);
+        if (p->material.model == FE_MAT_FOAM) { /* total form (fe_foam.c); epsp: e_max */
+            fe_foam_hex(m, p, c, xe, L, sg, &s->hex_epsp[e], &s->hex_rate[e]);
+        } else {
+            if (p->material.cowper_symonds_c > 0) rate = s->hex_rate[e] = fe_rate_filter(s->hex_rate[e], rate);
+            s->hex_epsp[e] += fe_mat_3d(p, sg, de, s->hex_epsp[e], rate);
+        }
         double w = 0;
         for (int i = 0; i < 3; i++) w += (old[i] + sg[i]) * de[i];
         for (int i = 3; i < 6; i++) w += 2 * (old[i] + sg[i]) * de[i];

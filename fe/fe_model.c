@@ -81,6 +81,7 @@ static void derive_part(fe_part *p)
     p->shear_factor = p->section.shear_factor > 0 ? p->section.shear_factor : 5.0 / 6.0;
     if (p->elem_kind == FE_KIND_SHELL) gauss_points(p->section.integration_points, p->ip_z, p->ip_w);
     if (mt->model == FE_MAT_FABRIC) p->wave_speed = fe_fabric_wave_speed(mt);
+    if (mt->model == FE_MAT_FOAM) fe_foam_derive(p);
 }
 
 static mcs_status alloc_arrays(fe_model *m, mcs_error *err)
@@ -408,6 +409,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
     if (st == MCS_OK) st = resolve_loads(b, m, err);
     if (st == MCS_OK) st = resolve_walls(b, m, err);
     if (st == MCS_OK) st = fe_restraints_create(b, m, err); /* may lower opts.dt_max */
+    if (st == MCS_OK) st = fe_solid_finish(m, err); /* rigid-body constraints, wall checks */
     if (st == MCS_OK) {
         for (int n = 0; n < m->nnode; n++)
             for (int c = 0; c < 3; c++)

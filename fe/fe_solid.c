@@ -26,8 +26,14 @@ mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err)
     for (int n = 0; n < m->nnode; n++) m->node_body[n] = -1;
     for (int ip = 0; ip < m->npart; ip++) m->part[ip].body = -1;
     st = fe_discrete_build(b, m, err);
+    if (!st) st = fe_rigid_build(m, err);
     if (!st) st = fe_discrete_steps(m, err);
     return st;
+}
+
+mcs_status fe_solid_finish(fe_model *m, mcs_error *err)
+{
+    return fe_rigid_finish(m, err);
 }
 
 void fe_solid_free(fe_model *m)
@@ -46,6 +52,6 @@ void fe_solid_free(fe_model *m)
 
 void fe_solid_reset(const fe_model *m, fe_state *s)
 {
-    (void)m;
     memset(s->free_energy, 0, sizeof s->free_energy);
+    fe_rigid_reset(m, s);
 }

@@ -28,6 +28,8 @@ typedef struct fe_body {
     double x0[3];             /* centre of mass at t = 0 [m]                                 */
     double inertia0[3][3];    /* inertia about x0 in the t = 0 axes [kg m^2]                  */
     double inertia0_inv[3][3];/* its inverse [1/(kg m^2)]                                    */
+    unsigned fix;             /* FE_DOF_* held (from boundaries on its nodes) [-]             */
+    double vfix[3];           /* prescribed velocity of the held translations [m/s]           */
 } fe_body;
 
 /* ---- model building (fe_model_create calls fe_solid_build after lumping the masses) ---- */
@@ -45,6 +47,10 @@ mcs_status fe_discrete_build(const fe_builder *b, fe_model *m, mcs_error *err);
 /* stable step of the springs (m->dt_discrete) from the final nodal masses */
 mcs_status fe_discrete_steps(fe_model *m, mcs_error *err);
 mcs_status fe_rigid_build(fe_model *m, mcs_error *err);
+/* fe_model_create calls this last: checks and constraints that need boundaries and walls */
+mcs_status fe_solid_finish(fe_model *m, mcs_error *err);
+mcs_status fe_rigid_finish(fe_model *m, mcs_error *err);
+void fe_rigid_reset(const fe_model *m, fe_state *s);
 mcs_status fe_massscale_build(fe_model *m, mcs_error *err);
 
 /* ---- the time loop ---- */
@@ -59,11 +65,14 @@ void fe_gravity_forces(const fe_model *m, fe_state *s);
 void fe_rigid_integrate(const fe_model *m, fe_state *s);
 /* element loop of a fully integrated hex part (fe_hex_part hands over) */
 void fe_hex_full_part(const fe_model *m, fe_state *s, int ip);
-/* foam stress from the deformation gradient F (t = 0 -> t) and the rate of deformation D:
+/* foam stress from the deformation gradient F (t = 0 -> t) and the velocity gradient L:
  * Cauchy stress sig (xx yy zz xy yz zx) written, *emax (largest compressive strain seen) and
  * *rate (filtered engineering strain rate) updated */
-void fe_foam_stress(const fe_part *p, const double F[3][3], const double D[3][3], double sig[6],
+void fe_foam_stress(const fe_part *p, const double F[3][3], const double L[3][3], double sig[6],
                     double *emax, double *rate);
+/* the same for a one-point hex: F at the centre from the t = 0 and current node positions */
+void fe_foam_hex(const fe_model *m, const fe_part *p, const int *conn, const double xe[8][3],
+                 const double L[3][3], double sig[6], double *emax, double *rate);
 /* deformation gradient at the centre of a hex: x (current) against x0 (t = 0) */
 void fe_hex_deformation(const double x0[8][3], const double x[8][3], double F[3][3]);
 

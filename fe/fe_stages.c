@@ -13,6 +13,7 @@
 /* parts whose elements run in threaded chunks (fe_*_range) */
 static int chunked_part(const fe_part *p)
 {
+    if (p->body >= 0) return 0; /* rigid part: no element work (fe_rigid.c) */
     return p->elem_kind == FE_KIND_HEX || p->elem_kind == FE_KIND_TRUSS ||
            (p->elem_kind == FE_KIND_SHELL && p->section.type != FE_SECTION_MEMBRANE);
 }
@@ -25,7 +26,8 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
     const int nch = m->nchunk, nnode = m->nnode;
     /* parts without a chunked kernel: whole part at a time, before the gather */
     for (int ip = 0; ip < m->npart; ip++)
-        if (m->part[ip].elem_kind == FE_KIND_SHELL && m->part[ip].section.type == FE_SECTION_MEMBRANE)
+        if (m->part[ip].body >= 0) s->part_dt[ip] = INFINITY; /* rigid: no step limit */
+        else if (m->part[ip].elem_kind == FE_KIND_SHELL && m->part[ip].section.type == FE_SECTION_MEMBRANE)
             fe_membrane_part(m, s, ip);
     const int sb = m->slot_base[FE_KIND_SHELL], se = m->slot_base[FE_KIND_TRUSS];
     fe_chunk_acc *ca = s->chunk_acc;
@@ -164,7 +166,7 @@ void fe_integrate(const fe_model *m, fe_state *s)
         const int n1 = (k + 1) * FE_CHUNK_NODES < m->nnode ? (k + 1) * FE_CHUNK_NODES : m->nnode;
         for (int n = k * FE_CHUNK_NODES; n < n1; n++) {
             const double mass = m->node_mass[n];
-            if (!(mass > 0)) continue;
+            if (!(mass > 0) || m->node_body[n] >= 0) continue; /* rigid bodies: fe_rigid.c */
             double *v = s->node_v + 3 * n, *x = s->node_x + 3 * n;
             const double *a = s->node_a + 3 * n, *fe = s->node_fext + 3 * n;
             const unsigned fix = m->node_fix[n];
@@ -250,6 +252,7 @@ void fe_integrate(const fe_model *m, fe_state *s)
     s->work_pending[0] = wf;
     s->work_pending[2] = dfw;
     s->bad_node = bad;
+    fe_rigid_integrate(m, s); /* rigid bodies move their nodes */
     for (int w = 0; w < m->nwall; w++) {
         const fe_wall *W = &m->wall[w];
         s->wall_normal[w] = -fe_dot(s->wall_force + 3 * w, W->normal);

@@ -123,6 +123,8 @@ static mcs_status read_section(const mcs_node *sec, fe_section_desc *d, mcs_erro
 static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
 {
     const char *model = mcs_node_str(get(mat, "model"));
+    if (model && (strcmp(model, "foam") == 0 || strcmp(model, "rigid") == 0))
+        return s3_solid_material(mat, d, err);
     int plastic = model && strcmp(model, "elastic_plastic") == 0;
     if (model && strcmp(model, "fabric") == 0) return s3_read_fabric(mat, d, err);
     if (!plastic && !(model && strcmp(model, "elastic") == 0)) {

@@ -117,3 +117,57 @@ mcs_status s3_solid_add(fe_builder *b, const mcs_node *fe, mcs_error *err)
     if (!st) st = add_masses(b, get(fe, "masses"), err);
     return st;
 }
+
+/* foam: stress_strain (one rate-independent curve) or curves [{rate, points}] */
+static mcs_status read_foam(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
+{
+    if (given(mat, "damping"))
+        return mcs_node_error(get(mat, "damping"), err, MCS_ERR_UNSUPPORTED,
+                              "foam damping not supported yet (the curves carry the rate "
+                              "effect)");
+    if (given(mat, "stress_strain") == given(mat, "curves"))
+        return mcs_node_error(mat, err, MCS_ERR_KEY, "give one of stress_strain or curves");
+    d->poisson = mcs_node_num_or(mat, "poisson", 0);
+    d->foam_hysteresis = mcs_node_num_or(mat, "hysteresis", 1);
+    d->foam_shape = mcs_node_num_or(mat, "shape", 1);
+    d->foam_tension_cutoff = mcs_node_num_or(mat, "tension_cutoff", 0);
+    if (given(mat, "stress_strain")) {
+        d->nfoam_curve = 1;
+        return read_table(get(mat, "stress_strain"), d->foam_curve[0], &d->foam_npoint[0], err);
+    }
+    const mcs_node *list = get(mat, "curves");
+    int n = mcs_node_len(list);
+    if (n < 1 || n > FE_FOAM_NCURVE)
+        return mcs_node_error(list, err, MCS_ERR_RANGE, "1..%d curves, got %d", FE_FOAM_NCURVE, n);
+    d->nfoam_curve = n;
+    for (int c = 0; c < n; c++) {
+        const mcs_node *cv = mcs_node_at(list, c);
+        d->foam_rate[c] = mcs_node_num(get(cv, "rate"));
+        if (c > 0 && !(d->foam_rate[c] > d->foam_rate[c - 1]))
+            return mcs_node_error(get(cv, "rate"), err, MCS_ERR_RANGE,
+                                  "rates must increase from curve to curve");
+        if (n > 1 && !(d->foam_rate[c] > 0))
+            return mcs_node_error(get(cv, "rate"), err, MCS_ERR_RANGE, "must be > 0");
+        mcs_status st = read_table(get(cv, "points"), d->foam_curve[c], &d->foam_npoint[c], err);
+        if (st) return st;
+    }
+    return MCS_OK;
+}
+
+mcs_status s3_solid_material(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
+{
+    const char *model = mcs_node_str(get(mat, "model"));
+    d->density = mcs_node_num(get(mat, "density"));
+    d->youngs_modulus = mcs_node_num(get(mat, "youngs_modulus"));
+    if (model && strcmp(model, "foam") == 0) {
+        d->model = FE_MAT_FOAM;
+        return read_foam(mat, d, err);
+    }
+    if (model && strcmp(model, "rigid") == 0) {
+        d->model = FE_MAT_RIGID;
+        d->poisson = mcs_node_num(get(mat, "poisson"));
+        return MCS_OK;
+    }
+    return mcs_node_error(get(mat, "model"), err, MCS_ERR_UNSUPPORTED,
+                          "material model '%s' not supported yet", model ? model : "?");
+}

@@ -11,5 +11,7 @@
 void s3_solid_opts(const mcs_node *root, fe_opts *opts);
 /* fe.springs and fe.masses, after the parts */
 mcs_status s3_solid_add(fe_builder *b, const mcs_node *fe, mcs_error *err);
+/* material models foam and rigid (s3_build's read_material hands them over) */
+mcs_status s3_solid_material(const mcs_node *mat, fe_material_desc *d, mcs_error *err);
 
 #endif

@@ -311,12 +311,12 @@ static void test_unsupported_is_located(void)
                     "      mesh: {generate: box, size: [1, 1, 1], divisions: [1, 1, 1]}\n"
                     "      section: {type: solid}\n"
                     "      material: {model: foam, density: 30, youngs_modulus: 1 MPa,\n"
-                    "                 stress_strain: [[0, 0], [0.5, 0.1 MPa]]}\n");
+                    "                 stress_strain: [[0, 0], [0.5, 0.1 MPa]], damping: 0.1}\n");
     snprintf(args, sizeof args, "stage3 %s -o %s", scn, out);
     r = cli_run(args);
     CHECK(r->status == 2);
-    CHECK_STR_CONTAINS(r->err, "foam.yaml:9:25: error: fe.parts[0].material.model");
-    CHECK_STR_CONTAINS(r->err, "material model 'foam' not supported yet");
+    CHECK_STR_CONTAINS(r->err, "foam.yaml:10:68: error: fe.parts[0].material.damping");
+    CHECK_STR_CONTAINS(r->err, "foam damping not supported yet");
     r = cli_run("stage3 scenarios/verification/no_such_file.yaml");
     CHECK(r->status == 2);
     r = cli_run("stage3");

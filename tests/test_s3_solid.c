@@ -109,12 +109,88 @@ static void test_spring_keys_located(void)
     CHECK_STR_CONTAINS(r->err, "both ends are fixed anchors");
 }
 
+/* a 20 mm foam cube crushed to 50 % at 1/s (a prescribed top velocity) with two rate curves:
+ * the internal energy is V0 int_0^0.5 S(e) de of the 1/s curve (the loading curve of that rate) */
+static void test_foam_pad_crush(void)
+{
+    char scn[128], out[128];
+    snprintf(scn, sizeof scn, "%s/foam.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/foam.h5", tmpdir);
+    write_text(scn, "mcrash: 1\nname: foam\nsimulation: {end_time: 0.5 s, output_rate: 1 kHz}\n"
+                    "fe:\n  parts:\n    - name: pad\n"
+                    "      mesh: {generate: box, size: [20 mm, 20 mm, 20 mm], divisions: [1, 1, 1]}\n"
+                    "      section: {type: solid}\n"
+                    "      material:\n"
+                    "        model: foam\n        density: 60 kg/m^3\n        youngs_modulus: 2 MPa\n"
+                    "        curves:\n"
+                    "          - {rate: 1, points: [[0.1, 0.1 MPa], [0.6, 0.2 MPa]]}\n"
+                    "          - {rate: 1000, points: [[0.1, 0.2 MPa], [0.6, 0.4 MPa]]}\n"
+                    "        hysteresis: 0.1\n"
+                    "  boundary:\n"
+                    "    - {part: pad, where: z_min, fix: all}\n"
+                    "    - {part: pad, where: z_max, fix: all, velocity: [0, 0, -20 mm/s]}\n");
+    s3_summary sum;
+    mcs_error err = {0};
+    CHECK(run_file(scn, out, &sum, &err) == MCS_OK);
+    if (err.status) printf("  %s\n", err.msg);
+    mcs_results *h = NULL;
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    double t = last_of(h, "/stage3/time"), e = 0.02 * t / 0.02;
+    /* S = 1e6 e up to 0.1, then 0.1 MPa + 0.2 MPa (e - 0.1) */
+    double w = 0.5 * 1e6 * 0.01 + 0.1e6 * (e - 0.1) + 0.5 * 0.2e6 * (e - 0.1) * (e - 0.1);
+    w *= 8e-6;
+    printf("  foam pad: e %.4f, internal %.6g J, int S de %.6g J\n", e,
+           last_of(h, "/stage3/energy/internal"), w);
+    CHECK(e > 0.45);
+    CHECK_REL(last_of(h, "/stage3/energy/internal"), w, 2e-3);
+    mcs_results_close(&h);
+}
+
+/* a rigid steel block at 3 m/s onto a penalty floor (rigid
+ * parts feel penalty walls): after the contact it leaves upwards; the energy balance holds */
+static void test_rigid_block_drop(void)
+{
+    char scn[128], out[128];
+    snprintf(scn, sizeof scn, "%s/rigid.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/rigid.h5", tmpdir);
+    write_text(scn, "mcrash: 1\nname: rigid\nsimulation: {end_time: 6 ms, time_step: 5 us}\n"
+                    "fe:\n  parts:\n    - name: block\n"
+                    "      mesh: {generate: box, size: [20 mm, 20 mm, 20 mm], divisions: [2, 2, 2],"
+                    " origin: [0, 0, 1 mm]}\n"
+                    "      section: {type: solid}\n"
+                    "      material: {model: rigid, density: 7850, youngs_modulus: 210 GPa, poisson: 0.3}\n"
+                    "      initial_velocity: [0, 0, -3 m/s]\n"
+                    "  rigid_walls: [{name: floor, point: [0, 0, 0], normal: [0, 0, 1], method: penalty}]\n");
+    s3_summary sum;
+    mcs_error err = {0};
+    CHECK(run_file(scn, out, &sum, &err) == MCS_OK);
+    if (err.status) printf("  %s\n", err.msg);
+    CHECK(sum.energy_drift < 0.01);
+    mcs_results *h = NULL;
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    mcs_array f = {0};
+    mcs_error e2 = {0};
+    CHECK(mcs_results_read(h, "/stage3/rigidwall/floor/force", &f, &e2) == MCS_OK);
+    double fmax_ = 0;
+    for (size_t i = 0; i < f.n; i++) fmax_ = fmax(fmax_, f.v[i]);
+    CHECK(fmax_ > 0);
+    mcs_array_free(&f);
+    /* after the bounce the kinetic energy is back (elastic penalty): 1/2 M v^2 within 2 % */
+    double M = 7850 * 8e-6, ke = last_of(h, "/stage3/energy/kinetic");
+    CHECK_REL(ke, 0.5 * M * 9, 0.02);
+    mcs_results_close(&h);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_s3s_XXXXXX");
     if (!mkdtemp(tmpdir)) return 1;
     RUN(test_free_fall_with_mass);
     RUN(test_spring_keys_located);
+    RUN(test_foam_pad_crush);
+    RUN(test_rigid_block_drop);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     if (system(cmd) != 0) return 1;

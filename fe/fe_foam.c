@@ -1,0 +1,229 @@
+/* fe_foam: rate-dependent, hysteretic low-density foam for hex8 (in the spirit of what users
+ * know as LS-DYNA *MAT_FU_CHANG_FOAM (083) and *MAT_LOW_DENSITY_FOAM (057); this is our own
+ * formulation, described here in full).
+ *
+ * Kinematics: the deformation gradient F (t = 0 -> t) at the element centre, the left stretch
+ * from B = F F^T = sum_i lambda_i^2 n_i n_i^T (Jacobi eigen-decomposition). Poisson's ratio is
+ * 0: each principal direction is uniaxial, independent of the others.
+ * Per direction, engineering compressive strain e_i = 1 - lambda_i and nominal stress
+ * (force per undeformed area):
+ *   loading (e_i >= e_max, the largest compressive strain the element has seen):
+ *       s_i = S(e_i, rate)
+ *   unloading and reloading below e_max:
+ *       s_i = S(e_i, rate) [HU + (1 - HU) (e_i / e_max)^shape]
+ *     (HU = hysteresis in (0, 1]: 1 gives no hysteresis; the energy lost per cycle is the
+ *      area between the loading and the unloading curve, and unloading ends at zero stress
+ *      at zero strain, as a foam that recovers fully);
+ *   tension (e_i < 0): s_i = -E e_i, capped at tension_cutoff when that is > 0.
+ * S(e, rate) interpolates the loading curves linearly in log(rate) between the two tables
+ * that bracket the rate (the lowest and highest table beyond the ends); each table is
+ * piecewise linear, from (0, 0) to its first point, its last segment continued.
+ * The rate is the engineering strain rate of the fastest principal direction,
+ * max_i |lambda_i n_i.D.n_i|, averaged over about 12 cycles (fe_rate_filter, as for J2).
+ * Cauchy stress: sigma = sum_i sigma_i n_i n_i^T with sigma_i = -s_i / (lambda_j lambda_k)
+ * (compression negative). The stable step uses the stiffest of E and the tables' slopes. */
+#include "fe/fe_elem.h"
+#include "fe/fe_solid.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+mcs_status fe_foam_check(const fe_part_desc *d, mcs_error *err)
+{
+    const fe_material_desc *m = &d->material;
+    const char *n = d->name;
+    if (d->section.type != FE_SECTION_SOLID)
+        return MCS_ERR(err, MCS_ERR_TYPE, "fe: part '%s': foam is for solid (hex8) sections", n);
+    if (m->poisson != 0)
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: part '%s': foam: poisson must be 0 (each principal direction is "
+                       "uniaxial), got %g",
+                       n, m->poisson);
+    if (m->nfoam_curve < 1 || m->nfoam_curve > FE_FOAM_NCURVE)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': foam: 1..%d loading curves, got %d",
+                       n, FE_FOAM_NCURVE, m->nfoam_curve);
+    if (!(m->foam_hysteresis >= 0 && m->foam_hysteresis <= 1) || !(m->foam_shape >= 0) ||
+        !(m->foam_tension_cutoff >= 0) || !isfinite(m->foam_shape) ||
+        !isfinite(m->foam_tension_cutoff))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: part '%s': foam: hysteresis in (0, 1], shape and tension_cutoff >= 0",
+                       n);
+    for (int c = 0; c < m->nfoam_curve; c++) {
+        double r = m->foam_rate[c];
+        if (m->nfoam_curve > 1 && (!(r > 0) || !isfinite(r) || (c > 0 && !(r > m->foam_rate[c - 1]))))
+            return MCS_ERR(err, MCS_ERR_RANGE,
+                           "fe: part '%s': foam: curve %d: strain rates must be > 0 and increase",
+                           n, c);
+        int np = m->foam_npoint[c];
+        if (np < 1 || np > FE_CURVE_MAX)
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': foam: curve %d: 1..%d points", n,
+                           c, FE_CURVE_MAX);
+        for (int i = 0; i < np; i++) {
+            double e = m->foam_curve[c][i][0], s = m->foam_curve[c][i][1];
+            double e0 = i ? m->foam_curve[c][i - 1][0] : 0, s0 = i ? m->foam_curve[c][i - 1][1] : 0;
+            if (!(e >= 0 && e < 1) || !(s >= 0) || !isfinite(s) || (i > 0 && !(e > e0)) ||
+                (i == 0 && e == 0 && s != 0) || s < s0)
+                return MCS_ERR(err, MCS_ERR_RANGE,
+                               "fe: part '%s': foam: curve %d point %d: strain in [0, 1) "
+                               "increasing, stress >= 0 not decreasing, (0, 0) at zero strain",
+                               n, c, i);
+        }
+    }
+    return MCS_OK;
+}
+
+/* one table: stress at strain e >= 0 and its slope; (0, 0) is the implicit first point */
+static double table(const fe_material_desc *m, int c, double e, double *slope)
+{
+    const double(*t)[2] = m->foam_curve[c];
+    int np = m->foam_npoint[c];
+    double x0 = 0, y0 = 0, x1 = t[0][0], y1 = t[0][1];
+    int i = 0;
+    if (x1 == 0) { /* the table starts at (0, 0) */
+        if (np == 1) {
+            *slope = 0;
+            return 0;
+        }
+        x1 = t[1][0], y1 = t[1][1], i = 1;
+    }
+    while (e > x1 && i + 1 < np) {
+        x0 = x1, y0 = y1;
+        i++;
+        x1 = t[i][0], y1 = t[i][1];
+    }
+    *slope = (y1 - y0) / (x1 - x0);
+    return y0 + *slope * (e - x0);
+}
+
+/* loading stress S(e, rate) [Pa] */
+static double loading(const fe_material_desc *m, double e, double rate)
+{
+    double k;
+    int n = m->nfoam_curve;
+    if (n == 1 || rate <= m->foam_rate[0]) return table(m, 0, e, &k);
+    if (rate >= m->foam_rate[n - 1]) return table(m, n - 1, e, &k);
+    int c = 0;
+    while (rate > m->foam_rate[c + 1]) c++;
+    double w = log(rate / m->foam_rate[c]) / log(m->foam_rate[c + 1] / m->foam_rate[c]);
+    return (1 - w) * table(m, c, e, &k) + w * table(m, c + 1, e, &k);
+}
+
+void fe_foam_derive(fe_part *p)
+{
+    const fe_material_desc *m = &p->material;
+    double kmax = m->youngs_modulus;
+    for (int c = 0; c < m->nfoam_curve; c++) {
+        double x0 = 0, y0 = 0;
+        for (int i = 0; i < m->foam_npoint[c]; i++) {
+            double x1 = m->foam_curve[c][i][0], y1 = m->foam_curve[c][i][1];
+            if (x1 > x0) kmax = fmax(kmax, (y1 - y0) / (x1 - x0));
+            x0 = x1, y0 = y1;
+        }
+    }
+    p->wave_speed = sqrt(kmax / m->density);
+}
+
+/* eigenvalues d and eigenvectors (columns of v) of a symmetric 3x3 matrix (cyclic Jacobi) */
+static void sym_eigen(const double a_in[3][3], double d[3], double v[3][3])
+{
+    double a[3][3];
+    memcpy(a, a_in, sizeof a);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) v[i][j] = i == j;
+    for (int sweep = 0; sweep < 50; sweep++) {
+        double off = fabs(a[0][1]) + fabs(a[0][2]) + fabs(a[1][2]);
+        double scale = fabs(a[0][0]) + fabs(a[1][1]) + fabs(a[2][2]);
+        if (off <= 1e-15 * scale || off == 0) break;
+        for (int p = 0; p < 2; p++)
+            for (int q = p + 1; q < 3; q++) {
+                if (a[p][q] == 0) continue;
+                double th = 0.5 * (a[q][q] - a[p][p]) / a[p][q];
+                double t = copysign(1.0, th) / (fabs(th) + sqrt(th * th + 1));
+                double c = 1 / sqrt(t * t + 1), s = t * c;
+                for (int k = 0; k < 3; k++) { /* a <- a J */
+                    double akp = a[k][p], akq = a[k][q];
+                    a[k][p] = c * akp - s * akq;
+                    a[k][q] = s * akp + c * akq;
+                }
+                for (int k = 0; k < 3; k++) { /* a <- J^T a */
+                    double apk = a[p][k], aqk = a[q][k];
+                    a[p][k] = c * apk - s * aqk;
+                    a[q][k] = s * apk + c * aqk;
+                }
+                for (int k = 0; k < 3; k++) {
+                    double vkp = v[k][p], vkq = v[k][q];
+                    v[k][p] = c * vkp - s * vkq;
+                    v[k][q] = s * vkp + c * vkq;
+                }
+            }
+    }
+    for (int i = 0; i < 3; i++) d[i] = a[i][i];
+}
+
+void fe_foam_stress(const fe_part *p, const double F[3][3], const double L[3][3], double sig[6],
+                    double *emax, double *rate)
+{
+    const fe_material_desc *m = &p->material;
+    double B[3][3], d[3], n[3][3], lam[3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            B[i][j] = F[i][0] * F[j][0] + F[i][1] * F[j][1] + F[i][2] * F[j][2];
+    sym_eigen(B, d, n);
+    /* engineering strain rate of the fastest principal direction */
+    double r = 0;
+    for (int i = 0; i < 3; i++) {
+        lam[i] = sqrt(fmax(d[i], 0));
+        double dn = 0;
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) dn += n[a][i] * 0.5 * (L[a][b] + L[b][a]) * n[b][i];
+        r = fmax(r, fabs(lam[i] * dn));
+    }
+    *rate = fe_rate_filter(*rate, r);
+    const double hu = m->foam_hysteresis > 0 ? m->foam_hysteresis : 1;
+    const double shape = m->foam_shape > 0 ? m->foam_shape : 1;
+    const double em = *emax;
+    double emax_new = em, si[3];
+    for (int i = 0; i < 3; i++) {
+        double e = 1 - lam[i], s;
+        if (e > 0) {
+            s = loading(m, e, *rate);
+            if (e < em) s *= hu + (1 - hu) * pow(e / em, shape);
+            emax_new = fmax(emax_new, e);
+            s = -s;
+        } else {
+            s = -m->youngs_modulus * e;
+            if (m->foam_tension_cutoff > 0) s = fmin(s, m->foam_tension_cutoff);
+        }
+        double area = lam[(i + 1) % 3] * lam[(i + 2) % 3];
+        si[i] = area > 0 ? s / area : 0;
+    }
+    *emax = emax_new;
+    static const int ia[6] = {0, 1, 2, 0, 1, 2}, ib[6] = {0, 1, 2, 1, 2, 0};
+    for (int k = 0; k < 6; k++) {
+        double v = 0;
+        for (int i = 0; i < 3; i++) v += si[i] * n[ia[k]][i] * n[ib[k]][i];
+        sig[k] = v;
+    }
+}
+
+void fe_hex_deformation(const double x0[8][3], const double x[8][3], double F[3][3])
+{
+    double b0[8][3], a[8][3];
+    (void)fe_hex_gradients(x0, b0, a);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double v = 0;
+            for (int n = 0; n < 8; n++) v += x[n][i] * b0[n][j];
+            F[i][j] = v;
+        }
+}
+
+void fe_foam_hex(const fe_model *m, const fe_part *p, const int *conn, const double xe[8][3],
+                 const double L[3][3], double sig[6], double *emax, double *rate)
+{
+    double x0[8][3], F[3][3];
+    for (int n = 0; n < 8; n++) memcpy(x0[n], m->node_x0 + 3 * conn[n], sizeof x0[n]);
+    fe_hex_deformation(x0, xe, F);
+    fe_foam_stress(p, F, L, sig, emax, rate);
+}

@@ -1,0 +1,213 @@
+/* test_fe_foam: the rate-dependent hysteretic foam (fe_foam.c) in one hex8 compressed at a
+ * prescribed constant engineering strain rate: the loading curve of that rate, the log-rate
+ * interpolation between two curves, the hysteresis loop area, tension, input checks. */
+#include "tests/harness.h"
+#include "tests/fe_test_util.h"
+
+#include "fe/fe_solid.h"
+
+#define L0 0.01 /* cube edge [m] */
+
+/* loading table at 1/s: nominal stress vs engineering strain (first point: (0, 0) implied) */
+static const double tab1[][2] = {{0.05, 50e3}, {0.5, 80e3}, {0.7, 200e3}, {0.8, 600e3}};
+enum { NT = 4 };
+
+/* reference of the tables: piecewise linear through (0,0) and the points, last slope on */
+static double ref_table(double e, double scale)
+{
+    double x0 = 0, y0 = 0;
+    for (int i = 0; i < NT; i++) {
+        double x1 = tab1[i][0], y1 = scale * tab1[i][1];
+        if (e <= x1 || i == NT - 1) return y0 + (y1 - y0) / (x1 - x0) * (e - x0);
+        x0 = x1, y0 = y1;
+    }
+    return 0;
+}
+
+static fe_part_desc foam_part(double hu, double shape)
+{
+    fe_part_desc d = ft_part("pad", FE_SECTION_SOLID, 1e6, 0, 50);
+    d.material.model = FE_MAT_FOAM;
+    d.mesh.generate = FE_MESH_BOX;
+    d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = L0;
+    d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 1;
+    d.material.nfoam_curve = 2;
+    d.material.foam_rate[0] = 1;
+    d.material.foam_rate[1] = 100; /* 1.5 x the stresses at 1/s */
+    for (int c = 0; c < 2; c++) {
+        d.material.foam_npoint[c] = NT;
+        for (int i = 0; i < NT; i++) {
+            d.material.foam_curve[c][i][0] = tab1[i][0];
+            d.material.foam_curve[c][i][1] = (c ? 1.5 : 1) * tab1[i][1];
+        }
+    }
+    d.material.foam_hysteresis = hu;
+    d.material.foam_shape = shape;
+    return d;
+}
+
+/* one cube, bottom held, top moving at -v along z (all dofs prescribed) */
+static fe_model *cube(double hu, double shape, double v)
+{
+    fe_builder *b;
+    mcs_error err = {0};
+    if (fe_builder_create(&b, &err)) return NULL;
+    fe_part_desc d = foam_part(hu, shape);
+    fe_model *m = NULL;
+    if (fe_builder_add_part(b, &d, NULL, &err) == MCS_OK) {
+        fe_boundary_desc lo = ft_bc("pad", FE_WHERE_Z_MIN, FE_DOF_ALL);
+        fe_boundary_desc hi = ft_bc("pad", FE_WHERE_Z_MAX, FE_DOF_ALL);
+        hi.velocity[2] = -v;
+        fe_builder_add_boundary(b, &lo, &err);
+        fe_builder_add_boundary(b, &hi, &err);
+        if (fe_model_create(b, NULL, &m, &err)) fprintf(stderr, "%s\n", err.msg);
+    } else {
+        fprintf(stderr, "%s\n", err.msg);
+    }
+    fe_builder_destroy(&b);
+    return m;
+}
+
+static void set_top_velocity(fe_model *m, double vz)
+{
+    for (int n = 0; n < m->nnode; n++)
+        if (m->node_x0[3 * n + 2] > 0.5 * L0) m->node_vfix[3 * n + 2] = vz;
+}
+
+/* compression at 1/s follows the 1/s table; at 100/s the 100/s one; at 10/s (the middle of
+ * the two in log rate) their mean: sigma_zz = -S(e, rate), lateral stresses 0 (nu = 0) */
+static void test_loading_curves_and_rate(void)
+{
+    const double rates[3] = {1, 100, 10}, scale[3] = {1, 1.5, 1.25};
+    for (int k = 0; k < 3; k++) {
+        const double v = rates[k] * L0;
+        fe_model *m = cube(1, 1, v);
+        CHECK(m != NULL);
+        if (!m) return;
+        fe_state *s = NULL;
+        mcs_error err = {0};
+        CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+        double maxrel = 0, maxlat = 0;
+        int n = 0;
+        while (v * s->time < 0.75 * L0 && fe_step(m, s) == MCS_OK) {
+            double e = v * s->energy_time / L0;
+            if (e < 0.25) continue; /* the rate average has settled (12-step filter) */
+            double ref = ref_table(e, scale[k]);
+            maxrel = fmax(maxrel, fabs(-s->hex_sig[2] - ref) / ref);
+            maxlat = fmax(maxlat, fabs(s->hex_sig[0]) + fabs(s->hex_sig[1]) + fabs(s->hex_sig[3]));
+            n++;
+        }
+        CHECK(s->err.status == MCS_OK);
+        CHECK(n > 50);
+        printf("  foam at %g/s: %d samples, max |sigma/S - 1| = %.2e\n", rates[k], n, maxrel);
+        CHECK(maxrel < 1e-3);
+        CHECK(maxlat < 1e-6 * 80e3);
+        /* the balance closes: constraint work = internal energy (+ kinetic, bulk viscosity) */
+        CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-2 * s->energy[FE_E_internal]);
+        fe_state_destroy(&s);
+        fe_model_destroy(&m);
+    }
+}
+
+/* load to e_max = 0.6 at 1/s, unload at 1/s to 0: the unloading stress is
+ * S(e) [HU + (1 - HU)(e/e_max)^shape] and the energy left in the element (internal energy at
+ * zero strain) is the loop area V0 (1 - HU) int_0^e_max S(e) (1 - (e/e_max)^shape) de */
+static void test_hysteresis_loop(void)
+{
+    const double hu = 0.2, shape = 2, v = 1 * L0, emax = 0.6;
+    fe_model *m = cube(hu, shape, v);
+    CHECK(m != NULL);
+    if (!m) return;
+    fe_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    /* load to the step where the strain reaches e_max, then reverse the top */
+    while (v * s->time < emax * L0 && fe_step(m, s) == MCS_OK) {
+    }
+    double treverse = s->time, eturn = v * treverse / L0; /* x(t_n+1): the turning strain */
+    set_top_velocity(m, +v);
+    double maxrel = 0;
+    int n = 0;
+    while (s->time < 2 * treverse && fe_step(m, s) == MCS_OK) {
+        double e = eturn - v * (s->energy_time - treverse) / L0;
+        if (s->energy_time <= treverse + 1e-12 || e < 0.05) continue;
+        double ref = ref_table(e, 1) * (hu + (1 - hu) * pow(e / eturn, shape));
+        maxrel = fmax(maxrel, fabs(-s->hex_sig[2] - ref) / ref);
+        n++;
+    }
+    CHECK(s->err.status == MCS_OK);
+    CHECK(n > 100);
+    CHECK(maxrel < 1e-3);
+    CHECK_REL(s->hex_epsp[0], eturn, 1e-9); /* e_max history */
+    /* loop area by Simpson's rule on a fine grid (the integrand is smooth per segment) */
+    const int N = 200000;
+    double area = 0, h = eturn / N;
+    for (int i = 0; i <= N; i++) {
+        double e = i * h, f = ref_table(e, 1) * (1 - pow(e / eturn, shape));
+        area += (i == 0 || i == N ? 1 : i % 2 ? 4 : 2) * f;
+    }
+    area *= (1 - hu) * h / 3 * L0 * L0 * L0;
+    double eint = s->energy[FE_E_internal];
+    printf("  foam loop: internal energy %.6g J, loop area %.6g J (%+.3f %%)\n", eint, area,
+           100 * (eint / area - 1));
+    CHECK_REL(eint, area, 0.01);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+}
+
+/* stretched: nominal stress E (lambda - 1), Cauchy the same (lateral stretches 1) */
+static void test_tension_linear(void)
+{
+    const double v = 1 * L0;
+    fe_model *m = cube(1, 1, -v); /* top moves up */
+    CHECK(m != NULL);
+    if (!m) return;
+    fe_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    while (v * s->time < 0.1 * L0 && fe_step(m, s) == MCS_OK) {
+    }
+    double e = v * s->energy_time / L0;
+    CHECK_REL(s->hex_sig[2], 1e6 * e, 1e-9);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+}
+
+static void test_foam_input_checks(void)
+{
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc d = foam_part(1, 1);
+    d.material.poisson = 0.2;
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_ERR_RANGE);
+    CHECK_STR_CONTAINS(err.msg, "poisson must be 0");
+    d = foam_part(1, 1);
+    d.material.foam_rate[1] = 0.5; /* not increasing */
+    mcs_error e2 = {0};
+    CHECK(fe_builder_add_part(b, &d, NULL, &e2) == MCS_ERR_RANGE);
+    CHECK_STR_CONTAINS(e2.msg, "strain rates must be > 0 and increase");
+    d = foam_part(1, 1);
+    d.material.foam_curve[0][2][1] = 10e3; /* stress decreases */
+    mcs_error e3 = {0};
+    CHECK(fe_builder_add_part(b, &d, NULL, &e3) == MCS_ERR_RANGE);
+    CHECK_STR_CONTAINS(e3.msg, "curve 0 point 2");
+    d = foam_part(1.5, 1);
+    mcs_error e4 = {0};
+    CHECK(fe_builder_add_part(b, &d, NULL, &e4) == MCS_ERR_RANGE);
+    d = foam_part(1, 1);
+    d.section.type = FE_SECTION_SHELL;
+    d.section.thickness = 0.01;
+    mcs_error e5 = {0};
+    CHECK(fe_builder_add_part(b, &d, NULL, &e5) == MCS_ERR_TYPE);
+    fe_builder_destroy(&b);
+}
+
+int main(void)
+{
+    RUN(test_loading_curves_and_rate);
+    RUN(test_hysteresis_loop);
+    RUN(test_tension_linear);
+    RUN(test_foam_input_checks);
+    TEST_END();
+}

@@ -188,11 +188,24 @@ static const mcs_skey cylinder_keys[] = {
     V("axis", NONE, 3, 3, REQ | NZ, 0, "axis direction"),
     END,
 };
+/* a triangle mesh in the body frame: inline, or an OBJ file (core/mcs_obj.h); checked by
+ * mcs_rule_facet (one of the two forms, indices in range, lengths converted) */
+static const mcs_skey facet_keys[] = {
+    A("vertices", 0, "points [[x, y, z], ...] in the body frame [m]"),
+    A("triangles", 0, "[[i, j, k], ...] 0-based, counter-clockwise seen from outside"),
+    S("file", NE, "OBJ file (v and f lines), relative to this YAML file"),
+    END,
+};
 static const mcs_smap ellipsoid_map = {.what = "ellipsoid surface", .keys = ellipsoid_keys};
 static const mcs_smap plane_map = {.what = "plane surface", .keys = plane_keys};
 static const mcs_smap cylinder_map = {.what = "cylinder surface", .keys = cylinder_keys};
-static const mcs_svariant surface_variants[] = {
-    {"ellipsoid", &ellipsoid_map}, {"plane", &plane_map}, {"cylinder", &cylinder_map}, {0}};
+static const mcs_smap facet_map = {
+    .what = "facet surface", .keys = facet_keys, .check = mcs_rule_facet};
+static const mcs_svariant surface_variants[] = {{"ellipsoid", &ellipsoid_map},
+                                                {"plane", &plane_map},
+                                                {"cylinder", &cylinder_map},
+                                                {"facet", &facet_map},
+                                                {0}};
 
 static const mcs_skey surface_keys[] = {
     D("type", "surface type"),

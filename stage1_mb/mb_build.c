@@ -233,6 +233,7 @@ void mb_model_destroy(mb_model **pm)
         mcs_curve_destroy(&m->chr[i].unloading);
     }
     for (int i = 0; m->own_curves && i < m->npair; i++) mcs_curve_destroy(&m->own_curves[i]);
+    for (int i = 0; m->surf && i < m->nsurf; i++) mb_mesh_destroy(&m->surf[i].mesh);
     free(m->own_curves);
     free(m->body_name), free(m->body), free(m->body_iinv), free(m->surf), free(m->chr), free(m->contact);
     free(m->pair), free(m->joint), free(m->restraint1), free(m->restraint1_name);

@@ -130,9 +130,10 @@ static mcs_status build_surface(const mb_model *m, const mcs_node *n, int body, 
         if ((st = mcs_node_vec3(mcs_node_get(n, "center"), s->center, err))) return st;
         return mb_build_dir(mcs_node_get(n, "axis"), s->normal, err);
     }
+    if (ty && strcmp(ty, "facet") == 0) return mb_build_facet(n, s, err);
     return mcs_node_error(n, err, MCS_ERR_UNSUPPORTED,
                           "surface type '%s' is not built yet in stage 1 (ellipsoid, plane, "
-                          "cylinder)", ty ? ty : "?");
+                          "cylinder, facet)", ty ? ty : "?");
 }
 
 mcs_status mb_build_surfaces(const mcs_node *root, mb_model *m, mcs_error *err)

@@ -20,6 +20,8 @@ void mb_build_cardan(const double rpy[3], double R[9]);
 
 mcs_status mb_build_chars(const mcs_node *root, mb_model *m, mcs_error *err);
 mcs_status mb_build_surfaces(const mcs_node *root, mb_model *m, mcs_error *err);
+/* a facet surface's mesh from its vertices/triangles or OBJ file (mb_build_facet.c) */
+mcs_status mb_build_facet(const mcs_node *n, mb_surface *s, mcs_error *err);
 mcs_status mb_build_contacts(const mcs_node *root, mb_model *m, mcs_error *err);
 mcs_status mb_build_joints(const mcs_node *root, mb_model *m, mcs_error *err);
 mcs_status mb_build_attachments(const mcs_node *root, mb_model *m, mcs_error *err);

@@ -13,6 +13,7 @@
  *     angular momentum are kept.
  * Energy: the hysteresis element integrates its work exactly in x; the damper dissipates
  * (F - F_h) x' h per step, friction mu_eff F u h. */
+#include "stage1_mb/mb_facet.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -79,6 +80,10 @@ static void detect_pair(const mb_model *m, mb_state *s, int i)
     }
     mb_ellipsoid ea;
     place_ellipsoid(sa, kin_of(s, p->ba), &ea);
+    if (sb->type == MB_SURF_FACET) {
+        mb_facet_detect(&ea, sb, kin_of(s, p->bb), c);
+        return;
+    }
     if (sb->type == MB_SURF_PLANE) {
         mb_plane pl;
         place_plane(sb, kin_of(s, p->bb), &pl);

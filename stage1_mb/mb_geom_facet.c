@@ -455,6 +455,7 @@ int mb_geom_ellipsoid_mesh_deepest(const mb_ellipsoid *a, const mb_mesh *m, cons
     }
     /* the largest plane depth first (usually the face contact), then only those that can
      * still beat the best found */
+    if (nc == 0) return 0; /* no candidate (cand and dp unset) */
     int first = 0;
     for (int i = 1; i < nc; i++)
         if (dp[i] > dp[first]) first = i;

@@ -42,7 +42,7 @@ typedef struct {
 
 mb_opts mb_opts_default(void);
 
-typedef enum { MB_SURF_ELLIPSOID, MB_SURF_PLANE, MB_SURF_CYLINDER } mb_surf_type;
+typedef enum { MB_SURF_ELLIPSOID, MB_SURF_PLANE, MB_SURF_CYLINDER, MB_SURF_FACET } mb_surf_type;
 
 typedef struct {
     char name[MB_NAME]; /* surface name or "<body>.surfaces[i]"                            */
@@ -56,6 +56,7 @@ typedef struct {
     double tube;        /* cylinder: tube radius L/2 (rounded tyre profile) [m]             */
     int sphere;         /* 1: all semi-axes equal (exact sphere-sphere geometry)             */
     int chr;            /* characteristic index, -1 = none (rigid: the contact's applies)   */
+    mb_mesh *mesh;      /* facet: triangles in the body frame, AABB tree (owned), else NULL */
 } mb_surface;
 
 typedef struct {

@@ -381,7 +381,7 @@ static void test_413(void)
     print_car("413-0/13.4 sedan", &f);
     double common = 208 * 13.4 / (208 + 1668.0);
     CHECK_NEAR(f.m_moto, 208, 1e-9);
-    CHECK_NEAR(f.m_opp, 1668, 1e-9);
+    CHECK_NEAR(f.m_opp, 1668, 1e-9); /* body, upper body, four wheels */
     CHECK_NEAR(f.t_contact, 0.005 / 13.4, 2e-5);
     CHECK(f.vcar_max <= common);
     CHECK(f.vcar_max > 0.5 * common);

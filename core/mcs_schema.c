@@ -329,7 +329,7 @@ static const mcs_skey sensor_keys[] = {
      * (J211: the part above the cell), about `point` of `frame`, on the frame's axes */
     S("joint", 0, "load_cell: joint whose load is measured"),
     R("frame", BODY, 0, "load_cell: body carrying the cell's point and axes (default: body)"),
-    V("orientation", ANG, 3, 3, 0, 0, "sensor axes in the body frame: roll, pitch, yaw [rad]"),
+    V("orientation", ANG, 3, 3, 0, 0, "load_cell: cell axes in the frame body: roll, pitch, yaw"),
     END,
 };
 static const mcs_smap sensor_map = {

@@ -62,6 +62,7 @@ class Model:
         self.joints = []   # dict
         self.mounts = []   # (name, body, point in body frame)
         self.sensors = []  # dict
+        self.cell = {}     # load-cell points in body frames
 
     def body(self, name, mass, inertia, cg, surfaces, comment):
         self.bodies.append((name, mass, inertia, cg, surfaces, comment))
@@ -227,6 +228,8 @@ def build(neck7=False):
                      [ellipsoid("rider_foot_" + side, sub((heel[0] + Lft / 2, heel[1], an[2] - 0.045), ft_cg),
                                 (0.13, 0.05, 0.04), "rider_limb")],
                      "de Leva foot (heel to toe tip)")
+        md.cell["thigh_" + side] = (Lt / 2 - ct * Lt, 0, 0)
+        md.cell["shank_" + side] = (0, 0, cs * Ls - 0.07)
         md.joints.append(dict(name="rider_hip_" + side, type="spherical", parent="rider_pelvis",
                               child="rider_thigh_" + side, anchor=hip, restraint="rider_hip"))
         # flexion positive: the hinge axis +y turns the lower leg backward
@@ -340,6 +343,20 @@ def write(md, path, title, header):
     out.append("  - {name: head, body: rider_head, type: acceleration, cfc: 1000}")
     out.append("  - {name: chest, body: rider_upper_torso, type: acceleration, cfc: 180}")
     out.append("  - {name: pelvis, body: rider_pelvis, type: acceleration, cfc: 1000}")
+    # upper-neck load cell: 17.78 mm above the occipital condyle (the H3's M_oc = My - 0.01778 Fx,
+    # analysis/an_nij.c), the OC 35 mm below the head CG; loads on the head
+    out.append("  - {name: neck, type: load_cell, body: rider_head, joint: rider_upper_neck, "
+               "point: [0, 0, %s], cfc: 600}" % f(-0.035 + 0.01778))
+    for side, lr in (("l", "left"), ("r", "right")):
+        th, sk = md.cell["thigh_" + side], md.cell["shank_" + side]
+        # femur: loads on the thigh through the knee (the part above the cell), at mid-femur,
+        # axes of a standing femur (J211 z down the femur towards the knee): pitch -90 deg
+        out.append("  - {name: femur_%s, type: load_cell, body: rider_thigh_%s, joint: rider_knee_%s, "
+                   "point: %s, orientation: [0, -90 deg, 0], cfc: 600}" % (lr, side, side, vec(th)))
+        # upper tibia: loads on the part above (the thigh) through the knee, at a point of the
+        # lower leg 70 mm below the knee, on the lower leg's axes
+        out.append("  - {name: tibia_%s, type: load_cell, body: rider_thigh_%s, frame: rider_lower_leg_%s, "
+                   "joint: rider_knee_%s, point: %s, cfc: 600}" % (lr, side, side, side, vec(sk)))
     with open(path, "w") as fh:
         fh.write("\n".join(out) + "\n")
     return tot

@@ -4,6 +4,7 @@
  * gravity 9.81 m/s^2 along -z. */
 #include "stage1_mb/mb_build_internal.h"
 #include "stage1_mb/mb_impact.h"
+#include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_position.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -174,9 +175,13 @@ static mcs_status build_sensors(const mcs_node *root, mb_model *m, mcs_error *er
     m->nsensor = mcs_node_len(list);
     m->sensor = MB_NEW(mb_sensor, m->nsensor);
     if (!m->sensor) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
-    for (int i = 0; i < m->nsensor; i++) {
+    int nsens = m->nsensor;
+    m->nsensor = 0;
+    for (int i = 0; i < nsens; i++) {
         const mcs_node *n = mcs_node_at(list, i);
-        mb_sensor *s = &m->sensor[i];
+        const char *lct = mcs_node_str(mcs_node_get(n, "type"));
+        if (lct && strcmp(lct, "load_cell") == 0) continue; /* mb_loadcell.c */
+        mb_sensor *s = &m->sensor[m->nsensor++];
         snprintf(s->name, MB_NAME, "%s", mcs_node_str(mcs_node_get(n, "name")));
         s->body = mb_build_body_ref(m, mcs_node_get(n, "body"));
         const char *ty = mcs_node_str(mcs_node_get(n, "type"));
@@ -215,6 +220,7 @@ mcs_status mb_model_build(const mcs_scenario *scn, const mb_opts *opts, mb_model
     if (!st) st = mb_build_attachments(root, m, err);
     if (!st) st = mb_position_attach(root, m, err);
     if (!st) st = build_sensors(root, m, err);
+    if (!st) st = mb_build_loadcells(root, m, err);
     if (!st) st = mb_impact_apply(root, m, err); /* last: places the built motorcycle group */
     if (st) {
         mb_model_destroy(&m);
@@ -239,6 +245,7 @@ void mb_model_destroy(mb_model **pm)
     free(m->pair), free(m->joint), free(m->restraint1), free(m->restraint1_name);
     free(m->restraint3), free(m->restraint3_name), free(m->attach), free(m->attach_name);
     free(m->sensor);
+    free(m->loadcell);
     free(m);
     *pm = NULL;
 }

@@ -149,6 +149,8 @@ typedef struct {
     mb_opts opts;
     double rider_residual; /* largest rider mount point to motorcycle mount point distance after
                               seating the rider (mb_position.c) [m]; -1 without a rider: block */
+    int nloadcell;          /* load-cell sensors (mb_loadcell.h)                              */
+    struct mb_loadcell *loadcell; /* (nloadcell)                                              */
 } mb_model;
 
 /* build from a loaded scenario; every error names FILE:LINE:COL and the key */
@@ -245,6 +247,7 @@ struct mb_state {
     double timer[MB_NTIMER];  /* wall time per sub-stage [s]                                */
     int timing;               /* 1: read the clock around sub-stages                        */
     double *rec_chan;         /* contact and joint channels (nout x mb_channels_count) SI    */
+    double *rec_loadcell;     /* (nout x nloadcell x 6), SAE J211, N and N m (mb_loadcell.h) */
 };
 
 #define MB_NENERGY 7

@@ -7,6 +7,7 @@
  * Attributes of /stage1: time_step [s], steps, output_rate [Hz], energy_drift [-]. */
 #include "analysis/an_cfc.h"
 #include "core/mcs_results.h"
+#include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
 
 #include <stdio.h>
@@ -86,6 +87,7 @@ mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r,
     mcs_status st = mcs_results_put_time(r, 1, nt, s->rec_t, err);
     if (!st) st = write_bodies(m, s, r, buf, err);
     if (!st) st = write_channels(m, s, r, buf, err);
+    if (!st) st = mb_loadcell_write(m, s, r, err);
     if (!st) st = write_energy(s, r, buf, err);
     if (!st) st = mb_channels_write(m, s, r, buf, err);
     if (!st) st = mcs_results_set_attr_double(r, "/stage1", "time_step", m->h, err);

@@ -7,6 +7,7 @@
  * SAE J211 sign convention (x forward, y right, z down) from the ISO 8855 body axes
  * (x forward, y left, z up): (x, -y, -z). The first output row (t = 0) carries the
  * accelerations of the first step. */
+#include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -79,6 +80,7 @@ static void record_row(const mb_model *m, const mb_state *s, long row)
     MB_ENERGY_FIELDS(MB_X_COPY)
 #undef MB_X_COPY
     mb_channels_sample(m, s, s->rec_chan + (size_t)row * mb_channels_count(m));
+    mb_loadcell_record(m, s, row);
 }
 
 /* output: at t = 0 and every out_every steps, the bodies, sensors and energies */
@@ -95,6 +97,7 @@ void mb_record(const mb_model *m, mb_state *s)
             sensor_value(s, &m->sensor[i], v);
             memcpy(c->rec_sensor + (size_t)i * 3, v, sizeof v);
         }
+        mb_loadcell_record(m, s, 0); /* t = 0 takes the first step's joint loads too */
     }
     if (s->step % m->out_every != 0 || s->nrec >= m->nout) return;
     record_row(m, s, s->nrec++);

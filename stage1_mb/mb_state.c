@@ -64,7 +64,8 @@ mcs_status mb_state_create(const mb_model *m, mb_state **out, mcs_error *err)
              MB_ALLOC(s->rec_body, no * nb * MB_BODY_ROW) &&
              MB_ALLOC(s->rec_sensor, no * (size_t)m->nsensor * 3) &&
              MB_ALLOC(s->rec_energy, no * MB_NENERGY) &&
-             MB_ALLOC(s->rec_chan, no * (size_t)mb_channels_count(m));
+             MB_ALLOC(s->rec_chan, no * (size_t)mb_channels_count(m)) &&
+             MB_ALLOC(s->rec_loadcell, no * (size_t)m->nloadcell * 6);
     if (!ok) {
         mb_state_destroy(&s);
         return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory for %ld output samples",
@@ -103,6 +104,7 @@ void mb_state_destroy(mb_state **ps)
     free(s->pos0), free(s->rot0);
     free(s->rec_t), free(s->rec_body), free(s->rec_sensor), free(s->rec_energy);
     free(s->rec_chan);
+    free(s->rec_loadcell);
     free(s);
     *ps = NULL;
 }

@@ -3,9 +3,11 @@
  * energies), the speed-up, the stable step and the memory per element. Prints figures; never
  * fails on time. The machine is shared: compare runs made when `uptime` shows a low load. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "fe/fe_contact.h"
 #include "fe/fe_model.h"
 #include "fe/fe_state.h"
 
@@ -82,7 +84,10 @@ static int run(const char *label, fe_builder *b, int cycles)
     double ms = (double)m->bytes / m->nelem, ss = (double)s->bytes / m->nelem;
     fe_state_destroy(&s);
     const double ec = (double)cycles * m->nelem;
-    timing t1 = timed_run(m, 1, cycles), t2 = timed_run(m, 2, cycles);
+    /* BENCH_FE_ONE_THREAD=1 skips the 2-thread run (for profiling: perf stat, perf record) */
+    const char *one = getenv("BENCH_FE_ONE_THREAD");
+    timing t1 = timed_run(m, 1, cycles), t2 = t1;
+    if (!(one && *one == '1')) t2 = timed_run(m, 2, cycles);
     printf("%-34s %5d %8.3g  %6.1f  %6.1f   %5.2fx  %5.0f (model %.0f + state %.0f)\n", label,
            m->nelem, t1.dt, 1e9 * t1.wall / ec, 1e9 * t2.wall / ec, t1.wall / t2.wall, bytes, ms,
            ss);
@@ -126,6 +131,14 @@ int main(void)
     w.point[2] = 0.2, w.normal[2] = -1, w.velocity[2] = -10;
     fe_builder_add_wall(b, &w, &err);
     rc |= run("BT shell, yielding (J2), 5 pts", b, 400);
+    /* the same tube with single-surface (self) contact on it: the comparison case */
+    fe_contact_desc cd = fe_contact_desc_default();
+    snprintf(cd.name, sizeof cd.name, "self");
+    cd.type = FE_CONTACT_SINGLE_SURFACE;
+    cd.nslave = 1;
+    snprintf(cd.slave[0], sizeof cd.slave[0], "tube");
+    fe_builder_add_contact(b, &cd, &err);
+    rc |= run("BT shell, J2, + self contact", b, 400);
     fe_builder_destroy(&b);
     fe_builder_create(&b, &err);
     t.material.model = FE_MAT_ELASTIC;

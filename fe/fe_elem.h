@@ -79,24 +79,38 @@ static inline double fe_ps_flow(const fe_ps_const *k, double epsp, double *slope
  * plastic strain increment and leaves the returned stress in sig. */
 double fe_ps_return(const fe_ps_const *k, double sig[3], double q0sq, double epsp, double rf);
 
-/* the whole plane-stress update with precomputed constants (fe_mat_plane_stress's result);
- * rate only matters with Cowper-Symonds: its factor is computed only when the trial stress
- * exceeds the static flow stress (the factor is >= 1) */
-static inline double fe_ps_update(const fe_ps_const *k, double sig[3], const double de[3],
-                                  double epsp, double rate)
+/* fe_ps_return for n points at once (the same results; the iterations overlap) */
+void fe_ps_return_batch(const fe_ps_const *k, int n, double (*sig)[3], const double *q0sq,
+                        const double *epsp, const double *rf, double *dp);
+
+/* the elastic trial stress (sig += C de); returns 1 when it exceeds the flow stress, with its
+ * von Mises stress squared in *q0sq and the rate factor in *rf. The Cowper-Symonds factor is
+ * computed only when the trial exceeds the static flow stress (the factor is >= 1). */
+static inline int fe_ps_trial(const fe_ps_const *k, double sig[3], const double de[3],
+                              double epsp, double rate, double *q0sq, double *rf)
 {
     sig[0] += k->c * de[0] + k->cnu * de[1];
     sig[1] += k->c * de[1] + k->cnu * de[0];
     sig[2] += k->G * de[2];
     if (!k->plastic) return 0;
     double pp = sig[0] + sig[1], mm = sig[0] - sig[1], tt = sig[2];
-    double q0sq = 0.25 * pp * pp + 0.75 * mm * mm + 3 * tt * tt;
+    double q2 = 0.25 * pp * pp + 0.75 * mm * mm + 3 * tt * tt;
     double h;
     int seg;
     double sy = fe_ps_flow(k, epsp, &h, &seg);
-    if (q0sq <= sy * sy) return 0; /* elastic at the static flow stress: no rate factor */
-    double rf = fe_rate_factor(k->p, rate);
-    if (rf != 1 && q0sq <= rf * rf * sy * sy) return 0;
+    if (q2 <= sy * sy) return 0; /* elastic at the static flow stress: no rate factor */
+    double f = fe_rate_factor(k->p, rate);
+    if (f != 1 && q2 <= f * f * sy * sy) return 0;
+    *q0sq = q2, *rf = f;
+    return 1;
+}
+
+/* the whole plane-stress update with precomputed constants (fe_mat_plane_stress's result) */
+static inline double fe_ps_update(const fe_ps_const *k, double sig[3], const double de[3],
+                                  double epsp, double rate)
+{
+    double q0sq, rf;
+    if (!fe_ps_trial(k, sig, de, epsp, rate, &q0sq, &rf)) return 0;
     return fe_ps_return(k, sig, q0sq, epsp, rf);
 }
 

@@ -86,8 +86,9 @@ double fe_hex_length(const double xe[8][3], double vol)
             d2[i] = xe[face[f][3]][i] - xe[face[f][1]][i];
         }
         fe_cross(d1, d2, c);
-        amax = fmax(amax, 0.5 * sqrt(fe_dot(c, c)));
+        amax = fmax(amax, fe_dot(c, c)); /* squared: one square root below */
     }
+    amax = 0.5 * sqrt(amax);
     return amax > 0 ? vol / amax : 0;
 }
 
@@ -107,6 +108,7 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
     const double dt = s->dt_prev, rho = p->material.density, c0 = p->wave_speed;
     const double mod = p->lambda + 2 * p->mu, qhg = p->hg_coef;
     const int visc = p->section.hourglass == FE_HG_VISCOUS;
+    const int cs = p->material.cowper_symonds_c > 0;
     double e_int = 0, e_hg = 0, e_diss = 0, dtmin = INFINITY;
     int dtel = -1, bad = -1;
     for (int e = e0; e < e1; e++) {
@@ -142,17 +144,20 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
         double old[6] = {R[0][0], R[1][1], R[2][2], R[0][1], R[1][2], R[2][0]};
         memcpy(sg, old, sizeof old);
         double dv = de[0] + de[1] + de[2];
-        double rate = dt > 0 ? sqrt(2.0 / 3.0 *
-                                    ((de[0] - dv / 3) * (de[0] - dv / 3) +
-                                     (de[1] - dv / 3) * (de[1] - dv / 3) +
-                                     (de[2] - dv / 3) * (de[2] - dv / 3) +
-                                     2 * (de[3] * de[3] + de[4] * de[4] + de[5] * de[5]))) /
-                                   dt
-                             : 0;
         if (p->material.model == FE_MAT_FOAM) { /* total form (fe_foam.c); epsp: e_max */
             fe_foam_hex(m, p, c, xe, L, sg, &s->hex_epsp[e], &s->hex_rate[e]);
         } else {
-            if (p->material.cowper_symonds_c > 0) rate = s->hex_rate[e] = fe_rate_filter(s->hex_rate[e], rate);
+            double rate = 0;
+            if (cs) { /* effective deviatoric strain rate: only Cowper-Symonds uses it */
+                rate = dt > 0 ? sqrt(2.0 / 3.0 *
+                                     ((de[0] - dv / 3) * (de[0] - dv / 3) +
+                                      (de[1] - dv / 3) * (de[1] - dv / 3) +
+                                      (de[2] - dv / 3) * (de[2] - dv / 3) +
+                                      2 * (de[3] * de[3] + de[4] * de[4] + de[5] * de[5]))) /
+                                    dt
+                              : 0;
+                rate = s->hex_rate[e] = fe_rate_filter(s->hex_rate[e], rate);
+            }
             s->hex_epsp[e] += fe_mat_3d(p, sg, de, s->hex_epsp[e], rate);
         }
         double w = 0;

@@ -52,9 +52,16 @@ double fe_mat_3d(const fe_part *p, double sig[6], const double de[6], double eps
     double q = sqrt(3 * j2), h, rf = fe_rate_factor(p, rate);
     double sy = rf * fe_flow_stress(p, epsp, &h);
     if (q <= sy) return 0;
-    /* q - 3 mu dp = rf sy(epsp + dp): Newton, exact after the segments crossed */
-    double dp = 0;
-    for (int it = 0; it < 50; it++) {
+    /* q - 3 mu dp = rf sy(epsp + dp): on the segment of epsp the flow stress is linear and
+     * dp closed-form; when it ends beyond the segment, Newton, exact after the segments crossed */
+    double dp = (q - sy) / (3 * mu + rf * h);
+    const fe_material_desc *mt = &p->material;
+    const int n = mt->nhardening;
+    int seg = 0; /* fe_flow_stress's segment; the last one continues beyond the table */
+    while (seg < n - 2 && epsp >= mt->hardening[seg + 1][0]) seg++;
+    const int inseg = n < 2 || seg == n - 2 || epsp + dp < mt->hardening[seg + 1][0];
+    if (!inseg) dp = 0;
+    for (int it = 0; it < 50 && !inseg; it++) {
         double g = q - 3 * mu * dp - rf * fe_flow_stress(p, epsp + dp, &h);
         if (fabs(g) <= FE_RETURN_TOL * q) break;
         dp += g / (3 * mu + rf * h);
@@ -144,6 +151,57 @@ double fe_ps_return(const fe_ps_const *k, double sig[3], double q0sq, double eps
     sig[1] = 0.5 * (pp - mm);
     sig[2] = t0 * fm;
     return 2.0 / 3.0 * x * Y / (1 - c * x);
+}
+
+void fe_ps_return_batch(const fe_ps_const *k, int n, double (*sig)[3], const double *q0sq,
+                        const double *epsp, const double *rf, double *dp)
+{
+    /* the Newton iterations of fe_ps_return for all points together: independent chains that
+     * the processor overlaps. A point whose plastic strain crosses its segment's end is redone
+     * by fe_ps_return, which moves on to the next segment. */
+    const double a = k->a, b = 2 * k->G;
+    double x[FE_NIP_MAX], A[FE_NIP_MAX], B[FE_NIP_MAX], Y[FE_NIP_MAX], c[FE_NIP_MAX];
+    int seg[FE_NIP_MAX], act[FE_NIP_MAX];
+    for (int i = 0; i < n; i++) {
+        const double p0 = sig[i][0] + sig[i][1];
+        double h;
+        A[i] = 0.25 * p0 * p0, B[i] = q0sq[i] - A[i];
+        Y[i] = rf[i] * fe_ps_flow(k, epsp[i], &h, &seg[i]);
+        c[i] = 2.0 / 3.0 * rf[i] * h;
+        const double q0 = sqrt(q0sq[i]);
+        x[i] = (q0 - Y[i]) * q0sq[i] / (q0 * c[i] * q0sq[i] + Y[i] * (a * A[i] + b * B[i]));
+        if (!(x[i] > 0)) x[i] = 0;
+        act[i] = 1;
+    }
+    for (int it = 0, left = n; it < 60 && left > 0; it++) {
+        for (int i = 0; i < n; i++) {
+            if (!act[i]) continue;
+            const double ua = 1 + a * x[i], ub = 1 + b * x[i], inv = 1 / (ua * ub);
+            const double fp = ub * inv, fm = ua * inv;
+            const double Ap = A[i] * fp * fp, Bm = B[i] * fm * fm, Q = Ap + Bm;
+            const double dQ = -2 * (a * Ap * fp + b * Bm * fm);
+            const double g = 1 - c[i] * x[i];
+            const double r = Q * g * g - Y[i] * Y[i], dr = g * (dQ * g - 2 * c[i] * Q);
+            double step = dr < 0 ? -r / dr : 0;
+            if (x[i] + step < 0) step = -0.5 * x[i];
+            x[i] += step;
+            if (fabs(step) <= 1e-7 * x[i] || !(dr < 0)) act[i] = 0, left--;
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        const double d = 2.0 / 3.0 * x[i] * Y[i] / (1 - c[i] * x[i]);
+        if (seg[i] < k->nseg - 1 && epsp[i] + d >= k->p->material.hardening[seg[i] + 1][0]) {
+            dp[i] = fe_ps_return(k, sig[i], q0sq[i], epsp[i], rf[i]);
+            continue;
+        }
+        const double ua = 1 + a * x[i], ub = 1 + b * x[i], inv = 1 / (ua * ub);
+        const double fp = ub * inv, fm = ua * inv;
+        const double pp = (sig[i][0] + sig[i][1]) * fp, mm = (sig[i][0] - sig[i][1]) * fm;
+        sig[i][0] = 0.5 * (pp + mm);
+        sig[i][1] = 0.5 * (pp - mm);
+        sig[i][2] *= fm;
+        dp[i] = d;
+    }
 }
 
 double fe_mat_plane_stress(const fe_part *p, double sig[3], const double de[3], double epsp,

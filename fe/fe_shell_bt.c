@@ -22,7 +22,7 @@
 #include <string.h>
 
 /* the frame and local coordinates (fe_shell_frame), inlined in the element loop */
-static inline double shell_frame(const double xe[4][3], double e[3][3], double xl[4],
+static inline __attribute__((always_inline)) double shell_frame(const double xe[4][3], double e[3][3], double xl[4],
                                  double yl[4])
 {
     double d1[3], d2[3], s1[3], cen[3];
@@ -53,7 +53,7 @@ static inline double shell_frame(const double xe[4][3], double e[3][3], double x
 }
 
 /* squared longest side, and whether the quad is a degenerate triangle (node 3 = node 4) */
-static inline double shell_side2(const double xe[4][3], int *tri)
+static inline __attribute__((always_inline)) double shell_side2(const double xe[4][3], int *tri)
 {
     double lmax = 0;
     for (int k = 0; k < 4; k++) {
@@ -141,14 +141,21 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
             gs[0] += B1[q] * vz[q] + 0.25 * wy[q];
             gs[1] += B2[q] * vz[q] - 0.25 * wx[q];
         }
-        /* through-thickness points: plane stress update, resultants N and M */
+        /* through-thickness points: elastic trials, the plastic ones returned together
+         * (fe_ps_return_batch), then the resultants N and M and the stress power */
         double N[3] = {0}, M[3] = {0}, w_int = 0;
         double *sg = sig_all + 3 * (size_t)stride * e, *ep = epsp_all + (size_t)stride * e;
+        double deg[FE_NIP_MAX][3], old[FE_NIP_MAX][3];
+        double psig[FE_NIP_MAX][3], pq[FE_NIP_MAX], pep[FE_NIP_MAX], prf[FE_NIP_MAX];
+        double pdp[FE_NIP_MAX];
+        int pidx[FE_NIP_MAX], np = 0;
         for (int g = 0; g < nip; g++) {
             const double z = zt[g];
-            double de[3] = {(dm[0] + z * kp[0]) * dt, (dm[1] + z * kp[1]) * dt,
-                            (dm[2] + z * kp[2]) * dt};
-            double *sp = sg + 3 * g, old[3] = {sp[0], sp[1], sp[2]};
+            double *de = deg[g], *sp = sg + 3 * g;
+            de[0] = (dm[0] + z * kp[0]) * dt;
+            de[1] = (dm[1] + z * kp[1]) * dt;
+            de[2] = (dm[2] + z * kp[2]) * dt;
+            old[g][0] = sp[0], old[g][1] = sp[1], old[g][2] = sp[2];
             double rate = 0;
             if (cs) {
                 /* effective strain rate (only the Cowper-Symonds factor uses it) */
@@ -157,9 +164,24 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
                 rate = dt > 0 ? sqrt(4.0 / 3.0 * (ex * ex + ey * ey + ex * ey) + gxy * gxy / 3) : 0;
                 rate = *rf = fe_rate_filter(*rf, rate);
             }
-            ep[g] += fe_ps_update(&k, sp, de, ep[g], rate);
-            w_int += wt[g] * ((old[0] + sp[0]) * de[0] + (old[1] + sp[1]) * de[1] +
-                              (old[2] + sp[2]) * de[2]);
+            if (fe_ps_trial(&k, sp, de, ep[g], rate, &pq[np], &prf[np])) {
+                psig[np][0] = sp[0], psig[np][1] = sp[1], psig[np][2] = sp[2];
+                pep[np] = ep[g];
+                pidx[np++] = g;
+            }
+        }
+        if (np > 0) {
+            fe_ps_return_batch(&k, np, psig, pq, pep, prf, pdp);
+            for (int i = 0; i < np; i++) {
+                double *sp = sg + 3 * pidx[i];
+                sp[0] = psig[i][0], sp[1] = psig[i][1], sp[2] = psig[i][2];
+                ep[pidx[i]] += pdp[i];
+            }
+        }
+        for (int g = 0; g < nip; g++) {
+            const double *sp = sg + 3 * g, *de = deg[g], *o = old[g];
+            w_int += wt[g] * ((o[0] + sp[0]) * de[0] + (o[1] + sp[1]) * de[1] +
+                              (o[2] + sp[2]) * de[2]);
             for (int i = 0; i < 3; i++) {
                 N[i] += wt[g] * sp[i];
                 M[i] += wz[g] * sp[i];

@@ -151,6 +151,7 @@ void fe_integrate(const fe_model *m, fe_state *s)
     const double dt = s->dt, dtp = s->dt_prev, dth = 0.5 * (dt + dtp), tn = s->time + dt;
     const double c = m->opts.damping, d0 = 1 - 0.5 * c * dth, d1 = 1 / (1 + 0.5 * c * dth);
     const double hb = dtp > 0 ? dth : 0; /* weight of the interval before t */
+    const double idth = 1 / dth;
     unsigned kin = 0;
     for (int w = 0; w < m->nwall; w++)
         if (m->wall[w].method == FE_WALL_KINEMATIC) kin |= 1u << w;
@@ -187,7 +188,7 @@ void fe_integrate(const fe_model *m, fe_state *s)
                 double dv = -g / dt;
                 for (int i = 0; i < 3; i++) {
                     vn[i] += dv * W->normal[i];
-                    wf_acc[3 * w + i] -= mass * dv / dth * W->normal[i];
+                    wf_acc[3 * w + i] -= mass * dv * idth * W->normal[i];
                 }
             }
             /* works of the forces at t: half on the interval before (now), half on the one
@@ -195,7 +196,7 @@ void fe_integrate(const fe_model *m, fe_state *s)
              * K(n+1) - K(n) = sum of the works exactly (fe_state.h); no interval before t = 0 */
             double ek = 0;
             for (int i = 0; i < 3; i++) {
-                double r = mass * (vn[i] - vfree[i]) / dth; /* constraint and wall reaction */
+                double r = mass * (vn[i] - vfree[i]) * idth; /* constraint and wall reaction */
                 double fd = -c * mass * 0.5 * (vo[i] + vn[i]);
                 ek += vo[i] * vn[i];
                 wb += 0.5 * (fe[i] + r) * hb * vo[i];
@@ -210,9 +211,9 @@ void fe_integrate(const fe_model *m, fe_state *s)
             const double in = m->node_inertia[n];
             if (in > 0) {
                 double *w = s->node_w + 3 * n;
-                const double *mi = s->node_mint + 3 * n;
+                const double *mi = s->node_mint + 3 * n, iin = dth / in;
                 for (int i = 0; i < 3; i++) {
-                    double wo = w[i], wn = (d0 * wo - dth * mi[i] / in) * d1;
+                    double wo = w[i], wn = (d0 * wo - mi[i] * iin) * d1;
                     if (fix & (8u << i)) wn = 0;
                     ek += 0.5 * in * wo * wn;
                     db += 0.5 * c * in * 0.5 * (wo + wn) * hb * wo;

@@ -248,6 +248,69 @@ static void test_errors(void)
                  MCS_ERR_RANGE, "in both");
 }
 
+
+/* The rider joins the motorcycle group (rider_* by default): the motorcycle with the seated
+ * Hybrid III 50th-class rider (torso lean 40 deg, five breakable attachments) turned to heading
+ * 90 deg and placed; every rider body moved by the frame's rigid motion (1e-12), each attachment
+ * is at rest at t = 0 (its two points coincide in the world, 1e-12 m), and the group's momentum
+ * is (208 kg + the rider's mass) v along the heading. */
+static void test_rider_moves_with_motorcycle(void)
+{
+    const char *base = "mcrash: 1\n"
+                       "include: [models/motorcycles/sport_208kg.yaml, models/riders/hybrid3_50th.yaml]\n"
+                       "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n"
+                       "simulation: {end_time: 1 ms, time_step: 10 us}\n"
+                       "rider: {torso_lean: 40 deg}\n";
+    char txt[2048];
+    snprintf(txt, sizeof txt,
+             "%simpact: {heading_angle: 90 deg, motorcycle_speed: 13.4 m/s,\n"
+             "  motorcycle_contact: [1.72, 0, 0.30], opponent_contact: [5, 7, 0.30]}\n",
+             base);
+    mb_model *m0 = build_ok(base), *m = build_ok(txt);
+    CHECK(m0 && m);
+    if (!m0 || !m) goto out;
+    int fr = mb_model_body(m, "moto_frame");
+    double R[9], pa[3], pc[3], mass = 0, rider = 0;
+    motion_of(m0, m, fr, R, pa, pc);
+    int nrider = 0;
+    for (int b = 0; b < m->nbody; b++) {
+        double y[3], Rb[9], qa[3], qc[3];
+        apply(R, pa, pc, m0->body[b].pos, y);
+        for (int i = 0; i < 3; i++) CHECK_NEAR(m->body[b].pos[i], y[i], 1e-12);
+        motion_of(m0, m, b, Rb, qa, qc);
+        for (int k = 0; k < 9; k++) CHECK_NEAR(Rb[k], R[k], 1e-12);
+        mass += m->body[b].mass;
+        if (strncmp(m->body_name[b], "rider_", 6) == 0) rider += m->body[b].mass, nrider++;
+    }
+    CHECK(nrider >= 17);
+    CHECK(m->nattach == 5);
+    mb_state *s = NULL;
+    mcs_error err = {0};
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    for (int i = 0; s && i < m->nattach; i++) {
+        const mb_attach_model *a = &m->attach[i];
+        double Ra[9], Rb[9], wa[3], wb[3];
+        mb_quat_to_rot(m->body[a->body_a].quat, Ra);
+        mb_mat_vec(Ra, a->pa, wa);
+        mb_add(wa, m->body[a->body_a].pos, wa);
+        mb_quat_to_rot(m->body[a->body_b].quat, Rb);
+        mb_mat_vec(Rb, a->pb, wb);
+        mb_add(wb, m->body[a->body_b].pos, wb);
+        for (int k = 0; k < 3; k++) CHECK_NEAR(wa[k], wb[k], 1e-12);
+    }
+    double p[3] = {0, 0, 0};
+    for (int b = 0; s && b < m->nbody; b++) mb_axpy(p, m->body[b].mass, s->kin[b].vel, p);
+    CHECK_NEAR(p[0], 0, 1e-9);
+    CHECK_NEAR(p[1], mass * 13.4, 1e-9);
+    printf("  rider with the motorcycle: %d rider bodies (%.2f kg) moved rigidly, %d attachments "
+           "at rest, momentum %.4f kg m/s = %.2f kg x 13.4 m/s\n",
+           nrider, rider, m->nattach, p[1], mass);
+    mb_state_destroy(&s);
+out:
+    mb_model_destroy(&m0);
+    mb_model_destroy(&m);
+}
+
 /* the shipped impact scenarios pass mcrash check */
 #define SHIPPED                                                                                    \
     "scenarios/thesis_frontal_barrier_13.4.yaml scenarios/thesis_oblique_barrier_30deg_13.4.yaml " \
@@ -494,6 +557,7 @@ int main(void)
     RUN(test_roll);
     RUN(test_speeds);
     RUN(test_errors);
+    RUN(test_rider_moves_with_motorcycle);
     RUN(test_shipped_check);
     RUN(test_413);
     RUN(test_mymosa);

@@ -32,17 +32,18 @@ static inline __attribute__((always_inline)) double shell_frame(const double xe[
         s1[i] = xe[1][i] - xe[0][i];
         cen[i] = 0.25 * (xe[0][i] + xe[1][i] + xe[2][i] + xe[3][i]);
     }
-    fe_cross(d1, d2, e[2]);
-    double n = fe_dot(e[2], e[2]);
-    if (!(n > 0)) return 0;
-    n = 1 / sqrt(n);
-    for (int i = 0; i < 3; i++) e[2][i] *= n;
-    double sd = fe_dot(s1, e[2]);
-    for (int i = 0; i < 3; i++) e[0][i] = s1[i] - sd * e[2][i];
-    n = fe_dot(e[0], e[0]);
-    if (!(n > 0)) return 0;
-    n = 1 / sqrt(n);
-    for (int i = 0; i < 3; i++) e[0][i] *= n;
+    /* both normalisations from the raw vectors, so the two square roots run in parallel:
+     * with E = d1 x d2, e3 = E / |E| and e1 = (s1 - (s1.e3) e3) / |...| where
+     * |s1 - (s1.e3) e3|^2 = (|E|^2 |s1|^2 - (s1.E)^2) / |E|^2 */
+    double E[3];
+    fe_cross(d1, d2, E);
+    const double n2 = fe_dot(E, E), sE = fe_dot(s1, E), n0 = n2 * fe_dot(s1, s1) - sE * sE;
+    if (!(n2 > 0) || !(n0 > 0)) return 0;
+    const double a = 1 / sqrt(n2), b = 1 / sqrt(n0); /* 1/|E|, 1/(|E| |e1 raw|) */
+    for (int i = 0; i < 3; i++) {
+        e[2][i] = E[i] * a;
+        e[0][i] = (n2 * s1[i] - sE * E[i]) * b * a; /* = (s1 - (s1.e3) e3) / |...| */
+    }
     fe_cross(e[2], e[0], e[1]);
     for (int k = 0; k < 4; k++) {
         double r[3] = {xe[k][0] - cen[0], xe[k][1] - cen[1], xe[k][2] - cen[2]};

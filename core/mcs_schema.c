@@ -437,6 +437,10 @@ static const mcs_skey keyword_keys[] = {
     /* an LS-DYNA keyword file, relative to the YAML file that names it */
     S("keyword", REQ | NE, "LS-DYNA keyword file (or give generate:)"),
     I("part", REQ | GE, 1, 0, "part ID in the keyword file"),
+    /* keyword decks carry no units: LENGTH-TIME-MASS of the deck (docs/keyword.md) */
+    E("units", "m-s-kg|mm-s-t|mm-ms-kg|mm-ms-g|cm-s-g|cm-us-g",
+      0, "unit system of the deck (default m-s-kg, SI)"),
+    E("unknown_keywords", "warn|error", 0, "keywords outside the subset (default warn)"),
     END,
 };
 static const mcs_smap square_tube_map = {.what = "square_tube mesh", .keys = square_tube_keys};
@@ -583,12 +587,13 @@ static const mcs_smap material_map = {
 static const mcs_skey part_keys[] = {
     S("name", REQ | UNIQ | NE, "part name"),
     M("mesh", mesh_map, REQ, "mesh (generate: or keyword:)"),
-    M("section", section_map, REQ, "section"),
-    M("material", material_map, REQ, "material"),
+    /* required, except with a keyword mesh: then the deck's *SECTION / *MAT (mcs_rule_fe_part) */
+    M("section", section_map, 0, "section"),
+    M("material", material_map, 0, "material"),
     V("initial_velocity", VEL, 3, 3, 0, 0, "initial velocity [m/s]"),
     END,
 };
-static const mcs_smap part_map = {.what = "FE part", .keys = part_keys};
+static const mcs_smap part_map = {.what = "FE part", .keys = part_keys, .check = mcs_rule_fe_part};
 
 static const mcs_skey boundary_keys[] = {
     R("part", PART, REQ, "FE part"),

@@ -149,3 +149,17 @@ mcs_status mcs_rule_plastic(scn_walk *w, mcs_node *map)
                               s0, sy->num);
     return MCS_OK;
 }
+
+/* an FE part needs a section and a material, except with a keyword mesh, whose deck's
+ * *SECTION_* and *MAT_* cards are then used (docs/keyword.md) */
+mcs_status mcs_rule_fe_part(scn_walk *w, mcs_node *map)
+{
+    const mcs_node *mesh = given(map, "mesh");
+    if (mesh && given(mesh, "keyword")) return MCS_OK;
+    static const char *const keys[] = {"section", "material"};
+    for (int i = 0; i < 2; i++)
+        if (!given(map, keys[i]))
+            return scn_walk_fail(w, map, keys[i], MCS_ERR_KEY,
+                                 "required key is missing (only a keyword mesh may leave it out)");
+    return MCS_OK;
+}

@@ -5,6 +5,7 @@
 #include "stage3_fe/s3_build.h"
 #include "stage3_fe/s3_build_solid.h"
 #include "stage3_fe/s3_restraints.h"
+#include "stage3_fe/s3_keyword.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -177,7 +178,8 @@ static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_er
     return MCS_OK;
 }
 
-static mcs_status add_parts(fe_builder *b, const mcs_node *parts, mcs_error *err)
+static mcs_status add_parts_(fe_builder *b, const mcs_node *parts, s3_kw_cache **kc,
+                             mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(parts); i++) {
         const mcs_node *p = mcs_node_at(parts, i);
@@ -186,17 +188,32 @@ static mcs_status add_parts(fe_builder *b, const mcs_node *parts, mcs_error *err
         if (strlen(mcs_node_str(get(p, "name"))) >= sizeof d.name)
             return mcs_node_error(get(p, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
                                   FE_NAME_MAX - 1);
-        mcs_status st = read_mesh(get(p, "mesh"), &d.mesh, err);
-        if (!st) st = read_section(get(p, "section"), &d.section, err);
-        if (!st) st = read_material(get(p, "material"), &d.material, err);
+        /* a keyword mesh (s3_keyword.c) may take its section and material from the deck */
+        int kw = given(get(p, "mesh"), "keyword");
+        mcs_status st = kw ? MCS_OK : read_mesh(get(p, "mesh"), &d.mesh, err);
+        if (!st && (!kw || given(p, "section"))) st = read_section(get(p, "section"), &d.section, err);
+        if (!st && (!kw || given(p, "material")))
+            st = read_material(get(p, "material"), &d.material, err);
         if (!st && given(p, "initial_velocity"))
             st = mcs_node_vec3(get(p, "initial_velocity"), d.initial_velocity, err);
-        if (st) return st;
+        if (!st && kw) st = s3_kw_add_part(kc, b, p, &d, err);
+        if (st || kw) {
+            if (st) return st;
+            continue;
+        }
         mcs_error kerr = {0};
         st = fe_builder_add_part(b, &d, NULL, &kerr);
         if (st) return relocate(st, p, &kerr, err);
     }
     return MCS_OK;
+}
+
+static mcs_status add_parts(fe_builder *b, const mcs_node *parts, mcs_error *err)
+{
+    s3_kw_cache *kc = NULL;
+    mcs_status st = add_parts_(b, parts, &kc, err);
+    s3_kw_cache_free(&kc);
+    return st;
 }
 
 static unsigned fix_mask(const char *s)

@@ -4,13 +4,14 @@
  * What it reads: simulation.{end_time, time_step (upper bound on the stable step),
  * time_step_scale (safety factor, default 0.9), output_rate (default 10 kHz)}; fe.parts with
  * generated meshes (box, plate, square_tube, circular_tube, cylinder_shell, sphere_shell, line),
+ * keyword meshes (s3_keyword.h: section and material may then come from the deck),
  * shell/solid/membrane/truss sections (hourglass form and coefficient, shear_factor,
  * tension_only), elastic, elastic_plastic (hardening curve or tangent_modulus, Cowper-Symonds)
  * and fabric materials, initial_velocity; fe.boundary (where, fix, velocity); fe.loads (where,
  * force, curve); fe.rigid_walls (point, normal, velocity, method, penalty_scale, parts);
  * fe.airbags and fe.retractors (s3_restraints.c).
  * What the kernel cannot do yet is refused with MCS_ERR_UNSUPPORTED at the key's
- * FILE:LINE:COL (contacts, foam/rigid materials, keyword meshes, wall friction and size,
+ * FILE:LINE:COL (contacts, foam/rigid materials, wall friction and size,
  * boundary tolerance, failure strain); nothing is
  * silently dropped except gravity, which is logged as ignored. */
 #ifndef S3_BUILD_H

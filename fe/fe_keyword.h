@@ -1,0 +1,223 @@
+/* fe_keyword: the LS-DYNA keyword subset mcrash reads and writes (docs/keyword.md), so users
+ * bring their own meshes and get theirs back.
+ *
+ * Reading gives a neutral in-memory deck (fe_kw_deck): nodes, elements of each type with their
+ * part IDs, parts with section and material IDs, sections, materials, curves, node and part
+ * sets, planar rigid walls, initial velocities and single-point constraints, all converted to
+ * SI with the deck's unit system (fe_kw_opts.units; keyword decks carry no units). Curves are
+ * kept as written (only SFA/SFO/OFFA/OFFO applied): whoever uses one converts its ordinate.
+ * Keywords outside the subset are listed in the deck (fe_kw_deck.unknown, each with its file
+ * and line) and logged as a warning, or rejected with opts.strict. Errors name FILE:LINE:COL,
+ * the keyword and the field, with MCS_ERR_FORMAT (exit status 2).
+ *
+ * Formats: fixed columns (8/16 for *NODE, 8 for elements, 10 elsewhere, 20 for curve points),
+ * I10 (`*KEYWORD I10=Y` or a `%` after a keyword: fields under 10 become 10), long
+ * (`*KEYWORD LONG=Y` or a `+` after a keyword: every field 20 wide), and free format (a card
+ * with a comma is split at the commas). `$` starts a comment line.
+ *
+ * Then fe_kw_add_part() puts one part (its nodes and elements) into an fe_builder, with its
+ * section and material from the deck or from the caller; fe_kw_add_deck() puts in everything
+ * (parts, constraints, initial velocities, rigid walls). fe_kw_from_model() turns a built model
+ * into a deck and fe_kw_write() writes a deck in fixed format. */
+#ifndef FE_KEYWORD_H
+#define FE_KEYWORD_H
+
+#include <stdio.h>
+
+#include "core/mcs_error.h"
+#include "fe/fe_model.h"
+
+#define FE_KW_TITLE_MAX 81 /* an 80-column title + 1 */
+#define FE_KW_NAME_MAX 48  /* longest keyword name kept for the unknown list + 1 */
+
+typedef enum { FE_KW_SHELL, FE_KW_SOLID, FE_KW_BEAM, FE_KW_DISCRETE, FE_KW_NETYPE } fe_kw_etype;
+
+/* nodes per element of each type as stored (shell 4, solid 8, beam 2, discrete 2) */
+int fe_kw_etype_nnode(fe_kw_etype t);
+const char *fe_kw_etype_name(fe_kw_etype t); /* "SHELL", "SOLID", ... */
+
+/* where something was read: deck file index and 1-based line */
+typedef struct {
+    int file;
+    int line;
+} fe_kw_loc;
+
+typedef struct {
+    int n, cap;
+    int *id;       /* element ID (n)                                                   */
+    int *pid;      /* part ID (n)                                                      */
+    int *node;     /* node IDs (n x fe_kw_etype_nnode); a triangle repeats N3 as N4    */
+    double *dval;  /* discrete only: scale factor S [-], offset [m] (n x 2)             */
+    fe_kw_loc *loc;/* (n)                                                              */
+} fe_kw_elems;
+
+typedef struct {
+    int id, secid, mid;
+    char title[FE_KW_TITLE_MAX];
+    fe_kw_loc loc;
+} fe_kw_part;
+
+typedef enum { FE_KW_SEC_SHELL, FE_KW_SEC_SOLID, FE_KW_SEC_BEAM } fe_kw_sec_kind;
+
+typedef struct {
+    int id;
+    fe_kw_sec_kind kind;
+    int elform;     /* element formulation as written (0: the default) [-]           */
+    double shrf;    /* shell shear factor (0: default) [-]                            */
+    int nip;        /* shell through-thickness points (0: the default, 2) [-]         */
+    double t[4];    /* shell thickness at N1..N4 [m]                                  */
+    double area;    /* beam ELFORM 3 (truss) cross-section area [m^2]                 */
+    fe_kw_loc loc;
+} fe_kw_section;
+
+typedef enum { FE_KW_MAT_ELASTIC = 1, FE_KW_MAT_RIGID = 20, FE_KW_MAT_PLP = 24 } fe_kw_mat_type;
+
+typedef struct {
+    int id;
+    fe_kw_mat_type type; /* *MAT_001 | *MAT_020 | *MAT_024                               */
+    double ro;           /* density [kg/m^3]                                             */
+    double e, pr;        /* Young's modulus [Pa], Poisson's ratio [-]                     */
+    double sigy, etan;   /* MAT_024 yield stress, tangent modulus [Pa]                    */
+    double c, p;         /* MAT_024 Cowper-Symonds C [1/s] and p [-] (0: off)              */
+    int lcss;            /* MAT_024 curve of stress vs. effective plastic strain (0: none) */
+    int neps;            /* MAT_024 points of the EPS/ES table given [-]                  */
+    double eps[8], es[8];/* EPS1..8 [-], ES1..8 [Pa]                                      */
+    fe_kw_loc loc;
+} fe_kw_mat;
+
+typedef struct {
+    int id;
+    int n;          /* points [-]                                                        */
+    double *xy;     /* (n x 2), as written with SFA, SFO, OFFA, OFFO applied, no units    */
+    fe_kw_loc loc;
+} fe_kw_curve;
+
+typedef struct {
+    int id;
+    int is_part;    /* 0: *SET_NODE, 1: *SET_PART                                         */
+    int n;
+    int *ids;       /* node or part IDs (n)                                              */
+    fe_kw_loc loc;
+} fe_kw_set;
+
+typedef struct {
+    int id;                     /* _ID option, else 0                                      */
+    char title[FE_KW_TITLE_MAX];
+    int nsid;                   /* slave node set (0: every node)                          */
+    double tail[3], head[3];    /* XT..ZT, XH..ZH: the normal points from tail to head [m]  */
+    double fric;                /* friction [-]                                            */
+    fe_kw_loc loc;
+} fe_kw_wall;
+
+/* what an initial velocity or constraint applies to */
+typedef enum { FE_KW_ON_NODE, FE_KW_ON_NODESET, FE_KW_ON_PART, FE_KW_ON_PARTSET } fe_kw_target;
+
+typedef struct {
+    fe_kw_target on;
+    int id;         /* node, set or part ID; node set 0 = every node                       */
+    double v[3];    /* translational velocity [m/s]                                        */
+    double vr[3];   /* rotational velocity [rad/s] (*INITIAL_VELOCITY only)                 */
+    fe_kw_loc loc;
+} fe_kw_initvel;
+
+typedef struct {
+    fe_kw_target on; /* FE_KW_ON_NODE | FE_KW_ON_NODESET                                    */
+    int id;
+    unsigned dof;    /* FE_DOF_* mask                                                      */
+    fe_kw_loc loc;
+} fe_kw_spc;
+
+typedef struct {
+    char name[FE_KW_NAME_MAX + 16]; /* as written, without the "*" */
+    fe_kw_loc loc;
+} fe_kw_unknown;
+
+typedef struct fe_kw_deck {
+    char title[FE_KW_TITLE_MAX];
+    int nfile;
+    char **file;          /* files read: the main deck first, then *INCLUDEs              */
+    int nnode, cap_node;
+    int *node_id;         /* node IDs, ascending after reading (nnode)                   */
+    double *node_x;       /* coordinates [m] (nnode x 3)                                 */
+    fe_kw_elems elem[FE_KW_NETYPE];
+    int npart, cap_part;       fe_kw_part *part;
+    int nsection, cap_section; fe_kw_section *section;
+    int nmat, cap_mat;         fe_kw_mat *mat;
+    int ncurve, cap_curve;     fe_kw_curve *curve;
+    int nset, cap_set;         fe_kw_set *set;
+    int nwall, cap_wall;       fe_kw_wall *wall;
+    int niv, cap_iv;           fe_kw_initvel *iv;
+    int nspc, cap_spc;         fe_kw_spc *spc;
+    int nunknown, cap_unknown; fe_kw_unknown *unknown;
+    double unit[3];       /* SI value of the deck's length [m], time [s], mass [kg] units  */
+} fe_kw_deck;
+
+typedef struct {
+    const char *units; /* "LENGTH-TIME-MASS": m|cm|mm - s|ms|us - kg|g|t; NULL = "m-s-kg" */
+    int strict;        /* unknown keywords are an error (MCS_ERR_FORMAT) instead of a warning */
+    int quiet;         /* do not log the unknown-keyword warning                             */
+} fe_kw_opts;
+
+fe_kw_opts fe_kw_opts_default(void);
+
+/* "mm-ms-kg" -> SI values of the length, time and mass units */
+mcs_status fe_kw_units(const char *units, double unit[3], mcs_error *err);
+
+/* read a deck from a file (includes relative to the including file) or from memory
+ * (name is used in messages; includes relative to the working directory) */
+mcs_status fe_kw_read(const char *path, const fe_kw_opts *opts, fe_kw_deck **out,
+                      mcs_error *err);
+mcs_status fe_kw_read_mem(const char *name, const char *text, size_t len, const fe_kw_opts *opts,
+                          fe_kw_deck **out, mcs_error *err);
+void fe_kw_deck_destroy(fe_kw_deck **p);
+
+/* lookups by ID (NULL / -1 when absent) */
+int fe_kw_node_index(const fe_kw_deck *d, int nid);
+const fe_kw_part *fe_kw_find_part(const fe_kw_deck *d, int pid);
+const fe_kw_section *fe_kw_find_section(const fe_kw_deck *d, int secid);
+const fe_kw_mat *fe_kw_find_mat(const fe_kw_deck *d, int mid);
+const fe_kw_curve *fe_kw_find_curve(const fe_kw_deck *d, int lcid);
+const fe_kw_set *fe_kw_find_set(const fe_kw_deck *d, int sid, int is_part);
+
+/* the section and material of a deck part as kernel descriptors (into d->section and
+ * d->material; name and mesh untouched) */
+mcs_status fe_kw_part_props(const fe_kw_deck *dk, int pid, fe_part_desc *d, mcs_error *err);
+
+/* add deck part pid to a builder as a part described by base (name, section, material,
+ * initial velocity; its mesh must be FE_MESH_NONE). With props_from_deck the section and
+ * material come from the deck instead. node_map (dk->nnode ints, all -1 at first, may be NULL)
+ * maps deck nodes to builder nodes and is updated, so that parts added from one deck with the
+ * same map share their nodes. Nodes are added in ascending ID order. */
+mcs_status fe_kw_add_part(fe_builder *b, const fe_kw_deck *dk, int pid, const fe_part_desc *base,
+                          int props_from_deck, int *node_map, int *index, mcs_error *err);
+
+/* everything: each part (named by its title, else "part_<ID>") with its deck section and
+ * material, *BOUNDARY_SPC, *INITIAL_VELOCITY(_GENERATION) (on whole parts), *RIGIDWALL_PLANAR */
+mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err);
+
+/* a deck of a built model: node i gets ID i+1, part i ID i+1 with its section and material,
+ * elements numbered per type from 1; x (nnode x 3, NULL: the initial coordinates) [m] */
+mcs_status fe_kw_from_model(const fe_model *m, const double *x, const char *title,
+                            fe_kw_deck **out, mcs_error *err);
+
+/* an empty deck to fill by hand (SI units) */
+mcs_status fe_kw_deck_create(fe_kw_deck **out, mcs_error *err);
+/* add a node / element / part to a deck made by hand (IDs must be unique; nodes ascending) */
+mcs_status fe_kw_deck_add_node(fe_kw_deck *d, int id, const double x[3], mcs_error *err);
+mcs_status fe_kw_deck_add_elem(fe_kw_deck *d, fe_kw_etype t, int id, int pid, const int *nodes,
+                               mcs_error *err);
+mcs_status fe_kw_deck_add_part(fe_kw_deck *d, const fe_kw_part *p, mcs_error *err);
+
+/* card formats a deck is written in: standard fixed columns, I10 (`*KEYWORD I10=Y`),
+ * long (`*KEYWORD LONG=Y`, every field 20 wide) */
+typedef enum { FE_KW_FIXED, FE_KW_FIXED_I10, FE_KW_FIXED_LONG } fe_kw_format;
+
+/* write *KEYWORD, *TITLE, *PART, *SECTION_*, *MAT_*, *DEFINE_CURVE, *SET_*, *NODE,
+ * *ELEMENT_*, *BOUNDARY_SPC_*, *INITIAL_VELOCITY*, *RIGIDWALL_PLANAR, *END; values converted
+ * from SI to the deck's units (dk->unit). Reals take the shortest form that reads back to the
+ * same double when it fits the field, else as many digits as fit. The file is written to a
+ * temporary and renamed (never partial). */
+mcs_status fe_kw_write(const fe_kw_deck *dk, const char *path, fe_kw_format fmt, mcs_error *err);
+mcs_status fe_kw_write_stream(const fe_kw_deck *dk, FILE *f, fe_kw_format fmt, mcs_error *err);
+
+#endif

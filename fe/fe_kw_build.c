@@ -1,0 +1,434 @@
+/* fe_kw_build: a keyword deck into an fe_builder: sections and materials as kernel
+ * descriptors, one part's nodes and elements, or the whole deck with its constraints, initial
+ * velocities and rigid walls. Errors point at the deck line that defined the culprit. */
+#include "fe/fe_kw_impl.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
+                     const char *fmt, ...) __attribute__((format(printf, 5, 6)));
+static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
+                     const char *fmt, ...)
+{
+    char what[800];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    const char *fn = l.file >= 0 && l.file < dk->nfile ? dk->file[l.file] : "(deck)";
+    if (l.line > 0) return MCS_ERR(err, st, "%s:%d: error: %s", fn, l.line, what);
+    return MCS_ERR(err, st, "%s: error: %s", fn, what);
+}
+
+static mcs_status section_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_section_desc *s,
+                               mcs_error *err)
+{
+    const fe_kw_section *k = fe_kw_find_section(dk, p->secid);
+    if (!k)
+        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: section %d is not defined", p->id,
+                  p->secid);
+    if (k->kind == FE_KW_SEC_SHELL) {
+        if (k->elform != 0 && k->elform != 2)
+            mcs_log(MCS_LOG_WARN, "%s:%d: warning: *SECTION_SHELL %d: ELFORM %d is run as "
+                                  "Belytschko-Tsay (ELFORM 2), the only shell built",
+                    dk->file[k->loc.file], k->loc.line, k->id, k->elform);
+        s->type = FE_SECTION_SHELL;
+        s->thickness = k->t[0];
+        s->integration_points = k->nip > 0 ? k->nip : 2; /* LS-DYNA's default NIP */
+        s->shear_factor = k->shrf > 0 && k->shrf <= 1 ? k->shrf : 0;
+        if (!(k->t[0] > 0))
+            return at(dk, k->loc, err, MCS_ERR_RANGE, "*SECTION_SHELL %d: T1 must be > 0", k->id);
+        for (int i = 1; i < 4; i++)
+            if (k->t[i] != 0 && fabs(k->t[i] - k->t[0]) > 1e-12 * k->t[0])
+                mcs_log(MCS_LOG_WARN, "%s:%d: warning: *SECTION_SHELL %d: T%d differs from T1; "
+                                      "the kernel uses the constant thickness T1",
+                        dk->file[k->loc.file], k->loc.line, k->id, i + 1);
+    } else if (k->kind == FE_KW_SEC_SOLID) {
+        if (k->elform != 0 && k->elform != 1)
+            mcs_log(MCS_LOG_WARN, "%s:%d: warning: *SECTION_SOLID %d: ELFORM %d is run as the "
+                                  "one-point hexahedron with hourglass control (ELFORM 1)",
+                    dk->file[k->loc.file], k->loc.line, k->id, k->elform);
+        s->type = FE_SECTION_SOLID;
+    } else {
+        if (k->elform != 3)
+            return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+                      "*SECTION_BEAM %d: ELFORM %d not built (only 3, the truss)", k->id,
+                      k->elform);
+        s->type = FE_SECTION_TRUSS;
+        s->area = k->area;
+    }
+    return MCS_OK;
+}
+
+/* MAT_024 hardening: LCSS curve, else the EPS/ES table, else ETAN (bilinear) */
+static mcs_status hardening(const fe_kw_deck *dk, const fe_kw_mat *k, fe_material_desc *m,
+                            mcs_error *err)
+{
+    double x[FE_CURVE_MAX + 1], y[FE_CURVE_MAX + 1];
+    int n = 0;
+    if (k->lcss) {
+        const fe_kw_curve *c = fe_kw_find_curve(dk, k->lcss);
+        if (!c)
+            return at(dk, k->loc, err, MCS_ERR_KEY,
+                      "*MAT_024 %d: LCSS %d is not a *DEFINE_CURVE (tables are not built)", k->id,
+                      k->lcss);
+        if (c->n > FE_CURVE_MAX)
+            return at(dk, c->loc, err, MCS_ERR_RANGE,
+                      "*DEFINE_CURVE %d: %d points; a hardening curve holds at most %d", c->id,
+                      c->n, FE_CURVE_MAX);
+        for (int i = 0; i < c->n; i++) {
+            x[n] = c->xy[2 * i];
+            y[n++] = c->xy[2 * i + 1] * kw_u_stress(dk);
+        }
+    } else if (k->neps > 0) {
+        for (int i = 0; i < k->neps; i++) x[n] = k->eps[i], y[n++] = k->es[i];
+    } else if (k->etan > 0) {
+        /* bilinear: tangent modulus Et -> plastic modulus H = E Et / (E - Et) */
+        if (!(k->etan < k->e))
+            return at(dk, k->loc, err, MCS_ERR_RANGE, "*MAT_024 %d: ETAN must be below E", k->id);
+        x[0] = 0, y[0] = k->sigy, x[1] = 1, y[1] = k->sigy + k->e * k->etan / (k->e - k->etan);
+        n = 2;
+    }
+    int off = n > 0 && x[0] > 0 ? 1 : 0; /* the table starts at zero plastic strain */
+    if (n + off > FE_CURVE_MAX)
+        return at(dk, k->loc, err, MCS_ERR_RANGE, "*MAT_024 %d: more than %d hardening points",
+                  k->id, FE_CURVE_MAX);
+    if (off) m->hardening[0][0] = 0, m->hardening[0][1] = k->sigy;
+    for (int i = 0; i < n; i++) m->hardening[off + i][0] = x[i], m->hardening[off + i][1] = y[i];
+    m->nhardening = n + off;
+    if (m->nhardening > 0 && !(m->hardening[0][1] > 0))
+        return at(dk, k->loc, err, MCS_ERR_RANGE,
+                  "*MAT_024 %d: the yield stress (SIGY, or the curve at zero plastic strain) must "
+                  "be > 0",
+                  k->id);
+    if (m->nhardening > 0) m->yield_stress = m->hardening[0][1];
+    return MCS_OK;
+}
+
+static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_material_desc *m,
+                                mcs_error *err)
+{
+    const fe_kw_mat *k = fe_kw_find_mat(dk, p->mid);
+    if (!k)
+        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: material %d is not defined", p->id,
+                  p->mid);
+    if (k->type == FE_KW_MAT_RIGID)
+        return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+                  "*MAT_RIGID %d: rigid parts are not built in the FE kernel yet", k->id);
+    memset(m, 0, sizeof *m);
+    m->density = k->ro;
+    m->youngs_modulus = k->e;
+    m->poisson = k->pr;
+    if (k->type == FE_KW_MAT_ELASTIC) {
+        m->model = FE_MAT_ELASTIC;
+        return MCS_OK;
+    }
+    m->model = FE_MAT_ELASTIC_PLASTIC;
+    m->yield_stress = k->sigy;
+    m->cowper_symonds_c = k->c;
+    m->cowper_symonds_p = k->c > 0 ? k->p : 0;
+    return hardening(dk, k, m, err);
+}
+
+mcs_status fe_kw_part_props(const fe_kw_deck *dk, int pid, fe_part_desc *d, mcs_error *err)
+{
+    const fe_kw_part *p = fe_kw_find_part(dk, pid);
+    if (!p)
+        return MCS_ERR(err, MCS_ERR_KEY, "%s: error: no *PART %d (its section and material)",
+                       dk->nfile ? dk->file[0] : "(deck)", pid);
+    mcs_status st = section_desc(dk, p, &d->section, err);
+    if (!st) st = material_desc(dk, p, &d->material, err);
+    return st;
+}
+
+/* the element type of part pid (-1: none; -2: several) */
+static int part_etype(const fe_kw_deck *dk, int pid)
+{
+    int t0 = -1;
+    for (int t = 0; t < FE_KW_NETYPE; t++)
+        for (int i = 0; i < dk->elem[t].n; i++)
+            if (dk->elem[t].pid[i] == pid) {
+                if (t0 >= 0 && t0 != t) return -2;
+                t0 = t;
+                break;
+            }
+    return t0;
+}
+
+static const fe_section_type etype_section[FE_KW_NETYPE] = {
+    FE_SECTION_SHELL, FE_SECTION_SOLID, FE_SECTION_TRUSS, FE_SECTION_TRUSS};
+
+static mcs_status add_elems(fe_builder *b, const fe_kw_deck *dk, int pid, fe_kw_etype t, int ip,
+                            const int *map, mcs_error *err)
+{
+    const fe_kw_elems *e = &dk->elem[t];
+    const int k = fe_kw_etype_nnode(t);
+    for (int i = 0; i < e->n; i++) {
+        if (e->pid[i] != pid) continue;
+        int c[8];
+        for (int j = 0; j < k; j++) c[j] = map[fe_kw_node_index(dk, e->node[(size_t)k * i + j])];
+        if (t == FE_KW_SOLID)
+            for (int j = 1; j < 8; j++)
+                for (int q = 0; q < j; q++)
+                    if (c[j] == c[q])
+                        return at(dk, e->loc[i], err, MCS_ERR_UNSUPPORTED,
+                                  "*ELEMENT_SOLID %d: a degenerate hexahedron (tetrahedron or "
+                                  "pentahedron); only 8-node hexahedra are built",
+                                  e->id[i]);
+        mcs_error kerr = {0};
+        mcs_status st = fe_builder_add_elem(b, ip, c, &kerr);
+        if (st)
+            return at(dk, e->loc[i], err, st, "*ELEMENT_%s %d: %s", fe_kw_etype_name(t), e->id[i],
+                      kerr.msg);
+    }
+    return MCS_OK;
+}
+
+mcs_status fe_kw_add_part(fe_builder *b, const fe_kw_deck *dk, int pid, const fe_part_desc *base,
+                          int props_from_deck, int *node_map, int *index, mcs_error *err)
+{
+    const char *fn = dk->nfile ? dk->file[0] : "(deck)";
+    int t = part_etype(dk, pid);
+    if (t == -1)
+        return MCS_ERR(err, MCS_ERR_KEY, "%s: error: no element has part ID %d", fn, pid);
+    if (t == -2)
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "%s: error: part %d mixes element types; a part holds one type", fn, pid);
+    if (t == FE_KW_DISCRETE)
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "%s: error: part %d: *ELEMENT_DISCRETE springs are not built in the "
+                       "kernel yet",
+                       fn, pid);
+    fe_part_desc d = *base;
+    d.mesh.generate = FE_MESH_NONE;
+    mcs_status st = props_from_deck ? fe_kw_part_props(dk, pid, &d, err) : MCS_OK;
+    if (st) return st;
+    if (d.section.type != etype_section[t])
+        return MCS_ERR(err, MCS_ERR_TYPE,
+                       "%s: error: part %d has *ELEMENT_%s elements; its section must be %s", fn,
+                       pid, fe_kw_etype_name((fe_kw_etype)t),
+                       t == FE_KW_SHELL ? "shell" : t == FE_KW_SOLID ? "solid" : "truss");
+    int *map = node_map, ip = -1;
+    if (!map) {
+        map = malloc(sizeof(int) * (size_t)(dk->nnode ? dk->nnode : 1));
+        if (!map) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+        for (int i = 0; i < dk->nnode; i++) map[i] = -1;
+    }
+    unsigned char *used = calloc((size_t)(dk->nnode ? dk->nnode : 1), 1);
+    if (!used) st = MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+    if (!st) st = fe_builder_add_part(b, &d, &ip, err);
+    if (!st) {
+        const fe_kw_elems *e = &dk->elem[t];
+        int k = fe_kw_etype_nnode((fe_kw_etype)t);
+        for (int i = 0; i < e->n; i++)
+            if (e->pid[i] == pid)
+                for (int j = 0; j < k; j++) used[fe_kw_node_index(dk, e->node[(size_t)k * i + j])] = 1;
+        /* nodes in ascending ID order, each once per map */
+        for (int i = 0; i < dk->nnode && !st; i++)
+            if (used[i] && map[i] < 0) st = fe_builder_add_node(b, dk->node_x + 3 * i, &map[i], err);
+    }
+    if (!st) st = add_elems(b, dk, pid, (fe_kw_etype)t, ip, map, err);
+    if (!st && index) *index = ip;
+    free(used);
+    if (map != node_map) free(map);
+    return st;
+}
+
+/* ---- the whole deck ---- */
+
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return x < y ? -1 : x > y;
+}
+
+static int in_sorted(const int *v, int n, int x)
+{
+    return bsearch(&x, v, (size_t)n, sizeof(int), cmp_int) != NULL;
+}
+
+/* how a node set covers part pid: 1 every node, 0 none, -1 some */
+static int set_covers(const fe_kw_deck *dk, const int *ids, int nids, int pid)
+{
+    int some = 0, all = 1;
+    for (int t = 0; t < FE_KW_NETYPE; t++) {
+        const fe_kw_elems *e = &dk->elem[t];
+        int k = fe_kw_etype_nnode((fe_kw_etype)t);
+        for (int i = 0; i < e->n; i++) {
+            if (e->pid[i] != pid) continue;
+            for (int j = 0; j < k; j++) {
+                int in = in_sorted(ids, nids, e->node[(size_t)k * i + j]);
+                some |= in;
+                all &= in;
+            }
+        }
+    }
+    return all ? 1 : some ? -1 : 0;
+}
+
+/* sorted copy of a node set's IDs (*ids NULL, *n -1 for set 0 = every node) */
+static mcs_status set_ids(const fe_kw_deck *dk, int sid, fe_kw_loc l, int **ids, int *n,
+                          mcs_error *err)
+{
+    *ids = NULL;
+    *n = -1;
+    if (sid == 0) return MCS_OK;
+    const fe_kw_set *s = fe_kw_find_set(dk, sid, 0);
+    if (!s) return at(dk, l, err, MCS_ERR_KEY, "node set %d is not defined", sid);
+    *ids = malloc(sizeof(int) * (size_t)(s->n ? s->n : 1));
+    if (!*ids) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+    memcpy(*ids, s->ids, sizeof(int) * (size_t)s->n);
+    qsort(*ids, (size_t)s->n, sizeof(int), cmp_int);
+    *n = s->n;
+    return MCS_OK;
+}
+
+/* does initial velocity / wall target `on id` cover deck part k? 1 yes, 0 no, -1 partly */
+static mcs_status covers(const fe_kw_deck *dk, fe_kw_target on, int id, fe_kw_loc l, int k,
+                         int *out, mcs_error *err)
+{
+    int pid = dk->part[k].id;
+    if (on == FE_KW_ON_PART) {
+        *out = id == pid;
+        return MCS_OK;
+    }
+    if (on == FE_KW_ON_PARTSET) {
+        const fe_kw_set *s = fe_kw_find_set(dk, id, 1);
+        if (!s) return at(dk, l, err, MCS_ERR_KEY, "part set %d is not defined", id);
+        *out = 0;
+        for (int i = 0; i < s->n; i++) *out |= s->ids[i] == pid;
+        return MCS_OK;
+    }
+    int *ids, n;
+    mcs_status st = set_ids(dk, id, l, &ids, &n, err);
+    if (st) return st;
+    *out = n < 0 ? 1 : set_covers(dk, ids, n, pid);
+    free(ids);
+    return MCS_OK;
+}
+
+static mcs_status part_velocity(const fe_kw_deck *dk, int k, double v[3], mcs_error *err)
+{
+    for (int i = 0; i < dk->niv; i++) {
+        const fe_kw_initvel *iv = &dk->iv[i];
+        int c = 0;
+        mcs_status st = covers(dk, iv->on, iv->id, iv->loc, k, &c, err);
+        if (st) return st;
+        if (c < 0)
+            return at(dk, iv->loc, err, MCS_ERR_UNSUPPORTED,
+                      "initial velocity on part of the nodes of part %d: only whole parts are "
+                      "built",
+                      dk->part[k].id);
+        if (c && (iv->vr[0] != 0 || iv->vr[1] != 0 || iv->vr[2] != 0))
+            return at(dk, iv->loc, err, MCS_ERR_UNSUPPORTED,
+                      "rotational initial velocity (VXR, VYR, VZR) is not built");
+        if (c) memcpy(v, iv->v, 3 * sizeof(double));
+    }
+    return MCS_OK;
+}
+
+static mcs_status add_spcs(fe_builder *b, const fe_kw_deck *dk, const int *map, mcs_error *err)
+{
+    for (int i = 0; i < dk->nspc; i++) {
+        const fe_kw_spc *s = &dk->spc[i];
+        int *ids = NULL, n = 1, one = s->id;
+        if (s->on == FE_KW_ON_NODESET) {
+            mcs_status st = set_ids(dk, s->id, s->loc, &ids, &n, err);
+            if (st) return st;
+            if (n < 0) n = 0;
+        }
+        mcs_status st = MCS_OK;
+        for (int j = 0; j < n && !st; j++) {
+            int nid = ids ? ids[j] : one, di = fe_kw_node_index(dk, nid);
+            if (di < 0) {
+                st = at(dk, s->loc, err, MCS_ERR_KEY, "constraint on node %d, which is not "
+                                                      "defined",
+                        nid);
+            } else if (map[di] >= 0) {
+                double zero[3] = {0, 0, 0};
+                st = fe_builder_fix_node(b, map[di], s->dof, zero, err);
+            } else {
+                mcs_log(MCS_LOG_WARN, "%s:%d: warning: constraint on node %d, which belongs to "
+                                      "no element: ignored",
+                        dk->file[s->loc.file], s->loc.line, nid);
+            }
+        }
+        free(ids);
+        if (st) return st;
+    }
+    return MCS_OK;
+}
+
+static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[FE_NAME_MAX],
+                            mcs_error *err)
+{
+    for (int w = 0; w < dk->nwall; w++) {
+        const fe_kw_wall *k = &dk->wall[w];
+        if (k->fric != 0)
+            return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED, "rigid wall friction is not built");
+        fe_wall_desc d = {.method = FE_WALL_KINEMATIC};
+        if (k->title[0] && strlen(k->title) < FE_NAME_MAX) memcpy(d.name, k->title, strlen(k->title) + 1);
+        else snprintf(d.name, sizeof d.name, "wall_%d", k->id ? k->id : w + 1);
+        for (int i = 0; i < 3; i++) {
+            d.point[i] = k->tail[i];
+            d.normal[i] = k->head[i] - k->tail[i];
+        }
+        for (int p = 0; p < dk->npart && k->nsid; p++) {
+            int c = 0;
+            mcs_status st = covers(dk, FE_KW_ON_NODESET, k->nsid, k->loc, p, &c, err);
+            if (st) return st;
+            if (c < 0)
+                return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+                          "NSID %d holds part of the nodes of part %d: walls stop whole parts",
+                          k->nsid, dk->part[p].id);
+            if (c && d.nparts >= 8)
+                return at(dk, k->loc, err, MCS_ERR_RANGE, "a wall stops at most 8 parts");
+            if (c) snprintf(d.parts[d.nparts++], FE_NAME_MAX, "%s", names[p]);
+        }
+        if (k->nsid && d.nparts == 0)
+            return at(dk, k->loc, err, MCS_ERR_RANGE, "NSID %d holds no node of any part",
+                      k->nsid);
+        mcs_status st = fe_builder_add_wall(b, &d, err);
+        if (st) return st;
+    }
+    return MCS_OK;
+}
+
+mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
+{
+    for (int t = 0; t < FE_KW_NETYPE; t++)
+        for (int i = 0; i < dk->elem[t].n; i++)
+            if (!fe_kw_find_part(dk, dk->elem[t].pid[i]))
+                return at(dk, dk->elem[t].loc[i], err, MCS_ERR_KEY,
+                          "*ELEMENT_%s %d: part %d has no *PART card", fe_kw_etype_name(t),
+                          dk->elem[t].id[i], dk->elem[t].pid[i]);
+    int *map = malloc(sizeof(int) * (size_t)(dk->nnode ? dk->nnode : 1));
+    char(*names)[FE_NAME_MAX] = calloc((size_t)(dk->npart ? dk->npart : 1), FE_NAME_MAX);
+    mcs_status st = map && names ? MCS_OK : MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+    for (int i = 0; i < dk->nnode && map; i++) map[i] = -1;
+    for (int k = 0; k < dk->npart && !st; k++) {
+        const fe_kw_part *p = &dk->part[k];
+        fe_part_desc d = fe_part_desc_default();
+        int unique = p->title[0] && strlen(p->title) < FE_NAME_MAX;
+        for (int j = 0; j < k && unique; j++) unique = strcmp(names[j], p->title) != 0;
+        if (unique) memcpy(names[k], p->title, strlen(p->title) + 1);
+        else snprintf(names[k], FE_NAME_MAX, "part_%d", p->id);
+        memcpy(d.name, names[k], FE_NAME_MAX);
+        st = part_velocity(dk, k, d.initial_velocity, err);
+        if (!st && part_etype(dk, p->id) == -1) {
+            mcs_log(MCS_LOG_WARN, "%s:%d: warning: *PART %d has no elements: skipped",
+                    dk->file[p->loc.file], p->loc.line, p->id);
+            continue;
+        }
+        if (!st) st = fe_kw_add_part(b, dk, p->id, &d, 1, map, NULL, err);
+    }
+    if (!st) st = add_spcs(b, dk, map, err);
+    if (!st) st = add_walls(b, dk, names, err);
+    free(map);
+    free(names);
+    return st;
+}

@@ -1,0 +1,102 @@
+/* fe_kw_impl: the keyword reader's insides, shared by fe_kw_field.c (cards and fields),
+ * fe_kw_read.c (files, keyword lines, dispatch), fe_kw_cards.c (one handler per keyword) and
+ * fe_kw_deck.c (the deck's memory and checks). */
+#ifndef FE_KW_IMPL_H
+#define FE_KW_IMPL_H
+
+#include "fe/fe_keyword.h"
+
+/* card formats */
+enum { KW_FMT_STD, KW_FMT_I10, KW_FMT_LONG };
+
+/* one data card: a NUL-terminated line (no newline) and where it was read */
+typedef struct {
+    const char *s;
+    int len;
+    int line;
+    int file;
+} kw_card;
+
+/* a node while reading (sorted and checked at the end) */
+typedef struct {
+    int id;
+    double x[3];
+    fe_kw_loc loc;
+} kw_node;
+
+typedef struct {
+    fe_kw_deck *d;
+    const fe_kw_opts *o;
+    mcs_error *err;
+    int depth;             /* *INCLUDE nesting                                    */
+    int gfmt;              /* format from *KEYWORD (I10=Y, LONG=Y)                 */
+    int fmt;               /* format of the keyword being read                    */
+    char kw[FE_KW_NAME_MAX]; /* its name as written, upper case, without '*'       */
+    int has_title;         /* the keyword ended in _TITLE                          */
+    int has_id;            /* the keyword ended in _ID                             */
+    fe_kw_loc kwloc;       /* its line                                            */
+    int nnode, cap_node;
+    kw_node *node;         /* nodes read so far                                   */
+    int ended;             /* *END seen in the current file                       */
+} kw_ctx;
+
+/* layouts: standard widths of a card's fields */
+typedef struct {
+    int n;
+    int w[10];
+} kw_layout;
+
+extern const kw_layout KW_L10;      /* 8 fields of 10                           */
+extern const kw_layout KW_L_NODE;   /* 8, 16, 16, 16, 8, 8                      */
+extern const kw_layout KW_L_ELEM;   /* 10 fields of 8                           */
+extern const kw_layout KW_L_DISCR;  /* 8, 8, 8, 8, 8, 16, 8, 16                 */
+extern const kw_layout KW_L_CURVE;  /* 2 fields of 20                           */
+
+/* ---- fields (fe_kw_field.c) ---- */
+
+/* an integer field i (0-based); blank gives dflt. name is the manual's field name. */
+mcs_status kw_int(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, const char *name,
+                  int dflt, int *out);
+/* a real field i; blank gives dflt. Fortran forms accepted: 1.5e3, 1.5E+3, 1.5d3, 1.5-3. */
+mcs_status kw_real(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, const char *name,
+                   double dflt, double *out);
+/* a text field over columns [col0, col0+w) trimmed into buf (whole card when w <= 0) */
+void kw_text(const kw_card *cd, int col0, int w, char *buf, size_t n);
+/* true when the field is blank */
+int kw_blank(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i);
+/* an error at a card: "FILE:LINE:COL: error: *KEYWORD: ..." (col 0: no column) */
+mcs_status kw_fail(kw_ctx *c, int file, int line, int col, mcs_status st, const char *fmt, ...)
+    __attribute__((format(printf, 6, 7)));
+/* the parser of one real number from text; 0 on success */
+int kw_parse_real(const char *s, int n, double *out);
+int kw_parse_int(const char *s, int n, int *out);
+
+/* ---- the deck (fe_kw_deck.c) ---- */
+
+int kw_grow(void **p, int *cap, int need, size_t sz);
+mcs_status kw_add_node(kw_ctx *c, int id, const double x[3], fe_kw_loc loc);
+mcs_status kw_add_elem(kw_ctx *c, fe_kw_etype t, int id, int pid, const int *nodes,
+                       const double *dval, fe_kw_loc loc);
+int kw_add_file(fe_kw_deck *d, const char *path); /* index, -1 out of memory */
+/* sort nodes, check unique IDs and that every element's nodes exist */
+mcs_status kw_finish(kw_ctx *c);
+/* a new entry at the end of a deck list (zeroed); NULL out of memory */
+void *kw_push(void **arr, int *n, int *cap, size_t sz);
+
+/* ---- handlers (fe_kw_cards.c): cards of one keyword; 1 = handled, 0 = unknown keyword ---- */
+int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st);
+
+/* ---- unit conversions (SI value of the deck's unit of each quantity) ---- */
+static inline double kw_u_len(const fe_kw_deck *d) { return d->unit[0]; }
+static inline double kw_u_vel(const fe_kw_deck *d) { return d->unit[0] / d->unit[1]; }
+static inline double kw_u_rate(const fe_kw_deck *d) { return 1.0 / d->unit[1]; }
+static inline double kw_u_dens(const fe_kw_deck *d)
+{
+    return d->unit[2] / (d->unit[0] * d->unit[0] * d->unit[0]);
+}
+static inline double kw_u_stress(const fe_kw_deck *d)
+{
+    return d->unit[2] / (d->unit[0] * d->unit[1] * d->unit[1]);
+}
+
+#endif

@@ -1,0 +1,365 @@
+/* fe_kw_write: a deck written as LS-DYNA keywords in fixed columns (standard, I10 or long),
+ * values converted from SI to the deck's units; and the deck of a built fe_model. */
+#include "fe/fe_kw_impl.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+typedef struct {
+    FILE *f;
+    fe_kw_format fmt;
+    char line[512];
+    int pos;
+    int bad_id;   /* an integer that did not fit its field */
+    int bad_at;
+} kw_out;
+
+static int width(const kw_out *o, int w)
+{
+    if (o->fmt == FE_KW_FIXED_LONG) return 20;
+    if (o->fmt == FE_KW_FIXED_I10 && w < 10) return 10;
+    return w;
+}
+
+static void put_str(kw_out *o, int w, const char *s)
+{
+    int n = (int)strlen(s);
+    if (o->pos + w >= (int)sizeof o->line) return;
+    memset(o->line + o->pos, ' ', (size_t)(w - n > 0 ? w - n : 0));
+    memcpy(o->line + o->pos + (w - n > 0 ? w - n : 0), s, (size_t)(n < w ? n : w));
+    o->pos += w;
+}
+
+static void put_int(kw_out *o, int w0, int v)
+{
+    char s[32];
+    int w = width(o, w0);
+    snprintf(s, sizeof s, "%d", v);
+    if ((int)strlen(s) > w && !o->bad_id) o->bad_id = 1, o->bad_at = v;
+    put_str(o, w, s);
+}
+
+/* "1.5e+07" -> "1.5e7", "2e-05" -> "2e-5" */
+static void compact_exp(char *s)
+{
+    char *e = strchr(s, 'e');
+    if (!e) return;
+    char *p = e + 1, *q = e + 1;
+    if (*p == '+') p++;
+    else if (*p == '-') *q++ = *p++;
+    while (*p == '0' && p[1]) p++;
+    memmove(q, p, strlen(p) + 1);
+}
+
+/* the shortest text that reads back to v and fits w; else the most digits that fit */
+static void fmt_real(double v, int w, char *out)
+{
+    char s[64];
+    out[0] = 0;
+    if (v == 0) {
+        snprintf(out, 8, "0.0");
+        return;
+    }
+    for (int p = 1; p <= 17; p++) {
+        snprintf(s, sizeof s, "%.*g", p, v);
+        compact_exp(s);
+        if ((int)strlen(s) > w) break;
+        snprintf(out, 64, "%s", s);
+        if (strtod(s, NULL) == v) break;
+    }
+    if (!out[0]) snprintf(out, 64, "%.0e", v); /* cannot happen for w >= 8 */
+    /* a real gets a decimal point so no reader takes it for an integer */
+    if (!strpbrk(out, ".e") && (int)strlen(out) + 1 <= w) strcat(out, ".");
+}
+
+static void put_real(kw_out *o, int w0, double v)
+{
+    char s[64];
+    int w = width(o, w0);
+    fmt_real(v, w, s);
+    put_str(o, w, s);
+}
+
+static void endl(kw_out *o)
+{
+    o->line[o->pos] = 0;
+    fprintf(o->f, "%s\n", o->line);
+    o->pos = 0;
+}
+
+static void kw(kw_out *o, const char *name) { fprintf(o->f, "*%s\n", name); }
+
+static void comment(kw_out *o, const char *const *names, const int *w, int n)
+{
+    o->pos = 0;
+    for (int i = 0; i < n; i++) put_str(o, width(o, w[i]), names[i]);
+    o->line[0] = '$';
+    endl(o);
+}
+
+/* ---- blocks ---- */
+
+static void w_parts(kw_out *o, const fe_kw_deck *d)
+{
+    static const char *h[] = {"pid", "secid", "mid"};
+    static const int w[] = {10, 10, 10};
+    for (int i = 0; i < d->npart; i++) {
+        kw(o, "PART");
+        fprintf(o->f, "%s\n", d->part[i].title[0] ? d->part[i].title : "part");
+        comment(o, h, w, 3);
+        put_int(o, 10, d->part[i].id);
+        put_int(o, 10, d->part[i].secid);
+        put_int(o, 10, d->part[i].mid);
+        endl(o);
+    }
+}
+
+static void w_sections(kw_out *o, const fe_kw_deck *d)
+{
+    double L = kw_u_len(d);
+    for (int i = 0; i < d->nsection; i++) {
+        const fe_kw_section *s = &d->section[i];
+        if (s->kind == FE_KW_SEC_SHELL) {
+            kw(o, "SECTION_SHELL");
+            put_int(o, 10, s->id), put_int(o, 10, s->elform), put_real(o, 10, s->shrf);
+            put_real(o, 10, s->nip), endl(o);
+            for (int k = 0; k < 4; k++) put_real(o, 10, s->t[k] / L);
+            endl(o);
+        } else if (s->kind == FE_KW_SEC_SOLID) {
+            kw(o, "SECTION_SOLID");
+            put_int(o, 10, s->id), put_int(o, 10, s->elform), endl(o);
+        } else {
+            kw(o, "SECTION_BEAM");
+            put_int(o, 10, s->id), put_int(o, 10, s->elform), endl(o);
+            put_real(o, 10, s->area / (L * L)), endl(o);
+        }
+    }
+}
+
+static void w_mats(kw_out *o, const fe_kw_deck *d)
+{
+    double R = kw_u_dens(d), S = kw_u_stress(d);
+    for (int i = 0; i < d->nmat; i++) {
+        const fe_kw_mat *m = &d->mat[i];
+        kw(o, m->type == FE_KW_MAT_ELASTIC ? "MAT_ELASTIC"
+              : m->type == FE_KW_MAT_RIGID ? "MAT_RIGID" : "MAT_PIECEWISE_LINEAR_PLASTICITY");
+        put_int(o, 10, m->id), put_real(o, 10, m->ro / R), put_real(o, 10, m->e / S);
+        put_real(o, 10, m->pr);
+        if (m->type == FE_KW_MAT_PLP) put_real(o, 10, m->sigy / S), put_real(o, 10, m->etan / S);
+        endl(o);
+        if (m->type == FE_KW_MAT_RIGID) fprintf(o->f, "\n\n");
+        if (m->type != FE_KW_MAT_PLP) continue;
+        put_real(o, 10, m->c * d->unit[1]), put_real(o, 10, m->p), put_int(o, 10, m->lcss);
+        endl(o);
+        for (int k = 0; k < 8; k++) put_real(o, 10, m->eps[k]);
+        endl(o);
+        for (int k = 0; k < 8; k++) put_real(o, 10, m->es[k] / S);
+        endl(o);
+    }
+}
+
+static void w_curves(kw_out *o, const fe_kw_deck *d)
+{
+    for (int i = 0; i < d->ncurve; i++) {
+        const fe_kw_curve *c = &d->curve[i];
+        kw(o, "DEFINE_CURVE");
+        put_int(o, 10, c->id), endl(o);
+        for (int k = 0; k < c->n; k++) put_real(o, 20, c->xy[2 * k]), put_real(o, 20, c->xy[2 * k + 1]), endl(o);
+    }
+}
+
+static void w_sets(kw_out *o, const fe_kw_deck *d)
+{
+    for (int i = 0; i < d->nset; i++) {
+        const fe_kw_set *s = &d->set[i];
+        kw(o, s->is_part ? "SET_PART_LIST" : "SET_NODE_LIST");
+        put_int(o, 10, s->id), endl(o);
+        for (int k = 0; k < s->n; k++) {
+            put_int(o, 10, s->ids[k]);
+            if (k % 8 == 7 || k == s->n - 1) endl(o);
+        }
+    }
+}
+
+static void w_nodes(kw_out *o, const fe_kw_deck *d)
+{
+    static const char *h[] = {"nid", "x", "y", "z", "tc", "rc"};
+    if (d->nnode == 0) return;
+    kw(o, "NODE");
+    comment(o, h, KW_L_NODE.w, 6);
+    double L = kw_u_len(d);
+    for (int i = 0; i < d->nnode; i++) {
+        put_int(o, 8, d->node_id[i]);
+        for (int k = 0; k < 3; k++) put_real(o, 16, d->node_x[3 * i + k] / L);
+        endl(o);
+    }
+}
+
+static void w_elems(kw_out *o, const fe_kw_deck *d)
+{
+    static const char *names[FE_KW_NETYPE] = {"ELEMENT_SHELL", "ELEMENT_SOLID", "ELEMENT_BEAM",
+                                              "ELEMENT_DISCRETE"};
+    for (int t = 0; t < FE_KW_NETYPE; t++) {
+        const fe_kw_elems *e = &d->elem[t];
+        if (e->n == 0) continue;
+        kw(o, names[t]);
+        int k = fe_kw_etype_nnode((fe_kw_etype)t);
+        for (int i = 0; i < e->n; i++) {
+            put_int(o, 8, e->id[i]), put_int(o, 8, e->pid[i]);
+            for (int j = 0; j < k; j++) put_int(o, 8, e->node[(size_t)k * i + j]);
+            if (t == FE_KW_DISCRETE) {
+                put_int(o, 8, 0), put_real(o, 16, e->dval[2 * i]), put_int(o, 8, 0);
+                put_real(o, 16, e->dval[2 * i + 1] / kw_u_len(d));
+            }
+            endl(o);
+        }
+    }
+}
+
+static void w_conditions(kw_out *o, const fe_kw_deck *d)
+{
+    for (int i = 0; i < d->nspc; i++) {
+        const fe_kw_spc *s = &d->spc[i];
+        kw(o, s->on == FE_KW_ON_NODE ? "BOUNDARY_SPC_NODE" : "BOUNDARY_SPC_SET");
+        put_int(o, 10, s->id), put_int(o, 10, 0);
+        for (int k = 0; k < 6; k++) put_int(o, 10, (s->dof >> k) & 1);
+        endl(o);
+    }
+    for (int i = 0; i < d->niv; i++) {
+        const fe_kw_initvel *v = &d->iv[i];
+        double V = kw_u_vel(d);
+        if (v->on == FE_KW_ON_NODESET) {
+            kw(o, "INITIAL_VELOCITY");
+            put_int(o, 10, v->id), endl(o);
+            for (int k = 0; k < 3; k++) put_real(o, 10, v->v[k] / V);
+            for (int k = 0; k < 3; k++) put_real(o, 10, v->vr[k] * d->unit[1]);
+            endl(o);
+        } else {
+            kw(o, "INITIAL_VELOCITY_GENERATION");
+            put_int(o, 10, v->id), put_int(o, 10, v->on == FE_KW_ON_PARTSET ? 1 : 2);
+            put_real(o, 10, 0);
+            for (int k = 0; k < 3; k++) put_real(o, 10, v->v[k] / V);
+            endl(o), endl(o);
+        }
+    }
+    for (int i = 0; i < d->nwall; i++) {
+        const fe_kw_wall *w = &d->wall[i];
+        kw(o, "RIGIDWALL_PLANAR");
+        put_int(o, 10, w->nsid), endl(o);
+        for (int k = 0; k < 3; k++) put_real(o, 10, w->tail[k] / kw_u_len(d));
+        for (int k = 0; k < 3; k++) put_real(o, 10, w->head[k] / kw_u_len(d));
+        put_real(o, 10, w->fric), endl(o);
+    }
+}
+
+mcs_status fe_kw_write_stream(const fe_kw_deck *d, FILE *f, fe_kw_format fmt, mcs_error *err)
+{
+    kw_out o = {.f = f, .fmt = fmt};
+    fprintf(f, "$ written by mcrash; units (length-time-mass, SI values): %g m, %g s, %g kg\n",
+            d->unit[0], d->unit[1], d->unit[2]);
+    fprintf(f, "*KEYWORD%s\n", fmt == FE_KW_FIXED_LONG ? " LONG=Y" : fmt == FE_KW_FIXED_I10 ? " I10=Y" : "");
+    if (d->title[0]) fprintf(f, "*TITLE\n%.80s\n", d->title);
+    w_parts(&o, d);
+    w_sections(&o, d);
+    w_mats(&o, d);
+    w_curves(&o, d);
+    w_sets(&o, d);
+    w_nodes(&o, d);
+    w_elems(&o, d);
+    w_conditions(&o, d);
+    fprintf(f, "*END\n");
+    if (o.bad_id)
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "keyword: ID %d does not fit its 8-column field; write in the I10 or long "
+                       "format",
+                       o.bad_at);
+    if (ferror(f)) return MCS_ERR(err, MCS_ERR_IO, "keyword: write error");
+    return MCS_OK;
+}
+
+mcs_status fe_kw_write(const fe_kw_deck *d, const char *path, fe_kw_format fmt, mcs_error *err)
+{
+    char tmp[4096];
+    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
+    FILE *f = fopen(tmp, "w");
+    if (!f) return MCS_ERR(err, MCS_ERR_IO, "%s: cannot create the keyword file", path);
+    mcs_status st = fe_kw_write_stream(d, f, fmt, err);
+    if (fclose(f) != 0 && !st) st = MCS_ERR(err, MCS_ERR_IO, "%s: write error", path);
+    if (!st && rename(tmp, path) != 0)
+        st = MCS_ERR(err, MCS_ERR_IO, "%s: cannot rename the written file into place", path);
+    if (st) remove(tmp);
+    return st;
+}
+
+/* ---- the deck of a model ---- */
+
+static mcs_status model_props(const fe_model *m, int ip, fe_kw_deck *d, mcs_error *err)
+{
+    const fe_part *p = &m->part[ip];
+    fe_kw_section *s = kw_push((void **)&d->section, &d->nsection, &d->cap_section, sizeof *s);
+    fe_kw_mat *k = s ? kw_push((void **)&d->mat, &d->nmat, &d->cap_mat, sizeof *k) : NULL;
+    if (!k) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+    s->id = k->id = ip + 1;
+    if (p->section.type == FE_SECTION_SHELL) {
+        s->kind = FE_KW_SEC_SHELL, s->elform = 2, s->nip = p->section.integration_points;
+        s->shrf = p->section.shear_factor;
+        for (int i = 0; i < 4; i++) s->t[i] = p->section.thickness;
+    } else if (p->section.type == FE_SECTION_SOLID) {
+        s->kind = FE_KW_SEC_SOLID, s->elform = 1;
+    } else {
+        s->kind = FE_KW_SEC_BEAM, s->elform = 3, s->area = p->section.area;
+    }
+    const fe_material_desc *md = &p->material;
+    k->ro = md->density, k->e = md->youngs_modulus, k->pr = md->poisson;
+    k->type = md->model == FE_MAT_ELASTIC_PLASTIC ? FE_KW_MAT_PLP : FE_KW_MAT_ELASTIC;
+    if (k->type != FE_KW_MAT_PLP) return MCS_OK;
+    k->sigy = md->nhardening > 0 ? md->hardening[0][1] : md->yield_stress;
+    k->c = md->cowper_symonds_c, k->p = md->cowper_symonds_p;
+    if (md->nhardening == 0) return MCS_OK;
+    fe_kw_curve *c = kw_push((void **)&d->curve, &d->ncurve, &d->cap_curve, sizeof *c);
+    if (!c || !(c->xy = malloc(2 * sizeof(double) * (size_t)md->nhardening)))
+        return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+    c->id = k->lcss = ip + 1;
+    c->n = md->nhardening;
+    for (int i = 0; i < c->n; i++) c->xy[2 * i] = md->hardening[i][0], c->xy[2 * i + 1] = md->hardening[i][1];
+    return MCS_OK;
+}
+
+mcs_status fe_kw_from_model(const fe_model *m, const double *x, const char *title,
+                            fe_kw_deck **out, mcs_error *err)
+{
+    fe_kw_deck *d = NULL;
+    mcs_status st = fe_kw_deck_create(&d, err);
+    if (st) return st;
+    if (title) snprintf(d->title, sizeof d->title, "%s", title);
+    const double *xs = x ? x : m->node_x0;
+    for (int i = 0; i < m->nnode && !st; i++) st = fe_kw_deck_add_node(d, i + 1, xs + 3 * i, err);
+    for (int ip = 0; ip < m->npart && !st; ip++) {
+        fe_kw_part p = {.id = ip + 1, .secid = ip + 1, .mid = ip + 1};
+        snprintf(p.title, sizeof p.title, "%s", m->part[ip].name);
+        st = fe_kw_deck_add_part(d, &p, err);
+        if (!st) st = model_props(m, ip, d, err);
+    }
+    static const fe_kw_etype et[FE_NKIND] = {FE_KW_SOLID, FE_KW_SHELL, FE_KW_BEAM};
+    const int *conn[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node};
+    const int *part[FE_NKIND] = {m->hex_part, m->shell_part, m->truss_part};
+    const int ne[FE_NKIND] = {m->nhex, m->nshell, m->ntruss}, nn[FE_NKIND] = {8, 4, 2};
+    for (int k = 0; k < FE_NKIND && !st; k++)
+        for (int e = 0; e < ne[k] && !st; e++) {
+            int c[8];
+            for (int j = 0; j < nn[k]; j++) c[j] = conn[k][(size_t)nn[k] * e + j] + 1;
+            st = fe_kw_deck_add_elem(d, et[k], e + 1, part[k][e] + 1, c, err);
+        }
+    for (int i = 0; i < m->nnode && !st; i++) {
+        if (!m->node_fix[i]) continue;
+        fe_kw_spc *s = kw_push((void **)&d->spc, &d->nspc, &d->cap_spc, sizeof *s);
+        if (!s) st = MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+        else *s = (fe_kw_spc){FE_KW_ON_NODE, i + 1, m->node_fix[i], {0, 0}};
+    }
+    if (st) fe_kw_deck_destroy(&d);
+    *out = d;
+    return st;
+}

@@ -1,7 +1,10 @@
 /* cmd_export.c: `mcrash export OUT.h5 --csv DIR | --xdmf [FILE.xmf] [--stride N]`
- * (--xdmf2 [FILE.xmf] writes XDMF 2 for ParaView's legacy "XDMF Reader") */
+ * (--xdmf2 [FILE.xmf] writes XDMF 2 for ParaView's legacy "XDMF Reader")
+ * | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long | --i10] (LS-DYNA keyword mesh,
+ * translators/tr_keyword.h) */
 #include "cli/cli.h"
 #include "core/mcs_results_export.h"
+#include "translators/tr_keyword.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,6 +16,8 @@ typedef struct {
     int xdmf;            /* --xdmf given                */
     const char *xmf;     /* its FILE.xmf, NULL: default */
     mcs_xdmf_opts xo;
+    const char *k;       /* --k FILE                    */
+    tr_kw_export_opts ko;
 } export_args;
 
 static int ends_with(const char *s, const char *suffix)
@@ -26,6 +31,7 @@ static int parse(int argc, char **argv, export_args *a)
 {
     memset(a, 0, sizeof *a);
     a->xo = mcs_xdmf_opts_default();
+    a->ko = tr_kw_export_opts_default();
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "--csv") == 0) {
@@ -47,7 +53,24 @@ static int parse(int argc, char **argv, export_args *a)
             }
             a->xo.stride = (int)v;
             i++;
-        } else if (strcmp(s, "--mme") == 0 || strcmp(s, "--k") == 0) {
+        } else if (strcmp(s, "--k") == 0 || strcmp(s, "--units") == 0) {
+            if (i + 1 >= argc) return cli_usage(argv[0]);
+            if (s[2] == 'k') a->k = argv[++i];
+            else a->ko.units = argv[++i];
+        } else if (strcmp(s, "--stage") == 0) {
+            char *end;
+            long v = i + 1 < argc ? strtol(argv[i + 1], &end, 10) : 0;
+            if (i + 1 >= argc || *end || v < 1 || v > 9) {
+                fprintf(stderr, "mcrash export: --stage needs 1, 2 or 3\n");
+                return 2;
+            }
+            a->ko.stage = (int)v;
+            i++;
+        } else if (strcmp(s, "--deformed") == 0) {
+            a->ko.deformed = 1;
+        } else if (strcmp(s, "--long") == 0 || strcmp(s, "--i10") == 0) {
+            a->ko.fmt = s[2] == 'l' ? FE_KW_FIXED_LONG : FE_KW_FIXED_I10;
+        } else if (strcmp(s, "--mme") == 0) {
             char what[32];
             snprintf(what, sizeof what, "export %s", s);
             cli_not_built(what, "translators/");
@@ -62,7 +85,7 @@ static int parse(int argc, char **argv, export_args *a)
             return cli_usage(argv[0]);
         }
     }
-    if (!a->h5 || (!a->csv_dir && !a->xdmf)) return cli_usage(argv[0]);
+    if (!a->h5 || (!a->csv_dir && !a->xdmf && !a->k)) return cli_usage(argv[0]);
     return 0;
 }
 
@@ -111,6 +134,11 @@ int cli_export(int argc, char **argv)
             st = mcs_results_export_xdmf(r, out, &a.xo, &err);
         if (!st) printf("wrote %s\n", out);
         free(xmf);
+    }
+    if (!st && a.k) {
+        int nn = 0, ne = 0;
+        st = tr_kw_export(r, a.k, &a.ko, &nn, &ne, &err);
+        if (!st) printf("wrote %s (%d nodes, %d elements)\n", a.k, nn, ne);
     }
     mcs_results_close(&r);
     if (st) {

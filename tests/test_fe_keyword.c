@@ -407,6 +407,59 @@ static void test_bar_keyword_run(void)
     mcs_array_free(&fb);
 }
 
+/* `mcrash export OUT.h5 --k FILE`: the stage-3 mesh of the bar run (undeformed: the deck's
+ * nodes in SI; --deformed: plus the final displacement; --units mm-s-t: in mm) */
+static void test_export_k(void)
+{
+    char h5[128], k1[128], k2[128], k3[128], cmd[512];
+    snprintf(h5, sizeof h5, "%s/kw.h5", tmpdir);
+    snprintf(k1, sizeof k1, "%s/mesh.k", tmpdir);
+    snprintf(k2, sizeof k2, "%s/deformed.k", tmpdir);
+    snprintf(k3, sizeof k3, "%s/mesh_mm.k", tmpdir);
+    snprintf(cmd, sizeof cmd, "export %s --k %s", h5, k1);
+    cli_result *r = cli_run(cmd);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "(204 nodes, 50 elements)");
+    snprintf(cmd, sizeof cmd, "export %s --k %s --deformed --long", h5, k2);
+    CHECK(cli_run(cmd)->status == 0);
+    snprintf(cmd, sizeof cmd, "export %s --k %s --units mm-s-t --stage 3", h5, k3);
+    CHECK(cli_run(cmd)->status == 0);
+    fe_kw_deck *ref = read_deck(KD "bar_mm.k", "mm-s-t"), *a = read_deck(k1, NULL);
+    fe_kw_deck *b = read_deck(k2, NULL), *c = read_deck(k3, "mm-s-t");
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    mcs_array u = {0};
+    CHECK(mcs_results_open(&h, h5, &err) == MCS_OK &&
+          mcs_results_read(h, "/stage3/fields/displacement", &u, &err) == MCS_OK);
+    mcs_results_close(&h);
+    if (ref && a && b && c && u.rank == 3 && u.dims[1] == 204) {
+        CHECK(a->nnode == 204 && a->elem[FE_KW_SOLID].n == 50 && a->npart == 1);
+        CHECK(strcmp(a->part[0].title, "bar") == 0);
+        const double *ul = u.v + (u.dims[0] - 1) * 204 * 3;
+        double w0 = 0, w1 = 0, w2 = 0, umax = 0;
+        for (int i = 0; i < 204 * 3; i++) {
+            w0 = fmax(w0, fabs(a->node_x[i] - ref->node_x[i]));
+            w1 = fmax(w1, fabs(b->node_x[i] - (ref->node_x[i] + ul[i])));
+            w2 = fmax(w2, fabs(c->node_x[i] - ref->node_x[i]));
+            umax = fmax(umax, fabs(ul[i]));
+        }
+        CHECK(w0 <= 1e-15 && w1 <= 1e-15 && w2 <= 1e-15);
+        CHECK(umax > 1e-5); /* the bar moved: 5 m/s for 60 us less the bounce */
+        int same = 1;
+        for (int i = 0; i < 8 * 50; i++)
+            same = same && a->elem[FE_KW_SOLID].node[i] == ref->elem[FE_KW_SOLID].node[i];
+        CHECK(same);
+    }
+    mcs_array_free(&u);
+    fe_kw_deck_destroy(&ref), fe_kw_deck_destroy(&a), fe_kw_deck_destroy(&b);
+    fe_kw_deck_destroy(&c);
+    /* a results file without a mesh */
+    snprintf(cmd, sizeof cmd, "export %s --k %s --stage 1", h5, k1);
+    r = cli_run(cmd);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "no /stage1/mesh");
+}
+
 /* scenario errors name the YAML key and the deck's line */
 static void test_scenario_errors(void)
 {
@@ -547,6 +600,7 @@ int main(void)
     RUN(test_write_read_deck);
     RUN(test_deck_to_model);
     RUN(test_bar_keyword_run);
+    RUN(test_export_k);
     RUN(test_scenario_errors);
     RUN(test_fuzz);
     char cmd[128];

@@ -2,6 +2,7 @@
  * (field names as in the LS-DYNA manual; layouts in docs/keyword.md). */
 #include "fe/fe_kw_impl.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -264,6 +265,8 @@ static mcs_status h_section_shell(kw_ctx *c, const kw_card *cd, int n)
         TRY(kw_real(c, &cd[i], &KW_L10, 2, "SHRF", 0, &s->shrf));
         double nip;
         TRY(kw_real(c, &cd[i], &KW_L10, 3, "NIP", 0, &nip));
+        if (!(nip >= 0 && nip <= 100))
+            return unsupported_field(c, &cd[i], &KW_L10, 3, "NIP", "must be 0..100");
         s->nip = (int)nip;
         TRY(kw_int(c, &cd[i], &KW_L10, 6, "ICOMP", 0, &icomp));
         if (icomp)
@@ -344,6 +347,9 @@ static fe_kw_mat *new_mat(kw_ctx *c, const kw_card *cd, fe_kw_mat_type type, mcs
     if (!*st) *st = kw_real(c, cd, &KW_L10, 3, "PR", 0, &m->pr);
     m->ro *= kw_u_dens(c->d);
     m->e *= kw_u_stress(c->d);
+    if (!*st && !(isfinite(m->ro) && isfinite(m->e)))
+        *st = kw_fail(c, cd->file, cd->line, 0, MCS_ERR_FORMAT,
+                      "RO or E is out of range in SI units");
     return *st ? NULL : m;
 }
 
@@ -395,12 +401,18 @@ static mcs_status h_mat_plp(kw_ctx *c, const kw_card *cd, int n)
             return unsupported_field(c, &cd[i + 1], &KW_L10, 3, "LCSR",
                                      "strain-rate curves are not built (use C and P)");
         m->c *= kw_u_rate(c->d);
+        if (!(isfinite(m->sigy) && isfinite(m->etan) && isfinite(m->c)))
+            return kw_fail(c, cd[i].file, cd[i].line, 0, MCS_ERR_FORMAT,
+                           "SIGY, ETAN or C is out of range in SI units");
         static const char *en[8] = {"EPS1", "EPS2", "EPS3", "EPS4", "EPS5", "EPS6", "EPS7", "EPS8"};
         static const char *sn[8] = {"ES1", "ES2", "ES3", "ES4", "ES5", "ES6", "ES7", "ES8"};
         for (int k = 0; k < 8; k++) {
             TRY(kw_real(c, &cd[i + 2], &KW_L10, k, en[k], 0, &m->eps[k]));
             TRY(kw_real(c, &cd[i + 3], &KW_L10, k, sn[k], 0, &m->es[k]));
             m->es[k] *= kw_u_stress(c->d);
+            if (!isfinite(m->es[k]))
+                return kw_fail(c, cd[i + 3].file, cd[i + 3].line, 0, MCS_ERR_FORMAT,
+                               "%s is out of range in SI units", sn[k]);
             if (m->es[k] != 0) m->neps = k + 1;
         }
         i += 4;

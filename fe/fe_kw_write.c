@@ -15,6 +15,7 @@ typedef struct {
     int pos;
     int bad_id;   /* an integer that did not fit its field */
     int bad_at;
+    int bad_real; /* a value that is not finite in the deck's units */
 } kw_out;
 
 static int width(const kw_out *o, int w)
@@ -78,6 +79,7 @@ static void fmt_real(double v, int w, char *out)
 static void put_real(kw_out *o, int w0, double v)
 {
     char s[64];
+    if (!isfinite(v)) o->bad_real = 1, v = 0;
     int w = width(o, w0);
     fmt_real(v, w, s);
     put_str(o, w, s);
@@ -276,6 +278,8 @@ mcs_status fe_kw_write_stream(const fe_kw_deck *d, FILE *f, fe_kw_format fmt, mc
                        "keyword: ID %d does not fit its 8-column field; write in the I10 or long "
                        "format",
                        o.bad_at);
+    if (o.bad_real)
+        return MCS_ERR(err, MCS_ERR_RANGE, "keyword: a value is not finite in the deck's units");
     if (ferror(f)) return MCS_ERR(err, MCS_ERR_IO, "keyword: write error");
     return MCS_OK;
 }

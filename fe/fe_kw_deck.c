@@ -175,7 +175,7 @@ static mcs_status check_elem_ids(kw_ctx *c, fe_kw_etype t)
 mcs_status kw_finish(kw_ctx *c)
 {
     fe_kw_deck *d = c->d;
-    qsort(c->node, (size_t)c->nnode, sizeof *c->node, cmp_node);
+    if (c->nnode > 1) qsort(c->node, (size_t)c->nnode, sizeof *c->node, cmp_node);
     for (int i = 1; i < c->nnode; i++)
         if (c->node[i].id == c->node[i - 1].id) {
             snprintf(c->kw, sizeof c->kw, "NODE");

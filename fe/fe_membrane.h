@@ -20,6 +20,8 @@ void fe_fabric_constants(const fe_material_desc *mt, fe_fabric_c *c);
 /* second Piola-Kirchhoff stress s (xx, yy, xy) [Pa] from the Green strain e (tensor xx, yy,
  * xy) [-], no compressive stress; returns FE_FABRIC_TAUT, _WRINKLED or _SLACK */
 int fe_fabric_stress(const fe_fabric_c *c, const double e[3], double s[3]);
+/* the (relaxed) strain energy per unit reference volume [J/m^3] of which s is the gradient */
+double fe_fabric_energy(const fe_fabric_c *c, const double e[3]);
 /* the fastest in-plane wave speed, lowered for the damping's stability limit [m/s] */
 double fe_fabric_wave_speed(const fe_material_desc *mt);
 

@@ -183,8 +183,63 @@ static void test_orthotropic(void)
     deform_triangle(m, s, Ub, I3);
     fe_internal_forces(m, s);
     CHECK(s->shell_sig[0] == 0 && s->shell_sig[1] == 0 && s->shell_sig[2] == 0);
+    /* wrinkled along the fibre: stretch a, squeeze b beyond Poisson: uniaxial S_aa = E1 E_aa
+     * (uniaxial stress along a: E_aa = S / E1) */
+    const double lw = sqrt(1 - 2 * 0.02);
+    double Uw[2][2] = {{c * c * la + sn * sn * lw, c * sn * (la - lw)},
+                       {c * sn * (la - lw), sn * sn * la + c * c * lw}};
+    deform_triangle(m, s, Uw, I3);
+    fe_internal_forces(m, s);
+    CHECK_REL(s->shell_sig[0], E_F * ea, 1e-8);
+    CHECK_NEAR(s->shell_sig[1], 0, 1e-8 * E_F * ea);
+    CHECK_NEAR(s->shell_sig[2], 0, 1e-8 * E_F * ea);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
+}
+
+/* Tension-field states of an orthotropic fabric off its axes (relaxed energy, Pipkin 1986;
+ * Roddeman et al. 1987): the stress is uniaxial (its minor principal value 0, the major >= 0)
+ * and is the gradient of the relaxed energy W: S_ij = dW/dE_ij (central differences) —
+ * taut, wrinkled and slack states alike; the isotropic form agrees with E e1 n1 n1. */
+static void test_tension_field(void)
+{
+    fe_material_desc mt = fabric_part("x").material;
+    mt.fabric_e2 = 2e8;
+    mt.fabric_g12 = 2e7;
+    fe_fabric_c c;
+    fe_fabric_constants(&mt, &c);
+    const double states[5][3] = {{0.01, -0.02, 0.004},   /* wrinkled */
+                                 {0.002, -0.01, 0.006},  /* wrinkled, strong shear */
+                                 {0.01, 0.005, 0.002},   /* taut */
+                                 {-0.01, -0.02, 0.001},  /* slack */
+                                 {-0.004, 0.01, -0.003}}; /* wrinkled, b stretched */
+    const int want[5] = {FE_FABRIC_WRINKLED, FE_FABRIC_WRINKLED, FE_FABRIC_TAUT, FE_FABRIC_SLACK,
+                         FE_FABRIC_WRINKLED};
+    for (int k = 0; k < 5; k++) {
+        double S[3];
+        int st = fe_fabric_stress(&c, states[k], S);
+        CHECK(st == want[k]);
+        double m = 0.5 * (S[0] + S[1]), r = sqrt(0.25 * (S[0] - S[1]) * (S[0] - S[1]) + S[2] * S[2]);
+        if (st != FE_FABRIC_TAUT) CHECK_NEAR(m - r, 0, 1e-9 * E_F * 0.01);
+        CHECK(m + r >= 0);
+        const double h = 1e-7;
+        for (int i = 0; i < 3; i++) {
+            double ep[3], em[3];
+            memcpy(ep, states[k], sizeof ep);
+            memcpy(em, states[k], sizeof em);
+            /* the shear stress pairs with 2 E12: dW/dE12 = 2 S12 */
+            ep[i] += h, em[i] -= h;
+            double d = (fe_fabric_energy(&c, ep) - fe_fabric_energy(&c, em)) / (2 * h);
+            CHECK_NEAR(i == 2 ? 0.5 * d : d, S[i], 1e-6 * E_F * 0.01);
+        }
+    }
+    /* isotropic: the mixed criterion's closed form */
+    fe_material_desc iso = fabric_part("y").material;
+    fe_fabric_constants(&iso, &c);
+    double S[3], e[3] = {0.01, -0.02, 0};
+    CHECK(fe_fabric_stress(&c, e, S) == FE_FABRIC_WRINKLED);
+    CHECK_REL(S[0], E_F * 0.01, 1e-12);
+    CHECK_NEAR(fe_fabric_energy(&c, e), 0.5 * E_F * 1e-4, 1e-9);
 }
 
 /* bad membrane input is refused with the part and the key named */
@@ -503,6 +558,7 @@ int main(void)
 {
     RUN(test_triangle_states);
     RUN(test_orthotropic);
+    RUN(test_tension_field);
     RUN(test_membrane_errors);
     RUN(test_generators);
     RUN(test_laplace_sphere);

@@ -135,7 +135,7 @@ static void test_bad_bags_located(void)
     CHECK(r->status == 2);
     CHECK_STR_CONTAINS(r->err, "open.yaml:11:");
     CHECK_STR_CONTAINS(r->err, "not closed");
-    /* closed: runs */
+    /* closed (an orthotropic fabric, a vent): runs */
     snprintf(scn, sizeof scn, "%s/closed.yaml", tmpdir);
     write_text(scn, "mcrash: 1\nname: closed\nsimulation: {end_time: 0.1 ms}\nfe:\n  parts:\n"
                     "    - name: can\n"
@@ -143,7 +143,8 @@ static void test_bad_bags_located(void)
                     " element_size: 0.05, closed: true}\n"
                     "      section: {type: membrane, thickness: 0.5 mm}\n"
                     "      material: {model: fabric, density: 1000, youngs_modulus: 500 MPa,"
-                    " poisson: 0.3}\n"
+                    " poisson: 0.3, youngs_modulus_b: 300 MPa, shear_modulus: 20 MPa,"
+                    " direction: [0, 0, 1], damping: 0.1}\n"
                     "  airbags:\n"
                     "    - {name: bag, parts: [can], initial_pressure: 150 kPa,"
                     " vents: [{area: 1 cm^2, discharge_coefficient: 0.7}]}\n");

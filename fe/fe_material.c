@@ -107,10 +107,39 @@ void fe_ps_const_init(const fe_part *p, fe_ps_const *k)
  * slope of q at x = 0), which leaves an error of order ((a - b) x)^2: two Newton steps then
  * reach round-off. Newton stops when its step is below 1e-7 x (the error left is of the
  * order of the step squared). A crossed segment end restarts on the next segment. */
+/* one Newton step on r(x) with a single division: with ua = 1 + a x, ub = 1 + b x,
+ * D = ua ub, N = A ub^2 + B ua^2, g = 1 - c x:  r = (N g^2 - Y^2 D^2) / D^2 and
+ * r' = -2 g ((a A ub^3 + b B ua^3) g + c N D) / D^3, so -r/r' is the ratio below.
+ * *ok = 0 when r' is not negative (the Newton step is then 0). */
+static inline double ps_newton(double a, double b, double A, double B, double Y, double c,
+                               double x, int *ok)
+{
+    const double ua = 1 + a * x, ub = 1 + b * x, D = ua * ub, g = 1 - c * x;
+    const double N = A * ub * ub + B * ua * ua, YD = Y * D;
+    const double num = (N * g * g - YD * YD) * D;
+    const double den = 2 * g * ((a * A * ub * ub * ub + b * B * ua * ua * ua) * g + c * N * D);
+    *ok = den > 0;
+    return *ok ? num / den : 0;
+}
+
+/* the returned stress and plastic strain increment at multiplier x: one division for both
+ * 1/D and 1/(1 - c x) */
+static inline double ps_finish(double a, double b, double Y, double c, double x, double sig[3])
+{
+    const double ua = 1 + a * x, ub = 1 + b * x, D = ua * ub, g = 1 - c * x;
+    const double inv = 1 / (D * g), iD = g * inv;
+    const double fp = ub * iD, fm = ua * iD;
+    const double pp = (sig[0] + sig[1]) * fp, mm = (sig[0] - sig[1]) * fm;
+    sig[0] = 0.5 * (pp + mm);
+    sig[1] = 0.5 * (pp - mm);
+    sig[2] *= fm;
+    return 2.0 / 3.0 * x * Y * (D * inv);
+}
+
 double fe_ps_return(const fe_ps_const *k, double sig[3], double q0sq, double epsp, double rf)
 {
     const double a = k->a, b = 2 * k->G;
-    const double p0 = sig[0] + sig[1], m0 = sig[0] - sig[1], t0 = sig[2];
+    const double p0 = sig[0] + sig[1];
     const double A = 0.25 * p0 * p0, B = q0sq - A;
     double h;
     int seg;
@@ -119,16 +148,11 @@ double fe_ps_return(const fe_ps_const *k, double sig[3], double q0sq, double eps
     double x = (q0 - Y) * q0sq / (q0 * c * q0sq + Y * (a * A + b * B));
     if (!(x > 0)) x = 0;
     for (int it = 0; it < 60; it++) {
-        const double ua = 1 + a * x, ub = 1 + b * x, inv = 1 / (ua * ub);
-        const double fp = ub * inv, fm = ua * inv;
-        const double Ap = A * fp * fp, Bm = B * fm * fm, Q = Ap + Bm;
-        const double dQ = -2 * (a * Ap * fp + b * Bm * fm);
-        const double g = 1 - c * x;
-        const double r = Q * g * g - Y * Y, dr = g * (dQ * g - 2 * c * Q);
-        double step = dr < 0 ? -r / dr : 0;
+        int ok;
+        double step = ps_newton(a, b, A, B, Y, c, x, &ok);
         if (x + step < 0) step = -0.5 * x;
         x += step;
-        if (fabs(step) <= 1e-7 * x || !(dr < 0)) {
+        if (fabs(step) <= 1e-7 * x || !ok) {
             /* on the next segment when the plastic strain crossed this one's end */
             if (seg < k->nseg - 1) {
                 double ep1 = k->p->material.hardening[seg + 1][0];
@@ -144,13 +168,7 @@ double fe_ps_return(const fe_ps_const *k, double sig[3], double q0sq, double eps
             break;
         }
     }
-    const double ua = 1 + a * x, ub = 1 + b * x, inv = 1 / (ua * ub);
-    const double fp = ub * inv, fm = ua * inv;
-    const double pp = p0 * fp, mm = m0 * fm;
-    sig[0] = 0.5 * (pp + mm);
-    sig[1] = 0.5 * (pp - mm);
-    sig[2] = t0 * fm;
-    return 2.0 / 3.0 * x * Y / (1 - c * x);
+    return ps_finish(a, b, Y, c, x, sig);
 }
 
 void fe_ps_return_batch(const fe_ps_const *k, int n, double (*sig)[3], const double *q0sq,
@@ -176,31 +194,21 @@ void fe_ps_return_batch(const fe_ps_const *k, int n, double (*sig)[3], const dou
     for (int it = 0, left = n; it < 60 && left > 0; it++) {
         for (int i = 0; i < n; i++) {
             if (!act[i]) continue;
-            const double ua = 1 + a * x[i], ub = 1 + b * x[i], inv = 1 / (ua * ub);
-            const double fp = ub * inv, fm = ua * inv;
-            const double Ap = A[i] * fp * fp, Bm = B[i] * fm * fm, Q = Ap + Bm;
-            const double dQ = -2 * (a * Ap * fp + b * Bm * fm);
-            const double g = 1 - c[i] * x[i];
-            const double r = Q * g * g - Y[i] * Y[i], dr = g * (dQ * g - 2 * c[i] * Q);
-            double step = dr < 0 ? -r / dr : 0;
+            int ok;
+            double step = ps_newton(a, b, A[i], B[i], Y[i], c[i], x[i], &ok);
             if (x[i] + step < 0) step = -0.5 * x[i];
             x[i] += step;
-            if (fabs(step) <= 1e-7 * x[i] || !(dr < 0)) act[i] = 0, left--;
+            if (fabs(step) <= 1e-7 * x[i] || !ok) act[i] = 0, left--;
         }
     }
     for (int i = 0; i < n; i++) {
-        const double d = 2.0 / 3.0 * x[i] * Y[i] / (1 - c[i] * x[i]);
-        if (seg[i] < k->nseg - 1 && epsp[i] + d >= k->p->material.hardening[seg[i] + 1][0]) {
+        /* crossed: epsp + (2/3) x Y / (1 - c x) >= the segment's end (1 - c x > 0) */
+        if (seg[i] < k->nseg - 1 &&
+            2.0 / 3.0 * x[i] * Y[i] >=
+                (k->p->material.hardening[seg[i] + 1][0] - epsp[i]) * (1 - c[i] * x[i]))
             dp[i] = fe_ps_return(k, sig[i], q0sq[i], epsp[i], rf[i]);
-            continue;
-        }
-        const double ua = 1 + a * x[i], ub = 1 + b * x[i], inv = 1 / (ua * ub);
-        const double fp = ub * inv, fm = ua * inv;
-        const double pp = (sig[i][0] + sig[i][1]) * fp, mm = (sig[i][0] - sig[i][1]) * fm;
-        sig[i][0] = 0.5 * (pp + mm);
-        sig[i][1] = 0.5 * (pp - mm);
-        sig[i][2] *= fm;
-        dp[i] = d;
+        else
+            dp[i] = ps_finish(a, b, Y[i], c[i], x[i], sig[i]);
     }
 }
 

@@ -366,6 +366,7 @@ double mcs_hyst_stored(const mcs_hyst_model *m, const mcs_hyst_state *s)
 double mcs_hyst_dissipated(const mcs_hyst_model *m, const mcs_hyst_state *s)
 {
     hpath p = path_of(m, s), e = path_elastic(m);
+    if (p.kind == PATH_ELASTIC) return 0.0; /* unloads along the loading curve */
     return path_integral(&e, 0.0, s->x_max) - path_integral(&p, 0.0, s->x_max);
 }
 

@@ -78,8 +78,7 @@ static void detect_pair(const mb_model *m, mb_state *s, int i)
         detect_wheel(s, p, sa, sb, c);
         return;
     }
-    mb_ellipsoid ea;
-    place_ellipsoid(sa, kin_of(s, p->ba), &ea);
+    const mb_ellipsoid ea = s->surf_ell[p->sa]; /* placed once per step (mb_contact_detect) */
     if (sb->type == MB_SURF_FACET) {
         mb_facet_detect(&ea, sb, kin_of(s, p->bb), c);
         return;
@@ -90,13 +89,10 @@ static void detect_pair(const mb_model *m, mb_state *s, int i)
         mb_geom_ellipsoid_plane(&ea, &pl, c);
         return;
     }
-    mb_ellipsoid eb;
-    place_ellipsoid(sb, kin_of(s, p->bb), &eb);
-    /* broad phase: bounding spheres apart -> no contact, no Newton iterations */
-    double d[3], ra = fmax(ea.semi[0], fmax(ea.semi[1], ea.semi[2]));
-    double rb = fmax(eb.semi[0], fmax(eb.semi[1], eb.semi[2]));
-    mb_sub(ea.center, eb.center, d);
-    if (mb_dot(d, d) >= (ra + rb) * (ra + rb)) {
+    const mb_ellipsoid eb = s->surf_ell[p->sb];
+    mb_pair_state *ps = &s->pair[i];
+    /* culling: bounding spheres, boxes, the last separating normal -> no Newton iterations */
+    if (mb_ellipsoids_apart(&ea, &eb, ps->has_normal ? ps->normal : NULL)) {
         c->depth = 0;
         return;
     }
@@ -104,9 +100,9 @@ static void detect_pair(const mb_model *m, mb_state *s, int i)
         mb_geom_sphere_sphere(ea.center, ea.semi[0], eb.center, eb.semi[0], c);
         return;
     }
-    mb_pair_state *ps = &s->pair[i];
-    if (mb_geom_ellipsoid_ellipsoid(&ea, &eb, ps->has_normal ? ps->normal : NULL, c) &&
-        c->depth > 0) {
+    /* the normal in contact, or a separating direction when apart: next step's warm start */
+    mb_geom_ellipsoid_ellipsoid(&ea, &eb, ps->has_normal ? ps->normal : NULL, c);
+    if (mb_dot(c->normal, c->normal) > 0) {
         mb_copy(c->normal, ps->normal);
         ps->has_normal = 1;
     }
@@ -116,6 +112,9 @@ static void detect_pair(const mb_model *m, mb_state *s, int i)
 void mb_contact_detect(const mb_model *m, mb_state *s)
 {
     for (int b = 0; b < m->nbody; b++) mb_body_get(s->world, b, &s->kin[b]);
+    for (int i = 0; i < m->nsurf; i++)
+        if (m->surf[i].type == MB_SURF_ELLIPSOID)
+            place_ellipsoid(&m->surf[i], kin_of(s, m->surf[i].body), &s->surf_ell[i]);
     for (int i = 0; i < m->npair; i++) detect_pair(m, s, i);
 }
 

@@ -39,11 +39,16 @@ static void contact_energy(const mb_model *m, const mb_state *s, double *stored,
 {
     for (int i = 0; i < m->npair; i++) {
         const mcs_hyst_model *h = &m->pair[i].hyst;
-        mcs_hyst_state t = s->pair[i].h;
         double x = s->pc[i].depth > 0 ? s->pc[i].depth : 0;
+        *diss += s->pair[i].e_damp + s->pair[i].e_fric;
+        if (x == 0 && s->pair[i].h.x_max == 0) continue; /* never touched: nothing stored */
+        mcs_hyst_state t = s->pair[i].h;
         mcs_hyst_update(h, &t, x);
-        *stored += mcs_hyst_stored(h, &t);
-        *diss += mcs_hyst_dissipated(h, &t) + s->pair[i].e_damp + s->pair[i].e_fric;
+        /* work = stored + dissipated (the element's identity): one integral less; an
+         * elastic element dissipates nothing (exactly) */
+        double st = x > 0 ? mcs_hyst_stored(h, &t) : 0;
+        *stored += st;
+        if (h->unload != MCS_UNLOAD_ELASTIC && t.x_max > h->elastic_limit) *diss += t.work - st;
     }
 }
 
@@ -140,9 +145,17 @@ static double running_total(const mb_model *m, const mb_state *s, double *kin)
         if (r->has_spring) e += mcs_hyst2_work(&t->h) + r->preload * t->x;
         e += 0.5 * r->stop_stiffness * x * x + t->e_damp;
     }
-    for (int i = 0; i < m->nrestraint3; i++)
-        e += mb_restraint3_stored(&m->restraint3[i], &s->r3[i]) +
-             mb_restraint3_dissipated(&m->restraint3[i], &s->r3[i]);
+    for (int i = 0; i < m->nrestraint3; i++) {
+        const mb_restraint3_model *r = &m->restraint3[i];
+        const mb_restraint3_state *t = &s->r3[i];
+        for (int k = 0; k < 3; k++) {
+            double th = t->theta[k];
+            double x = th > r->hi[k] ? th - r->hi[k] : th < r->lo[k] ? th - r->lo[k] : 0;
+            if (r->has_spring[k]) e += mcs_hyst2_work(&t->h[k]);
+            e += 0.5 * r->stop_stiffness[k] * x * x;
+        }
+        e += t->e_damp;
+    }
     for (int i = 0; i < m->nattach; i++)
         e += mb_attach_stored(&m->attach[i], &s->att[i]) + s->att[i].e_damp + s->att[i].e_lost;
     return e + *kin + potential(m, s);

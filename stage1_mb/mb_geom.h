@@ -70,9 +70,16 @@ typedef struct {
 int mb_geom_ellipsoid_plane(const mb_ellipsoid *a, const mb_plane *b, mb_contact *c);
 int mb_geom_sphere_sphere(const double ca[3], double ra, const double cb[3], double rb,
                           mb_contact *c);
-/* warm_normal: last step's normal of this pair (from b into a) or NULL */
+/* warm_normal: last step's normal of this pair (from b into a) or NULL. When apart (returns 0)
+ * c->normal holds a separating direction if one was found (else zero): a warm start for the
+ * next step's culling */
 int mb_geom_ellipsoid_ellipsoid(const mb_ellipsoid *a, const mb_ellipsoid *b,
                                 const double *warm_normal, mb_contact *c);
+/* culling (mb_geom_cull.c): 1 when a and b are proven apart by bounding spheres, boxes or the
+ * unit direction n (may be NULL); 0 = undecided. The gap g(n) = n.(ca - cb) - ha(n) - hb(n)
+ * is a lower bound of their distance for any unit n [m]. */
+int mb_ellipsoids_apart(const mb_ellipsoid *a, const mb_ellipsoid *b, const double *n);
+double mb_ellipsoid_gap(const mb_ellipsoid *a, const mb_ellipsoid *b, const double n[3]);
 /* one triangle v0 v1 v2 (counter-clockwise seen from outside: outward normal by right hand) */
 int mb_geom_ellipsoid_triangle(const mb_ellipsoid *a, const double v0[3], const double v1[3],
                                const double v2[3], mb_contact *c);

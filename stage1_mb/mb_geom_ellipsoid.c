@@ -181,7 +181,10 @@ int mb_geom_ellipsoid_ellipsoid(const mb_ellipsoid *a, const mb_ellipsoid *b,
     double dist = mb_norm(p.d);
     double ra = fmax(a->semi[0], fmax(a->semi[1], a->semi[2]));
     double rb = fmax(b->semi[0], fmax(b->semi[1], b->semi[2]));
-    if (dist >= ra + rb) return 0; /* bounding spheres apart */
+    if (dist >= ra + rb) { /* bounding spheres apart: the line of centres separates */
+        if (dist > 0) mb_scale(p.d, 1.0 / dist, c->normal);
+        return 0;
+    }
     mb_ellipsoid_q(a, p.QA);
     mb_ellipsoid_q(b, p.QB);
     double tol = 1e-13 * (dist + ra + rb);
@@ -200,7 +203,7 @@ int mb_geom_ellipsoid_ellipsoid(const mb_ellipsoid *a, const mb_ellipsoid *b,
         c->status = MB_GEOM_DEGENERATE;
     }
     double best_n[3] = {0, 0, 1}, best_g = -DBL_MAX;
-    int best_conv = 0, iters = 0;
+    int best_conv = 0, iters = 0, warm_conv = 0;
     for (int pass = 0; pass < 2; pass++) {
         for (int s = 0; s < ns; s++) {
             double n[3];
@@ -208,12 +211,18 @@ int mb_geom_ellipsoid_ellipsoid(const mb_ellipsoid *a, const mb_ellipsoid *b,
             mb_copy(starts[s], n);
             double g = ee_ascend(&p, n, tol, &iters, &conv);
             if (g > best_g) best_g = g, best_conv = conv, mb_copy(n, best_n);
-            if (g > 0) return 0;                                   /* a separating axis: apart */
-            if (pass == 0 && s == 0 && warm_normal && conv) break; /* warm start converged */
+            if (g > 0) { /* a separating axis: apart (kept as the next warm start) */
+                mb_copy(n, c->normal);
+                return 0;
+            }
+            if (pass == 0 && s == 0 && warm_normal && conv) { /* warm start converged: the */
+                warm_conv = 1; /* maximum followed from the last step; nothing else is tried */
+                break;
+            }
         }
         double smin = fmin(fmin(fmin(a->semi[0], a->semi[1]), a->semi[2]),
                            fmin(fmin(b->semi[0], b->semi[1]), b->semi[2]));
-        if (pass == 1 || -best_g < 0.25 * smin) break;
+        if (pass == 1 || warm_conv || -best_g < 0.25 * smin) break;
         /* deep penetration: other local maxima may be shallower; try principal axes */
         ns = 0;
         for (int k = 0; k < 3; k++) {

@@ -248,6 +248,7 @@ struct mb_state {
     int timing;               /* 1: read the clock around sub-stages                        */
     double *rec_chan;         /* contact and joint channels (nout x mb_channels_count) SI    */
     double *rec_loadcell;     /* (nout x nloadcell x 6), SAE J211, N and N m (mb_loadcell.h) */
+    mb_ellipsoid *surf_ell;   /* ellipsoid surfaces placed in the world this step (nsurf)    */
 };
 
 #define MB_NENERGY 7

@@ -65,7 +65,8 @@ mcs_status mb_state_create(const mb_model *m, mb_state **out, mcs_error *err)
              MB_ALLOC(s->rec_sensor, no * (size_t)m->nsensor * 3) &&
              MB_ALLOC(s->rec_energy, no * MB_NENERGY) &&
              MB_ALLOC(s->rec_chan, no * (size_t)mb_channels_count(m)) &&
-             MB_ALLOC(s->rec_loadcell, no * (size_t)m->nloadcell * 6);
+             MB_ALLOC(s->rec_loadcell, no * (size_t)m->nloadcell * 6) &&
+             MB_ALLOC(s->surf_ell, m->nsurf);
     if (!ok) {
         mb_state_destroy(&s);
         return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory for %ld output samples",
@@ -103,7 +104,7 @@ void mb_state_destroy(mb_state **ps)
     free(s->kin), free(s->pc), free(s->vel_prev), free(s->angvel_prev), free(s->acc), free(s->angacc);
     free(s->pos0), free(s->rot0);
     free(s->rec_t), free(s->rec_body), free(s->rec_sensor), free(s->rec_energy);
-    free(s->rec_chan);
+    free(s->rec_chan), free(s->surf_ell);
     free(s->rec_loadcell);
     free(s);
     *ps = NULL;

@@ -17,7 +17,8 @@ static int grow(void **p, int *cap, int need, size_t item)
 {
     if (need <= *cap) return 1;
     int c = *cap ? 2 * *cap : 64;
-    while (c < need) c *= 2;
+    while (c < need)
+        c *= 2;
     void *q = realloc(*p, (size_t)c * item);
     if (!q) return 0;
     *p = q, *cap = c;
@@ -32,8 +33,10 @@ static mcs_status parse_v(obj_build *b, char *s, const char *path, int line, mcs
         errno = 0;
         x[k] = strtod(s, &end);
         if (end == s || errno || !isfinite(x[k]))
-            return MCS_ERR(err, MCS_ERR_FORMAT, "%s:%d: error: a vertex needs three finite "
-                           "coordinates (v x y z)", path, line);
+            return MCS_ERR(err, MCS_ERR_FORMAT,
+                           "%s:%d: error: a vertex needs three finite "
+                           "coordinates (v x y z)",
+                           path, line);
         s = end;
     }
     if (b->m.nvert >= MCS_OBJ_MAX_VERT)
@@ -49,7 +52,8 @@ static mcs_status parse_f(obj_build *b, char *s, const char *path, int line, mcs
 {
     int idx[3], n = 0;
     for (;;) {
-        while (*s == ' ' || *s == '\t') s++;
+        while (*s == ' ' || *s == '\t')
+            s++;
         if (!*s || *s == '\n' || *s == '\r' || *s == '#') break;
         char *end;
         errno = 0;
@@ -60,15 +64,16 @@ static mcs_status parse_f(obj_build *b, char *s, const char *path, int line, mcs
         long k = i > 0 ? i - 1 : b->m.nvert + i;
         if (k < 0 || k >= b->m.nvert)
             return MCS_ERR(err, MCS_ERR_RANGE,
-                           "%s:%d: error: face uses vertex %ld, only %d defined so far", path,
-                           line, i, b->m.nvert);
+                           "%s:%d: error: face uses vertex %ld, only %d defined so far", path, line,
+                           i, b->m.nvert);
         s = end;
-        while (*s && *s != ' ' && *s != '\t' && *s != '\n' && *s != '\r') s++; /* /t/n */
+        while (*s && *s != ' ' && *s != '\t' && *s != '\n' && *s != '\r')
+            s++; /* /t/n */
         if (n < 3) idx[n] = (int)k;
         if (n >= 2) { /* fan triangle idx[0], previous, this */
             if (b->m.ntri >= MCS_OBJ_MAX_TRI)
-                return MCS_ERR(err, MCS_ERR_RANGE, "%s:%d: error: more than %d triangles",
-                               path, line, MCS_OBJ_MAX_TRI);
+                return MCS_ERR(err, MCS_ERR_RANGE, "%s:%d: error: more than %d triangles", path,
+                               line, MCS_OBJ_MAX_TRI);
             if (!grow((void **)&b->m.tri, &b->cap_t, b->m.ntri + 1, 3 * sizeof(int)))
                 return MCS_ERR(err, MCS_ERR_NOMEM, "%s: out of memory", path);
             int *t = b->m.tri + 3 * b->m.ntri++;
@@ -78,8 +83,8 @@ static mcs_status parse_f(obj_build *b, char *s, const char *path, int line, mcs
         n++;
     }
     if (n < 3)
-        return MCS_ERR(err, MCS_ERR_FORMAT, "%s:%d: error: a face needs at least 3 vertices",
-                       path, line);
+        return MCS_ERR(err, MCS_ERR_FORMAT, "%s:%d: error: a face needs at least 3 vertices", path,
+                       line);
     return MCS_OK;
 }
 
@@ -95,12 +100,13 @@ mcs_status mcs_obj_read(const char *path, mcs_obj_mesh *out, mcs_error *err)
     while (!st && fgets(buf, sizeof buf, f)) {
         line++;
         if (!strchr(buf, '\n') && !feof(f)) {
-            st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%d: error: line longer than %zu characters",
-                         path, line, sizeof buf - 2);
+            st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%d: error: line longer than %zu characters", path,
+                         line, sizeof buf - 2);
             break;
         }
         char *s = buf;
-        while (*s == ' ' || *s == '\t') s++;
+        while (*s == ' ' || *s == '\t')
+            s++;
         if (s[0] == 'v' && (s[1] == ' ' || s[1] == '\t'))
             st = parse_v(&b, s + 2, path, line, err);
         else if (s[0] == 'f' && (s[1] == ' ' || s[1] == '\t'))

@@ -370,12 +370,13 @@ static const mcs_skey impact_keys[] = {
     S("motorcycle", 0, "motorcycle model (a label)"),
     S("opponent", 0, "opponent model (a label)"),
     /* from the opponent's heading to the motorcycle's, counter-clockwise seen from above */
-    Q("heading_angle", ANG, 0, 0, 0, "relative heading angle [rad]"),
+    Q("heading_angle", ANG, 0, 0, 0,
+      "motorcycle heading from the opponent's, counter-clockwise from above [rad]"),
     Q("motorcycle_speed", VEL, GE, 0, 0, "motorcycle speed along its heading [m/s]"),
     Q("opponent_speed", VEL, GE, 0, 0, "opponent speed along its heading [m/s]"),
     V("motorcycle_contact", LEN, 3, 3, 0, 0, "contact point, motorcycle model frame [m]"),
     V("opponent_contact", LEN, 3, 3, 0, 0, "contact point on the opponent, world [m]"),
-    Q("roll_angle", ANG, 0, 0, 0, "motorcycle roll (lean) angle [rad]"),
+    Q("roll_angle", ANG, 0, 0, 0, "motorcycle roll (lean) angle, + = right [rad]"),
     V("opponent_heading", NONE, 3, 3, NZ, 0, "opponent's forward direction, world (default x)"),
     Q("initial_gap", LEN, GE, 0, 0, "distance to contact along the motorcycle heading [m]"),
     /* body names, or patterns with * and ? (default ["moto_*", "rider_*"]) */

@@ -45,8 +45,8 @@ static mcs_status check_vertices(scn_walk *w, mcs_node *v)
             if (c->kind == MCS_NODE_STR) {
                 char why[400];
                 double si;
-                mcs_status st = mcs_quantity_parse(c->text, (mcs_dim)MCS_DIM_LENGTH, &si, why,
-                                                   sizeof why);
+                mcs_status st =
+                    mcs_quantity_parse(c->text, (mcs_dim)MCS_DIM_LENGTH, &si, why, sizeof why);
                 if (st) return mcs_node_error(c, w->err, st, "%s", why);
                 c->kind = MCS_NODE_NUM, c->num = si;
             }

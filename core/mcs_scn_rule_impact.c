@@ -57,8 +57,7 @@ static mcs_status check_group(scn_walk *w, const mcs_node *g, const mcs_node *bo
         int hit = 0;
         for (int b = 0; b < mcs_node_len(bodies) && !hit; b++)
             hit = fnmatch(p->text, body_name(bodies->items[b]), 0) == 0;
-        if (!hit)
-            return mcs_node_error(p, w->err, MCS_ERR_KEY, "'%s' matches no body", p->text);
+        if (!hit) return mcs_node_error(p, w->err, MCS_ERR_KEY, "'%s' matches no body", p->text);
     }
     return MCS_OK;
 }
@@ -72,8 +71,7 @@ mcs_status mcs_rule_impact(scn_walk *w, mcs_node *map)
                               mc ? "motorcycle_contact" : "opponent_contact",
                               mc ? "opponent_contact" : "motorcycle_contact");
     const mcs_node *h = given(map, "opponent_heading");
-    if (h && hypot(h->items[0]->num, h->items[1]->num) <=
-                 1e-9 * fabs(h->items[2]->num))
+    if (h && hypot(h->items[0]->num, h->items[1]->num) <= 1e-9 * fabs(h->items[2]->num))
         return mcs_node_error(h, w->err, MCS_ERR_RANGE,
                               "the opponent's heading must not be vertical");
     const mcs_node *bodies = mcs_node_get(w->root, "bodies");
@@ -88,8 +86,7 @@ mcs_status mcs_rule_impact(scn_walk *w, mcs_node *map)
         nmoto += m;
         if (m && go && in_group(go, nm))
             return mcs_node_error(go, w->err, MCS_ERR_RANGE,
-                                  "body '%s' is in both the motorcycle and the opponent group",
-                                  nm);
+                                  "body '%s' is in both the motorcycle and the opponent group", nm);
     }
     int acts = mc || given(map, "heading_angle") || given(map, "motorcycle_speed") ||
                given(map, "roll_angle");

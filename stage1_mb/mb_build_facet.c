@@ -14,9 +14,11 @@ static mcs_status from_inline(const mcs_node *n, mb_surface *s, mcs_error *err)
     double *v = malloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
     int *t = malloc(sizeof(int) * 3 * (size_t)(nt > 0 ? nt : 1));
     mcs_status st = v && t ? MCS_OK : MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
-    for (int i = 0; !st && i < nv; i++) st = mcs_node_vec3(mcs_node_at(vl, i), v + 3 * i, err);
+    for (int i = 0; !st && i < nv; i++)
+        st = mcs_node_vec3(mcs_node_at(vl, i), v + 3 * i, err);
     for (int i = 0; !st && i < nt; i++)
-        for (int k = 0; k < 3; k++) t[3 * i + k] = (int)mcs_node_num(mcs_node_at(mcs_node_at(tl, i), k));
+        for (int k = 0; k < 3; k++)
+            t[3 * i + k] = (int)mcs_node_num(mcs_node_at(mcs_node_at(tl, i), k));
     if (!st) {
         mcs_error e2 = {0};
         st = mb_mesh_create(&s->mesh, nv, v, nt, t, &e2);

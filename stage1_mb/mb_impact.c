@@ -31,9 +31,9 @@ static void assign_groups(const mcs_node *imp, const mb_model *m, int *grp)
     int has_m = mcs_node_kind(gm) != MCS_NODE_NULL, has_o = mcs_node_kind(go) != MCS_NODE_NULL;
     for (int b = 0; b < m->nbody; b++) {
         const char *nm = m->body_name[b];
-        int moto = has_m ? matches(gm, nm)
-                         : fnmatch(default_moto[0], nm, 0) == 0 ||
-                               fnmatch(default_moto[1], nm, 0) == 0;
+        int moto =
+            has_m ? matches(gm, nm)
+                  : fnmatch(default_moto[0], nm, 0) == 0 || fnmatch(default_moto[1], nm, 0) == 0;
         grp[b] = moto ? G_MOTO : (!has_o || matches(go, nm)) ? G_OPP : G_NONE;
     }
 }
@@ -115,7 +115,8 @@ static mcs_status check_ties(const mcs_node *root, const mcs_node *imp, const mb
         if (p->v_op != 0 && gp == -1 && gc == G_OPP)
             return mcs_node_error(mcs_node_get(imp, "opponent_speed"), err, MCS_ERR_RANGE,
                                   "the opponent body '%s' is fixed to the ground by joint %s "
-                                  "and cannot move", m->body_name[d->child], d->name);
+                                  "and cannot move",
+                                  m->body_name[d->child], d->name);
     }
     for (int i = 0; i < m->nattach; i++) {
         const mb_attach_model *a = &m->attach[i];
@@ -177,7 +178,8 @@ static mcs_status boost(const mcs_node *imp, mb_model *m, const int *grp, int wh
         if (r < 0)
             return mcs_node_error(imp, err, MCS_ERR_RANGE,
                                   "wheel body '%s': its axle is not across the heading, so it "
-                                  "cannot roll", m->body_name[b]);
+                                  "cannot roll",
+                                  m->body_name[b]);
         if (r > 0) mb_add(d->angvel, w, d->angvel), mb_add(d->vel, dv, d->vel);
     }
     return MCS_OK;

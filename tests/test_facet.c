@@ -18,7 +18,7 @@
     "simulation: {end_time: 0.5 s, time_step: 10 us, output_rate: 1 kHz}\n"                        \
     "characteristics: {law: {loading: [[0, 0], [0.01, 1000]]}}\n"
 #define SPHERE(x)                                                                                  \
-    "  - {name: ball, mass: 1 kg, inertia: [0.004, 0.004, 0.004], position: [" x ", 0, 0.3],\n"  \
+    "  - {name: ball, mass: 1 kg, inertia: [0.004, 0.004, 0.004], position: [" x ", 0, 0.3],\n"    \
     "     velocity: [0, 0, 0], surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"                  \
     "     semi_axes: [0.1, 0.1, 0.1]}]}\n"
 #define ON_PLANE                                                                                   \
@@ -62,7 +62,8 @@ static double *trajectory(const char *name, const char *txt, long *n)
     if (mb_state_create(m, &s, &err) == MCS_OK && (z = malloc(sizeof *z * (m->nsteps + 1)))) {
         int b = mb_model_body(m, "ball");
         z[0] = s->kin[b].pos[2];
-        while (s->step < m->nsteps && mb_step(m, s, &err) == MCS_OK) z[s->step] = s->kin[b].pos[2];
+        while (s->step < m->nsteps && mb_step(m, s, &err) == MCS_OK)
+            z[s->step] = s->kin[b].pos[2];
         *n = s->step;
     }
     mb_state_destroy(&s);
@@ -88,7 +89,8 @@ static void test_facet_equals_plane(void)
     CHECK(zmin < 0.1); /* it did touch (the sphere's bottom below the face) */
     CHECK(a && b && b[n2] > 0.1);
     printf("  facet vs plane: largest height difference %.2e m over %ld steps, lowest centre "
-           "%.5f m\n", dmax, n2, zmin);
+           "%.5f m\n",
+           dmax, n2, zmin);
     free(a), free(b);
 }
 
@@ -96,9 +98,11 @@ static void test_facet_equals_plane(void)
  * give the same 3-D path of the sphere (the mesh pose comes from the body's rotation) */
 #define TILTED(surf)                                                                               \
     HEAD "environment: {gravity: 9.81 m/s^2}\n"                                                    \
-         "bodies:\n" SPHERE("0")                                                                    \
-         "  - {name: floor, mass: 1000 kg, inertia: [100, 100, 100], position: [0, 0, -1],\n"       \
-         "     orientation: [0.2, 0.1, 0], velocity: [0, 0, 0], surfaces: [" surf "]}\n" TAIL
+         "bodies:\n" SPHERE(                                                                       \
+             "0") "  - {name: floor, mass: 1000 kg, inertia: [100, 100, 100], position: [0, 0, "   \
+                  "-1],\n"                                                                         \
+                  "     orientation: [0.2, 0.1, 0], velocity: [0, 0, 0], surfaces: [" surf         \
+                  "]}\n" TAIL
 
 static double *path3(const char *txt, long *n)
 {
@@ -106,7 +110,8 @@ static double *path3(const char *txt, long *n)
     mb_model *m = build_text("tilted.yaml", txt, &err);
     mb_state *s = NULL;
     double *p = NULL;
-    if (m && mb_state_create(m, &s, &err) == MCS_OK && (p = malloc(sizeof *p * 3 * (m->nsteps + 1)))) {
+    if (m && mb_state_create(m, &s, &err) == MCS_OK &&
+        (p = malloc(sizeof *p * 3 * (m->nsteps + 1)))) {
         int b = mb_model_body(m, "ball");
         while (s->step < m->nsteps && mb_step(m, s, &err) == MCS_OK)
             memcpy(p + 3 * s->step, s->kin[b].pos, 3 * sizeof *p);
@@ -126,7 +131,8 @@ static void test_tilted(void)
     CHECK(a && b && n1 == n2 && n1 == 50000);
     double dmax = 0, ymin = 0;
     for (long i = 1; a && b && i <= n1; i++) {
-        for (int k = 0; k < 3; k++) dmax = fmax(dmax, fabs(a[3 * i + k] - b[3 * i + k]));
+        for (int k = 0; k < 3; k++)
+            dmax = fmax(dmax, fabs(a[3 * i + k] - b[3 * i + k]));
         ymin = fmin(ymin, b[3 * i + 1]);
     }
     CHECK(dmax < 1e-9);
@@ -169,7 +175,8 @@ static void test_obj_file(void)
     double *b = trajectory(yaml, ON_FACET("0.3", "{type: facet, file: floor.obj}"), &n2);
     CHECK(a && b && n1 == n2);
     double dmax = 0;
-    for (long i = 0; a && b && i <= n1; i++) dmax = fmax(dmax, fabs(a[i] - b[i]));
+    for (long i = 0; a && b && i <= n1; i++)
+        dmax = fmax(dmax, fabs(a[i] - b[i]));
     CHECK(dmax == 0);
     free(a), free(b);
     /* a broken OBJ: the line is named */
@@ -204,12 +211,15 @@ static void expect_error(const char *surf, mcs_status st, const char *what)
 
 static void test_errors(void)
 {
-    expect_error("{type: facet, vertices: [[0, 0, 1], [1, 0, 1], [0, 1, 1]], triangles: [[0, 1, 3]]}",
-                 MCS_ERR_RANGE, "bad.yaml:10:116: error: bodies[1].surfaces[0].");
-    expect_error("{type: facet, vertices: [[0, 0, 1], [1, 0, 1], [0, 1, 1]], triangles: [[0, 1, 3]]}",
-                 MCS_ERR_RANGE, "triangles[0][2]: vertex 3 does not exist (0 to 2)");
-    expect_error("{type: facet, vertices: [[0, 0, 1], [1, 0, 1], [2, 0, 1]], triangles: [[0, 1, 2]]}",
-                 MCS_ERR_RANGE, "zero area");
+    expect_error(
+        "{type: facet, vertices: [[0, 0, 1], [1, 0, 1], [0, 1, 1]], triangles: [[0, 1, 3]]}",
+        MCS_ERR_RANGE, "bad.yaml:10:116: error: bodies[1].surfaces[0].");
+    expect_error(
+        "{type: facet, vertices: [[0, 0, 1], [1, 0, 1], [0, 1, 1]], triangles: [[0, 1, 3]]}",
+        MCS_ERR_RANGE, "triangles[0][2]: vertex 3 does not exist (0 to 2)");
+    expect_error(
+        "{type: facet, vertices: [[0, 0, 1], [1, 0, 1], [2, 0, 1]], triangles: [[0, 1, 2]]}",
+        MCS_ERR_RANGE, "zero area");
     expect_error("{type: facet, vertices: [[0, 0, 1], [1, 0, 1]], triangles: [[0, 1, 1]]}",
                  MCS_ERR_TYPE, "at least 3 points");
     expect_error("{type: facet, vertices: [[0, 0, \"1 furlong\"], [1, 0, 1], [0, 1, 1]], "

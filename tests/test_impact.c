@@ -17,7 +17,7 @@
     "include: models/motorcycles/sport_208kg.yaml\n"                                               \
     "simulation: {end_time: 2 ms, time_step: 10 us}\n"                                             \
     "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n"                   \
-    "characteristics: {box_c: {loading: [[0, 0], [0.1, 1e4]]}}\n"                                   \
+    "characteristics: {box_c: {loading: [[0, 0], [0.1, 1e4]]}}\n"                                  \
     "bodies:\n"                                                                                    \
     "  - {name: box, mass: 500 kg, inertia: [50, 50, 50], position: [5, 3, 0.5],\n"                \
     "     velocity: [0, 0, 0], surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"                  \
@@ -27,8 +27,7 @@ static mb_model *build_text(const char *txt, mcs_error *err)
 {
     mcs_scenario *scn = NULL;
     mb_model *m = NULL;
-    if (mcs_scenario_load_text("scenarios/impact_test.yaml", txt, strlen(txt), &scn, err) ==
-        MCS_OK)
+    if (mcs_scenario_load_text("scenarios/impact_test.yaml", txt, strlen(txt), &scn, err) == MCS_OK)
         mb_model_build(scn, NULL, &m, err);
     mcs_scenario_destroy(&scn);
     return m;
@@ -93,17 +92,19 @@ static void test_placement(void)
     CHECK_NEAR(x[1], 3.0 - 0.01 * h[1], 1e-9);
     CHECK_NEAR(x[2], 0.30, 1e-9);
     for (int i = 0; i < 3; i++) {
-        CHECK_NEAR(R[3 * i], h[i], 1e-12);           /* model x -> heading */
-        CHECK_NEAR(R[3 * i + 2], i == 2, 1e-12);     /* z stays up */
+        CHECK_NEAR(R[3 * i], h[i], 1e-12);       /* model x -> heading */
+        CHECK_NEAR(R[3 * i + 2], i == 2, 1e-12); /* z stays up */
     }
     /* the other bodies: the same motion */
     for (int b = 0; b < m->nbody; b++) {
         if (b == box) continue;
         double y[3], Rb[9], qa[3], qc[3];
         apply(R, pa, pc, m0->body[b].pos, y);
-        for (int i = 0; i < 3; i++) CHECK_NEAR(m->body[b].pos[i], y[i], 1e-12);
+        for (int i = 0; i < 3; i++)
+            CHECK_NEAR(m->body[b].pos[i], y[i], 1e-12);
         motion_of(m0, m, b, Rb, qa, qc);
-        for (int k = 0; k < 9; k++) CHECK_NEAR(Rb[k], R[k], 1e-12);
+        for (int k = 0; k < 9; k++)
+            CHECK_NEAR(Rb[k], R[k], 1e-12);
     }
     for (int j = 0; j < m->njoint; j++) {
         double y[3], ax[3];
@@ -114,9 +115,10 @@ static void test_placement(void)
             CHECK_NEAR(m->joint[j].axis[i], ax[i], 1e-12);
         }
     }
-    for (int i = 0; i < 3; i++) CHECK_NEAR(m->body[box].pos[i], m0->body[box].pos[i], 0);
-    printf("  placement: contact point (%.12f, %.12f, %.12f), heading (%.12f, %.12f)\n", x[0],
-           x[1], x[2], R[0], R[3]);
+    for (int i = 0; i < 3; i++)
+        CHECK_NEAR(m->body[box].pos[i], m0->body[box].pos[i], 0);
+    printf("  placement: contact point (%.12f, %.12f, %.12f), heading (%.12f, %.12f)\n", x[0], x[1],
+           x[2], R[0], R[3]);
 out:
     mb_model_destroy(&m0);
     mb_model_destroy(&m);
@@ -182,7 +184,8 @@ static void test_speeds(void)
         mb_axpy(p, m->body[b].mass, s->kin[b].vel, p);
     }
     CHECK_NEAR(mass, 208, 1e-12);
-    for (int i = 0; i < 3; i++) CHECK_NEAR(p[i], mass * v * h[i], 1e-9);
+    for (int i = 0; i < 3; i++)
+        CHECK_NEAR(p[i], mass * v * h[i], 1e-9);
     const char *wheel[2] = {"moto_front_wheel", "moto_rear_wheel"};
     const double radius[2] = {0.300, 0.315};
     for (int k = 0; k < 2; k++) {
@@ -248,7 +251,6 @@ static void test_errors(void)
                  MCS_ERR_RANGE, "in both");
 }
 
-
 /* The rider joins the motorcycle group (rider_* by default): the motorcycle with the seated
  * Hybrid III 50th-class rider (torso lean 40 deg, five breakable attachments) turned to heading
  * 90 deg and placed; every rider body moved by the frame's rigid motion (1e-12), each attachment
@@ -256,11 +258,12 @@ static void test_errors(void)
  * is (208 kg + the rider's mass) v along the heading. */
 static void test_rider_moves_with_motorcycle(void)
 {
-    const char *base = "mcrash: 1\n"
-                       "include: [models/motorcycles/sport_208kg.yaml, models/riders/hybrid3_50th.yaml]\n"
-                       "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n"
-                       "simulation: {end_time: 1 ms, time_step: 10 us}\n"
-                       "rider: {torso_lean: 40 deg}\n";
+    const char *base =
+        "mcrash: 1\n"
+        "include: [models/motorcycles/sport_208kg.yaml, models/riders/hybrid3_50th.yaml]\n"
+        "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n"
+        "simulation: {end_time: 1 ms, time_step: 10 us}\n"
+        "rider: {torso_lean: 40 deg}\n";
     char txt[2048];
     snprintf(txt, sizeof txt,
              "%simpact: {heading_angle: 90 deg, motorcycle_speed: 13.4 m/s,\n"
@@ -276,9 +279,11 @@ static void test_rider_moves_with_motorcycle(void)
     for (int b = 0; b < m->nbody; b++) {
         double y[3], Rb[9], qa[3], qc[3];
         apply(R, pa, pc, m0->body[b].pos, y);
-        for (int i = 0; i < 3; i++) CHECK_NEAR(m->body[b].pos[i], y[i], 1e-12);
+        for (int i = 0; i < 3; i++)
+            CHECK_NEAR(m->body[b].pos[i], y[i], 1e-12);
         motion_of(m0, m, b, Rb, qa, qc);
-        for (int k = 0; k < 9; k++) CHECK_NEAR(Rb[k], R[k], 1e-12);
+        for (int k = 0; k < 9; k++)
+            CHECK_NEAR(Rb[k], R[k], 1e-12);
         mass += m->body[b].mass;
         if (strncmp(m->body_name[b], "rider_", 6) == 0) rider += m->body[b].mass, nrider++;
     }
@@ -296,10 +301,12 @@ static void test_rider_moves_with_motorcycle(void)
         mb_quat_to_rot(m->body[a->body_b].quat, Rb);
         mb_mat_vec(Rb, a->pb, wb);
         mb_add(wb, m->body[a->body_b].pos, wb);
-        for (int k = 0; k < 3; k++) CHECK_NEAR(wa[k], wb[k], 1e-12);
+        for (int k = 0; k < 3; k++)
+            CHECK_NEAR(wa[k], wb[k], 1e-12);
     }
     double p[3] = {0, 0, 0};
-    for (int b = 0; s && b < m->nbody; b++) mb_axpy(p, m->body[b].mass, s->kin[b].vel, p);
+    for (int b = 0; s && b < m->nbody; b++)
+        mb_axpy(p, m->body[b].mass, s->kin[b].vel, p);
     CHECK_NEAR(p[0], 0, 1e-9);
     CHECK_NEAR(p[1], mass * 13.4, 1e-9);
     printf("  rider with the motorcycle: %d rider bodies (%.2f kg) moved rigidly, %d attachments "
@@ -324,25 +331,27 @@ static void test_shipped_check(void)
     if (r->status) fprintf(stderr, "%s", r->err);
 }
 
-
 /* ---- the shipped car scenarios: figures over a run ------------------------------------ */
 
 typedef struct {
-    double t_contact;        /* first motorcycle-opponent contact [s] */
-    double v_opp_contact;    /* opponent speed along its heading up to that step [m/s] */
-    double t_plastic, t_stop; /* fork beyond its elastic limit (0.05 rad) and at 0.2 rad [s] */
+    double t_contact;          /* first motorcycle-opponent contact [s] */
+    double v_opp_contact;      /* opponent speed along its heading up to that step [m/s] */
+    double t_plastic, t_stop;  /* fork beyond its elastic limit (0.05 rad) and at 0.2 rad [s] */
     double phi_max, t_phi_max; /* largest fork angle [rad] and when [s] */
-    double vcar_max;         /* largest opponent CG speed along the motorcycle heading [m/s] */
-    double t_vcar_max;       /* when [s] */
-    double vcar_end;         /* at the end [m/s] */
-    double vmoto_end;        /* motorcycle frame speed along its heading at the end [m/s] */
-    double f_peak, t_f_peak; /* largest total motorcycle-opponent normal force [N] and when */
-    double drift;            /* energy drift [-] */
-    double m_moto, m_opp;    /* group masses [kg] */
+    double vcar_max;           /* largest opponent CG speed along the motorcycle heading [m/s] */
+    double t_vcar_max;         /* when [s] */
+    double vcar_end;           /* at the end [m/s] */
+    double vmoto_end;          /* motorcycle frame speed along its heading at the end [m/s] */
+    double f_peak, t_f_peak;   /* largest total motorcycle-opponent normal force [N] and when */
+    double drift;              /* energy drift [-] */
+    double m_moto, m_opp;      /* group masses [kg] */
     long steps;
 } car_figs;
 
-static int prefixed(const char *name, const char *p) { return strncmp(name, p, strlen(p)) == 0; }
+static int prefixed(const char *name, const char *p)
+{
+    return strncmp(name, p, strlen(p)) == 0;
+}
 
 /* run a scenario and collect the figures; series: when not NULL, a CSV file of t [ms], fork
  * angle [rad], opponent speed along the heading [m/s], frame speed along the heading [m/s],
@@ -517,7 +526,8 @@ static void test_sedan_alone(void)
             CHECK(loaded == 4);
         }
         printf("  sedan %s: CG height moved at most %.3f mm; velocity (%.2e, %.6f) m/s; drift "
-               "%.2e\n", moving ? "rolling at 6.7 m/s" : "at rest", dz * 1e3, s->kin[car].vel[0],
+               "%.2e\n",
+               moving ? "rolling at 6.7 m/s" : "at rest", dz * 1e3, s->kin[car].vel[0],
                s->kin[car].vel[1], mb_energy_drift(m, s));
         mb_state_destroy(&s);
         mb_model_destroy(&m);

@@ -93,6 +93,11 @@ static int run(const char *label, fe_builder *b, int cycles)
            ss);
     printf("    1 thread by sub-stage [ns/element-cycle]:");
     for (int k = 0; k < FE_NSTAGE; k++) printf(" %s %.1f", fe_stage_name[k], 1e9 * t1.timer[k] / ec);
+    if (!(one && *one == '1')) {
+        printf("\n    2 threads by sub-stage [ns/element-cycle]:");
+        for (int k = 0; k < FE_NSTAGE; k++)
+            printf(" %s %.1f", fe_stage_name[k], 1e9 * t2.timer[k] / ec);
+    }
     printf("\n    1 thread CPU %.1f ns/element-cycle; %d cycles to t = %.3g ms, energy error %.2e\n",
            1e9 * t1.cpu / ec, cycles, 1e3 * t1.t, t1.eerr);
     fe_model_destroy(&m);

@@ -57,12 +57,12 @@ typedef struct {
     fe_kw_loc loc;
 } fe_kw_part;
 
-typedef enum { FE_KW_SEC_SHELL, FE_KW_SEC_SOLID, FE_KW_SEC_BEAM } fe_kw_sec_kind;
+typedef enum { FE_KW_SEC_SHELL, FE_KW_SEC_SOLID, FE_KW_SEC_BEAM, FE_KW_SEC_DISCRETE } fe_kw_sec_kind;
 
 typedef struct {
     int id;
     fe_kw_sec_kind kind;
-    int elform;     /* element formulation as written (0: the default) [-]           */
+    int elform;     /* element formulation as written (0: the default); discrete: DRO [-] */
     double shrf;    /* shell shear factor (0: default) [-]                            */
     int nip;        /* shell through-thickness points (0: the default, 2) [-]         */
     double t[4];    /* shell thickness at N1..N4 [m]                                  */
@@ -70,11 +70,17 @@ typedef struct {
     fe_kw_loc loc;
 } fe_kw_section;
 
-typedef enum { FE_KW_MAT_ELASTIC = 1, FE_KW_MAT_RIGID = 20, FE_KW_MAT_PLP = 24 } fe_kw_mat_type;
+typedef enum {
+    FE_KW_MAT_ELASTIC = 1,
+    FE_KW_MAT_RIGID = 20,
+    FE_KW_MAT_PLP = 24,
+    FE_KW_MAT_SPRING = 101, /* *MAT_SPRING_ELASTIC (*MAT_S01) */
+    FE_KW_MAT_DAMPER = 102  /* *MAT_DAMPER_VISCOUS (*MAT_S02) */
+} fe_kw_mat_type;
 
 typedef struct {
     int id;
-    fe_kw_mat_type type; /* *MAT_001 | *MAT_020 | *MAT_024                               */
+    fe_kw_mat_type type; /* *MAT_001 | *MAT_020 | *MAT_024 | *MAT_S01 | *MAT_S02          */
     double ro;           /* density [kg/m^3]                                             */
     double e, pr;        /* Young's modulus [Pa], Poisson's ratio [-]                     */
     double sigy, etan;   /* MAT_024 yield stress, tangent modulus [Pa]                    */
@@ -82,6 +88,7 @@ typedef struct {
     int lcss;            /* MAT_024 curve of stress vs. effective plastic strain (0: none) */
     int neps;            /* MAT_024 points of the EPS/ES table given [-]                  */
     double eps[8], es[8];/* EPS1..8 [-], ES1..8 [Pa]                                      */
+    double k;            /* MAT_S01 stiffness K [N/m]; MAT_S02 damping DC [N s/m]          */
     fe_kw_loc loc;
 } fe_kw_mat;
 
@@ -192,7 +199,9 @@ mcs_status fe_kw_add_part(fe_builder *b, const fe_kw_deck *dk, int pid, const fe
                           int props_from_deck, int *node_map, int *index, mcs_error *err);
 
 /* everything: each part (named by its title, else "part_<ID>") with its deck section and
- * material, *BOUNDARY_SPC, *INITIAL_VELOCITY(_GENERATION) (on whole parts), *RIGIDWALL_PLANAR */
+ * material, *ELEMENT_DISCRETE as springs/dampers (*SECTION_DISCRETE DRO 0 with *MAT_S01 or
+ * *MAT_S02, force scaled by S), *BOUNDARY_SPC, *INITIAL_VELOCITY(_GENERATION) (on whole
+ * parts), *RIGIDWALL_PLANAR */
 mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err);
 
 /* a deck of a built model: node i gets ID i+1, part i ID i+1 with its section and material,

@@ -53,6 +53,9 @@ static mcs_status section_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_sec
                                   "one-point hexahedron with hourglass control (ELFORM 1)",
                     dk->file[k->loc.file], k->loc.line, k->id, k->elform);
         s->type = FE_SECTION_SOLID;
+    } else if (k->kind == FE_KW_SEC_DISCRETE) {
+        return at(dk, k->loc, err, MCS_ERR_TYPE,
+                  "*SECTION_DISCRETE %d belongs to *ELEMENT_DISCRETE parts", k->id);
     } else {
         if (k->elform != 3)
             return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
@@ -116,13 +119,18 @@ static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_ma
     if (!k)
         return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: material %d is not defined", p->id,
                   p->mid);
-    if (k->type == FE_KW_MAT_RIGID)
-        return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
-                  "*MAT_RIGID %d: rigid parts are not built in the FE kernel yet", k->id);
+    if (k->type == FE_KW_MAT_SPRING || k->type == FE_KW_MAT_DAMPER)
+        return at(dk, k->loc, err, MCS_ERR_TYPE,
+                  "material %d is a spring or damper: it belongs to *ELEMENT_DISCRETE parts",
+                  k->id);
     memset(m, 0, sizeof *m);
     m->density = k->ro;
     m->youngs_modulus = k->e;
     m->poisson = k->pr;
+    if (k->type == FE_KW_MAT_RIGID) { /* the kernel says whether it builds rigid parts */
+        m->model = FE_MAT_RIGID;
+        return MCS_OK;
+    }
     if (k->type == FE_KW_MAT_ELASTIC) {
         m->model = FE_MAT_ELASTIC;
         return MCS_OK;
@@ -200,8 +208,8 @@ mcs_status fe_kw_add_part(fe_builder *b, const fe_kw_deck *dk, int pid, const fe
                        "%s: error: part %d mixes element types; a part holds one type", fn, pid);
     if (t == FE_KW_DISCRETE)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
-                       "%s: error: part %d: *ELEMENT_DISCRETE springs are not built in the "
-                       "kernel yet",
+                       "%s: error: part %d holds *ELEMENT_DISCRETE springs, not a continuum "
+                       "part: read the whole deck (fe_kw_add_deck) or give fe.springs",
                        fn, pid);
     fe_part_desc d = *base;
     d.mesh.generate = FE_MESH_NONE;
@@ -398,6 +406,51 @@ static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[F
     return MCS_OK;
 }
 
+/* the *ELEMENT_DISCRETE of part p as springs (*MAT_S01) or dampers (*MAT_S02), force x S */
+static mcs_status add_springs(fe_builder *b, const fe_kw_deck *dk, const fe_kw_part *p, int *map,
+                              mcs_error *err)
+{
+    const fe_kw_section *s = fe_kw_find_section(dk, p->secid);
+    const fe_kw_mat *m = fe_kw_find_mat(dk, p->mid);
+    if (!s || s->kind != FE_KW_SEC_DISCRETE)
+        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: discrete elements need a "
+                                                "*SECTION_DISCRETE (SECID %d)",
+                  p->id, p->secid);
+    if (s->elform != 0)
+        return at(dk, s->loc, err, MCS_ERR_UNSUPPORTED,
+                  "*SECTION_DISCRETE %d: DRO %d (torsional) is not built", s->id, s->elform);
+    if (!m || (m->type != FE_KW_MAT_SPRING && m->type != FE_KW_MAT_DAMPER))
+        return at(dk, p->loc, err, MCS_ERR_KEY,
+                  "*PART %d: discrete elements need *MAT_SPRING_ELASTIC or *MAT_DAMPER_VISCOUS "
+                  "(MID %d)",
+                  p->id, p->mid);
+    const fe_kw_elems *e = &dk->elem[FE_KW_DISCRETE];
+    for (int i = 0; i < e->n; i++) {
+        if (e->pid[i] != p->id) continue;
+        double S = e->dval[2 * i];
+        if (e->node[2 * i + 1] == 0 || e->dval[2 * i + 1] != 0 || !(S > 0))
+            return at(dk, e->loc[i], err, MCS_ERR_UNSUPPORTED,
+                      "*ELEMENT_DISCRETE %d: N2 = 0 (to ground), OFFSET and S <= 0 are not built",
+                      e->id[i]);
+        fe_spring_desc d;
+        memset(&d, 0, sizeof d);
+        snprintf(d.name, sizeof d.name, "discrete_%d", e->id[i]);
+        for (int j = 0; j < 2; j++) {
+            int di = fe_kw_node_index(dk, e->node[2 * i + j]);
+            mcs_status st = map[di] >= 0 ? MCS_OK
+                                         : fe_builder_add_node(b, dk->node_x + 3 * di, &map[di], err);
+            if (st) return st;
+            d.end[j].node = map[di];
+        }
+        if (m->type == FE_KW_MAT_SPRING) d.stiffness = S * m->k;
+        else d.damping = S * m->k;
+        mcs_error kerr = {0};
+        mcs_status st = fe_builder_add_spring(b, &d, &kerr);
+        if (st) return at(dk, e->loc[i], err, st, "*ELEMENT_DISCRETE %d: %s", e->id[i], kerr.msg);
+    }
+    return MCS_OK;
+}
+
 mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
 {
     for (int t = 0; t < FE_KW_NETYPE; t++)
@@ -419,6 +472,10 @@ mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
         else snprintf(names[k], FE_NAME_MAX, "part_%d", p->id);
         memcpy(d.name, names[k], FE_NAME_MAX);
         st = part_velocity(dk, k, d.initial_velocity, err);
+        if (!st && part_etype(dk, p->id) == FE_KW_DISCRETE) {
+            st = add_springs(b, dk, p, map, err);
+            continue;
+        }
         if (!st && part_etype(dk, p->id) == -1) {
             mcs_log(MCS_LOG_WARN, "%s:%d: warning: *PART %d has no elements: skipped",
                     dk->file[p->loc.file], p->loc.line, p->id);

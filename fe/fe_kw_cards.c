@@ -320,6 +320,24 @@ static mcs_status h_section_beam(kw_ctx *c, const kw_card *cd, int n)
     return MCS_OK;
 }
 
+/* SECID DRO KD V0 CL FD CDL TDL: only DRO is kept (0 translational, 1 torsional) */
+static mcs_status h_section_discrete(kw_ctx *c, const kw_card *cd, int n)
+{
+    for (int i = 0; i < n;) {
+        i = title_card(c, i);
+        TRY(need(c, cd, n, i, 1));
+        int id;
+        mcs_status st = MCS_OK;
+        TRY(kw_int(c, &cd[i], &KW_L10, 0, "SECID", 0, &id));
+        fe_kw_section *s = new_section(c, &cd[i], id, &st);
+        if (!s) return st;
+        s->kind = FE_KW_SEC_DISCRETE;
+        TRY(kw_int(c, &cd[i], &KW_L10, 1, "DRO", 0, &s->elform));
+        i++;
+    }
+    return MCS_OK;
+}
+
 /* ---- *MAT_*, *DEFINE_CURVE ---- */
 
 static fe_kw_mat *new_mat(kw_ctx *c, const kw_card *cd, fe_kw_mat_type type, mcs_status *st)
@@ -363,6 +381,41 @@ static mcs_status h_mat_elastic(kw_ctx *c, const kw_card *cd, int n)
         i++;
     }
     return MCS_OK;
+}
+
+/* *MAT_SPRING_ELASTIC: MID K; *MAT_DAMPER_VISCOUS: MID DC (force per length or velocity) */
+static mcs_status h_mat_discrete(kw_ctx *c, const kw_card *cd, int n, fe_kw_mat_type type)
+{
+    for (int i = 0; i < n;) {
+        i = title_card(c, i);
+        TRY(need(c, cd, n, i, 1));
+        int id;
+        TRY(kw_int(c, &cd[i], &KW_L10, 0, "MID", 0, &id));
+        if (fe_kw_find_mat(c->d, id))
+            return kw_fail(c, cd[i].file, cd[i].line, 1, MCS_ERR_FORMAT,
+                           "material %d is defined twice", id);
+        fe_kw_mat *m = kw_push((void **)&c->d->mat, &c->d->nmat, &c->d->cap_mat, sizeof *m);
+        if (!m) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
+        m->id = id, m->type = type, m->loc = loc_of(&cd[i]);
+        TRY(kw_real(c, &cd[i], &KW_L10, 1, type == FE_KW_MAT_SPRING ? "K" : "DC", 0, &m->k));
+        /* N/m = kg/s^2; N s/m = kg/s */
+        m->k *= type == FE_KW_MAT_SPRING ? c->d->unit[2] / (c->d->unit[1] * c->d->unit[1])
+                                         : c->d->unit[2] / c->d->unit[1];
+        if (!isfinite(m->k))
+            return kw_fail(c, cd[i].file, cd[i].line, 0, MCS_ERR_FORMAT,
+                           "the constant is out of range in SI units");
+        i++;
+    }
+    return MCS_OK;
+}
+
+static mcs_status h_mat_spring(kw_ctx *c, const kw_card *cd, int n)
+{
+    return h_mat_discrete(c, cd, n, FE_KW_MAT_SPRING);
+}
+static mcs_status h_mat_damper(kw_ctx *c, const kw_card *cd, int n)
+{
+    return h_mat_discrete(c, cd, n, FE_KW_MAT_DAMPER);
 }
 
 static mcs_status h_mat_rigid(kw_ctx *c, const kw_card *cd, int n)
@@ -651,6 +704,11 @@ static const struct {
     {"SECTION_SHELL", h_section_shell, 0},
     {"SECTION_SOLID", h_section_solid, 0},
     {"SECTION_BEAM", h_section_beam, 0},
+    {"SECTION_DISCRETE", h_section_discrete, 0},
+    {"MAT_SPRING_ELASTIC", h_mat_spring, 0},
+    {"MAT_S01", h_mat_spring, 0},
+    {"MAT_DAMPER_VISCOUS", h_mat_damper, 0},
+    {"MAT_S02", h_mat_damper, 0},
     {"MAT_ELASTIC", h_mat_elastic, 0},
     {"MAT_001", h_mat_elastic, 0},
     {"MAT_PIECEWISE_LINEAR_PLASTICITY", h_mat_plp, 0},

@@ -133,6 +133,9 @@ static void w_sections(kw_out *o, const fe_kw_deck *d)
         } else if (s->kind == FE_KW_SEC_SOLID) {
             kw(o, "SECTION_SOLID");
             put_int(o, 10, s->id), put_int(o, 10, s->elform), endl(o);
+        } else if (s->kind == FE_KW_SEC_DISCRETE) {
+            kw(o, "SECTION_DISCRETE");
+            put_int(o, 10, s->id), put_int(o, 10, s->elform), endl(o);
         } else {
             kw(o, "SECTION_BEAM");
             put_int(o, 10, s->id), put_int(o, 10, s->elform), endl(o);
@@ -146,6 +149,14 @@ static void w_mats(kw_out *o, const fe_kw_deck *d)
     double R = kw_u_dens(d), S = kw_u_stress(d);
     for (int i = 0; i < d->nmat; i++) {
         const fe_kw_mat *m = &d->mat[i];
+        if (m->type == FE_KW_MAT_SPRING || m->type == FE_KW_MAT_DAMPER) {
+            int spring = m->type == FE_KW_MAT_SPRING;
+            kw(o, spring ? "MAT_SPRING_ELASTIC" : "MAT_DAMPER_VISCOUS");
+            put_int(o, 10, m->id);
+            put_real(o, 10, m->k / (d->unit[2] / (spring ? d->unit[1] * d->unit[1] : d->unit[1])));
+            endl(o);
+            continue;
+        }
         kw(o, m->type == FE_KW_MAT_ELASTIC ? "MAT_ELASTIC"
               : m->type == FE_KW_MAT_RIGID ? "MAT_RIGID" : "MAT_PIECEWISE_LINEAR_PLASTICITY");
         put_int(o, 10, m->id), put_real(o, 10, m->ro / R), put_real(o, 10, m->e / S);
@@ -316,9 +327,18 @@ static mcs_status model_props(const fe_model *m, int ip, fe_kw_deck *d, mcs_erro
     } else {
         s->kind = FE_KW_SEC_BEAM, s->elform = 3, s->area = p->section.area;
     }
+    if (p->section.type == FE_SECTION_MEMBRANE) /* a 3-node membrane: shell ELFORM 9 */
+        s->kind = FE_KW_SEC_SHELL, s->elform = 9, s->nip = 1, s->t[0] = s->t[1] = s->t[2] =
+            s->t[3] = p->section.thickness;
     const fe_material_desc *md = &p->material;
     k->ro = md->density, k->e = md->youngs_modulus, k->pr = md->poisson;
-    k->type = md->model == FE_MAT_ELASTIC_PLASTIC ? FE_KW_MAT_PLP : FE_KW_MAT_ELASTIC;
+    k->type = md->model == FE_MAT_ELASTIC_PLASTIC ? FE_KW_MAT_PLP
+              : md->model == FE_MAT_RIGID         ? FE_KW_MAT_RIGID
+                                                  : FE_KW_MAT_ELASTIC;
+    if (md->model == FE_MAT_FOAM || md->model == FE_MAT_FABRIC)
+        mcs_log(MCS_LOG_WARN, "keyword: part '%s': %s material written as *MAT_ELASTIC (RO, E, "
+                              "PR only): the subset has no foam or fabric card",
+                p->name, md->model == FE_MAT_FOAM ? "foam" : "fabric");
     if (k->type != FE_KW_MAT_PLP) return MCS_OK;
     k->sigy = md->nhardening > 0 ? md->hardening[0][1] : md->yield_stress;
     k->c = md->cowper_symonds_c, k->p = md->cowper_symonds_p;

@@ -18,7 +18,7 @@ OPT      ?= -O2 -g
 # `make OMP=` builds without it
 OMP      ?= -fopenmp
 CFLAGS   += -std=c17 -Wall -Wextra -Werror -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE \
-            $(OPT) $(OMP) -MMD -MP -I. $(PKG_CFLAGS) $(SAN)
+            $(OPT) $(OMP) $(if $(OMP),,-Wno-unknown-pragmas) -MMD -MP -I. $(PKG_CFLAGS) $(SAN)
 LDFLAGS  += $(SAN) $(OMP)
 LDLIBS   += $(PKG_LIBS) -lsundials_cvode -lsundials_nvecserial -llapack -lblas -lm
 

@@ -39,10 +39,11 @@ static inline __attribute__((always_inline)) double shell_frame(const double xe[
     fe_cross(d1, d2, E);
     const double n2 = fe_dot(E, E), sE = fe_dot(s1, E), n0 = n2 * fe_dot(s1, s1) - sE * sE;
     if (!(n2 > 0) || !(n0 > 0)) return 0;
-    const double a = 1 / sqrt(n2), b = 1 / sqrt(n0); /* 1/|E|, 1/(|E| |e1 raw|) */
+    /* one division: inv = 1 / (|E| sqrt(n0)); 1/|E| = sqrt(n0) inv */
+    const double sa = sqrt(n2), sb = sqrt(n0), inv = 1 / (sa * sb);
     for (int i = 0; i < 3; i++) {
-        e[2][i] = E[i] * a;
-        e[0][i] = (n2 * s1[i] - sE * E[i]) * b * a; /* = (s1 - (s1.e3) e3) / |...| */
+        e[2][i] = E[i] * (sb * inv);
+        e[0][i] = (n2 * s1[i] - sE * E[i]) * inv; /* = (s1 - (s1.e3) e3) / |...| */
     }
     fe_cross(e[2], e[0], e[1]);
     for (int k = 0; k < 4; k++) {
@@ -126,7 +127,11 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
             wx[q] = fe_dot(w, fr[0]);
             wy[q] = fe_dot(w, fr[1]);
         }
-        const double i2a = 0.5 / A;
+        /* one division for 1/(2A) and the characteristic length (1 + beta) A / longest side
+         * (beta = 1 for a degenerate triangle); a positive area has a positive longest side */
+        int tri;
+        const double side = sqrt(shell_side2(xe, &tri)), iAs = 1 / (A * side);
+        const double i2a = 0.5 * side * iAs, len = (1 + tri) * A * A * iAs, dte = len * ic0;
         const double B1[4] = {i2a * (yl[1] - yl[3]), i2a * (yl[2] - yl[0]), i2a * (yl[3] - yl[1]),
                               i2a * (yl[0] - yl[2])};
         const double B2[4] = {i2a * (xl[3] - xl[1]), i2a * (xl[0] - xl[2]), i2a * (xl[1] - xl[3]),
@@ -211,9 +216,6 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
         }
         const double km = km0 * A * bb, kw = kw0 * A * bb * bb, kr = kr0 * A * bb;
         const double kk[5] = {km, km, kw, kr, kr};
-        int tri;
-        const double side2 = shell_side2(xe, &tri);
-        const double len = side2 > 0 ? (1 + tri) * A / sqrt(side2) : 0, dte = len * ic0;
         double *hg = s->shell_hg + 5 * (size_t)e, fh[5];
         for (int i = 0; i < 5; i++) {
             if (visc) {

@@ -494,7 +494,13 @@ static const mcs_skey shell_keys[] = {
     HOURGLASS,
     END,
 };
-static const mcs_skey solid_keys[] = {HOURGLASS, END};
+static const mcs_skey solid_keys[] = {
+    HOURGLASS,
+    /* hex8: one point + hourglass control (LS-DYNA ELFORM 1) or 2x2x2 Gauss, selective
+     * reduced (fe/fe_hex_full.c) */
+    E("formulation", "one_point|full", 0, "hex integration (default one_point)"),
+    END,
+};
 static const mcs_skey membrane_keys[] = {
     Q("thickness", LEN, REQ | GT, 0, 0, "membrane thickness [m]"),
     END,

@@ -195,6 +195,9 @@ static mcs_status check_section(const fe_part_desc *d, mcs_error *err)
         return MCS_ERR(err, MCS_ERR_RANGE,
                        "fe: part '%s': section.hourglass_coefficient and shear_factor must be >= 0",
                        n);
+    if (s->formulation != FE_HEX_ONE_POINT && (s->formulation != FE_HEX_FULL || s->type != FE_SECTION_SOLID))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: part '%s': section.formulation full is for solid sections only", n);
     return MCS_OK;
 }
 

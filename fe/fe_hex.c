@@ -105,6 +105,10 @@ static void gather8(const double *src, const int *c, double out[8][3])
 void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chunk_acc *acc)
 {
     const fe_part *p = &m->part[ip];
+    if (p->section.formulation == FE_HEX_FULL) { /* 2x2x2 Gauss, B-bar (fe_hex_full.c) */
+        fe_hex_full_range(m, s, ip, e0, e1, acc);
+        return;
+    }
     const double dt = s->dt_prev, rho = p->material.density, c0 = p->wave_speed;
     const double mod = p->lambda + 2 * p->mu, qhg = p->hg_coef;
     const int visc = p->section.hourglass == FE_HG_VISCOUS;

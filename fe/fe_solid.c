@@ -24,7 +24,15 @@ mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err)
     mcs_status st = check_opts(m, err);
     if (st) return st;
     for (int n = 0; n < m->nnode; n++) m->node_body[n] = -1;
-    for (int ip = 0; ip < m->npart; ip++) m->part[ip].body = -1;
+    for (int ip = 0; ip < m->npart; ip++) {
+        fe_part *p = &m->part[ip];
+        p->body = -1;
+        /* Gauss points of the fully integrated hexes */
+        if (p->elem_kind == FE_KIND_HEX && p->section.formulation == FE_HEX_FULL) {
+            p->gp_begin = m->nhex_gp;
+            m->nhex_gp += 8 * (p->elem_end - p->elem_begin);
+        }
+    }
     st = fe_discrete_build(b, m, err);
     if (!st) st = fe_rigid_build(m, err);
     if (!st) st = fe_discrete_steps(m, err);

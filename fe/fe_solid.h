@@ -63,8 +63,9 @@ void fe_discrete_forces(const fe_model *m, fe_state *s);
 void fe_gravity_forces(const fe_model *m, fe_state *s);
 /* after the node update: moves the rigid bodies and their nodes, kinetic energy and works */
 void fe_rigid_integrate(const fe_model *m, fe_state *s);
-/* element loop of a fully integrated hex part (fe_hex_part hands over) */
-void fe_hex_full_part(const fe_model *m, fe_state *s, int ip);
+/* elements e0..e1-1 of a fully integrated hex part (fe_hex_range hands over) */
+void fe_hex_full_range(const fe_model *m, fe_state *s, int ip, int e0, int e1,
+                       fe_chunk_acc *acc);
 /* foam stress from the deformation gradient F (t = 0 -> t) and the velocity gradient L:
  * Cauchy stress sig (xx yy zz xy yz zx) written, *emax (largest compressive strain seen) and
  * *rate (filtered engineering strain rate) updated */

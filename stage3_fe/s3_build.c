@@ -103,6 +103,8 @@ static mcs_status read_section(const mcs_node *sec, fe_section_desc *d, mcs_erro
     }
     if (type && strcmp(type, "solid") == 0) {
         d->type = FE_SECTION_SOLID;
+        const char *form = mcs_node_str(get(sec, "formulation"));
+        if (form && strcmp(form, "full") == 0) d->formulation = FE_HEX_FULL;
         return MCS_OK;
     }
     if (type && strcmp(type, "membrane") == 0) {

@@ -30,15 +30,19 @@ int cli_stage3_scenario(const mcs_scenario *scn, const char *out, int quiet, int
         cli_json_string(out);
         printf(", \"stage3\": {\"steps\": %ld, \"elements\": %d, \"nodes\": %d, "
                "\"wall_time_s\": %.6g, \"energy_drift\": %.6g, \"end_time_s\": %.9g, "
-               "\"dt_initial_s\": %.6g, \"timers_s\": {",
+               "\"dt_initial_s\": %.6g, \"mass_added_kg\": %.6g, \"mass_added_fraction\": %.6g, "
+               "\"timers_s\": {",
                sum.steps, sum.elements, sum.nodes, sum.wall_time_s, sum.energy_drift, sum.t_end,
-               sum.dt_initial);
+               sum.dt_initial, sum.mass_added, sum.mass_added_fraction);
         for (int k = 0; k < FE_NSTAGE; k++)
             printf("%s\"%s\": %.4g", k ? ", " : "", fe_stage_name[k], sum.timer[k]);
         printf("}}}\n");
     } else if (!quiet) {
         fprintf(stderr, "stage 3: %ld steps, %d elements, %.3g s wall, energy drift %.3g -> %s\n",
                 sum.steps, sum.elements, sum.wall_time_s, sum.energy_drift, out);
+        if (sum.mass_added > 0)
+            fprintf(stderr, "stage 3: mass scaling added %.6g kg (%.3g %% of the model)\n",
+                    sum.mass_added, 100 * sum.mass_added_fraction);
     }
     return fflush(stdout) ? 2 : 0;
 }

@@ -692,6 +692,11 @@ static const mcs_skey fe_mass_keys[] = {
     END,
 };
 static const mcs_smap fe_mass_map = {.what = "point mass", .keys = fe_mass_keys};
+static const mcs_skey mass_scaling_keys[] = {
+    Q("time_step", MCS_DIM_TIME, REQ | GT, 0, 0, "target step, safety factor included [s]"),
+    END,
+};
+static const mcs_smap mass_scaling_map = {.what = "mass scaling", .keys = mass_scaling_keys};
 /* ---- fe: gas bags and belt retractors (fe/fe_restraint.h) ---- */
 
 #define MASSFLOW MCS_D(0, 1, -1, 0, 0)
@@ -768,6 +773,8 @@ static const mcs_skey fe_keys[] = {
     Q("energy_growth_limit", NONE, GE, 0, 0, "stop when total energy grows by this fraction"),
     L("springs", spring_map, 0, "discrete springs and dampers"),
     L("masses", fe_mass_map, 0, "point masses"),
+    /* LS-DYNA DT2MS < 0: mass added only to elements whose step is below time_step */
+    M("mass_scaling", mass_scaling_map, 0, "selective mass scaling"),
     END,
 };
 static const mcs_smap fe_map = {.what = "fe block", .keys = fe_keys};

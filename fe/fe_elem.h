@@ -136,6 +136,15 @@ enum { FE_ACC_KE, FE_ACC_WB, FE_ACC_WF, FE_ACC_DB, FE_ACC_DF, FE_ACC_BAD, FE_NAC
 /* element steps of the part at positions x (no safety factor); *elem gets the smallest */
 double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem);
 
+/* element step factor of mass scaling (fe_massscale.c; 1 without); kind FE_KIND_*, e the
+ * element's index in its kind */
+static inline double fe_dt_factor(const fe_model *m, int kind, int e)
+{
+    if (!m->elem_dt_factor) return 1;
+    int off = kind == FE_KIND_HEX ? 0 : kind == FE_KIND_SHELL ? m->nhex : m->nhex + m->nshell;
+    return m->elem_dt_factor[off + e];
+}
+
 static inline void fe_cross(const double a[3], const double b[3], double c[3])
 {
     c[0] = a[1] * b[2] - a[2] * b[1];

@@ -178,7 +178,7 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
         /* dissipation with the trapezoidal rule of every other work (fe_state.h) */
         e_diss += -0.5 * (s->hex_q[e] + q) * dv * vol;
         s->hex_q[e] = q;
-        double dte = len / (qrate + sqrt(qrate * qrate + c0 * c0));
+        double dte = len / (qrate + sqrt(qrate * qrate + c0 * c0)) * fe_dt_factor(m, FE_KIND_HEX, e);
         if (dte < dtmin) dtmin = dte, dtel = e;
         /* nodal forces f_iI = V sig_ij b_jI */
         double sxx = sg[0] - q, syy = sg[1] - q, szz = sg[2] - q;

@@ -241,7 +241,8 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
                 mo[3 * q + i] = mx * fr[0][i] + my * fr[1][i];
             }
         }
-        if (dte < dtmin) dtmin = dte, dtel = e;
+        const double dts = dte * fe_dt_factor(m, FE_KIND_SHELL, e); /* mass scaling */
+        if (dts < dtmin) dtmin = dts, dtel = e;
     }
     acc->e_int = e_int;
     acc->e_hg = e_hg;

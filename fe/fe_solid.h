@@ -77,12 +77,4 @@ void fe_foam_hex(const fe_model *m, const fe_part *p, const int *conn, const dou
 /* deformation gradient at the centre of a hex: x (current) against x0 (t = 0) */
 void fe_hex_deformation(const double x0[8][3], const double x[8][3], double F[3][3]);
 
-/* element step factor of mass scaling (1 without); kind FE_KIND_*, e the index in the kind */
-static inline double fe_dt_factor(const fe_model *m, int kind, int e)
-{
-    if (!m->elem_dt_factor) return 1;
-    int off = kind == FE_KIND_HEX ? 0 : kind == FE_KIND_SHELL ? m->nhex : m->nhex + m->nshell;
-    return m->elem_dt_factor[off + e];
-}
-
 #endif

@@ -41,7 +41,7 @@ void fe_truss_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
             f[i] = -fn * d[i];
             f[3 + i] = fn * d[i];
         }
-        double dte = len / c0;
+        double dte = len / c0 * fe_dt_factor(m, FE_KIND_TRUSS, e);
         if (dte < dtmin) dtmin = dte, dtel = e;
     }
     acc->e_int = e_int;
@@ -86,7 +86,7 @@ double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem)
             }
             len = sqrt(d2);
         }
-        double dte = len / p->wave_speed;
+        double dte = len / p->wave_speed * fe_dt_factor(m, p->elem_kind, e);
         if (dte < dtmin) dtmin = dte, *elem = e;
     }
     return dtmin;

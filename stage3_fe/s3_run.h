@@ -7,7 +7,8 @@
  *   /stage3/mesh/<part>/{nodes [nn,3], elements [ne,k]} (initial geometry; attr node_offset);
  *   /stage3/fields/{time [nout] s, displacement [nout, nnode, 3] m} at the output rate
  *     (positions at the end of a step, so fields/time is one step ahead of /stage3/time).
- * Attributes of /stage3: steps, elements, nodes, energy_drift, output_rate [Hz].
+ * Attributes of /stage3: steps, elements, nodes, energy_drift, output_rate [Hz], mass_added
+ * [kg] and mass_added_fraction [-] (mass scaling: added / physical mass; 0 without).
  * A numerical failure (MCS_ERR_NUMERIC: instability, inverted element, energy growth) aborts
  * the results writer: no file is left. */
 #ifndef S3_RUN_H
@@ -29,6 +30,8 @@ typedef struct {
     double energy_drift;       /* |total(t_end) - total(0)| / largest energy [-]     */
     double t_end;              /* simulated time reached [s]                          */
     double dt_initial;         /* first stable step [s]                              */
+    double mass_added;         /* mass added by mass scaling [kg]                    */
+    double mass_added_fraction; /* that over the physical mass [-]                  */
     double timer[FE_NSTAGE];   /* wall time per fe_step sub-stage [s]                */
 } s3_summary;
 

@@ -155,7 +155,8 @@ static void test_hysteresis_loop(void)
     fe_model_destroy(&m);
 }
 
-/* stretched: nominal stress E (lambda - 1), Cauchy the same (lateral stretches 1) */
+/* stretched: nominal stress E (lambda - 1), Cauchy the same (lateral stretches 1); capped at
+ * tension_cutoff when one is given */
 static void test_tension_linear(void)
 {
     const double v = 1 * L0;
@@ -169,6 +170,13 @@ static void test_tension_linear(void)
     }
     double e = v * s->energy_time / L0;
     CHECK_REL(s->hex_sig[2], 1e6 * e, 1e-9);
+    fe_state_destroy(&s);
+    /* with a tension cutoff of 50 kPa the stress stays there beyond 5 % */
+    for (int n = 0; n < 1; n++) ((fe_part *)m->part)[n].material.foam_tension_cutoff = 50e3;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    while (v * s->time < 0.1 * L0 && fe_step(m, s) == MCS_OK) {
+    }
+    CHECK_REL(s->hex_sig[2], 50e3, 1e-9);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }

@@ -229,11 +229,54 @@ static void test_rigid_on_elastic_column(void)
     fe_model_destroy(&m);
 }
 
+/* a boundary on a rigid part's nodes holds the body: translations at the prescribed velocity
+ * (gravity acting), rotations held; the constraint's work balances the energy */
+static void test_constrained_body(void)
+{
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc d = rigid_box("block", 0.1, 0.05, 0.08, 2, 1000);
+    d.initial_velocity[1] = 3; /* free along y */
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_boundary_desc bc = ft_bc("block", FE_WHERE_X_MIN, FE_DOF_X | FE_DOF_Z | FE_DOF_ROT);
+    bc.velocity[0] = 2, bc.velocity[2] = -1;
+    CHECK(fe_builder_add_boundary(b, &bc, &err) == MCS_OK);
+    fe_load_desc l = {.where = FE_WHERE_ALL, .force = {50, 20, 70}};
+    snprintf(l.part, sizeof l.part, "block");
+    CHECK(fe_builder_add_load(b, &l, &err) == MCS_OK);
+    fe_opts o = fe_opts_default();
+    o.dt_max = 1e-4;
+    o.gravity[2] = -9.81;
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+    fe_builder_destroy(&b);
+    if (!m) return;
+    CHECK(m->body[0].fix == (FE_DOF_X | FE_DOF_Z | FE_DOF_ROT));
+    fe_state *s = NULL;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    for (int k = 0; k < 500; k++) CHECK(fe_step(m, s) == MCS_OK);
+    const double M = m->body[0].mass, t = s->energy_time + 0.5 * s->dt_prev;
+    CHECK_NEAR(s->body_v[0], 2, 1e-12);
+    CHECK_NEAR(s->body_v[2], -1, 1e-12);
+    CHECK_NEAR(s->body_v[1], 3 + 20 / M * t, 1e-9);
+    CHECK(fabs(s->body_w[0]) + fabs(s->body_w[1]) + fabs(s->body_w[2]) == 0);
+    /* every node moves with the body */
+    for (int n = 0; n < m->nnode; n++) {
+        CHECK_NEAR(s->node_x[3 * n] - m->node_x0[3 * n], 2 * s->time, 1e-12);
+        CHECK_NEAR(s->node_x[3 * n + 2] - m->node_x0[3 * n + 2], -1 * s->time, 1e-12);
+    }
+    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-9 * s->energy[FE_E_kinetic]);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+}
+
 int main(void)
 {
     RUN(test_tumbling_plate);
     RUN(test_pushed_block);
     RUN(test_block_on_penalty_wall);
     RUN(test_rigid_on_elastic_column);
+    RUN(test_constrained_body);
     TEST_END();
 }

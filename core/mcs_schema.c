@@ -645,11 +645,18 @@ static const mcs_skey two_surface_keys[] = {
     RS("b", PART, 1, REQ, "second side (master)"),
     END,
 };
+static const mcs_skey slave_master_keys[] = {
+    RS("slave", PART, 1, REQ, "slave side (its nodes against the master segments)"),
+    RS("master", PART, 1, REQ, "master side (symmetric: its nodes against the slave segments too)"),
+    END,
+};
 static const mcs_smap single_surface_map = {.what = "single_surface contact",
                                             .keys = single_surface_keys};
+static const mcs_smap two_surface_map = {.what = "two_surface contact", .keys = slave_master_keys};
 static const mcs_smap s2s_map = {.what = "surface_to_surface contact", .keys = two_surface_keys};
 static const mcs_smap n2s_map = {.what = "node_to_surface contact", .keys = two_surface_keys};
 static const mcs_svariant fe_contact_variants[] = {{"single_surface", &single_surface_map},
+                                                   {"two_surface", &two_surface_map},
                                                    {"surface_to_surface", &s2s_map},
                                                    {"node_to_surface", &n2s_map},
                                                    {0}};
@@ -659,6 +666,11 @@ static const mcs_skey fe_contact_keys[] = {
     Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
     /* penalty stiffness scale (LS-DYNA SLSFAC), default 0.1 */
     Q("penalty_scale", NONE, GT, 0, 0, "penalty stiffness scale factor"),
+    /* mu = mu_d + (mu_s - mu_d) exp(-decay |v_t|) (LS-DYNA FS, FD, DC) */
+    Q("friction_dynamic", NONE, GE, 0, 0, "dynamic friction coefficient (default friction)"),
+    Q("friction_decay", NONE, GE, 0, 0, "exponential decay of friction with slip speed [s/m]"),
+    /* on the shell offsets t/2 (LS-DYNA SST/MST scale) */
+    Q("thickness_scale", NONE, GT, 0, 0, "scale on the shell contact thickness (default 1)"),
     END,
 };
 static const mcs_smap fe_contact_map = {
@@ -759,11 +771,26 @@ static const mcs_skey retractor_keys[] = {
 };
 static const mcs_smap retractor_map = {.what = "retractor", .keys = retractor_keys};
 
+/* rigid ellipsoids the FE nodes meet (penalty on the surface; stage-1 bodies later) */
+static const mcs_skey fe_ellipsoid_keys[] = {
+    S("name", REQ | UNIQ | NE, "ellipsoid name"),
+    V("center", LEN, 3, 3, REQ, 0, "centre at t = 0 [m]"),
+    V("semi_axes", LEN, 3, 3, REQ | GT, 0, "semi-axes along its body axes [m]"),
+    V("orientation", NONE, 4, 4, 0, 0, "body-to-world quaternion w, x, y, z (default identity)"),
+    V("velocity", VEL, 3, 3, 0, 0, "prescribed velocity [m/s] (default fixed)"),
+    RS("parts", PART, 1, 0, "parts whose nodes it meets (default every part)"),
+    Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
+    Q("penalty_scale", NONE, GT, 0, 0, "stiffness scale s of k = s m / dt^2 (default 0.1)"),
+    END,
+};
+static const mcs_smap fe_ellipsoid_map = {.what = "rigid ellipsoid", .keys = fe_ellipsoid_keys};
+
 static const mcs_skey fe_keys[] = {
     L("parts", part_map, REQ | NE, "FE parts"),
     L("boundary", boundary_map, 0, "boundary conditions"),
     L("rigid_walls", wall_map, 0, "rigid walls"),
     L("contacts", fe_contact_map, 0, "FE contacts"),
+    L("rigid_ellipsoids", fe_ellipsoid_map, 0, "rigid ellipsoids"),
     L("loads", load_map, 0, "nodal loads"),
     L("airbags", airbag_map, 0, "gas bags (uniform pressure) bounded by membrane parts"),
     L("retractors", retractor_map, 0, "belt retractors at truss belt ends"),

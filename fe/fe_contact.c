@@ -23,7 +23,8 @@ void fe_contact_state_destroy(fe_contact_state **p)
     if (!p || !*p) return;
     fe_contact_state *c = *p;
     free(c->x_ref), free(c->seg_box), free(c->cell_off), free(c->cell_item), free(c->seg_cells);
-    free(c->pass_hash), free(c->pass_cell_base), free(c->pass_cell);
+    free(c->pass_hash), free(c->pass_cell_base), free(c->pass_cell), free(c->ent_cand);
+    free(c->ent_ncand);
     free(c->ent_seg), free(c->ent_w), free(c->ent_f), free(c->ent_ft), free(c->ent_et);
     free(c->ent_el), free(c->ent_d), free(c->ent_g), free(c->ell_ft), free(c->ell_et);
     free(c->node_fc), free(c->part_fric), free(c->part_elastic), free(c->if_force);
@@ -62,6 +63,8 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
     s->cell_item = zalloc(8 * nseg, sizeof(int), &b);
     s->seg_cells = zalloc(8 * nseg, sizeof(int), &b);
     s->ent_seg = zalloc(ne2, sizeof(int), &b);
+    s->ent_cand = zalloc((size_t)c->nent * FE_CONTACT_CAND, sizeof(int), &b);
+    s->ent_ncand = zalloc((size_t)c->nent, sizeof(int), &b);
     s->ent_w = zalloc(4 * ne2, sizeof(double), &b);
     s->ent_f = zalloc(3 * ne2, sizeof(double), &b);
     s->ent_ft = zalloc(3 * ne2, sizeof(double), &b);
@@ -83,7 +86,7 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
     s->ell_force = zalloc(3 * (size_t)c->nell, sizeof(double), &b);
     s->bytes = b;
     if (!s->pass_hash || !s->pass_cell_base || !s->pass_cell || !s->x_ref || !s->seg_box ||
-        !s->cell_off || !s->cell_item || !s->seg_cells || !s->ent_seg || !s->ent_w ||
+        !s->cell_off || !s->cell_item || !s->seg_cells || !s->ent_seg || !s->ent_cand || !s->ent_ncand || !s->ent_w ||
         !s->ent_f || !s->ent_ft || !s->ent_et || !s->ent_el || !s->ent_d || !s->ent_g ||
         !s->ell_ft || !s->ell_et || !s->node_fc || !s->part_fric || !s->part_elastic ||
         !s->if_force || !s->if_energy || !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v ||
@@ -214,9 +217,12 @@ static void entry_forces(const fe_model *m, fe_state *s, int e)
     const fe_contact_if *I = &c->iface[P->iface];
     const double *x = s->node_x + 3 * node;
     hit hits[FE_CONTACT_HITS];
-    int nh = 0, b0, b1;
-    fe_contact_bucket(cs, p, x, &b0, &b1);
-    const int *item = cs->cell_item + 8 * (size_t)P->seg_begin;
+    int nh = 0, b0 = 0, b1 = cs->ent_ncand[e];
+    const int *item = cs->ent_cand + (size_t)FE_CONTACT_CAND * e;
+    if (b1 < 0) { /* too many candidates to keep: scan the bucket */
+        fe_contact_bucket(cs, p, x, &b0, &b1);
+        item = cs->cell_item + 8 * (size_t)P->seg_begin;
+    }
     for (int k = b0; k < b1; k++) {
         int sg = item[k];
         const double *bx = cs->seg_box + 6 * sg;
@@ -225,9 +231,11 @@ static void entry_forces(const fe_model *m, fe_state *s, int e)
             continue;
         const int *q = c->seg_node + 4 * sg;
         if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) continue;
+        /* topology before geometry: in self contact most boxes hit are the node's own
+         * neighbourhood */
+        if (P->self && seg_has_nbr(c, q, node)) continue;
         hit h;
         if (!seg_gap(c, s->node_x, sg, x, c->ent_ht[e], &h)) continue;
-        if (P->self && seg_has_nbr(c, q, node)) continue;
         if (nh < FE_CONTACT_HITS) hits[nh++] = h;
         else { /* keep the deepest */
             int wmax = 0;
@@ -375,9 +383,46 @@ static double body_power(const fe_contact_model *c, const fe_contact_state *cs)
     return p;
 }
 
+/* after a search: each entry keeps the segments whose grown box holds it (a Verlet list),
+ * its own and (self contact) its neighbours' left out; too many: it scans its bucket */
+static void collect_candidates(const fe_model *m, fe_state *s)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 256)
+#endif
+    for (int e = 0; e < c->nent; e++) {
+        const int node = c->ent_node[e], p = c->ent_pass[e];
+        const fe_contact_pass *P = &c->pass[p];
+        const double *x = s->node_x + 3 * node;
+        int b0, b1, n = 0, *cand = cs->ent_cand + (size_t)FE_CONTACT_CAND * e;
+        fe_contact_bucket(cs, p, x, &b0, &b1);
+        const int *item = cs->cell_item + 8 * (size_t)P->seg_begin;
+        for (int k = b0; k < b1 && n >= 0; k++) {
+            int sg = item[k];
+            const double *bx = cs->seg_box + 6 * sg;
+            if (x[0] < bx[0] || x[0] > bx[3] || x[1] < bx[1] || x[1] > bx[4] || x[2] < bx[2] ||
+                x[2] > bx[5])
+                continue;
+            const int *q = c->seg_node + 4 * sg;
+            if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) continue;
+            if (P->self && seg_has_nbr(c, q, node)) continue;
+            int dup = 0;
+            for (int j = 0; j < n && !dup; j++) dup = cand[j] == sg;
+            if (dup) continue;
+            if (n == FE_CONTACT_CAND) n = -1;
+            else cand[n++] = sg;
+        }
+        cs->ent_ncand[e] = n;
+    }
+}
+
+/* the lists hold while no node has moved half the margin (node and segment together less
+ * than the margin the boxes were grown by) */
 static int moved_past_margin(const fe_contact_model *c, const fe_state *s)
 {
-    const double m2 = c->margin * c->margin;
+    const double m2 = 0.25 * c->margin * c->margin;
     for (int t = 0; t < c->nnode_touch; t++) {
         const double *x = s->node_x + 3 * c->touch[t], *r = s->contact->x_ref + 3 * t;
         double d0 = x[0] - r[0], d1 = x[1] - r[1], d2 = x[2] - r[2];
@@ -394,7 +439,10 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
     /* forward half of the previous step's contact work (velocities now at t - dt/2) */
     cs->work_nodes += 0.5 * cs->dth_prev * touch_power(c, s);
     cs->work_bodies += 0.5 * cs->dth_prev * body_power(c, cs);
-    if (c->npass > 0 && (cs->need_rebuild || moved_past_margin(c, s))) fe_contact_search(m, s);
+    if (c->npass > 0 && (cs->need_rebuild || moved_past_margin(c, s))) {
+        fe_contact_search(m, s);
+        collect_candidates(m, s);
+    }
     /* phase 1: entries are independent (each writes its own slots) */
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic, 256)

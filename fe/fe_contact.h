@@ -18,6 +18,7 @@
 #define FE_CONTACT_MAX 16    /* most contact interfaces                                      */
 #define FE_CONTACT_PARTS 8   /* most parts on each side of an interface                      */
 #define FE_ELLIPSOID_MAX 32  /* most rigid ellipsoids                                        */
+#define FE_CONTACT_CAND 24   /* candidate segments kept per slave node between searches       */
 
 typedef enum {
     FE_CONTACT_TWO_SURFACE,     /* slave nodes vs master segments and master nodes vs slave
@@ -101,7 +102,7 @@ typedef struct fe_contact_model {
     int *touch;                  /* (nnode_touch) nodes of any contact (slave or segment)       */
     fe_contact_ellipsoid *ell;   /* (nell)                                                     */
     int *ell_node;               /* (nell_node) nodes each ellipsoid acts on                   */
-    double margin;               /* search margin: rebuild when a node moved this far [m]      */
+    double margin;               /* search margin: rebuild when a node moved half of it [m]    */
     double k_cap;                /* stiffness cap: k (1/m_s + 1/m_m) dt0^2 <= k_cap [-]        */
     double dt0;                  /* stable step the cap refers to [s]                          */
     size_t bytes;                /* memory held [B]                                            */
@@ -123,6 +124,8 @@ typedef struct fe_contact_state {
     int *pass_hash;         /* (npass) hash size (power of two) of each pass [-]             */
     int *pass_cell_base;    /* (npass) first offset of each pass in cell_off [-]            */
     double *pass_cell;      /* (npass x 4) grid origin [m] and cell size [m]                 */
+    int *ent_cand;          /* (nent x FE_CONTACT_CAND) candidate segments of each entry     */
+    int *ent_ncand;         /* (nent) candidates, -1: too many, the entry scans its bucket    */
     long nrebuild;          /* searches done [-]                                              */
     int need_rebuild;
     /* per slave entry, two slots (nearest segment, nearest one on the other side) */

@@ -13,7 +13,7 @@
 /* the stiffness cap: k (1/m_s + 1/m_m) dt0^2 <= FE_CONTACT_KCAP, i.e. the contact spring's
  * frequency omega dt0 <= 0.45, well inside the central-difference limit 2, so the contact
  * never needs a smaller step than the elements (docs/fe.md "Contact") */
-#define FE_CONTACT_KCAP 0.2
+#define FE_CONTACT_KCAP 0.1
 
 fe_contact_desc fe_contact_desc_default(void)
 {

@@ -3,6 +3,7 @@
  * (axis names, tangent_modulus -> a hardening table) and locates every kernel error at the
  * scenario node it came from. */
 #include "stage3_fe/s3_build.h"
+#include "stage3_fe/s3_build_contact.h"
 #include "stage3_fe/s3_build_solid.h"
 #include "stage3_fe/s3_restraints.h"
 #include "stage3_fe/s3_keyword.h"
@@ -319,17 +320,6 @@ static mcs_status add_loads(fe_builder *b, const mcs_node *list, mcs_error *err)
     return MCS_OK;
 }
 
-/* the kernel has no contact interfaces yet (only rigid walls) */
-static mcs_status check_contacts(const mcs_node *list, mcs_error *err)
-{
-    if (mcs_node_len(list) == 0) return MCS_OK;
-    const mcs_node *c = mcs_node_at(list, 0);
-    const char *type = mcs_node_str(get(c, "type"));
-    char what[96];
-    snprintf(what, sizeof what, "contact type %s", type ? type : "?");
-    return unsupported(given(c, "type") ? get(c, "type") : c, err, what);
-}
-
 mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
 {
     memset(out, 0, sizeof *out);
@@ -337,8 +327,7 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     const mcs_node *sim = get(root, "simulation");
     if (mcs_node_kind(fe) != MCS_NODE_MAP)
         return mcs_node_error(root, err, MCS_ERR_KEY, "no fe: block (stage 3 runs an FE model)");
-    mcs_status st = check_contacts(get(fe, "contacts"), err);
-    if (st) return st;
+    mcs_status st = MCS_OK;
 
     fe_opts opts = fe_opts_default();
     opts.dt_scale = mcs_node_num_or(sim, "time_step_scale", opts.dt_scale);
@@ -358,6 +347,7 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     if (!st) st = add_walls(b, get(fe, "rigid_walls"), err);
     if (!st) st = s3_solid_add(b, fe, err); /* springs, point masses */
     if (!st) st = s3_add_restraints(b, fe, err); /* airbags, retractors (s3_restraints.c) */
+    if (!st) st = s3_contact_add(b, fe, err); /* contacts, rigid ellipsoids */
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
         if (st) relocate(st, s3_restraint_node(fe, kerr.msg), &kerr, err);

@@ -6,6 +6,7 @@
 
 #include "core/mcs_progress.h"
 #include "core/mcs_results.h"
+#include "fe/fe_contact.h"
 
 #include <float.h>
 #include <math.h>
@@ -51,9 +52,44 @@ static mcs_status put_part_mesh(mcs_results *r, const fe_model *m, const fe_part
 typedef struct {
     mcs_results_series *time, *energy[FE_NENERGY], *wall_f[FE_WALL_MAX], *wall_d[FE_WALL_MAX];
     mcs_results_series *ftime, *fdisp;
+    mcs_results_series *con_f[FE_CONTACT_MAX], *con_e[FE_CONTACT_MAX], *ell_f[FE_ELLIPSOID_MAX];
     double *disp; /* [nnode, 3] */
     s3_restraint_out rest; /* airbags and retractors (s3_restraints.c) */
 } s3_out;
+
+/* /stage3/contact/<name>/{force [nt,3] N, energy [nt] J}, /stage3/ellipsoid/<name>/force */
+static mcs_status open_contact_series(mcs_results *r, const fe_model *m, s3_out *o,
+                                      mcs_error *err)
+{
+    const fe_contact_model *c = m->contact;
+    char path[256];
+    const size_t three = 3;
+    mcs_status st = MCS_OK;
+    for (int i = 0; c && i < c->nif && !st; i++) {
+        snprintf(path, sizeof path, "/stage3/contact/%s/force", c->iface[i].name);
+        st = mcs_results_series_create(r, path, 2, &three, "N", 0, &o->con_f[i], err);
+        snprintf(path, sizeof path, "/stage3/contact/%s/energy", c->iface[i].name);
+        if (!st) st = mcs_results_series_create(r, path, 1, NULL, "J", 0, &o->con_e[i], err);
+    }
+    for (int i = 0; c && i < c->nell && !st; i++) {
+        snprintf(path, sizeof path, "/stage3/ellipsoid/%s/force", c->ell[i].name);
+        st = mcs_results_series_create(r, path, 2, &three, "N", 0, &o->ell_f[i], err);
+    }
+    return st;
+}
+
+static mcs_status sample_contact(const fe_model *m, const fe_state *s, s3_out *o, mcs_error *err)
+{
+    const fe_contact_model *c = m->contact;
+    mcs_status st = MCS_OK;
+    for (int i = 0; c && i < c->nif && !st; i++) {
+        st = mcs_results_series_append(o->con_f[i], s->contact->if_force + 3 * i, err);
+        if (!st) st = mcs_results_series_append(o->con_e[i], s->contact->if_energy + i, err);
+    }
+    for (int i = 0; c && i < c->nell && !st; i++)
+        st = mcs_results_series_append(o->ell_f[i], s->contact->ell_force + 3 * i, err);
+    return st;
+}
 
 static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_error *err)
 {
@@ -69,6 +105,7 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
         snprintf(path, sizeof path, "/stage3/rigidwall/%s/displacement", m->wall[w].name);
         if (!st) st = mcs_results_series_create(r, path, 1, NULL, "m", 0, &o->wall_d[w], err);
     }
+    if (!st) st = open_contact_series(r, m, o, err);
     if (!st) st = mcs_results_field_series(r, 3, (size_t)m->nnode, &o->ftime, &o->fdisp, err);
     if (!st) st = s3_restraint_open(r, m, &o->rest, err);
     return st;
@@ -83,7 +120,11 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
         st = mcs_results_series_append(o->wall_f[w], &s->wall_normal[w], err);
         if (!st) st = mcs_results_series_append(o->wall_d[w], &s->wall_disp[w], err);
     }
+<<<<<<< HEAD
     if (!st) st = s3_restraint_sample(s, &o->rest, err);
+=======
+    if (!st) st = sample_contact(m, s, o, err);
+>>>>>>> b882af3 (fe contact: Verlet candidate lists (search on half the margin), scenario keys fe.contacts (single_surface, two_surface, surface_to_surface, node_to_surface; friction law, penalty and thickness scales) and fe.rigid_ellipsoids, /stage3/contact and /stage3/ellipsoid outputs; plate drop, friction, ellipsoid and self-contact tests; bench_fe_contact; docs)
     return st;
 }
 

@@ -3,28 +3,17 @@
  *
  * What it reads: simulation.{end_time, time_step (upper bound on the stable step),
  * time_step_scale (safety factor, default 0.9), output_rate (default 10 kHz)}; fe.parts with
-<<<<<<< HEAD
  * generated meshes (box, plate, square_tube, circular_tube, cylinder_shell, sphere_shell, line),
  * keyword meshes (s3_keyword.h: section and material may then come from the deck),
  * shell/solid/membrane/truss sections (hourglass form and coefficient, shear_factor,
  * tension_only), elastic, elastic_plastic (hardening curve or tangent_modulus, Cowper-Symonds)
  * and fabric materials, initial_velocity; fe.boundary (where, fix, velocity); fe.loads (where,
  * force, curve); fe.rigid_walls (point, normal, velocity, method, penalty_scale, parts);
- * fe.airbags and fe.retractors (s3_restraints.c).
+ * fe.airbags and fe.retractors (s3_restraints.c); fe.contacts and fe.rigid_ellipsoids
+ * (s3_build_contact.h).
  * What the kernel cannot do yet is refused with MCS_ERR_UNSUPPORTED at the key's
- * FILE:LINE:COL (contacts, foam/rigid materials, wall friction and size,
+ * FILE:LINE:COL (foam/rigid materials, wall friction and size,
  * boundary tolerance, failure strain); nothing is
-=======
- * generated meshes (box, plate, square_tube, circular_tube/cylinder_shell, line), shell/solid/
- * truss sections (hourglass form and coefficient, shear_factor, tension_only), elastic and
- * elastic_plastic materials (hardening curve or tangent_modulus, Cowper-Symonds),
- * initial_velocity; fe.boundary (where, fix, velocity); fe.loads (where, force, curve);
- * fe.rigid_walls (point, normal, velocity, method, penalty_scale, parts); fe.contacts and
- * fe.rigid_ellipsoids (s3_build_contact.h).
- * What the kernel cannot do yet is refused with MCS_ERR_UNSUPPORTED at the key's
- * FILE:LINE:COL (foam/fabric/rigid materials, membrane sections, keyword meshes,
- * sphere shells, wall friction and size, boundary tolerance, failure strain); nothing is
->>>>>>> b882af3 (fe contact: Verlet candidate lists (search on half the margin), scenario keys fe.contacts (single_surface, two_surface, surface_to_surface, node_to_surface; friction law, penalty and thickness scales) and fe.rigid_ellipsoids, /stage3/contact and /stage3/ellipsoid outputs; plate drop, friction, ellipsoid and self-contact tests; bench_fe_contact; docs)
  * silently dropped except gravity, which is logged as ignored. */
 #ifndef S3_BUILD_H
 #define S3_BUILD_H

@@ -120,11 +120,8 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
         st = mcs_results_series_append(o->wall_f[w], &s->wall_normal[w], err);
         if (!st) st = mcs_results_series_append(o->wall_d[w], &s->wall_disp[w], err);
     }
-<<<<<<< HEAD
     if (!st) st = s3_restraint_sample(s, &o->rest, err);
-=======
     if (!st) st = sample_contact(m, s, o, err);
->>>>>>> b882af3 (fe contact: Verlet candidate lists (search on half the margin), scenario keys fe.contacts (single_surface, two_surface, surface_to_surface, node_to_surface; friction law, penalty and thickness scales) and fe.rigid_ellipsoids, /stage3/contact and /stage3/ellipsoid outputs; plate drop, friction, ellipsoid and self-contact tests; bench_fe_contact; docs)
     return st;
 }
 

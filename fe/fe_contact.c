@@ -17,6 +17,7 @@
 #include <string.h>
 
 #define FE_CONTACT_HITS 16 /* segments within contact distance kept per node per step */
+#define FE_CONTACT_OMP_MIN 4096 /* fewer slave nodes: one thread (a parallel region costs more) */
 
 void fe_contact_state_destroy(fe_contact_state **p)
 {
@@ -390,7 +391,7 @@ static void collect_candidates(const fe_model *m, fe_state *s)
     const fe_contact_model *c = m->contact;
     fe_contact_state *cs = s->contact;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (c->nent > FE_CONTACT_OMP_MIN)
 #endif
     for (int e = 0; e < c->nent; e++) {
         const int node = c->ent_node[e], p = c->ent_pass[e];
@@ -445,7 +446,7 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
     }
     /* phase 1: entries are independent (each writes its own slots) */
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (c->nent > FE_CONTACT_OMP_MIN)
 #endif
     for (int e = 0; e < c->nent; e++) entry_forces(m, s, e);
     /* phase 2: scatter */

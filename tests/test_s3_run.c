@@ -126,10 +126,15 @@ static void test_bar_into_wall(void)
     mcs_results_close(&h);
 }
 
-/* Small square tube (20 mm, 1 mm, 40 mm) crushed at 10 m/s, no contact. Energy balance
- * (kinetic + internal + hourglass + dissipated = wall work) and the wall's prescribed travel.
- * Under make verify, the whole 15 mm crush and its mean force after the first peak against
- * Abramowicz & Jones (1984), P_m = 13.06 sigma_0 h^(5/3) c^(1/3) (REFERENCES.md). */
+/* Small square tube (20 mm, 1 mm, 40 mm, elastic-perfectly plastic 250 MPa) crushed 15 mm at
+ * 10 m/s with single-surface self contact. Energy balance (kinetic + internal + contact +
+ * hourglass + dissipated = wall work), the wall's prescribed travel, and the mean force from
+ * 5 mm (after the first peak) to the end against Abramowicz & Jones (1984, Int. J. Impact
+ * Eng. 2(2), static, rigid-perfectly plastic): P_m = 13.06 sigma_0 h^(5/3) c^(1/3) = 8.86 kN.
+ * Measured: 8.59 kN (-3 %). Tolerance 20 %: the theory is an approximate kinematic analysis,
+ * the mesh has 3.6 elements per fold half-wavelength H = 0.983 h^(1/3) c^(2/3) = 7.2 mm (with
+ * the earlier hardening material, halving the elements moved the mean force by 8 %), and the
+ * wall's speed adds inertia the static formula has not. */
 static void test_square_tube_crush(void)
 {
     char scn[128], out[128];
@@ -142,10 +147,6 @@ static void test_square_tube_crush(void)
     size_t n = fread(text, 1, sizeof text - 1, f);
     text[n] = 0;
     fclose(f);
-    const int full = th_verify();
-    char *p = strstr(text, "end_time: 1.5 ms");
-    CHECK(p != NULL);
-    if (p && !full) memcpy(p, "end_time: 0.3 ms", 16); /* 3 mm: past the first buckle */
     write_text(scn, text);
     s3_summary sum;
     mcs_error err = {0};
@@ -174,16 +175,17 @@ static void test_square_tube_crush(void)
     const double Pm = 13.06 * sy * pow(hw, 5.0 / 3) * cbrt(side);
     /* squash load of the section 4 c h sigma_0 bounds the first peak from below */
     CHECK(peak > 0.8 * 4 * side * hw * sy);
-    double mean = 0;
-    if (full) { /* mean force from 5 mm to the end */
-        size_t i0 = 0;
-        while (i0 < k && d.v[i0] < 5e-3) i0++;
-        double w = 0;
-        for (size_t i = i0 + 1; i <= k; i++) w += 0.5 * (F.v[i] + F.v[i - 1]) * (d.v[i] - d.v[i - 1]);
-        mean = w / (d.v[k] - d.v[i0]);
-        /* no self-contact yet and a rate-free material: only the order of magnitude */
-        CHECK(mean > 0.3 * Pm && mean < 3 * Pm);
-    }
+    size_t i0 = 0; /* mean force from 5 mm to the end */
+    while (i0 < k && d.v[i0] < 5e-3) i0++;
+    double w = 0;
+    for (size_t i = i0 + 1; i <= k; i++) w += 0.5 * (F.v[i] + F.v[i - 1]) * (d.v[i] - d.v[i - 1]);
+    double mean = w / (d.v[k] - d.v[i0]);
+    CHECK(d.v[k] > 14e-3);
+    CHECK_REL(mean, Pm, 0.20);
+    mcs_array ce = {0};
+    CHECK(rd(h, "/stage3/contact/contact0/energy", &ce) && ce.n == t.n);
+    if (ce.n == t.n) CHECK(ce.v[k] > 0); /* the folds did touch */
+    mcs_array_free(&ce);
     printf("  tube: %ld steps, %d elements, crush %.3g mm, peak %.4g kN, mean %.4g kN "
            "(A-J %.4g kN), wall work %.4g J, external work %.4g J, drift %.2g, wall %.3g s\n",
            sum.steps, sum.elements, 1e3 * d.v[k], 1e-3 * peak, 1e-3 * mean, 1e-3 * Pm, work,

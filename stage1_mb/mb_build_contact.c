@@ -206,10 +206,13 @@ static mcs_status series_law(mb_model *m, const mcs_node *cn, mb_pair *p, int ip
 }
 
 /* the order of two surfaces with penetration geometry (first one: ellipsoid or cylinder):
- * 1 as given, -1 swapped, 0 none (plane-plane, and cylinders against anything but planes) */
+ * 1 as given, -1 swapped, 0 none (plane-plane, and cylinders against anything but planes
+ * and ellipsoids) */
 static int pair_order(const mb_surface *x, const mb_surface *y)
 {
     mb_surf_type a = x->type, b = y->type;
+    if (a == MB_SURF_CYLINDER && b == MB_SURF_ELLIPSOID) return 1;
+    if (b == MB_SURF_CYLINDER && a == MB_SURF_ELLIPSOID) return -1;
     if (a == MB_SURF_ELLIPSOID && b != MB_SURF_CYLINDER) return 1;
     if (b == MB_SURF_ELLIPSOID && a != MB_SURF_CYLINDER) return -1;
     if (a == MB_SURF_CYLINDER && b == MB_SURF_PLANE) return 1;
@@ -232,7 +235,7 @@ static int list_pairs(const mb_model *m, int a, int b, mb_pair *pairs, const cha
                               m->surf[j].type == MB_SURF_CYLINDER))
                     mcs_log(MCS_LOG_WARN,
                             "stage 1: contact %s: %s against %s is not checked (a cylinder "
-                            "meets planes only; give the body an ellipsoid too)",
+                            "meets planes and ellipsoids only)",
                             contact, m->surf[i].name, m->surf[j].name);
                 continue;
             }

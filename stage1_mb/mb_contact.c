@@ -49,8 +49,31 @@ static const mb_body_kin *kin_of(const mb_state *s, int b)
     return b == MB_GROUND ? NULL : &s->kin[b];
 }
 
-/* a cylinder (wheel) against a plane: the torus geometry of mb_geom_wheel_plane */
-static void detect_wheel(const mb_state *s, const mb_pair *p, const mb_surface *sa,
+/* a wheel against an ellipsoid (mb_geom_wheel_ellipsoid), culled first: the wheel's box and
+ * bounding sphere (R + r, R + r, r), then the last normal's gap (a lower bound) */
+static void wheel_ellipsoid(mb_state *s, int i, const mb_wheel *w, const mb_ellipsoid *e,
+                            mb_contact *c)
+{
+    mb_pair_state *ps = &s->pair[i];
+    mb_ellipsoid disc, box;
+    mb_wheel_disc(w, &disc);
+    box = disc;
+    box.semi[0] = box.semi[1] = w->radius + w->tube, box.semi[2] = w->tube + disc.semi[2];
+    if (mb_ellipsoids_apart(&box, e, NULL) ||
+        (ps->has_normal && mb_ellipsoid_gap(&disc, e, ps->normal) - w->tube > 0)) {
+        c->depth = 0;
+        return;
+    }
+    mb_geom_wheel_ellipsoid(w, e, ps->has_normal ? ps->normal : NULL, c);
+    if (mb_dot(c->normal, c->normal) > 0) {
+        mb_copy(c->normal, ps->normal);
+        ps->has_normal = 1;
+    }
+}
+
+/* a cylinder (wheel) against a plane (the torus geometry of mb_geom_wheel_plane) or an
+ * ellipsoid */
+static void detect_wheel(mb_state *s, int i, const mb_pair *p, const mb_surface *sa,
                          const mb_surface *sb, mb_contact *c)
 {
     const mb_body_kin *k = kin_of(s, p->ba);
@@ -62,6 +85,10 @@ static void detect_wheel(const mb_state *s, const mb_pair *p, const mb_surface *
         mb_mat_vec(k->rot, sa->normal, w.axis);
     } else {
         mb_copy(sa->center, w.center), mb_copy(sa->normal, w.axis);
+    }
+    if (sb->type == MB_SURF_ELLIPSOID) {
+        wheel_ellipsoid(s, i, &w, &s->surf_ell[p->sb], c);
+        return;
     }
     place_plane(sb, kin_of(s, p->bb), &pl);
     mb_wheel_contact wc;
@@ -75,7 +102,7 @@ static void detect_pair(const mb_model *m, mb_state *s, int i)
     const mb_surface *sa = &m->surf[p->sa], *sb = &m->surf[p->sb];
     mb_contact *c = &s->pc[i];
     if (sa->type == MB_SURF_CYLINDER) {
-        detect_wheel(s, p, sa, sb, c);
+        detect_wheel(s, i, p, sa, sb, c);
         return;
     }
     const mb_ellipsoid ea = s->surf_ell[p->sa]; /* placed once per step (mb_contact_detect) */

@@ -87,6 +87,16 @@ double mb_ellipsoid_gap(const mb_ellipsoid *a, const mb_ellipsoid *b, const doub
 int mb_geom_ellipsoid_triangle(const mb_ellipsoid *a, const double v0[3], const double v1[3],
                                const double v2[3], mb_contact *c);
 int mb_geom_wheel_plane(const mb_wheel *w, const mb_plane *b, mb_wheel_contact *wc);
+/* wheel (a) against an ellipsoid (b): the filled wheel, the convex hull of its torus (disc of
+ * radius `radius` grown by `tube`), by the ellipsoid-ellipsoid support-function maximisation
+ * with the disc as a flat ellipsoid (R, R, MB_WHEEL_EPS R): depth exact for every normal not
+ * along the axis, at most MB_WHEEL_EPS R too deep along it. warm_normal and the separating
+ * normal as for mb_geom_ellipsoid_ellipsoid. */
+#define MB_WHEEL_EPS 1e-4
+int mb_geom_wheel_ellipsoid(const mb_wheel *w, const mb_ellipsoid *e, const double *warm_normal,
+                            mb_contact *c);
+/* the flat ellipsoid (R, R, MB_WHEEL_EPS R) of a wheel's disc (axis = its third axis) */
+void mb_wheel_disc(const mb_wheel *w, mb_ellipsoid *disc);
 
 /* the deepest point of an ellipsoid along -dir (support point), world [m] */
 void mb_ellipsoid_support(const mb_ellipsoid *e, const double dir[3], double out[3]);

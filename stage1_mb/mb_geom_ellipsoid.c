@@ -89,6 +89,7 @@ int mb_geom_sphere_sphere(const double ca[3], double ra, const double cb[3], dou
 
 typedef struct {
     double QA[9], QB[9], d[3];
+    double off; /* A's support offset (a ball of this radius added to A: the tyre tube) [m] */
 } ee_pair;
 
 /* g, its R^3 gradient and Hessian at unit n */
@@ -98,7 +99,7 @@ static double ee_eval(const ee_pair *p, const double n[3], double grad[3], doubl
     mb_mat_vec(p->QA, n, qa);
     mb_mat_vec(p->QB, n, qb);
     double ha = sqrt(mb_dot(n, qa)), hb = sqrt(mb_dot(n, qb));
-    double g = mb_dot(n, p->d) - ha - hb;
+    double g = mb_dot(n, p->d) - ha - hb - p->off;
     if (grad)
         for (int k = 0; k < 3; k++)
             grad[k] = p->d[k] - qa[k] / ha - qb[k] / hb;
@@ -172,14 +173,15 @@ static double ee_ascend(const ee_pair *p, double n[3], double tol, int *iters, i
     return g;
 }
 
-int mb_geom_ellipsoid_ellipsoid(const mb_ellipsoid *a, const mb_ellipsoid *b,
-                                const double *warm_normal, mb_contact *c)
+/* A (grown by a ball of radius off) against B */
+static int ee_solve(const mb_ellipsoid *a, double off, const mb_ellipsoid *b,
+                    const double *warm_normal, mb_contact *c)
 {
     mb_contact_clear(c);
-    ee_pair p;
+    ee_pair p = {.off = off};
     mb_sub(a->center, b->center, p.d);
     double dist = mb_norm(p.d);
-    double ra = fmax(a->semi[0], fmax(a->semi[1], a->semi[2]));
+    double ra = fmax(a->semi[0], fmax(a->semi[1], a->semi[2])) + off;
     double rb = fmax(b->semi[0], fmax(b->semi[1], b->semi[2]));
     if (dist >= ra + rb) { /* bounding spheres apart: the line of centres separates */
         if (dist > 0) mb_scale(p.d, 1.0 / dist, c->normal);
@@ -220,7 +222,7 @@ int mb_geom_ellipsoid_ellipsoid(const mb_ellipsoid *a, const mb_ellipsoid *b,
                 break;
             }
         }
-        double smin = fmin(fmin(fmin(a->semi[0], a->semi[1]), a->semi[2]),
+        double smin = fmin(fmin(fmin(a->semi[0], a->semi[1]), a->semi[2]) + off,
                            fmin(fmin(b->semi[0], b->semi[1]), b->semi[2]));
         if (pass == 1 || warm_conv || -best_g < 0.25 * smin) break;
         /* deep penetration: other local maxima may be shallower; try principal axes */
@@ -239,10 +241,42 @@ int mb_geom_ellipsoid_ellipsoid(const mb_ellipsoid *a, const mb_ellipsoid *b,
     double q[3];
     mb_mat_vec(p.QA, best_n, q);
     mb_axpy(a->center, -1.0 / sqrt(mb_dot(best_n, q)), q, c->point_a);
+    mb_axpy(c->point_a, -off, best_n, c->point_a);
     mb_mat_vec(p.QB, best_n, q);
     mb_axpy(b->center, 1.0 / sqrt(mb_dot(best_n, q)), q, c->point_b);
     finish_midpoint(c);
     return 1;
+}
+
+int mb_geom_ellipsoid_ellipsoid(const mb_ellipsoid *a, const mb_ellipsoid *b,
+                                const double *warm_normal, mb_contact *c)
+{
+    return ee_solve(a, 0.0, b, warm_normal, c);
+}
+
+/* ---- wheel-ellipsoid: the filled wheel (convex hull of the tyre torus) is the flat disc of
+ * radius R (crown circle) grown by the tube ball r; its support function is R |P n| + r with
+ * P = I - a a'. The disc is the ellipsoid (R, R, eps) with eps = MB_WHEEL_EPS R (its support
+ * exceeds the disc's by at most eps: only for normals along the axis), so the ellipsoid-
+ * ellipsoid maximisation of g(n) = n.(cW - cE) - hW(n) - hE(n) applies with hW offset by r. */
+void mb_wheel_disc(const mb_wheel *w, mb_ellipsoid *disc)
+{
+    double t1[3], t2[3];
+    tangent_basis(w->axis, t1, t2);
+    mb_copy(w->center, disc->center);
+    for (int i = 0; i < 3; i++) {
+        disc->rot[3 * i] = t1[i], disc->rot[3 * i + 1] = t2[i], disc->rot[3 * i + 2] = w->axis[i];
+    }
+    disc->semi[0] = disc->semi[1] = w->radius;
+    disc->semi[2] = MB_WHEEL_EPS * w->radius;
+}
+
+int mb_geom_wheel_ellipsoid(const mb_wheel *w, const mb_ellipsoid *e, const double *warm_normal,
+                            mb_contact *c)
+{
+    mb_ellipsoid disc;
+    mb_wheel_disc(w, &disc);
+    return ee_solve(&disc, w->tube, e, warm_normal, c);
 }
 
 /* ---- wheel-plane: lowest point of the crown circle, then the tube (torus = circle + ball) --

@@ -22,6 +22,19 @@ static mb_model *load_model(const char *path)
     return m;
 }
 
+/* the set-up every file case repeats: load the scenario and create its state (both checked);
+ * NULL (and nothing to free) on failure */
+static mb_model *start_run(const char *path, mb_state **s)
+{
+    mb_model *m = load_model(path);
+    mcs_error err = {0};
+    *s = NULL;
+    CHECK(m != NULL);
+    if (m) CHECK(mb_state_create(m, s, &err) == MCS_OK);
+    if (m && !*s) mb_model_destroy(&m);
+    return m;
+}
+
 static mb_model *load_text(const char *text, mcs_error *err)
 {
     mcs_scenario *scn = NULL;
@@ -38,12 +51,10 @@ static mb_model *load_text(const char *text, mcs_error *err)
  * after separation up to O((w h)^2); 1e-4 m (2e-4 relative) bounds both. */
 static void test_elastic_bounce_returns_to_height(void)
 {
-    mb_model *m = load_model("scenarios/verification/bounce_elastic.yaml");
-    CHECK(m != NULL);
-    if (!m) return;
     mb_state *s = NULL;
+    mb_model *m = start_run("scenarios/verification/bounce_elastic.yaml", &s);
+    if (!m) return;
     mcs_error err = {0};
-    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
     double zmin = 1, zmax_after = 0, fmax = 0;
     int touched = 0;
     while (s->step < m->nsteps) {
@@ -79,12 +90,10 @@ static void test_elastic_bounce_returns_to_height(void)
  * After t* the force stays 0 (x keeps shrinking), so the exit speed is e v0. */
 static void test_damped_bounce_matches_exact_solution(void)
 {
-    mb_model *m = load_model("scenarios/verification/bounce_damped.yaml");
-    CHECK(m != NULL);
-    if (!m) return;
     mb_state *s = NULL;
+    mb_model *m = start_run("scenarios/verification/bounce_damped.yaml", &s);
+    if (!m) return;
     mcs_error err = {0};
-    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
     double k = 1e5, mass = 1, z = 0.2, v0 = 2;
     double w = sqrt(k / mass), wd = w * sqrt(1 - z * z);
     double ts = (M_PI - atan(2 * z * sqrt(1 - z * z) / (1 - 2 * z * z))) / wd;
@@ -127,12 +136,10 @@ static void test_damped_bounce_matches_exact_solution(void)
  * forces at one point keep the momentum to rounding. */
 static void test_two_spheres_momentum_restitution_loop_area(void)
 {
-    mb_model *m = load_model("scenarios/verification/two_spheres.yaml");
-    CHECK(m != NULL);
-    if (!m) return;
     mb_state *s = NULL;
+    mb_model *m = start_run("scenarios/verification/two_spheres.yaml", &s);
+    if (!m) return;
     mcs_error err = {0};
-    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
     double m1 = 1, m2 = 3, v1 = 2, v2 = -1, p0 = m1 * v1 + m2 * v2, dp = 0;
     while (s->step < m->nsteps) {
         CHECK(mb_step(m, s, &err) == MCS_OK);
@@ -166,12 +173,10 @@ static void test_two_spheres_momentum_restitution_loop_area(void)
  * 1 kHz samples; h = 100 us here (w h = 4.3e-4). */
 static void test_pendulum_keeps_its_period(void)
 {
-    mb_model *m = load_model("scenarios/verification/pendulum.yaml");
-    CHECK(m != NULL);
-    if (!m) return;
     mb_state *s = NULL;
+    mb_model *m = start_run("scenarios/verification/pendulum.yaml", &s);
+    if (!m) return;
     mcs_error err = {0};
-    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
     while (s->step < m->nsteps) CHECK(mb_step(m, s, &err) == MCS_OK);
     double cross[8];
     int nc = 0;
@@ -266,12 +271,10 @@ static void test_attachment_breaks(void)
  * mass-spring: deepest approach v sqrt(mu / k), contact time pi sqrt(mu / k), e = 1. */
 static void test_series_characteristics(void)
 {
-    mb_model *m = load_model("scenarios/verification/series_spheres.yaml");
-    CHECK(m != NULL);
-    if (!m) return;
     mb_state *s = NULL;
+    mb_model *m = start_run("scenarios/verification/series_spheres.yaml", &s);
+    if (!m) return;
     mcs_error err = {0};
-    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
     double dmax = 0, t_in = -1, t_out = -1;
     while (s->step < m->nsteps) {
         CHECK(mb_step(m, s, &err) == MCS_OK);

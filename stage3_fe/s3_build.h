@@ -10,11 +10,11 @@
  * and fabric materials, initial_velocity; fe.boundary (where, fix, velocity); fe.loads (where,
  * force, curve); fe.rigid_walls (point, normal, velocity, method, penalty_scale, parts);
  * fe.airbags and fe.retractors (s3_restraints.c); fe.contacts and fe.rigid_ellipsoids
- * (s3_build_contact.h).
+ * (s3_build_contact.h); foam and rigid materials, solid formulation full, fe.springs,
+ * fe.masses, fe.mass_scaling and environment.gravity (s3_build_solid.h).
  * What the kernel cannot do yet is refused with MCS_ERR_UNSUPPORTED at the key's
- * FILE:LINE:COL (foam/rigid materials, wall friction and size,
- * boundary tolerance, failure strain); nothing is
- * silently dropped except gravity, which is logged as ignored. */
+ * FILE:LINE:COL (wall friction and size, boundary tolerance, failure strain, foam damping);
+ * nothing is silently dropped. */
 #ifndef S3_BUILD_H
 #define S3_BUILD_H
 

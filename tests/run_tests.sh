@@ -1,6 +1,9 @@
 #!/bin/sh
 # run every test binary given; each ends with "FILE: N passed, N failed".
 # Sum them and end with one line "N passed, N failed"; exit 1 if any failed or crashed.
+# OpenMP threads sleep rather than spin while waiting: tests share the machine with builds
+# and with each other, and spinning threads of an oversubscribed run cost many times the work
+export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 passed=0; failed=0
 for t in "$@"; do
     out=$("$t" 2>&1); rc=$?

@@ -107,7 +107,7 @@ static void detect_pair(const mb_model *m, mb_state *s, int i)
     }
     const mb_ellipsoid ea = s->surf_ell[p->sa]; /* placed once per step (mb_contact_detect) */
     if (sb->type == MB_SURF_FACET) {
-        mb_facet_detect(&ea, sb, kin_of(s, p->bb), s->pair[i].depth, c);
+        mb_facet_detect(&ea, sb, kin_of(s, p->bb), c);
         return;
     }
     if (sb->type == MB_SURF_PLANE) {
@@ -205,12 +205,9 @@ static void pair_force(const mb_model *m, mb_state *s, int i)
     point_velocity(s, p->ba, c->point, va);
     point_velocity(s, p->bb, c->point, vb);
     mb_sub(va, vb, rel);
-    /* gain = |grad depth| (facet edges and vertices): depth rate gain * (-vn), force fn * gain */
-    double gain = c->gain > 0 ? c->gain : 1;
-    double vn = mb_dot(rel, c->normal), rate = -vn * gain;
+    double vn = mb_dot(rel, c->normal), rate = -vn;
     double fn = mcs_hyst_damped(fs, p->damping, rate, 1);
     ps->e_damp += (fn - fs) * rate * m->h;
-    fn *= gain;
     mb_axpy(rel, -vn, c->normal, slip);
     friction(m, s, p, c->point, fn, slip, ft, &pf);
     ps->e_fric += pf * m->h;

@@ -55,9 +55,6 @@ typedef struct {
     int tri;           /* facet index for meshes, -1 otherwise                           */
     int feature;       /* mb_feature (facets), MB_FEATURE_NONE otherwise                 */
     int iterations;    /* Newton iterations (ellipsoid-ellipsoid), 0 otherwise           */
-    double gain;       /* |grad depth| w.r.t. a's translation where it is not 1 (facet edges
-                          and vertices, >= 1); 0 means 1. The force f(depth) * gain along
-                          normal is then the gradient of the contact energy (conservative) */
     int status;        /* mb_geom_status                                                 */
 } mb_contact;
 
@@ -121,10 +118,5 @@ int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pos
  * evaluated in decreasing depth of their plane until no other can be deeper; returns 1/0 */
 int mb_geom_ellipsoid_mesh_deepest(const mb_ellipsoid *a, const mb_mesh *m, const mb_pose *pose,
                                    mb_contact *deepest);
-/* the same, ignoring triangle contacts deeper than max_depth [m] (a contact that would begin
- * deeper than a step can push it: an ellipsoid beside a panel's edge, mb_facet.h) */
-int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *m,
-                                          const mb_pose *pose, double max_depth,
-                                          mb_contact *deepest);
 
 #endif

@@ -50,17 +50,6 @@ static int vertex_contact(const ell_frame *e, const double V[3], const double n[
     mb_axpy(V, t, n, c->point_a);
     mb_copy(V, c->point_b);
     c->feature = MB_FEATURE_VERTEX;
-    /* y = V + t n on the surface, G = Qi (y - c): dt = G.dc / G.n, so -grad_c depth =
-     * -G / |G.n| (G.n < 0 at the lower root): along the ellipsoid's inward normal at y */
-    double G[3], r[3];
-    mb_sub(c->point_a, e->c, r);
-    mb_mat_vec(e->Qi, r, G);
-    double Gn = mb_dot(G, n);
-    if (Gn < 0) {
-        mb_scale(G, 1.0 / Gn, c->normal); /* -G/|G.n| */
-        c->gain = mb_norm(c->normal);
-        mb_scale(c->normal, 1.0 / c->gain, c->normal);
-    }
     return 1;
 }
 
@@ -95,13 +84,6 @@ static int edge_contact(const ell_frame *e, const double P[3], const double Rv[3
     mb_copy(y, c->point_a);
     mb_axpy(y, depth, n, c->point_b);
     c->feature = MB_FEATURE_EDGE;
-    /* depth = -n.(c - P) - a Qnn - b Qnm with a, b functions of delta = m.(P - c):
-     * grad_c depth = -n + kappa m, kappa = (Qnm - delta/a)/Qmm (a' = -delta/(Qmm den a),
-     * b' = (1 - a' Qnm)/Qmm). The force on the ellipsoid is f (n - kappa m). */
-    double kappa = (Qnm - delta / a) / Qmm, g[3];
-    mb_axpy(n, -kappa, m, g);
-    c->gain = mb_norm(g);
-    mb_scale(g, 1.0 / c->gain, c->normal);
     return 1;
 }
 
@@ -175,7 +157,7 @@ static int tri_normal(const double *v0, const double *v1, const double *v2, doub
 
 static void finish(mb_contact *c, const double normal[3])
 {
-    if (c->feature == MB_FEATURE_FACE || !(c->gain > 0)) mb_copy(normal, c->normal), c->gain = 0;
+    mb_copy(normal, c->normal);
     for (int k = 0; k < 3; k++)
         c->point[k] = 0.5 * (c->point_a[k] + c->point_b[k]);
 }
@@ -446,13 +428,6 @@ int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pos
 int mb_geom_ellipsoid_mesh_deepest(const mb_ellipsoid *a, const mb_mesh *m, const mb_pose *pose,
                                    mb_contact *deepest)
 {
-    return mb_geom_ellipsoid_mesh_deepest_capped(a, m, pose, INFINITY, deepest);
-}
-
-int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *m,
-                                          const mb_pose *pose, double max_depth,
-                                          mb_contact *deepest)
-{
     enum { NCAND = 512 };
     mb_contact_clear(deepest);
     ell_frame e;
@@ -492,7 +467,7 @@ int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *
         mb_contact c;
         mb_contact_clear(&c);
         if (!tri_contact(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, &c) ||
-            !(c.depth > deepest->depth) || c.depth > max_depth)
+            !(c.depth > deepest->depth))
             continue;
         c.tri = t;
         finish(&c, m->tri_n + 3 * t);

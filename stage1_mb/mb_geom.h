@@ -118,5 +118,10 @@ int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pos
  * evaluated in decreasing depth of their plane until no other can be deeper; returns 1/0 */
 int mb_geom_ellipsoid_mesh_deepest(const mb_ellipsoid *a, const mb_mesh *m, const mb_pose *pose,
                                    mb_contact *deepest);
+/* the same, ignoring triangle contacts deeper than max_depth [m] (a contact that would begin
+ * deeper than a step can push it: an ellipsoid beside a panel's edge, mb_facet.h) */
+int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *m,
+                                          const mb_pose *pose, double max_depth,
+                                          mb_contact *deepest);
 
 #endif

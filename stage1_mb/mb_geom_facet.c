@@ -428,6 +428,13 @@ int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pos
 int mb_geom_ellipsoid_mesh_deepest(const mb_ellipsoid *a, const mb_mesh *m, const mb_pose *pose,
                                    mb_contact *deepest)
 {
+    return mb_geom_ellipsoid_mesh_deepest_capped(a, m, pose, INFINITY, deepest);
+}
+
+int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *m,
+                                          const mb_pose *pose, double max_depth,
+                                          mb_contact *deepest)
+{
     enum { NCAND = 512 };
     mb_contact_clear(deepest);
     ell_frame e;
@@ -467,7 +474,7 @@ int mb_geom_ellipsoid_mesh_deepest(const mb_ellipsoid *a, const mb_mesh *m, cons
         mb_contact c;
         mb_contact_clear(&c);
         if (!tri_contact(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, &c) ||
-            !(c.depth > deepest->depth))
+            !(c.depth > deepest->depth) || c.depth > max_depth)
             continue;
         c.tri = t;
         finish(&c, m->tri_n + 3 * t);

@@ -52,6 +52,8 @@ mcs_status fe_solid_finish(fe_model *m, mcs_error *err);
 mcs_status fe_rigid_finish(fe_model *m, mcs_error *err);
 void fe_rigid_reset(const fe_model *m, fe_state *s);
 mcs_status fe_massscale_build(fe_model *m, mcs_error *err);
+/* step factors of lightly held one-point hexes (fe_hex_dt.c), after mass scaling */
+mcs_status fe_hex_dt_build(fe_model *m, mcs_error *err);
 
 /* ---- the time loop ---- */
 

@@ -42,7 +42,10 @@ static cli_result *cli_run(const char *args)
     char cmd[8192], outp[64], errp[64];
     snprintf(outp, sizeof outp, "%s/out", dir);
     snprintf(errp, sizeof errp, "%s/err", dir);
-    snprintf(cmd, sizeof cmd, "timeout 120 %s %s >%s 2>%s </dev/null", cli_bin(), args, outp, errp);
+    /* a hung command is stopped; the long verification runs (MCRASH_VERIFY) get an hour */
+    int limit = getenv("MCRASH_VERIFY") ? 3600 : 120;
+    snprintf(cmd, sizeof cmd, "timeout %d %s %s >%s 2>%s </dev/null", limit, cli_bin(), args, outp,
+             errp);
     int st = system(cmd);
     if (st == -1)
         r.status = -1;

@@ -58,7 +58,10 @@ static void test_thin_element(void)
     CHECK_REL(m->mass_total, physical + added, 1e-12);
     CHECK_REL(m->dt_initial, target, 1e-12);
     CHECK_REL(fe_dt_factor(m, FE_KIND_HEX, 2), 5, 1e-12);
-    CHECK(fe_dt_factor(m, FE_KIND_HEX, 0) == 1 && fe_dt_factor(m, FE_KIND_HEX, 4) == 1);
+    /* the others are not scaled; they may carry the lightly-held-hex factor of fe_hex_dt.c,
+     * between 1 and sqrt((lambda + 2 mu)/(3 lambda + 2 mu)) = 0.734 at nu = 0.3 */
+    for (int e = 0; e < 5; e += 4)
+        CHECK(fe_dt_factor(m, FE_KIND_HEX, e) <= 1 && fe_dt_factor(m, FE_KIND_HEX, e) > 0.73);
     /* the thin element's nodes carry an eighth of its scaled mass more each */
     CHECK_REL(m->node_mass[8], rho * A * A * (0.01 + 0.001 * 25) / 8, 1e-12);
     /* it runs at the target step, the energy balance closes */
@@ -80,7 +83,7 @@ static void test_thin_element(void)
     fe_model *m0 = column(0, 0.5, &err);
     CHECK(m0 != NULL);
     if (m0) {
-        CHECK(m0->mass_added == 0 && m0->elem_dt_factor == NULL);
+        CHECK(m0->mass_added == 0);
         CHECK_REL(m0->dt_initial, target / 5, 1e-12);
         fe_model_destroy(&m0);
     }

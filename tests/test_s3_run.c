@@ -343,7 +343,7 @@ static void test_numerical_failure_leaves_no_file(void)
 static void test_unsupported_is_located(void)
 {
     char out[128], args[512], scn[128];
-    snprintf(out, sizeof out, "%s/tc.h5", tmpdir);
+    snprintf(out, sizeof out, "%s/unsupported.h5", tmpdir);
     /* a contact the kernel refuses: located at the key */
     snprintf(scn, sizeof scn, "%s/contact.yaml", tmpdir);
     write_text(scn, "mcrash: 1\nname: c\nsimulation: {end_time: 1 ms}\nfe:\n  parts:\n"

@@ -5,6 +5,7 @@
 #include "cli_util.h"
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "s3_test_util.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -13,20 +14,6 @@
 #include <unistd.h>
 
 static char tmpdir[64];
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "w");
-    if (!f) return;
-    fputs(text, f);
-    fclose(f);
-}
-
-static int rd(mcs_results *h, const char *path, mcs_array *a)
-{
-    mcs_error err = {0};
-    return mcs_results_read(h, path, a, &err) == MCS_OK;
-}
 
 /* scenarios/verification/airbag_sphere_inflation.yaml: a closed fabric sphere, ambient air
  * inside, an inflator of 0.2 kg/s at 600 K, no vents or leakage. Mass balance of a closed bag

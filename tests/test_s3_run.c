@@ -6,6 +6,7 @@
 #include "cli_util.h"
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "s3_test_util.h"
 #include "stage3_fe/s3_run.h"
 
 #include <math.h>
@@ -20,37 +21,6 @@ static int file_exists(const char *p)
 {
     struct stat sb;
     return stat(p, &sb) == 0;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "w");
-    if (!f) return;
-    fputs(text, f);
-    fclose(f);
-}
-
-/* run a scenario file through the library into out; returns the status */
-static mcs_status run_file(const char *scenario, const char *out, s3_summary *sum,
-                           mcs_error *err)
-{
-    mcs_scenario *scn = NULL;
-    mcs_status st = mcs_scenario_load(scenario, &scn, err);
-    s3_problem p = {0};
-    if (!st) st = s3_build(scn, &p, err);
-    if (!st) {
-        s3_run_opts o = {.out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = 1};
-        st = s3_run(&p, &o, sum, err);
-    }
-    s3_problem_free(&p);
-    mcs_scenario_destroy(&scn);
-    return st;
-}
-
-static int rd(mcs_results *h, const char *path, mcs_array *a)
-{
-    mcs_error err = {0};
-    return mcs_results_read(h, path, a, &err) == MCS_OK;
 }
 
 /* Elastic bar (L 0.1 m, A 1e-4 m^2, rho 8000, E 200 GPa, nu 0) into a fixed rigid wall at

@@ -3,6 +3,7 @@
 #include "cli_util.h"
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "s3_test_util.h"
 #include "stage3_fe/s3_run.h"
 
 #include <math.h>
@@ -12,30 +13,6 @@
 #include <unistd.h>
 
 static char tmpdir[64];
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "w");
-    if (!f) return;
-    fputs(text, f);
-    fclose(f);
-}
-
-static mcs_status run_file(const char *scenario, const char *out, s3_summary *sum,
-                           mcs_error *err)
-{
-    mcs_scenario *scn = NULL;
-    mcs_status st = mcs_scenario_load(scenario, &scn, err);
-    s3_problem p = {0};
-    if (!st) st = s3_build(scn, &p, err);
-    if (!st) {
-        s3_run_opts o = {.out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = 1};
-        st = s3_run(&p, &o, sum, err);
-    }
-    s3_problem_free(&p);
-    mcs_scenario_destroy(&scn);
-    return st;
-}
 
 static double last_of(mcs_results *h, const char *path)
 {

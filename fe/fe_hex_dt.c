@@ -18,7 +18,6 @@
 #include "fe/fe_solid.h"
 
 #include <math.h>
-#include <stdlib.h>
 
 /* omega_dil^2 / (2c/L)^2 of hex e of part p at its initial shape */
 static double dil_ratio(const fe_model *m, const fe_part *p, int e)
@@ -57,13 +56,8 @@ mcs_status fe_hex_dt_build(fe_model *m, mcs_error *err)
         for (int e = p->elem_begin; e < p->elem_end; e++) {
             double r = dil_ratio(m, p, e);
             if (!(r > 1)) continue;
-            if (!m->elem_dt_factor) {
-                m->elem_dt_factor = malloc(sizeof(double) * (size_t)m->nelem);
-                if (!m->elem_dt_factor)
-                    return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (hex step factors)");
-                m->bytes += sizeof(double) * (size_t)m->nelem;
-                for (int i = 0; i < m->nelem; i++) m->elem_dt_factor[i] = 1;
-            }
+            mcs_status st = fe_dt_factors_alloc(m, err);
+            if (st) return st;
             m->elem_dt_factor[e] /= sqrt(r); /* hexes come first in elem_dt_factor */
         }
     }

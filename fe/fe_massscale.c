@@ -54,14 +54,23 @@ static double elem_step(const fe_model *m, const fe_part *p, int e, double *mass
     return len / p->wave_speed;
 }
 
+mcs_status fe_dt_factors_alloc(fe_model *m, mcs_error *err)
+{
+    if (m->elem_dt_factor) return MCS_OK;
+    m->elem_dt_factor = malloc(sizeof(double) * (size_t)(m->nelem > 0 ? m->nelem : 1));
+    if (!m->elem_dt_factor)
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (element step factors)");
+    m->bytes += sizeof(double) * (size_t)m->nelem;
+    for (int i = 0; i < m->nelem; i++) m->elem_dt_factor[i] = 1;
+    return MCS_OK;
+}
+
 mcs_status fe_massscale_build(fe_model *m, mcs_error *err)
 {
     const double target = m->opts.mass_scaling_dt, sc = m->opts.dt_scale;
     if (!(target > 0)) return MCS_OK;
-    m->elem_dt_factor = malloc(sizeof(double) * (size_t)(m->nelem > 0 ? m->nelem : 1));
-    if (!m->elem_dt_factor) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (mass scaling)");
-    m->bytes += sizeof(double) * (size_t)m->nelem;
-    for (int i = 0; i < m->nelem; i++) m->elem_dt_factor[i] = 1;
+    mcs_status st = fe_dt_factors_alloc(m, err);
+    if (st) return st;
     int nscaled = 0;
     for (int ip = 0; ip < m->npart; ip++) {
         const fe_part *p = &m->part[ip];

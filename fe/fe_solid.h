@@ -51,6 +51,8 @@ mcs_status fe_rigid_build(fe_model *m, mcs_error *err);
 mcs_status fe_solid_finish(fe_model *m, mcs_error *err);
 mcs_status fe_rigid_finish(fe_model *m, mcs_error *err);
 void fe_rigid_reset(const fe_model *m, fe_state *s);
+/* m->elem_dt_factor, all 1, unless it exists already (mass scaling, fe_hex_dt.c) */
+mcs_status fe_dt_factors_alloc(fe_model *m, mcs_error *err);
 mcs_status fe_massscale_build(fe_model *m, mcs_error *err);
 /* step factors of lightly held one-point hexes (fe_hex_dt.c), after mass scaling */
 mcs_status fe_hex_dt_build(fe_model *m, mcs_error *err);

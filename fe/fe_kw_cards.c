@@ -235,19 +235,22 @@ static mcs_status h_part(kw_ctx *c, const kw_card *cd, int n)
     return MCS_OK;
 }
 
-static fe_kw_section *new_section(kw_ctx *c, const kw_card *cd, int id, mcs_status *st)
+/* a section card's SECID (field 1), checked unique, and a new section of that kind */
+static mcs_status new_section(kw_ctx *c, const kw_card *cd, fe_kw_sec_kind kind,
+                              fe_kw_section **out)
 {
+    int id;
+    TRY(kw_int(c, cd, &KW_L10, 0, "SECID", 0, &id));
     for (int k = 0; k < c->d->nsection; k++)
-        if (c->d->section[k].id == id) {
-            *st = kw_fail(c, cd->file, cd->line, 1, MCS_ERR_FORMAT,
-                          "section %d is defined twice", id);
-            return NULL;
-        }
+        if (c->d->section[k].id == id)
+            return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_FORMAT,
+                           "section %d is defined twice", id);
     fe_kw_section *s =
         kw_push((void **)&c->d->section, &c->d->nsection, &c->d->cap_section, sizeof *s);
-    if (!s) *st = MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-    else s->id = id, s->loc = loc_of(cd);
-    return s;
+    if (!s) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
+    s->id = id, s->loc = loc_of(cd), s->kind = kind;
+    *out = s;
+    return MCS_OK;
 }
 
 static mcs_status h_section_shell(kw_ctx *c, const kw_card *cd, int n)
@@ -255,12 +258,9 @@ static mcs_status h_section_shell(kw_ctx *c, const kw_card *cd, int n)
     for (int i = 0; i < n;) {
         i = title_card(c, i);
         TRY(need(c, cd, n, i, 2));
-        int id, icomp;
-        mcs_status st = MCS_OK;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "SECID", 0, &id));
-        fe_kw_section *s = new_section(c, &cd[i], id, &st);
-        if (!s) return st;
-        s->kind = FE_KW_SEC_SHELL;
+        int icomp;
+        fe_kw_section *s;
+        TRY(new_section(c, &cd[i], FE_KW_SEC_SHELL, &s));
         TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
         TRY(kw_real(c, &cd[i], &KW_L10, 2, "SHRF", 0, &s->shrf));
         double nip;
@@ -287,12 +287,8 @@ static mcs_status h_section_solid(kw_ctx *c, const kw_card *cd, int n)
     for (int i = 0; i < n;) {
         i = title_card(c, i);
         TRY(need(c, cd, n, i, 1));
-        int id;
-        mcs_status st = MCS_OK;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "SECID", 0, &id));
-        fe_kw_section *s = new_section(c, &cd[i], id, &st);
-        if (!s) return st;
-        s->kind = FE_KW_SEC_SOLID;
+        fe_kw_section *s;
+        TRY(new_section(c, &cd[i], FE_KW_SEC_SOLID, &s));
         TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
         i++;
     }
@@ -304,12 +300,8 @@ static mcs_status h_section_beam(kw_ctx *c, const kw_card *cd, int n)
     for (int i = 0; i < n;) {
         i = title_card(c, i);
         TRY(need(c, cd, n, i, 2));
-        int id;
-        mcs_status st = MCS_OK;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "SECID", 0, &id));
-        fe_kw_section *s = new_section(c, &cd[i], id, &st);
-        if (!s) return st;
-        s->kind = FE_KW_SEC_BEAM;
+        fe_kw_section *s;
+        TRY(new_section(c, &cd[i], FE_KW_SEC_BEAM, &s));
         TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
         if (s->elform == 3) { /* truss: A RAMPT STRESS */
             TRY(kw_real(c, &cd[i + 1], &KW_L10, 0, "A", 0, &s->area));
@@ -326,12 +318,8 @@ static mcs_status h_section_discrete(kw_ctx *c, const kw_card *cd, int n)
     for (int i = 0; i < n;) {
         i = title_card(c, i);
         TRY(need(c, cd, n, i, 1));
-        int id;
-        mcs_status st = MCS_OK;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "SECID", 0, &id));
-        fe_kw_section *s = new_section(c, &cd[i], id, &st);
-        if (!s) return st;
-        s->kind = FE_KW_SEC_DISCRETE;
+        fe_kw_section *s;
+        TRY(new_section(c, &cd[i], FE_KW_SEC_DISCRETE, &s));
         TRY(kw_int(c, &cd[i], &KW_L10, 1, "DRO", 0, &s->elform));
         i++;
     }

@@ -311,6 +311,8 @@ mcs_status fe_builder_add_wall(fe_builder *b, const fe_wall_desc *d, mcs_error *
     if (d->nparts < 0 || d->nparts > 8 || d->penalty_scale < 0)
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: rigid wall '%s': 0..8 parts, penalty_scale >= 0",
                        d->name);
+    mcs_status st = fe_wall_check(d, err); /* a wall with mass (fe_wall.c) */
+    if (st) return st;
     for (int i = 0; i < b->nwall; i++)
         if (strcmp(b->wall[i].name, d->name) == 0)
             return MCS_ERR(err, MCS_ERR_KEY, "fe: rigid wall '%s' is defined twice", d->name);

@@ -114,6 +114,9 @@ typedef struct {
     double tail[3], head[3];    /* XT..ZT, XH..ZH: the normal points from tail to head [m]  */
     double fric;                /* friction [-]                                            */
     fe_kw_loc loc;
+    int moving;                 /* *RIGIDWALL_PLANAR_MOVING: a free wall with mass [-]      */
+    double mass;                /* MASS: its mass [kg]                                     */
+    double v0;                  /* V0: its initial velocity along the normal [m/s]          */
 } fe_kw_wall;
 
 /* what an initial velocity or constraint applies to */

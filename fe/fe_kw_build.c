@@ -385,6 +385,14 @@ static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[F
             d.point[i] = k->tail[i];
             d.normal[i] = k->head[i] - k->tail[i];
         }
+        if (k->moving) {
+            /* a free wall with mass: penalty contact (fe_wall.c), V0 along the normal */
+            double nn = sqrt(d.normal[0] * d.normal[0] + d.normal[1] * d.normal[1] +
+                             d.normal[2] * d.normal[2]);
+            d.method = FE_WALL_PENALTY;
+            d.mass = k->mass;
+            for (int i = 0; i < 3; i++) d.velocity[i] = k->v0 * d.normal[i] / nn;
+        }
         for (int p = 0; p < dk->npart && k->nsid; p++) {
             int c = 0;
             mcs_status st = covers(dk, FE_KW_ON_NODESET, k->nsid, k->loc, p, &c, err);

@@ -533,12 +533,13 @@ static mcs_status h_set(kw_ctx *c, const kw_card *cd, int n, int is_part)
 static mcs_status h_set_node(kw_ctx *c, const kw_card *cd, int n) { return h_set(c, cd, n, 0); }
 static mcs_status h_set_part(kw_ctx *c, const kw_card *cd, int n) { return h_set(c, cd, n, 1); }
 
-static mcs_status h_wall(kw_ctx *c, const kw_card *cd, int n)
+/* *RIGIDWALL_PLANAR(_MOVING)(_ID): [ID card] / NSID ... / XT ... FRIC / (MOVING) MASS V0 */
+static mcs_status wall_cards(kw_ctx *c, const kw_card *cd, int n, int moving)
 {
     for (int i = 0; i < n;) {
         fe_kw_wall w = {0};
         TRY(id_card(c, cd, n, &i, &w.id, w.title));
-        TRY(need(c, cd, n, i, 2));
+        TRY(need(c, cd, n, i, moving ? 3 : 2));
         int nsidex, boxid;
         double offset, birth, death;
         TRY(kw_int(c, &cd[i], &KW_L10, 0, "NSID", 0, &w.nsid));
@@ -564,13 +565,30 @@ static mcs_status h_wall(kw_ctx *c, const kw_card *cd, int n)
         if (v[0] == v[3] && v[1] == v[4] && v[2] == v[5])
             return kw_fail(c, cd[i + 1].file, cd[i + 1].line, 0, MCS_ERR_FORMAT,
                            "the head (XH, YH, ZH) equals the tail (XT, YT, ZT): no normal");
+        if (moving) {
+            const kw_card *mc = &cd[i + 2];
+            TRY(kw_real(c, mc, &KW_L10, 0, "MASS", 0, &w.mass));
+            TRY(kw_real(c, mc, &KW_L10, 1, "V0", 0, &w.v0));
+            if (!(w.mass > 0))
+                return kw_fail(c, mc->file, mc->line, 1, MCS_ERR_FORMAT,
+                               "field MASS: a moving wall needs a mass > 0, got %g", w.mass);
+            w.moving = 1;
+            w.mass *= c->d->unit[2];
+            w.v0 *= kw_u_vel(c->d);
+        }
         w.loc = loc_of(&cd[i]);
         fe_kw_wall *p = kw_push((void **)&c->d->wall, &c->d->nwall, &c->d->cap_wall, sizeof *p);
         if (!p) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
         *p = w;
-        i += 2;
+        i += moving ? 3 : 2;
     }
     return MCS_OK;
+}
+
+static mcs_status h_wall(kw_ctx *c, const kw_card *cd, int n) { return wall_cards(c, cd, n, 0); }
+static mcs_status h_wall_moving(kw_ctx *c, const kw_card *cd, int n)
+{
+    return wall_cards(c, cd, n, 1);
 }
 
 static fe_kw_initvel *new_iv(kw_ctx *c)
@@ -709,6 +727,7 @@ static const struct {
     {"SET_PART", h_set_part, 0},
     {"SET_PART_LIST", h_set_part, 0},
     {"RIGIDWALL_PLANAR", h_wall, 1},
+    {"RIGIDWALL_PLANAR_MOVING", h_wall_moving, 1},
     {"INITIAL_VELOCITY", h_initvel, 0},
     {"INITIAL_VELOCITY_GENERATION", h_initvel_gen, 0},
     {"BOUNDARY_SPC_NODE", h_spc_node, 1},

@@ -260,11 +260,15 @@ static void w_conditions(kw_out *o, const fe_kw_deck *d)
     }
     for (int i = 0; i < d->nwall; i++) {
         const fe_kw_wall *w = &d->wall[i];
-        kw(o, "RIGIDWALL_PLANAR");
+        kw(o, w->moving ? "RIGIDWALL_PLANAR_MOVING" : "RIGIDWALL_PLANAR");
         put_int(o, 10, w->nsid), endl(o);
         for (int k = 0; k < 3; k++) put_real(o, 10, w->tail[k] / kw_u_len(d));
         for (int k = 0; k < 3; k++) put_real(o, 10, w->head[k] / kw_u_len(d));
         put_real(o, 10, w->fric), endl(o);
+        if (w->moving) {
+            put_real(o, 10, w->mass / d->unit[2]);
+            put_real(o, 10, w->v0 / kw_u_vel(d)), endl(o);
+        }
     }
 }
 

@@ -321,6 +321,7 @@ static mcs_status resolve_walls(const fe_builder *b, fe_model *m, mcs_error *err
             W->velocity[i] = d->velocity[i];
         }
         W->method = d->method;
+        W->mass = d->mass;
         W->penalty_scale = d->penalty_scale > 0 ? d->penalty_scale : 0.1;
         memset(inpart, d->nparts ? 0 : 1, (size_t)m->nnode);
         for (int j = 0; j < d->nparts; j++) {

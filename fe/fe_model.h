@@ -158,6 +158,9 @@ typedef struct {
     double penalty_scale;     /* penalty: stiffness = scale * m / dt^2 per node; 0 -> 0.1 [-] */
     int nparts;               /* 0: every node in front of the wall at t = 0 is a slave       */
     char parts[8][FE_NAME_MAX]; /* slave parts                                              */
+    double mass;              /* > 0: a free wall of this mass moving along its normal, with
+                                 `velocity` (along the normal) as its initial velocity; needs
+                                 method penalty (LS-DYNA *RIGIDWALL_PLANAR_MOVING) [kg]    */
 } fe_wall_desc;
 
 /* ---- model options (not per part) ----------------------------------------------------- */
@@ -210,6 +213,7 @@ typedef struct {
     fe_wall_method method;
     double penalty_scale;                    /* [-]                                          */
     char name[FE_NAME_MAX];
+    double mass;                             /* > 0: free wall moving along its normal [kg]  */
 } fe_wall;
 
 typedef struct {

@@ -43,7 +43,8 @@ mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err)
 
 mcs_status fe_solid_finish(fe_model *m, mcs_error *err)
 {
-    return fe_rigid_finish(m, err);
+    mcs_status st = fe_rigid_finish(m, err);
+    return st ? st : fe_wall_finish(m, err);
 }
 
 void fe_solid_free(fe_model *m)
@@ -64,4 +65,5 @@ void fe_solid_reset(const fe_model *m, fe_state *s)
 {
     memset(s->free_energy, 0, sizeof s->free_energy);
     fe_rigid_reset(m, s);
+    fe_wall_reset(m, s);
 }

@@ -57,6 +57,14 @@ mcs_status fe_massscale_build(fe_model *m, mcs_error *err);
 /* step factors of lightly held one-point hexes (fe_hex_dt.c), after mass scaling */
 mcs_status fe_hex_dt_build(fe_model *m, mcs_error *err);
 
+/* moving rigid walls with mass (fe_wall.c): descriptor check (fe_builder_add_wall), model
+ * checks (fe_solid_finish), state reset, and the wall update after the node update (reads
+ * wall_force at t, writes wall_x (t + dt), wall_v (t + dt/2), kinetic energy and works) */
+mcs_status fe_wall_check(const fe_wall_desc *d, mcs_error *err);
+mcs_status fe_wall_finish(fe_model *m, mcs_error *err);
+void fe_wall_reset(const fe_model *m, fe_state *s);
+void fe_wall_integrate(const fe_model *m, fe_state *s);
+
 /* ---- the time loop ---- */
 
 /* state reset: bodies at rest at t = 0 with the nodes' initial velocities */

@@ -97,7 +97,7 @@ void fe_contact_forces(const fe_model *m, fe_state *s)
             const fe_wall *W = &m->wall[w];
             double g = 0;
             for (int i = 0; i < 3; i++)
-                g += (s->node_x[3 * n + i] - W->point[i] - W->velocity[i] * s->time) * W->normal[i];
+                g += (s->node_x[3 * n + i] - W->point[i] - s->wall_x[3 * w + i]) * W->normal[i];
             if (g >= 0) continue;
             /* stiffness scale m / dt^2: a fraction of the node's own stability limit */
             double fn = -W->penalty_scale * m->node_mass[n] / (dt * dt) * g;
@@ -257,8 +257,9 @@ void fe_integrate(const fe_model *m, fe_state *s)
     for (int w = 0; w < m->nwall; w++) {
         const fe_wall *W = &m->wall[w];
         s->wall_normal[w] = -fe_dot(s->wall_force + 3 * w, W->normal);
-        s->wall_disp[w] = fe_dot(W->velocity, W->normal) * s->time;
+        s->wall_disp[w] = fe_dot(s->wall_x + 3 * w, W->normal);
     }
+    fe_wall_integrate(m, s); /* walls to t + dt; walls with mass: momentum, energy */
 }
 
 static void record_history(const fe_model *m, fe_state *s)

@@ -89,6 +89,8 @@ typedef struct {
     X(int, part_bad_elem, npart, 1, "-", "first inverted element of the part, -1 none")           \
     X(double, wall_force, nwall, 3, "N", "force of the structure on each rigid wall")             \
     X(double, wall_disp, nwall, 1, "m", "rigid wall displacement along its velocity")            \
+    X(double, wall_x, nwall, 3, "m", "rigid wall displacement from t = 0, at t (fe_wall.c)")      \
+    X(double, wall_v, nwall, 3, "m/s", "rigid wall velocity at t + dt/2 (fe_wall.c)")             \
     X(double, hist_time, opts.history_capacity, 1, "s", "history sample times")                  \
     X(double, hist_energy, opts.history_capacity, FE_NENERGY, "J", "energies at samples")        \
     X(double, hist_wall_force, opts.history_capacity, FE_WALL_MAX, "N", "wall normal force")     \

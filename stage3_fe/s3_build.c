@@ -279,6 +279,7 @@ static mcs_status add_walls(fe_builder *b, const mcs_node *list, mcs_error *err)
         const char *method = mcs_node_str(get(w, "method"));
         if (method && strcmp(method, "penalty") == 0) d.method = FE_WALL_PENALTY;
         d.penalty_scale = mcs_node_num_or(w, "penalty_scale", 0);
+        d.mass = mcs_node_num_or(w, "mass", 0); /* a free wall with mass (fe_wall.c) */
         const mcs_node *parts = get(w, "parts");
         if (mcs_node_len(parts) > 8)
             return mcs_node_error(parts, err, MCS_ERR_RANGE, "at most 8 parts, got %d",

@@ -1,0 +1,95 @@
+/* fe_wall: the motion of the planar rigid walls. A wall moves at its prescribed velocity, or,
+ * with a mass M (fe_wall_desc.mass > 0; LS-DYNA *RIGIDWALL_PLANAR_MOVING, cards MASS and V0),
+ * freely along its normal n under the force the structure puts on it:
+ *     V(n+1/2) = V(n-1/2) + dt_n (F(t_n).n) / M,     d(n+1) = d(n) + dt V(n+1/2) n,
+ * the same central difference as the nodes, with the same force pair (the penalty forces of
+ * fe_contact_forces at t_n), so the momentum M V + sum m v is conserved to round-off.
+ * Only the penalty method is offered for a wall with mass: a kinematic wall would need the wall
+ * and its slave nodes solved together. Energy: the wall's kinetic energy 1/2 M V(n-1/2) V(n+1/2)
+ * joins the kinetic energy, and the work of the nodes on it (trapezoidal, fe_integrate's
+ * weights) the external work, so the pair's work cancels apart from the penalty springs' own
+ * energy while in contact and the total is conserved across an impact. */
+#include "fe/fe_elem.h"
+#include "fe/fe_solid.h"
+
+#include <math.h>
+#include <string.h>
+
+mcs_status fe_wall_check(const fe_wall_desc *d, mcs_error *err)
+{
+    if (!(d->mass >= 0) || !isfinite(d->mass))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: rigid wall '%s': mass must be >= 0, got %g",
+                       d->name, d->mass);
+    if (d->mass == 0) return MCS_OK;
+    if (d->method != FE_WALL_PENALTY)
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: rigid wall '%s': a wall with mass needs method: penalty", d->name);
+    double nn = sqrt(fe_dot(d->normal, d->normal)), vn = fe_dot(d->velocity, d->normal) / nn;
+    double vt2 = fe_dot(d->velocity, d->velocity) - vn * vn;
+    if (vt2 > 1e-18 * fe_dot(d->velocity, d->velocity))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: rigid wall '%s': a wall with mass moves along its normal: its "
+                       "velocity must be parallel to the normal",
+                       d->name);
+    return MCS_OK;
+}
+
+/* stability of the penalty springs on a wall with mass: with k = s m_I / dt^2 per slave node
+ * (s <= 1) and every slave in contact, (omega dt)^2 <= s (1 + sum m_I / M); M >= sum m_I / 20
+ * keeps it below 2.1 s, inside the limit 4 */
+mcs_status fe_wall_finish(fe_model *m, mcs_error *err)
+{
+    for (int w = 0; w < m->nwall; w++) {
+        const fe_wall *W = &m->wall[w];
+        if (!(W->mass > 0)) continue;
+        double ms = 0;
+        for (int n = 0; n < m->nnode; n++)
+            if (m->node_walls[n] & (1u << w)) ms += m->node_mass[n];
+        if (W->penalty_scale > 1)
+            return MCS_ERR(err, MCS_ERR_RANGE,
+                           "fe: rigid wall '%s': a wall with mass needs penalty_scale <= 1",
+                           W->name);
+        if (W->mass < ms / 20)
+            return MCS_ERR(err, MCS_ERR_RANGE,
+                           "fe: rigid wall '%s': mass %g kg is below 1/20 of the %g kg of the "
+                           "nodes it stops: its penalty contact would be unstable",
+                           W->name, W->mass, ms);
+    }
+    return MCS_OK;
+}
+
+void fe_wall_reset(const fe_model *m, fe_state *s)
+{
+    for (int w = 0; w < m->nwall; w++)
+        for (int i = 0; i < 3; i++) {
+            s->wall_x[3 * w + i] = 0;
+            s->wall_v[3 * w + i] = m->wall[w].velocity[i];
+        }
+}
+
+void fe_wall_integrate(const fe_model *m, fe_state *s)
+{
+    const double dt = s->dt, dtp = s->dt_prev, dth = 0.5 * (dt + dtp), hb = dtp > 0 ? dth : 0;
+    double ke = 0, wb = 0, wf = 0;
+    for (int w = 0; w < m->nwall; w++) {
+        const fe_wall *W = &m->wall[w];
+        double *x = s->wall_x + 3 * w, *v = s->wall_v + 3 * w;
+        if (!(W->mass > 0)) {
+            /* prescribed: d = V t (the same product the penalty gap used before) */
+            for (int i = 0; i < 3; i++) x[i] = W->velocity[i] * (s->time + dt);
+            continue;
+        }
+        const double fn = fe_dot(s->wall_force + 3 * w, W->normal);
+        const double vo = fe_dot(v, W->normal), vn = vo + dth * fn / W->mass;
+        ke += 0.5 * W->mass * vo * vn;
+        wb += 0.5 * fn * hb * vo;
+        wf += 0.5 * fn * dth * vn;
+        for (int i = 0; i < 3; i++) {
+            v[i] = vn * W->normal[i];
+            x[i] += dt * v[i];
+        }
+    }
+    s->energy[FE_E_kinetic] += ke;
+    s->work_ext += wb;
+    s->work_pending[0] += wf;
+}

@@ -3,22 +3,27 @@
  *
  * A facet surface is a triangle mesh fixed in its body's frame (vertices relative to the CG);
  * each triangle is one-sided, its outward side given by the counter-clockwise vertex order.
- * The penetration of an ellipsoid is the deepest single-triangle contact (face, edge or vertex,
- * mb_geom_ellipsoid_mesh_deepest with the AABB tree); a triangle only counts while the
- * ellipsoid's centre is on its outer side, so an ellipsoid pushed through a panel by more than
- * its semi-axis loses the contact: use facets for surfaces met at modest penetration (glass,
- * roof, hood, fairing, barrier faces) and ellipsoids for deep crush zones. Only ellipsoids meet
- * facets (cylinders and planes do not).
+ * The penetration of an ellipsoid through one triangle is a distance that is continuous in the
+ * pose across the triangle's face, edge and vertex regions: the depth below the plane while
+ * the ellipsoid's support point along -n projects inside the triangle, otherwise the
+ * penetration of the nearest edge's line or vertex (its distance to the ellipsoid's surface),
+ * with the contact normal along that distance (docs/contact_geometry.md). The surface's
+ * contact is the deepest triangle's (mb_geom_ellipsoid_mesh_deepest with the AABB tree): the
+ * largest of continuous functions is continuous, two faces sharing an edge give that edge the
+ * same line penetration (no double count), and the force, along the gradient of the depth,
+ * derives from the contact potential, so an elastic contact slid over an edge or a vertex does
+ * no net work (tests/test_mb_facet_edge.c). A sphere over an edge or vertex meets exactly the
+ * line or point contact R - distance.
+ * A triangle only counts while the ellipsoid's centre is on its outer side, so an ellipsoid
+ * pushed through a panel by more than its semi-axis loses the contact: use facets for surfaces
+ * met at modest penetration (glass, roof, hood, fairing, barrier faces) and ellipsoids for deep
+ * crush zones. Only ellipsoids meet facets (cylinders and planes do not). Where separate facet
+ * surfaces (separate contacts) meet at a corner, each has its own contact there.
  * Depth continuity: a triangle whose contact would be deeper than the pair's depth at the last
  * step plus a quarter of the ellipsoid's smallest semi-axis is ignored. Such a contact cannot
  * come from motion over one step (10 um at 10 m/s); it appears when the centre of an ellipsoid
- * that overlaps a panel's edge from the side crosses the panel's plane (a head sliding up the
- * side glass past the roof edge), and it would add the energy of a sudden deep penetration.
- * Known limit: at an edge or vertex the depth is still measured along the face normal, which
- * is not the gradient of the contact energy, so edge contacts do work the balance does not see
- * (the 413 rider case drifts 3.4e-2). Applying the force along the gradient (tried: drift
- * 2.6e-3) made a head striking a panel edge sideways 5-10 times too stiff, because this depth
- * grows faster than the real overlap there; a distance-based penetration is the fix. */
+ * that has come through a panel from behind (a head through the side glass, under the roof)
+ * crosses the panel's plane, and it would add the energy of a sudden deep penetration. */
 #ifndef MB_FACET_H
 #define MB_FACET_H
 

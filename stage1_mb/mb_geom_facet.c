@@ -1,9 +1,11 @@
 /* mb_geom_facet: ellipsoid against triangles and triangle meshes (docs/contact_geometry.md).
- * The penetration through a triangle is the deepest point of the ellipsoid below the triangle's
- * plane among the ellipsoid points whose projection lies in the triangle. That depth is concave
- * over the plane, so when the support point along -n projects outside the triangle the maximum
- * lies on an edge (closed form: the deepest point of a planar slice) or at a vertex (closed
- * form: the lower root of a line-ellipsoid intersection). */
+ * The penetration through a triangle is a distance, continuous in the pose across the face,
+ * edge and vertex regions: the depth below the plane while the ellipsoid's support point along
+ * -n projects inside the triangle (face); otherwise the penetration of the nearest edge's line
+ * (the distance of its trace to the boundary of the ellipsoid's shadow along the edge) or, past
+ * the edge's ends, of the vertex (its distance to the ellipsoid's surface). The contact normal
+ * is the direction of that distance, which is the gradient of the depth with respect to the
+ * ellipsoid's translation, so a force along it derives from a potential of the depth. */
 #include "stage1_mb/mb_geom.h"
 #include "stage1_mb/mb_geom_internal.h"
 #include "stage1_mb/mb_vec.h"
@@ -15,6 +17,8 @@
 /* an ellipsoid expressed in the frame the triangles are given in */
 typedef struct {
     double c[3];  /* centre [m] */
+    double R[9];  /* principal axes -> frame rotation (columns = axes) */
+    double s[3];  /* semi-axes [m] */
     double Q[9];  /* R diag(s^2) R^T [m^2]   */
     double Qi[9]; /* R diag(1/s^2) R^T [1/m^2] */
 } ell_frame;
@@ -22,6 +26,9 @@ typedef struct {
 static void ell_frame_make(const double c[3], const double R[9], const double s[3], ell_frame *e)
 {
     mb_copy(c, e->c);
+    mb_copy(s, e->s);
+    for (int i = 0; i < 9; i++)
+        e->R[i] = R[i];
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             double q = 0, qi = 0;
@@ -34,74 +41,94 @@ static void ell_frame_make(const double c[3], const double R[9], const double s[
         }
 }
 
-/* vertex: lowest point of the ellipsoid on the line V + t n (t < 0 below the plane) */
+/* vertex V inside the ellipsoid: the penetration is its distance to the nearest surface point
+ * x, the force pushes the ellipsoid along u = -(outward surface normal at x) */
 static int vertex_contact(const ell_frame *e, const double V[3], const double n[3], mb_contact *c)
 {
-    double w[3], Qiw[3], Qin[3];
+    double w[3], Qiw[3], y[3], x[3], u[3];
     mb_sub(V, e->c, w);
     mb_mat_vec(e->Qi, w, Qiw);
-    mb_mat_vec(e->Qi, n, Qin);
-    double A = mb_dot(n, Qin), B = mb_dot(n, Qiw), C = mb_dot(w, Qiw) - 1;
-    double disc = B * B - A * C;
-    if (!(disc > 0)) return 0;
-    double t = (-B - sqrt(disc)) / A;
-    if (!(t < 0)) return 0;
-    c->depth = -t;
-    mb_axpy(V, t, n, c->point_a);
+    if (!(mb_dot(w, Qiw) < 1)) return 0;
+    mb_mat_tvec(e->R, w, y);
+    double d = mb_ell_nearest_inside(3, e->s, y, x);
+    for (int k = 0; k < 3; k++)
+        x[k] = -x[k] / (e->s[k] * e->s[k]);
+    mb_mat_vec(e->R, x, u);
+    mb_normalize(u);
+    /* one-sided: a push into the facet's back is not this facet's contact */
+    if (!(d > 0) || !(mb_dot(u, n) > 0)) return 0;
+    c->depth = d;
     mb_copy(V, c->point_b);
+    mb_axpy(V, -d, u, c->point_a);
+    mb_copy(u, c->normal);
     c->feature = MB_FEATURE_VERTEX;
     return 1;
 }
 
-/* edge P->R with unit in-plane normal m: minimise n.y over the slice of the ellipsoid by the
- * plane through the edge and n. y - c = Q (a n + b m): m.(y - c) = delta and
- * (y-c)'Qi(y-c) = 1 give a = -sqrt((1 - delta^2/Qmm) / (Qnn - Qnm^2/Qmm)),
- * b = (delta - a Qnm)/Qmm. Beyond the segment's ends the maximum is at the nearer vertex. */
+/* edge P->R with unit in-plane outward normal m: the penetration of the edge's line, i.e. the
+ * distance of the line's trace to the boundary of the ellipsoid's shadow along the edge (an
+ * ellipse with Q2 = [n m]^T Q [n m] in the plane spanned by n and m). Its nearest point gives
+ * the direction u (in that plane); the ellipsoid's support point along -u lies d u below the
+ * line. Beyond the segment's ends the contact is the nearer vertex's. */
 static int edge_contact(const ell_frame *e, const double P[3], const double Rv[3],
-                        const double n[3], const double m[3], const double Qn[3], double Qnn,
-                        mb_contact *c)
+                        const double n[3], const double m[3], double Qnn, mb_contact *c)
 {
-    double Qm[3], rel[3];
-    mb_sub(P, e->c, rel);
-    double delta = mb_dot(m, rel);
+    double w[3], Qm[3];
+    mb_sub(P, e->c, w);
     mb_mat_vec(e->Q, m, Qm);
-    double Qmm = mb_dot(m, Qm);
-    double r = 1 - delta * delta / Qmm;
-    if (!(r > 0)) return 0; /* the edge's line misses the ellipsoid's shadow */
-    double Qnm = mb_dot(n, Qm), den = Qnn - Qnm * Qnm / Qmm;
-    double a = -sqrt(r / den), b = (delta - a * Qnm) / Qmm;
-    double y[3], yr[3], E[3];
+    double A = Qnn, B = mb_dot(n, Qm), C = mb_dot(m, Qm);
+    double p0 = mb_dot(w, n), p1 = mb_dot(w, m), det = A * C - B * B;
+    if (!(C * p0 * p0 - 2 * B * p0 * p1 + A * p1 * p1 < det)) return 0; /* line misses it */
+    /* principal axes of the shadow ellipse: eigenvalues l1 >= l2, eigenvector (cs, sn) of l1 */
+    double hd = 0.5 * (A - C), r = sqrt(hd * hd + B * B);
+    double l1 = 0.5 * (A + C) + r, l2 = det / l1;
+    double cs = hd >= 0 ? r + hd : B, sn = hd >= 0 ? B : r - hd, len = sqrt(cs * cs + sn * sn);
+    if (len > 0)
+        cs /= len, sn /= len;
+    else
+        cs = 1, sn = 0;
+    double a[2] = {sqrt(l1), sqrt(l2)}, y[2] = {cs * p0 + sn * p1, -sn * p0 + cs * p1}, x[2];
+    double d = mb_ell_nearest_inside(2, a, y, x);
+    double g0 = x[0] / l1, g1 = x[1] / l2; /* outward normal at x, principal */
+    double un = -(cs * g0 - sn * g1), um = -(sn * g0 + cs * g1), u[3];
     for (int k = 0; k < 3; k++)
-        y[k] = e->c[k] + a * Qn[k] + b * Qm[k];
-    mb_sub(y, P, yr);
+        u[k] = un * n[k] + um * m[k];
+    mb_normalize(u);
+    if (!(d > 0) || !(mb_dot(u, n) > 0)) return 0;
+    /* support point along -u and the point of the line opposite it */
+    double Qu[3], ys[3], q[3], qr[3], E[3];
+    mb_mat_vec(e->Q, u, Qu);
+    mb_axpy(e->c, -1.0 / sqrt(mb_dot(u, Qu)), Qu, ys);
+    mb_axpy(ys, d, u, q);
+    mb_sub(q, P, qr);
     mb_sub(Rv, P, E);
-    double s = mb_dot(yr, E) / mb_dot(E, E);
+    double s = mb_dot(qr, E) / mb_dot(E, E);
     if (s < 0) return vertex_contact(e, P, n, c);
     if (s > 1) return vertex_contact(e, Rv, n, c);
-    double depth = -mb_dot(n, yr);
-    if (!(depth > 0)) return 0;
-    c->depth = depth;
-    mb_copy(y, c->point_a);
-    mb_axpy(y, depth, n, c->point_b);
+    c->depth = d;
+    mb_copy(ys, c->point_a);
+    mb_axpy(P, s, E, c->point_b);
+    mb_copy(u, c->normal);
     c->feature = MB_FEATURE_EDGE;
     return 1;
 }
 
 /* one triangle with unit outward normal n and unit outward in-plane edge normals m (row i for
- * the edge v[i] -> v[i+1]), everything in the frame of e */
-static int tri_contact(const ell_frame *e, const double *v[3], const double n[3], const double m[9],
-                       mb_contact *c)
+ * the edge v[i] -> v[i+1]), everything in the frame of e. The face test: -1 no contact through
+ * the plane, 1 face contact (c filled), 0 the support point projects outside (edge region:
+ * *Qnn = n'Qn and out[i] = how far outside edge i it is, for tri_edges) */
+static int tri_face(const ell_frame *e, const double *v[3], const double n[3], const double m[9],
+                    mb_contact *c, double *Qnn, double out[3])
 {
     double rel[3], Qn[3];
     mb_sub(e->c, v[0], rel);
     double sd = mb_dot(n, rel);
-    if (!(sd > 0)) return 0; /* centre behind the facet: not this facet's contact */
+    if (!(sd > 0)) return -1; /* centre behind the facet: not this facet's contact */
     mb_mat_vec(e->Q, n, Qn);
-    double Qnn = mb_dot(n, Qn), h = sqrt(Qnn);
-    double depth = h - sd;
-    if (!(depth > 0)) return 0;
-    /* face: the support point along -n projects inside the triangle */
-    double p[3], pb[3], out[3];
+    *Qnn = mb_dot(n, Qn);
+    double h = sqrt(*Qnn), depth = h - sd;
+    if (!(depth > 0)) return -1;
+    double p[3], pb[3];
     mb_axpy(e->c, -1.0 / h, Qn, p);
     mb_axpy(p, depth, n, pb);
     for (int i = 0; i < 3; i++) {
@@ -109,27 +136,59 @@ static int tri_contact(const ell_frame *e, const double *v[3], const double n[3]
         mb_sub(pb, v[i], W);
         out[i] = mb_dot(m + 3 * i, W);
     }
-    if (out[0] <= 0 && out[1] <= 0 && out[2] <= 0) {
-        c->depth = depth;
-        mb_copy(p, c->point_a);
-        mb_copy(pb, c->point_b);
-        c->feature = MB_FEATURE_FACE;
-        return 1;
-    }
-    /* otherwise the concave depth peaks on an edge that has pb on its outer side (KKT: the
-     * gradient at the maximum lies in the normal cone), or at one of its vertices */
+    if (!(out[0] <= 0 && out[1] <= 0 && out[2] <= 0)) return 0;
+    c->depth = depth;
+    mb_copy(p, c->point_a);
+    mb_copy(pb, c->point_b);
+    mb_copy(n, c->normal);
+    c->feature = MB_FEATURE_FACE;
+    return 1;
+}
+
+/* an upper bound of edge P->R's penetration (a minimum over directions u normal to the edge):
+ * its value h(u) - u.(c - P) at u = the direction from the edge line to the centre, which is
+ * the minimum for a sphere */
+static double edge_bound(const ell_frame *e, const double P[3], const double Rv[3])
+{
+    double w[3], E[3], u[3], Qu[3];
+    mb_sub(e->c, P, w);
+    mb_sub(Rv, P, E);
+    mb_axpy(w, -mb_dot(w, E) / mb_dot(E, E), E, u);
+    double l = mb_norm(u);
+    if (!(l > 0)) return INFINITY;
+    mb_scale(u, 1.0 / l, u);
+    mb_mat_vec(e->Q, u, Qu);
+    return sqrt(mb_dot(u, Qu)) - l;
+}
+
+/* edge region: the nearest feature is an edge that has the support point on its outer side,
+ * or one of its vertices; the deepest (nearest) of those edges' contacts. Edges that cannot
+ * beat floor [m] (nor the best edge so far) are skipped. */
+static int tri_edges(const ell_frame *e, const double *v[3], const double n[3], const double m[9],
+                     double Qnn, const double out[3], double floor, mb_contact *c)
+{
     mb_contact t;
     int hit = 0;
     for (int i = 0; i < 3; i++) {
         if (out[i] <= 0) continue;
+        const double *P = v[i], *Rv = v[(i + 1) % 3];
+        if (edge_bound(e, P, Rv) <= fmax(floor, c->depth)) continue;
         mb_contact_clear(&t);
-        if (edge_contact(e, v[i], v[(i + 1) % 3], n, m + 3 * i, Qn, Qnn, &t) &&
-            t.depth > c->depth) {
+        if (edge_contact(e, P, Rv, n, m + 3 * i, Qnn, &t) && t.depth > c->depth) {
             *c = t;
             hit = 1;
         }
     }
     return hit;
+}
+
+/* the contact through one triangle; edge contacts not deeper than floor [m] are not sought */
+static int tri_contact(const ell_frame *e, const double *v[3], const double n[3], const double m[9],
+                       double floor, mb_contact *c)
+{
+    double Qnn, out[3];
+    int f = tri_face(e, v, n, m, c, &Qnn, out);
+    return f == 0 ? tri_edges(e, v, n, m, Qnn, out, floor, c) : f > 0;
 }
 
 /* unit outward in-plane normals of the three edges: (v[i+1] - v[i]) x n, normalised */
@@ -155,9 +214,8 @@ static int tri_normal(const double *v0, const double *v1, const double *v2, doub
     return 1;
 }
 
-static void finish(mb_contact *c, const double normal[3])
+static void finish(mb_contact *c)
 {
-    mb_copy(normal, c->normal);
     for (int k = 0; k < 3; k++)
         c->point[k] = 0.5 * (c->point_a[k] + c->point_b[k]);
 }
@@ -173,11 +231,11 @@ int mb_geom_ellipsoid_triangle(const mb_ellipsoid *a, const double v0[3], const 
     const double *v[3] = {v0, v1, v2};
     double m[9];
     edge_normals(v, n, m);
-    if (!tri_contact(&e, v, n, m, c)) {
+    if (!tri_contact(&e, v, n, m, 0, c)) {
         mb_contact_clear(c);
         return 0;
     }
-    finish(c, n);
+    finish(c);
     return 1;
 }
 
@@ -411,9 +469,9 @@ int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pos
             const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
             mb_contact c;
             mb_contact_clear(&c);
-            if (!tri_contact(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, &c)) continue;
+            if (!tri_contact(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, 0, &c)) continue;
             c.tri = t;
-            finish(&c, m->tri_n + 3 * t);
+            finish(&c);
             to_world(pose, &c);
             if (all && nhit < max_all) all[nhit] = c;
             if (c.depth > deepest->depth) *deepest = c;
@@ -423,8 +481,9 @@ int mb_geom_ellipsoid_mesh(const mb_ellipsoid *a, const mb_mesh *m, const mb_pos
     return nhit;
 }
 
-/* deepest only: a triangle's depth never exceeds its plane depth h(n) - n.(c - v0), so a
- * triangle is evaluated only while its plane depth beats the best contact found so far */
+/* deepest only: a triangle's depth never exceeds its plane depth h(n) - n.(c - v0) (the edge and
+ * vertex penetrations are minima over directions that include n), so a triangle's edges are
+ * evaluated only while its plane depth beats the best contact found so far */
 int mb_geom_ellipsoid_mesh_deepest(const mb_ellipsoid *a, const mb_mesh *m, const mb_pose *pose,
                                    mb_contact *deepest)
 {
@@ -460,24 +519,34 @@ int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *
             cand[nc] = t, dp[nc++] = d;
         }
     }
-    /* the largest plane depth first (usually the face contact), then only those that can
-     * still beat the best found */
-    if (nc == 0) return 0; /* no candidate (cand and dp unset) */
-    int first = 0;
-    for (int i = 1; i < nc; i++)
-        if (dp[i] > dp[first]) first = i;
-    for (int k = -1; k < nc; k++) {
-        int i = k < 0 ? first : k;
-        if ((k >= 0 && i == first) || dp[i] <= deepest->depth) continue;
+    /* face contacts first (cheap): the deepest one bounds the rest from below; then the edge
+     * regions of the triangles whose plane depth (an upper bound of theirs) can still beat it
+     * by more than rounding (coplanar neighbours of the face triangle cannot) */
+    int nedge = 0;
+    for (int i = 0; i < nc; i++) {
+        int t = cand[i];
+        const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
+        double Qnn, out[3];
+        mb_contact c;
+        mb_contact_clear(&c);
+        int f = tri_face(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, &c, &Qnn, out);
+        if (f == 0) cand[nedge] = t, dp[nedge++] = dp[i];
+        if (f <= 0 || !(c.depth > deepest->depth) || c.depth > max_depth) continue;
+        c.tri = t;
+        finish(&c);
+        *deepest = c;
+    }
+    for (int i = 0; i < nedge; i++) {
+        if (dp[i] <= deepest->depth * (1 + 1e-12)) continue;
         int t = cand[i];
         const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
         mb_contact c;
         mb_contact_clear(&c);
-        if (!tri_contact(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, &c) ||
+        if (!tri_contact(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, deepest->depth, &c) ||
             !(c.depth > deepest->depth) || c.depth > max_depth)
             continue;
         c.tri = t;
-        finish(&c, m->tri_n + 3 * t);
+        finish(&c);
         *deepest = c;
     }
     if (deepest->depth > 0) to_world(pose, deepest);

@@ -10,4 +10,9 @@ void mb_contact_clear(mb_contact *c);
 /* Q = R diag(semi^2) R^T, world (row-major, symmetric) */
 void mb_ellipsoid_q(const mb_ellipsoid *e, double Q[9]);
 
+/* the boundary point x of the centred ellipse (dim 2) or ellipsoid (dim 3) with principal
+ * semi-axes a [m] nearest to the point y inside it, both in principal coordinates; returns
+ * |x - y| [m] (mb_geom_nearest.c) */
+double mb_ell_nearest_inside(int dim, const double *a, const double *y, double *x);
+
 #endif

@@ -17,17 +17,16 @@
 #include <string.h>
 
 #define FE_CONTACT_HITS 16 /* segments within contact distance kept per node per step */
-#define FE_CONTACT_OMP_MIN 4096 /* fewer slave nodes: one thread (a parallel region costs more) */
+#define FE_CONTACT_OMP_MIN 256 /* fewer live slave nodes: one thread (a parallel region costs more) */
 
 void fe_contact_state_destroy(fe_contact_state **p)
 {
     if (!p || !*p) return;
     fe_contact_state *c = *p;
-    free(c->x_ref), free(c->seg_box), free(c->cell_off), free(c->cell_item), free(c->seg_cells);
+    free(c->x_ref), free(c->seg_box), free(c->cell_off), free(c->cell_item);
     free(c->pass_hash), free(c->pass_cell_base), free(c->pass_cell), free(c->ent_cand);
-    free(c->ent_ncand);
-    free(c->ent_seg), free(c->ent_w), free(c->ent_f), free(c->ent_ft), free(c->ent_et);
-    free(c->ent_el), free(c->ent_d), free(c->ent_g), free(c->ell_ft), free(c->ell_et);
+    free(c->ent_cand_off), free(c->ent_flag), free(c->live), free(c->slot);
+    free(c->ent_ft), free(c->ent_et), free(c->ell_ft), free(c->ell_et);
     free(c->node_fc), free(c->part_fric), free(c->part_elastic), free(c->if_force);
     free(c->if_energy), free(c->if_fric), free(c->ell_c), free(c->ell_R), free(c->ell_v);
     free(c->ell_force);
@@ -56,23 +55,21 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
             s->pass_cell_base[p] = (int)ncell;
             ncell += (size_t)s->pass_hash[p] + 1;
         }
-    size_t ne2 = 2 * (size_t)c->nent, nseg = (size_t)c->nseg;
+    size_t ne = (size_t)c->nent, ne2 = 2 * ne, nseg = (size_t)c->nseg;
+    s->cand_cap = FE_CONTACT_CAND * c->nent;
+    s->slot_cap = c->nent / FE_CONTACT_LIVE + 1;
     s->pass_cell = zalloc(4 * (size_t)c->npass, sizeof(double), &b);
-    s->x_ref = zalloc(3 * (size_t)c->nnode_touch, sizeof(double), &b);
-    s->seg_box = zalloc(6 * nseg, sizeof(double), &b);
+    s->x_ref = zalloc(3 * (size_t)c->nnode_touch, sizeof(float), &b);
+    s->seg_box = zalloc(6 * nseg, sizeof(float), &b);
     s->cell_off = zalloc(ncell, sizeof(int), &b);
-    s->cell_item = zalloc(8 * nseg, sizeof(int), &b);
-    s->seg_cells = zalloc(8 * nseg, sizeof(int), &b);
-    s->ent_seg = zalloc(ne2, sizeof(int), &b);
-    s->ent_cand = zalloc((size_t)c->nent * FE_CONTACT_CAND, sizeof(int), &b);
-    s->ent_ncand = zalloc((size_t)c->nent, sizeof(int), &b);
-    s->ent_w = zalloc(4 * ne2, sizeof(double), &b);
-    s->ent_f = zalloc(3 * ne2, sizeof(double), &b);
+    s->cell_item = zalloc(nseg, sizeof(int), &b);
+    s->ent_cand_off = zalloc(ne + 1, sizeof(int), &b);
+    s->ent_cand = zalloc((size_t)s->cand_cap, sizeof(int), &b);
+    s->ent_flag = zalloc(ne, 1, &b);
+    s->live = zalloc(ne, sizeof(int), &b);
+    s->slot = zalloc(2 * (size_t)s->slot_cap, sizeof(fe_contact_slot), &b);
     s->ent_ft = zalloc(3 * ne2, sizeof(double), &b);
     s->ent_et = zalloc(ne2, sizeof(double), &b);
-    s->ent_el = zalloc(ne2, sizeof(double), &b);
-    s->ent_d = zalloc(ne2, sizeof(double), &b);
-    s->ent_g = zalloc(ne2, sizeof(double), &b);
     s->ell_ft = zalloc(3 * (size_t)c->nell_node, sizeof(double), &b);
     s->ell_et = zalloc((size_t)c->nell_node, sizeof(double), &b);
     s->node_fc = zalloc(3 * (size_t)m->nnode, sizeof(double), &b);
@@ -87,11 +84,10 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
     s->ell_force = zalloc(3 * (size_t)c->nell, sizeof(double), &b);
     s->bytes = b;
     if (!s->pass_hash || !s->pass_cell_base || !s->pass_cell || !s->x_ref || !s->seg_box ||
-        !s->cell_off || !s->cell_item || !s->seg_cells || !s->ent_seg || !s->ent_cand || !s->ent_ncand || !s->ent_w ||
-        !s->ent_f || !s->ent_ft || !s->ent_et || !s->ent_el || !s->ent_d || !s->ent_g ||
-        !s->ell_ft || !s->ell_et || !s->node_fc || !s->part_fric || !s->part_elastic ||
-        !s->if_force || !s->if_energy || !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v ||
-        !s->ell_force) {
+        !s->cell_off || !s->cell_item || !s->ent_cand_off || !s->ent_cand || !s->ent_flag ||
+        !s->live || !s->slot || !s->ent_ft || !s->ent_et || !s->ell_ft || !s->ell_et ||
+        !s->node_fc || !s->part_fric || !s->part_elastic || !s->if_force || !s->if_energy ||
+        !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v || !s->ell_force) {
         fe_contact_state_destroy(&s);
         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact state)");
     }
@@ -104,13 +100,11 @@ void fe_contact_state_reset(const fe_model *m, fe_contact_state *s)
 {
     const fe_contact_model *c = m->contact;
     size_t ne2 = 2 * (size_t)c->nent;
-    for (size_t i = 0; i < ne2; i++) s->ent_seg[i] = -1;
+    memset(s->ent_flag, 0, (size_t)c->nent);
+    memset(s->ent_cand_off, 0, ((size_t)c->nent + 1) * sizeof(int));
+    s->nlive = 0;
     memset(s->ent_ft, 0, 3 * ne2 * sizeof(double));
-    memset(s->ent_f, 0, 3 * ne2 * sizeof(double));
     memset(s->ent_et, 0, ne2 * sizeof(double));
-    memset(s->ent_el, 0, ne2 * sizeof(double));
-    memset(s->ent_d, 0, ne2 * sizeof(double));
-    memset(s->ent_g, 0, ne2 * sizeof(double));
     memset(s->ell_ft, 0, 3 * (size_t)c->nell_node * sizeof(double));
     memset(s->ell_et, 0, (size_t)c->nell_node * sizeof(double));
     memset(s->node_fc, 0, 3 * (size_t)m->nnode * sizeof(double));
@@ -147,19 +141,11 @@ typedef struct {
     int seg;
 } hit;
 
-static int seg_has_nbr(const fe_contact_model *c, const int *q, int node)
-{
-    for (int j = c->nbr_off[node]; j < c->nbr_off[node + 1]; j++) {
-        int v = c->nbr[j];
-        if (q[0] == v || q[1] == v || q[2] == v || q[3] == v) return 1;
-    }
-    return 0;
-}
-
 /* gap of node x to segment sg (< 0 in contact), direction pushing the node out, weights */
-static int seg_gap(const fe_contact_model *c, const double *X, int sg, const double x[3],
-                   double ht, hit *h)
+static int seg_gap(const fe_model *m, const double *X, int sg, const double x[3], double ht,
+                   hit *h)
 {
+    const fe_contact_model *c = m->contact;
     const int *q = c->seg_node + 4 * sg;
     const double *a = X + 3 * q[0], *b = X + 3 * q[1], *cc = X + 3 * q[2], *d = X + 3 * q[3];
     double w1[3], w2[3] = {0, 0, 0};
@@ -196,7 +182,7 @@ static int seg_gap(const fe_contact_model *c, const double *X, int sg, const dou
              * belongs to the neighbouring face (coplanar sides of two blocks touch there) */
             if (-sn < 0.7 * dist) return 0;
             h->gap = -dist - off;
-            if (h->gap < -c->seg_depth[sg]) return 0;
+            if (h->gap < -fe_contact_seg_depth(c, m, sg)) return 0;
             for (int i = 0; i < 3; i++) h->dir[i] = n[i];
         }
     } else {
@@ -209,40 +195,41 @@ static int seg_gap(const fe_contact_model *c, const double *X, int sg, const dou
     return h->gap < 0;
 }
 
-static void entry_forces(const fe_model *m, fe_state *s, int e)
+/* the contact of entry e this step: its two slots' results in r[2], friction history kept */
+static void entry_forces(const fe_model *m, fe_state *s, int e, fe_contact_slot r[2])
 {
     const fe_contact_model *c = m->contact;
     fe_contact_state *cs = s->contact;
-    const int node = c->ent_node[e], p = c->ent_pass[e];
+    const int node = c->ent_node[e], p = fe_contact_ent_pass(c, e);
     const fe_contact_pass *P = &c->pass[p];
     const fe_contact_if *I = &c->iface[P->iface];
     const double *x = s->node_x + 3 * node;
     hit hits[FE_CONTACT_HITS];
-    int nh = 0, b0 = 0, b1 = cs->ent_ncand[e];
-    const int *item = cs->ent_cand + (size_t)FE_CONTACT_CAND * e;
-    if (b1 < 0) { /* too many candidates to keep: scan the bucket */
-        fe_contact_bucket(cs, p, x, &b0, &b1);
-        item = cs->cell_item + 8 * (size_t)P->seg_begin;
-    }
-    for (int k = b0; k < b1; k++) {
-        int sg = item[k];
-        const double *bx = cs->seg_box + 6 * sg;
-        if (x[0] < bx[0] || x[0] > bx[3] || x[1] < bx[1] || x[1] > bx[4] || x[2] < bx[2] ||
-            x[2] > bx[5])
-            continue;
-        const int *q = c->seg_node + 4 * sg;
-        if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) continue;
-        /* topology before geometry: in self contact most boxes hit are the node's own
-         * neighbourhood */
-        if (P->self && seg_has_nbr(c, q, node)) continue;
-        hit h;
-        if (!seg_gap(c, s->node_x, sg, x, c->ent_ht[e], &h)) continue;
-        if (nh < FE_CONTACT_HITS) hits[nh++] = h;
-        else { /* keep the deepest */
-            int wmax = 0;
-            for (int i = 1; i < nh; i++)
-                if (hits[i].gap > hits[wmax].gap) wmax = i;
-            if (h.gap < hits[wmax].gap) hits[wmax] = h;
+    int nh = 0, bk[27], nb = 1;
+    const int scan = cs->ent_flag[e] & FE_CFLAG_SCAN;
+    const int *off = cs->cell_off + cs->pass_cell_base[p];
+    if (scan) nb = fe_contact_buckets(cs, p, x, bk); /* too many candidates to keep */
+    for (int ib = 0; ib < nb; ib++) {
+        const int *item = scan ? cs->cell_item : cs->ent_cand;
+        const int b0 = scan ? off[bk[ib]] + P->seg_begin : cs->ent_cand_off[e];
+        const int b1 = scan ? off[bk[ib] + 1] + P->seg_begin : cs->ent_cand_off[e + 1];
+        for (int k = b0; k < b1; k++) {
+            int sg = item[k];
+            if (!fe_contact_in_box(cs->seg_box + 6 * sg, x)) continue;
+            const int *q = c->seg_node + 4 * sg;
+            if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) continue;
+            /* topology before geometry: in self contact most boxes hit are the node's own
+             * neighbourhood */
+            if (P->self && fe_contact_seg_has_nbr(c, q, node)) continue;
+            hit h;
+            if (!seg_gap(m, s->node_x, sg, x, c->ent_ht[e], &h)) continue;
+            if (nh < FE_CONTACT_HITS) hits[nh++] = h;
+            else { /* keep the deepest */
+                int wmax = 0;
+                for (int i = 1; i < nh; i++)
+                    if (hits[i].gap > hits[wmax].gap) wmax = i;
+                if (h.gap < hits[wmax].gap) hits[wmax] = h;
+            }
         }
     }
     /* slot 0: deepest; slot 1: deepest of those pushing the other way */
@@ -254,21 +241,22 @@ static void entry_forces(const fe_model *m, fe_state *s, int e)
             (best[1] < 0 || hits[i].gap < hits[best[1]].gap))
             best[1] = i;
     const double minv = 1 / m->node_mass[node], dt0 = c->dt0, dtp = s->dt_prev;
+    unsigned char flag = cs->ent_flag[e] & (unsigned char)~(FE_CFLAG_SLOT0 | FE_CFLAG_SLOT1);
     for (int k = 0; k < 2; k++) {
         const int slot = 2 * e + k;
-        double *f = cs->ent_f + 3 * slot, *ft = cs->ent_ft + 3 * slot;
-        cs->ent_d[slot] = 0;
+        double *f = r[k].f, *ft = cs->ent_ft + 3 * slot;
+        r[k].d = 0;
         if (best[k] < 0) {
             /* released: the stick spring's energy is dissipated */
-            cs->ent_d[slot] = cs->ent_et[slot];
-            cs->ent_et[slot] = cs->ent_el[slot] = cs->ent_g[slot] = 0;
-            cs->ent_seg[slot] = -1;
+            r[k].d = cs->ent_et[slot];
+            cs->ent_et[slot] = r[k].el = r[k].g = 0;
+            r[k].seg = -1;
             f[0] = f[1] = f[2] = ft[0] = ft[1] = ft[2] = 0;
             continue;
         }
         const hit *h = &hits[best[k]];
         const int sg = h->seg, *q = c->seg_node + 4 * sg;
-        double kp = fmin(c->seg_k[sg], c->k_cap / (dt0 * dt0 * (minv + c->seg_minv[sg])));
+        double kp = fmin(c->seg_k[sg], c->k_cap / (dt0 * dt0 * (minv + fe_contact_seg_minv(c, m, sg))));
         double fn = -kp * h->gap, el = 0.5 * kp * h->gap * h->gap;
         for (int i = 0; i < 3; i++) f[i] = fn * h->dir[i];
         if (I->mu_s > 0) {
@@ -284,16 +272,18 @@ static void entry_forces(const fe_model *m, fe_state *s, int e)
             }
             double mu = I->mu_d + (I->mu_s - I->mu_d) * exp(-I->decay * sqrt(vt)), taken;
             double et = fe_friction_update(ft, h->dir, du, kp, mu * fn, &taken);
-            cs->ent_d[slot] = taken - (et - cs->ent_et[slot]);
+            r[k].d = taken - (et - cs->ent_et[slot]);
             cs->ent_et[slot] = et;
             el += et;
             for (int i = 0; i < 3; i++) f[i] += ft[i];
         }
-        cs->ent_el[slot] = el;
-        cs->ent_g[slot] = h->gap;
-        cs->ent_seg[slot] = sg;
-        memcpy(cs->ent_w + 4 * slot, h->w, sizeof h->w);
+        r[k].el = el;
+        r[k].g = h->gap;
+        r[k].seg = sg;
+        memcpy(r[k].w, h->w, sizeof h->w);
+        flag |= (unsigned char)(k ? FE_CFLAG_SLOT1 : FE_CFLAG_SLOT0);
     }
+    cs->ent_flag[e] = flag;
 }
 
 /* ---- phase 3: rigid ellipsoids ---------------------------------------------------------- */
@@ -384,54 +374,6 @@ static double body_power(const fe_contact_model *c, const fe_contact_state *cs)
     return p;
 }
 
-/* after a search: each entry keeps the segments whose grown box holds it (a Verlet list),
- * its own and (self contact) its neighbours' left out; too many: it scans its bucket */
-static void collect_candidates(const fe_model *m, fe_state *s)
-{
-    const fe_contact_model *c = m->contact;
-    fe_contact_state *cs = s->contact;
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 256) if (c->nent > FE_CONTACT_OMP_MIN)
-#endif
-    for (int e = 0; e < c->nent; e++) {
-        const int node = c->ent_node[e], p = c->ent_pass[e];
-        const fe_contact_pass *P = &c->pass[p];
-        const double *x = s->node_x + 3 * node;
-        int b0, b1, n = 0, *cand = cs->ent_cand + (size_t)FE_CONTACT_CAND * e;
-        fe_contact_bucket(cs, p, x, &b0, &b1);
-        const int *item = cs->cell_item + 8 * (size_t)P->seg_begin;
-        for (int k = b0; k < b1 && n >= 0; k++) {
-            int sg = item[k];
-            const double *bx = cs->seg_box + 6 * sg;
-            if (x[0] < bx[0] || x[0] > bx[3] || x[1] < bx[1] || x[1] > bx[4] || x[2] < bx[2] ||
-                x[2] > bx[5])
-                continue;
-            const int *q = c->seg_node + 4 * sg;
-            if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) continue;
-            if (P->self && seg_has_nbr(c, q, node)) continue;
-            int dup = 0;
-            for (int j = 0; j < n && !dup; j++) dup = cand[j] == sg;
-            if (dup) continue;
-            if (n == FE_CONTACT_CAND) n = -1;
-            else cand[n++] = sg;
-        }
-        cs->ent_ncand[e] = n;
-    }
-}
-
-/* the lists hold while no node has moved half the margin (node and segment together less
- * than the margin the boxes were grown by) */
-static int moved_past_margin(const fe_contact_model *c, const fe_state *s)
-{
-    const double m2 = 0.25 * c->margin * c->margin;
-    for (int t = 0; t < c->nnode_touch; t++) {
-        const double *x = s->node_x + 3 * c->touch[t], *r = s->contact->x_ref + 3 * t;
-        double d0 = x[0] - r[0], d1 = x[1] - r[1], d2 = x[2] - r[2];
-        if (d0 * d0 + d1 * d1 + d2 * d2 > m2) return 1;
-    }
-    return 0;
-}
-
 void fe_contact_interfaces(const fe_model *m, fe_state *s)
 {
     const fe_contact_model *c = m->contact;
@@ -440,15 +382,17 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
     /* forward half of the previous step's contact work (velocities now at t - dt/2) */
     cs->work_nodes += 0.5 * cs->dth_prev * touch_power(c, s);
     cs->work_bodies += 0.5 * cs->dth_prev * body_power(c, cs);
-    if (c->npass > 0 && (cs->need_rebuild || moved_past_margin(c, s))) {
+    if (c->npass > 0 && (cs->need_rebuild || fe_contact_moved(c, s))) {
         fe_contact_search(m, s);
-        collect_candidates(m, s);
+        fe_contact_candidates(m, s);
     }
-    /* phase 1: entries are independent (each writes its own slots) */
+    /* phase 1: the live entries (candidates, or in contact) are independent (each writes its
+     * own slots); those past slot_cap run inline in phase 2 */
+    const int nlive = cs->nlive, npar = nlive < cs->slot_cap ? nlive : cs->slot_cap;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 256) if (c->nent > FE_CONTACT_OMP_MIN)
+#pragma omp parallel for schedule(dynamic, 32) if (npar > FE_CONTACT_OMP_MIN)
 #endif
-    for (int e = 0; e < c->nent; e++) entry_forces(m, s, e);
+    for (int i = 0; i < npar; i++) entry_forces(m, s, cs->live[i], cs->slot + 2 * i);
     /* phase 2: scatter */
     for (int t = 0; t < c->nnode_touch; t++) {
         double *f = cs->node_fc + 3 * c->touch[t];
@@ -457,13 +401,16 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
     memset(cs->part_elastic, 0, sizeof(double) * (size_t)m->npart);
     memset(cs->if_force, 0, sizeof(double) * 3 * (size_t)c->nif);
     memset(cs->if_energy, 0, sizeof(double) * (size_t)c->nif);
-    for (int e = 0; e < c->nent; e++) {
-        const int node = c->ent_node[e], ifc = c->pass[c->ent_pass[e]].iface;
-        const int rev = c->pass[c->ent_pass[e]].reverse;
+    for (int i = 0; i < nlive; i++) {
+        const int e = cs->live[i];
+        const fe_contact_pass *P = &c->pass[fe_contact_ent_pass(c, e)];
+        const int node = c->ent_node[e], ifc = P->iface, rev = P->reverse;
         const int ps = m->node_part[node];
+        fe_contact_slot tmp[2], *r = cs->slot + 2 * i;
+        if (i >= npar) entry_forces(m, s, e, r = tmp);
         for (int k = 0; k < 2; k++) {
-            const int slot = 2 * e + k, sg = cs->ent_seg[slot];
-            const double d = cs->ent_d[slot];
+            const int sg = r[k].seg;
+            const double d = r[k].d;
             if (d != 0) {
                 cs->if_fric[ifc] += d;
                 if (sg >= 0) {
@@ -474,20 +421,20 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
                 }
             }
             if (sg < 0) continue;
-            const double *f = cs->ent_f + 3 * slot, *w = cs->ent_w + 4 * slot;
+            const double *f = r[k].f, *w = r[k].w;
             const int *q = c->seg_node + 4 * sg;
-            for (int i = 0; i < 3; i++) {
-                cs->node_fc[3 * node + i] += f[i];
-                cs->if_force[3 * ifc + i] += rev ? -f[i] : f[i];
+            for (int j = 0; j < 3; j++) {
+                cs->node_fc[3 * node + j] += f[j];
+                cs->if_force[3 * ifc + j] += rev ? -f[j] : f[j];
             }
             for (int j = 0; j < 4; j++)
                 if (w[j] != 0)
-                    for (int i = 0; i < 3; i++) cs->node_fc[3 * q[j] + i] -= w[j] * f[i];
-            const double el = cs->ent_el[slot];
+                    for (int l = 0; l < 3; l++) cs->node_fc[3 * q[j] + l] -= w[j] * f[l];
+            const double el = r[k].el;
             cs->part_elastic[ps] += 0.5 * el;
             cs->part_elastic[c->seg_part[sg]] += 0.5 * el;
             cs->if_energy[ifc] += el;
-            cs->pen_max = fmax(cs->pen_max, -cs->ent_g[slot]);
+            cs->pen_max = fmax(cs->pen_max, -r[k].g);
         }
     }
     for (int i = 0; i < c->nif; i++) cs->if_energy[i] += cs->if_fric[i];

@@ -18,7 +18,10 @@
 #define FE_CONTACT_MAX 16    /* most contact interfaces                                      */
 #define FE_CONTACT_PARTS 8   /* most parts on each side of an interface                      */
 #define FE_ELLIPSOID_MAX 32  /* most rigid ellipsoids                                        */
-#define FE_CONTACT_CAND 24   /* candidate segments kept per slave node between searches       */
+#define FE_CONTACT_CAND 4    /* candidate segments kept between searches, per slave node on
+                                average (one pool; entries past it scan their buckets)     */
+#define FE_CONTACT_LIVE 8    /* slave entries whose per-step results are kept for the
+                                threaded pass: one in this many (the rest run inline)      */
 
 typedef enum {
     FE_CONTACT_TWO_SURFACE,     /* slave nodes vs master segments and master nodes vs slave
@@ -93,10 +96,7 @@ typedef struct fe_contact_model {
     unsigned char *seg_solid;    /* (nseg) 1: hex face (one-sided), 0: shell (two-sided)       */
     double *seg_ht;              /* (nseg) half thickness of the surface offset [m]            */
     double *seg_k;               /* (nseg) penalty stiffness (LS-DYNA form) [N/m]              */
-    double *seg_minv;            /* (nseg) 1 / smallest node mass of the segment [1/kg]        */
-    double *seg_depth;           /* (nseg) deepest penetration still taken (solids) [m]        */
     int *ent_node;               /* (nent) slave node of each entry                            */
-    int *ent_pass;               /* (nent) its pass                                            */
     double *ent_ht;              /* (nent) half shell thickness at the slave node (0 solid) [m] */
     int *nbr_off, *nbr;          /* (nnode + 1), (...) nodes sharing an element with a node    */
     int *touch;                  /* (nnode_touch) nodes of any contact (slave or segment)       */
@@ -115,28 +115,31 @@ void fe_contact_model_free(fe_model *m);
 /* ---- the contact state (fe_state.contact) ------------------------------------------------ */
 
 typedef struct fe_contact_state {
-    /* search */
-    double *x_ref;          /* (nnode_touch x 3) positions at the last rebuild [m]           */
-    double *seg_box;        /* (nseg x 6) inflated boxes at the last rebuild [m]             */
+    /* search (fe_contact_search.c): each segment in the bucket of its centre; the cell is the
+     * largest grown box, so a node's candidates are in the 27 cells around it */
+    float *x_ref;           /* (nnode_touch x 3) positions at the last rebuild [m]           */
+    float *seg_box;         /* (nseg x 6) grown boxes at the last rebuild, rounded outwards [m] */
     int *cell_off;          /* (per pass: hash size + 1) bucket offsets                       */
-    int *cell_item;         /* (8 nseg) segments of each bucket                              */
-    int *seg_cells;         /* (8 nseg) scratch: the distinct buckets of each segment         */
+    int *cell_item;         /* (nseg) segments of each bucket                                 */
     int *pass_hash;         /* (npass) hash size (power of two) of each pass [-]             */
     int *pass_cell_base;    /* (npass) first offset of each pass in cell_off [-]            */
     double *pass_cell;      /* (npass x 4) grid origin [m] and cell size [m]                 */
-    int *ent_cand;          /* (nent x FE_CONTACT_CAND) candidate segments of each entry     */
-    int *ent_ncand;         /* (nent) candidates, -1: too many, the entry scans its bucket    */
+    int *ent_cand_off;      /* (nent + 1) each entry's candidates in ent_cand (a Verlet list) */
+    int *ent_cand;          /* (cand_cap) candidate segments, entry by entry                 */
+    int cand_cap;           /* FE_CONTACT_CAND x nent [-]                                     */
+    unsigned char *ent_flag;/* (nent) FE_CFLAG_*: slots in contact, list overflowed, live    */
+    int *live;              /* (nent) entries with candidates or a slot in contact, in order  */
+    int nlive;              /* [-]                                                            */
+    struct fe_contact_slot *slot; /* (slot_cap x 2) this step's results of live[0 .. slot_cap) */
+    int slot_cap;           /* nent / FE_CONTACT_LIVE + 1 [-]                                 */
     long nrebuild;          /* searches done [-]                                              */
     int need_rebuild;
-    /* per slave entry, two slots (nearest segment, nearest one on the other side) */
-    int *ent_seg;           /* (nent x 2) segment in contact, -1 none                        */
-    double *ent_w;          /* (nent x 2 x 4) weights of the segment nodes [-]               */
-    double *ent_f;          /* (nent x 2 x 3) force on the slave node [N]                    */
+    double margin2;         /* squared motion that asks for a new search: (margin / 2 less the
+                               rounding of x_ref)^2 [m^2]                                    */
+    /* friction history per slave entry, two slots (nearest segment, nearest one on the other
+     * side) */
     double *ent_ft;         /* (nent x 2 x 3) friction force history [N]                     */
     double *ent_et;         /* (nent x 2) tangential (stick) elastic energy of the slot [J]  */
-    double *ent_el;         /* (nent x 2) elastic energy of the slot now [J]                 */
-    double *ent_d;          /* (nent x 2) friction dissipated this step [J]                  */
-    double *ent_g;          /* (nent x 2) gap (< 0: penetration past the offset) [m]         */
     double *ell_ft;         /* (nell_node x 3) ellipsoid friction history [N]               */
     double *ell_et;         /* (nell_node) its tangential elastic energy [J]                 */
     /* nodal contact forces and the energy bookkeeping */

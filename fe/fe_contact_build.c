@@ -152,33 +152,27 @@ static int grow_arrays(cbuild *cb, int nseg, int nent)
     fe_contact_model *c = cb->c;
     if (nseg > cb->cap_seg) {
         int n = nseg * 2;
-        void *p[7] = {realloc(c->seg_node, sizeof(int) * 4 * (size_t)n),
+        void *p[5] = {realloc(c->seg_node, sizeof(int) * 4 * (size_t)n),
                       realloc(c->seg_part, sizeof(int) * (size_t)n),
                       realloc(c->seg_solid, (size_t)n),
                       realloc(c->seg_ht, sizeof(double) * (size_t)n),
-                      realloc(c->seg_k, sizeof(double) * (size_t)n),
-                      realloc(c->seg_minv, sizeof(double) * (size_t)n),
-                      realloc(c->seg_depth, sizeof(double) * (size_t)n)};
+                      realloc(c->seg_k, sizeof(double) * (size_t)n)};
         if (p[0]) c->seg_node = p[0];
         if (p[1]) c->seg_part = p[1];
         if (p[2]) c->seg_solid = p[2];
         if (p[3]) c->seg_ht = p[3];
         if (p[4]) c->seg_k = p[4];
-        if (p[5]) c->seg_minv = p[5];
-        if (p[6]) c->seg_depth = p[6];
-        for (int i = 0; i < 7; i++)
+        for (int i = 0; i < 5; i++)
             if (!p[i]) return -1;
         cb->cap_seg = n;
     }
     if (nent > cb->cap_ent) {
         int n = nent * 2;
-        void *p[3] = {realloc(c->ent_node, sizeof(int) * (size_t)n),
-                      realloc(c->ent_pass, sizeof(int) * (size_t)n),
+        void *p[2] = {realloc(c->ent_node, sizeof(int) * (size_t)n),
                       realloc(c->ent_ht, sizeof(double) * (size_t)n)};
         if (p[0]) c->ent_node = p[0];
-        if (p[1]) c->ent_pass = p[1];
-        if (p[2]) c->ent_ht = p[2];
-        for (int i = 0; i < 3; i++)
+        if (p[1]) c->ent_ht = p[1];
+        for (int i = 0; i < 2; i++)
             if (!p[i]) return -1;
         cb->cap_ent = n;
     }
@@ -192,24 +186,14 @@ static int in_list(int part, const int *list, int n)
     return 0;
 }
 
-static void set_seg(fe_contact_model *c, const fe_model *m, int sg, const int nodes[4], int part,
-                    int solid, double ht, double k)
+static void set_seg(fe_contact_model *c, int sg, const int nodes[4], int part, int solid,
+                    double ht, double k)
 {
     memcpy(c->seg_node + 4 * sg, nodes, 4 * sizeof(int));
     c->seg_part[sg] = part;
     c->seg_solid[sg] = (unsigned char)solid;
     c->seg_ht[sg] = ht;
     c->seg_k[sg] = k;
-    double mmin = INFINITY, a = 0, d1[3], d2[3], nn[3];
-    for (int i = 0; i < 4; i++) mmin = fmin(mmin, m->node_mass[nodes[i]]);
-    for (int i = 0; i < 3; i++) {
-        d1[i] = m->node_x0[3 * nodes[2] + i] - m->node_x0[3 * nodes[0] + i];
-        d2[i] = m->node_x0[3 * nodes[3] + i] - m->node_x0[3 * nodes[1] + i];
-    }
-    fe_cross(d1, d2, nn);
-    a = 0.5 * sqrt(fe_dot(nn, nn));
-    c->seg_minv[sg] = mmin > 0 ? 1 / mmin : 0;
-    c->seg_depth[sg] = solid ? 0.5 * sqrt(a) : INFINITY;
 }
 
 /* segments of the parts in list: shell elements; exterior faces of hexes */
@@ -235,7 +219,7 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
                 if (grow_arrays(cb, c->nseg + 1, 0))
                     return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact segments)");
                 /* LS-DYNA shells: k = s K A / max diagonal */
-                set_seg(c, m, c->nseg++, q, ip, 0, 0.5 * tscale * p->section.thickness,
+                set_seg(c, c->nseg++, q, ip, 0, 0.5 * tscale * p->section.thickness,
                         scale * K * A / dmax);
             } else if (p->elem_kind == FE_KIND_HEX) {
                 double xe[8][3], bb[8][3], aa[8][3];
@@ -256,7 +240,7 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
                     if (grow_arrays(cb, c->nseg + 1, 0))
                         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact segments)");
                     /* LS-DYNA solids: k = s K A^2 / V */
-                    set_seg(c, m, c->nseg++, q, ip, 1, 0, scale * K * A * A / V);
+                    set_seg(c, c->nseg++, q, ip, 1, 0, scale * K * A * A / V);
                 }
             }
         }
@@ -265,7 +249,7 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
 }
 
 /* slave entries: every node with mass of the parts in list (hex parts: surface nodes only) */
-static mcs_status add_entries(cbuild *cb, const fe_model *m, const int *list, int n, int pass,
+static mcs_status add_entries(cbuild *cb, const fe_model *m, const int *list, int n,
                               double tscale, mcs_error *err)
 {
     fe_contact_model *c = cb->c;
@@ -290,7 +274,6 @@ static mcs_status add_entries(cbuild *cb, const fe_model *m, const int *list, in
         if (grow_arrays(cb, 0, c->nent + 1))
             return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact nodes)");
         c->ent_node[c->nent] = nd;
-        c->ent_pass[c->nent] = pass;
         c->ent_ht[c->nent] = tscale * cb->shell_ht[nd];
         c->nent++;
     }
@@ -316,7 +299,7 @@ static mcs_status add_pass(cbuild *cb, const fe_model *m, int iface, int self, i
     p->reverse = rev;
     p->ent_begin = c->nent;
     p->seg_begin = c->nseg;
-    mcs_status st = add_entries(cb, m, sl, nsl, c->npass, tscale, err);
+    mcs_status st = add_entries(cb, m, sl, nsl, tscale, err);
     if (!st) st = add_segments(cb, m, ma, nma, scale, tscale, err);
     p->ent_end = c->nent;
     p->seg_end = c->nseg;
@@ -362,7 +345,10 @@ static mcs_status build_neighbours(fe_contact_model *c, const fe_model *m, mcs_e
     }
     c->nbr_off[m->nnode] = w;
     free(fill);
-    c->bytes += sizeof(int) * ((size_t)m->nnode + 1 + (size_t)tot);
+    /* give back what the repeats took */
+    int *nb = realloc(c->nbr, sizeof(int) * (size_t)(w ? w : 1));
+    if (nb) c->nbr = nb;
+    c->bytes += sizeof(int) * ((size_t)m->nnode + 1 + (size_t)w);
     return MCS_OK;
 }
 
@@ -408,6 +394,8 @@ static mcs_status build_ellipsoids(const fe_builder *b, fe_contact_model *c, con
         E->node_end = c->nell_node;
     }
     free(mk);
+    int *en = realloc(c->ell_node, sizeof(int) * (size_t)(c->nell_node ? c->nell_node : 1));
+    if (en) c->ell_node = en;
     return MCS_OK;
 }
 
@@ -423,6 +411,8 @@ static mcs_status build_touch(fe_contact_model *c, const fe_model *m, unsigned c
     if (!c->touch) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
     for (int n = 0; n < m->nnode; n++)
         if (mark[n] && m->node_mass[n] > 0) c->touch[c->nnode_touch++] = n;
+    int *t = realloc(c->touch, sizeof(int) * (size_t)(c->nnode_touch ? c->nnode_touch : 1));
+    if (t) c->touch = t;
     return MCS_OK;
 }
 
@@ -448,8 +438,8 @@ void fe_contact_model_free(fe_model *m)
     fe_contact_model *c = m->contact;
     if (!c) return;
     free(c->iface), free(c->pass), free(c->seg_node), free(c->seg_part), free(c->seg_solid);
-    free(c->seg_ht), free(c->seg_k), free(c->seg_minv), free(c->seg_depth);
-    free(c->ent_node), free(c->ent_pass), free(c->ent_ht), free(c->nbr_off), free(c->nbr);
+    free(c->seg_ht), free(c->seg_k);
+    free(c->ent_node), free(c->ent_ht), free(c->nbr_off), free(c->nbr);
     free(c->touch), free(c->ell), free(c->ell_node);
     free(c);
     m->contact = NULL;
@@ -505,8 +495,8 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
         c->dt0 = m->dt_initial;
         c->bytes += sizeof *c + sizeof *c->iface * (size_t)c->nif +
                     sizeof *c->pass * (size_t)c->npass +
-                    (size_t)c->nseg * (4 * sizeof(int) + sizeof(int) + 1 + 4 * sizeof(double)) +
-                    (size_t)c->nent * (2 * sizeof(int) + sizeof(double)) +
+                    (size_t)c->nseg * (4 * sizeof(int) + sizeof(int) + 1 + 2 * sizeof(double)) +
+                    (size_t)c->nent * (sizeof(int) + sizeof(double)) +
                     sizeof(int) * ((size_t)c->nnode_touch + (size_t)c->nell_node) +
                     sizeof *c->ell * (size_t)c->nell;
         m->bytes += c->bytes;

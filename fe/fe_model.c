@@ -390,6 +390,10 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
     }
     free(count);
     m->nshell_ip = m->nshell * m->nip_max;
+    /* the filtered strain rate per shell point only when a shell part has a rate factor */
+    for (int ip = 0; ip < m->npart; ip++)
+        if (m->part[ip].elem_kind == FE_KIND_SHELL && m->part[ip].material.cowper_symonds_c > 0)
+            m->nshell_rate = m->nshell_ip;
     if (st == MCS_OK) st = alloc_arrays(m, err);
     if (st == MCS_OK) {
         memcpy(m->node_x0, b->x, sizeof(double) * 3 * (size_t)m->nnode);

@@ -298,6 +298,7 @@ typedef struct fe_model {
     int nnode_chunk;       /* node chunks [-]                                              */
     int node_acc_stride;   /* partial sums per node chunk: FE_NACC_FIXED + npart + 3 FE_WALL_MAX */
     int nnode_acc;         /* nnode_chunk x node_acc_stride [-]                            */
+    int nshell_rate;       /* nshell_ip when a shell part has a rate factor, else 0 [-]    */
 } fe_model;
 
 #define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */

@@ -76,7 +76,7 @@ typedef struct {
     X(double, hex_hg, nhex, 12, "N", "hourglass forces (3 x 4 modes)")                   \
     X(double, shell_sig, nshell_ip, 3, "Pa", "local in-plane stress xx yy xy per point")          \
     X(double, shell_epsp, nshell_ip, 1, "-", "equivalent plastic strain per point")                \
-    X(double, shell_rate, nshell_ip, 1, "1/s", "filtered effective strain rate per point")       \
+    X(double, shell_rate, nshell_rate, 1, "1/s", "filtered effective strain rate per point")       \
     X(double, shell_tau, nshell, 2, "Pa", "local transverse shear stress xz yz")                   \
     X(double, shell_hg, nshell, 5, "N", "hourglass resultants (x, y, z, rx, ry)")        \
     X(double, truss_sig, ntruss, 1, "Pa", "axial stress")                                          \

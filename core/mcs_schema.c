@@ -257,6 +257,15 @@ static const mcs_skey revolute_keys[] = {
 static const mcs_skey universal_keys[] = {
     V("axis", NONE, 3, 3, REQ | NZ, 0, "first axis"),
     V("axis2", NONE, 3, 3, REQ | NZ, 0, "second axis"),
+    /* docs/joints.md: per axis (axis, axis2) the restraint's zero and a constant preload */
+    V("neutral", ANG, 2, 2, 0, 0, "restraint zero per axis (axis, axis2) [rad]"),
+    V("preload", MCS_DIM_MOMENT, 2, 2, 0, 0, "restraint preload per axis (axis, axis2) [N m]"),
+    END,
+};
+/* docs/joints.md: per restraint axis (the parent's x, y, z) on the rotation vector */
+static const mcs_skey spherical_keys[] = {
+    V("neutral", ANG, 3, 3, 0, 0, "restraint zero per axis (rotation vector x, y, z) [rad]"),
+    V("preload", MCS_DIM_MOMENT, 3, 3, 0, 0, "restraint preload per axis (x, y, z) [N m]"),
     END,
 };
 static const mcs_skey translational_keys[] = {
@@ -272,7 +281,7 @@ static const mcs_smap revolute_map = {
 static const mcs_smap universal_map = {.what = "universal joint", .keys = universal_keys};
 static const mcs_smap translational_map = {
     .what = "translational joint", .keys = translational_keys, .check = mcs_rule_range};
-static const mcs_smap spherical_map = {.what = "spherical joint", .keys = no_keys};
+static const mcs_smap spherical_map = {.what = "spherical joint", .keys = spherical_keys};
 static const mcs_smap fixed_map = {
     .what = "fixed joint", .keys = no_keys, .check = mcs_rule_fixed_joint};
 static const mcs_svariant joint_variants[] = {

@@ -2,7 +2,9 @@
  * Restraints: revolute and translational joints get mb_restraint (the characteristic on both
  * directions, mirrored, or `restraint_negative` on the negative side; the damping of
  * `restraint`; `neutral` and `preload`, docs/joints.md), spherical and universal joints
- * mb_restraint3 (the same characteristics on the three axes of the parent's frame). A permanent
+ * mb_restraint3 (the same characteristics on the three axes of the parent's frame; universal
+ * joints on axis and axis2 only, the third being constrained; per-axis `neutral` and
+ * `preload`, docs/joints.md). A permanent
  * set on one side moves the other side's origin (mcs_hyst2 follow_set: a bent hinge stays at
  * its set). A joint `range` becomes a stop: a
  * linear one-sided spring beyond the range of 10 times the steepest slope of the restraint's
@@ -86,18 +88,69 @@ static mcs_status build_restraint1(const mcs_node *jn, mb_model *m, int ij, int 
     return MCS_OK;
 }
 
-static void build_restraint3(mb_model *m, int ij, int chr, int neg)
+/* universal joint: restraint axes (axis, axis2 made orthogonal to it, their cross product) in
+ * the parent's body frame; spherical: the parent's own axes */
+static void restraint3_frame(const mb_model *m, const mb_joint_def *j, double F[9])
+{
+    for (int i = 0; i < 9; i++) F[i] = (i % 4 == 0);
+    if (j->type != MB_J_UNIVERSAL) return;
+    double a[3], b[3], c[3], R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    if (j->parent >= 0) mb_quat_to_rot(m->body[j->parent].quat, R);
+    mb_mat_tvec(R, j->axis, a);
+    mb_mat_tvec(R, j->axis2, b);
+    mb_normalize(a);
+    double ab = mb_dot(a, b);
+    for (int k = 0; k < 3; k++) b[k] -= ab * a[k];
+    mb_normalize(b);
+    mb_cross(a, b, c);
+    for (int k = 0; k < 3; k++) F[3 * k] = a[k], F[3 * k + 1] = b[k], F[3 * k + 2] = c[k];
+}
+
+/* per-axis neutral angle and preload (docs/joints.md): n values on a spherical joint (3) or a
+ * universal joint (2); with a preload and no neutral, the zero of axis i sits where the
+ * characteristic carries the preload, N^-1(P) (P > 0, negative side) or -A^-1(-P) (P < 0),
+ * so the joint is unloaded in its initial posture, as for a revolute joint */
+static mcs_status restraint3_preload(const mcs_node *jn, mb_restraint3_model *r, int n,
+                                     mcs_error *err)
+{
+    const mcs_node *pn = mcs_node_get(jn, "preload"), *nn = mcs_node_get(jn, "neutral");
+    mcs_status st = MCS_OK;
+    if (mcs_node_kind(pn) == MCS_NODE_SEQ) st = mcs_node_vec(pn, r->preload, n, err);
+    if (!st && mcs_node_kind(nn) == MCS_NODE_SEQ) return mcs_node_vec(nn, r->zero, n, err);
+    for (int i = 0; i < n && !st; i++) {
+        double p = r->preload[i];
+        if (p == 0) continue;
+        const mcs_curve *c = p > 0 ? r->spring[i].neg.loading : r->spring[i].pos.loading;
+        double q = mcs_curve_inverse(c, fabs(p));
+        if (!(q >= 0 && isfinite(q)))
+            return mcs_node_error(pn, err, MCS_ERR_RANGE,
+                                  "preload %g on axis %d: the characteristic must rise strictly "
+                                  "to it (or give neutral)",
+                                  p, i + 1);
+        r->zero[i] = p > 0 ? q : -q;
+    }
+    return st;
+}
+
+static mcs_status build_restraint3(const mcs_node *jn, mb_model *m, int ij, int chr, int neg,
+                                   mcs_error *err)
 {
     mb_restraint3_model *r = &m->restraint3[m->nrestraint3];
-    *r = (mb_restraint3_model){.joint = ij, .frame = {1, 0, 0, 0, 1, 0, 0, 0, 1}};
+    const mb_joint_def *j = &m->joint[ij];
+    int n = j->type == MB_J_UNIVERSAL ? 2 : 3; /* universal: the third axis is constrained */
+    *r = (mb_restraint3_model){.joint = ij};
+    restraint3_frame(m, j, r->frame);
     for (int k = 0; k < 3; k++) {
-        r->has_spring[k] = 1;
-        r->spring[k] = two_sided(m, chr, neg);
-        r->damping[k] = m->chr[chr].damping;
+        r->has_spring[k] = k < n;
+        if (k < n) r->spring[k] = two_sided(m, chr, neg);
+        r->damping[k] = k < n ? m->chr[chr].damping : 0;
         r->lo[k] = -INFINITY, r->hi[k] = INFINITY;
     }
-    snprintf(m->restraint3_name[m->nrestraint3], MB_NAME, "%s", m->joint[ij].name);
+    mcs_status st = restraint3_preload(jn, r, n, err);
+    if (st) return st;
+    snprintf(m->restraint3_name[m->nrestraint3], MB_NAME, "%s", j->name);
     m->joint[ij].restraint = m->nrestraint3++;
+    return MCS_OK;
 }
 
 static mcs_status build_joint(const mcs_node *jn, mb_model *m, int ij, mcs_error *err)
@@ -132,7 +185,7 @@ static mcs_status build_joint(const mcs_node *jn, mb_model *m, int ij, mcs_error
         return mcs_node_error(nn, err, MCS_ERR_KEY,
                               "restraint_negative needs restraint (the positive side)");
     const mcs_node *pn = mcs_node_get(jn, "preload");
-    if (chr < 0 && mcs_node_kind(pn) == MCS_NODE_NUM)
+    if (chr < 0 && mcs_node_kind(pn) != MCS_NODE_NULL)
         return mcs_node_error(pn, err, MCS_ERR_KEY, "a preload needs a restraint characteristic");
     for (int k = 0; k < 2; k++) {
         int c = k ? neg : chr;
@@ -143,7 +196,7 @@ static mcs_status build_joint(const mcs_node *jn, mb_model *m, int ij, mcs_error
     }
     if (j->type == MB_J_REVOLUTE || j->type == MB_J_TRANSLATIONAL)
         return build_restraint1(jn, m, ij, chr, neg, err);
-    if (chr >= 0 && j->type != MB_J_FIXED) build_restraint3(m, ij, chr, neg);
+    if (chr >= 0 && j->type != MB_J_FIXED) return build_restraint3(jn, m, ij, chr, neg, err);
     return MCS_OK;
 }
 

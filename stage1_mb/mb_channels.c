@@ -8,6 +8,13 @@
  *   <joint>_moment | <joint>_force  restraint load resisting the deflection: characteristic,
  *                                   preload, damper and stop, as applied (the child receives
  *                                   minus this about / along the joint axis) [N m | N]
+ * Per spherical / universal joint with a restraint (mb_restraint3, axes i = x, y, z of the
+ * restraint frame: the parent's axes; for a universal joint x = axis, y = axis2, no z):
+ *   <joint>_angle_<i>   rotation-vector component theta_i of the child relative to the
+ *                       parent since the initial posture [rad]
+ *   <joint>_moment_<i>  the axis' generalised restraint moment g_i resisting it: preload,
+ *                       characteristic, damper and stop, as applied (the torque component
+ *                       about axis i for a rotation about that axis alone) [N m]
  * Unfiltered (cfc 0); attribute body: the contact's body a, the joint's child. */
 #include "core/mcs_results.h"
 #include "stage1_mb/mb_model.h"
@@ -18,10 +25,12 @@
 
 #define MB_CH_CONTACT 3 /* channels per contact */
 #define MB_CH_JOINT 2   /* channels per one-axis restraint */
+#define MB_CH_JOINT3 6  /* channels per three-axis restraint (universal: 4 of them written) */
 
 int mb_channels_count(const mb_model *m)
 {
-    return MB_CH_CONTACT * m->ncontact + MB_CH_JOINT * m->nrestraint1;
+    return MB_CH_CONTACT * m->ncontact + MB_CH_JOINT * m->nrestraint1 +
+           MB_CH_JOINT3 * m->nrestraint3;
 }
 
 /* one output row: reads the pair and restraint states, writes row[mb_channels_count] */
@@ -44,6 +53,12 @@ void mb_channels_sample(const mb_model *m, const mb_state *s, double *row)
         jr[MB_CH_JOINT * i] = s->r1[i].x;
         jr[MB_CH_JOINT * i + 1] = -s->r1[i].load;
     }
+    double *r3 = jr + MB_CH_JOINT * m->nrestraint1;
+    for (int i = 0; i < m->nrestraint3; i++)
+        for (int k = 0; k < 3; k++) {
+            r3[MB_CH_JOINT3 * i + k] = s->r3[i].theta[k];
+            r3[MB_CH_JOINT3 * i + 3 + k] = s->r3[i].load[k];
+        }
 }
 
 static mcs_status put(const mb_model *m, const mb_state *s, mcs_results *r, double *buf, int col,
@@ -83,6 +98,18 @@ mcs_status mb_channels_write(const mb_model *m, const mb_state *s, mcs_results *
         snprintf(name, sizeof name, "%s_%s", j->name, rot ? "moment" : "force");
         st = put(m, s, r, buf, base + MB_CH_JOINT * i + 1, name, rot ? "N m" : "N", "joint axis",
                  j->child, err);
+    }
+    base += MB_CH_JOINT * m->nrestraint1;
+    static const char axn[3] = {'x', 'y', 'z'};
+    for (int i = 0; i < m->nrestraint3 && !st; i++) {
+        const mb_joint_def *j = &m->joint[m->restraint3[i].joint];
+        int nax = j->type == MB_J_UNIVERSAL ? 2 : 3;
+        for (int q = 0; q < 2 && !st; q++)
+            for (int k = 0; k < nax && !st; k++) {
+                snprintf(name, sizeof name, "%s_%s_%c", j->name, q ? "moment" : "angle", axn[k]);
+                st = put(m, s, r, buf, base + MB_CH_JOINT3 * i + 3 * q + k, name,
+                         q ? "N m" : "rad", "restraint axes (parent)", j->child, err);
+            }
     }
     return st;
 }

@@ -151,7 +151,7 @@ static double running_total(const mb_model *m, const mb_state *s, double *kin)
         for (int k = 0; k < 3; k++) {
             double th = t->theta[k];
             double x = th > r->hi[k] ? th - r->hi[k] : th < r->lo[k] ? th - r->lo[k] : 0;
-            if (r->has_spring[k]) e += mcs_hyst2_work(&t->h[k]);
+            if (r->has_spring[k]) e += mcs_hyst2_work(&t->h[k]) + r->preload[k] * th;
             e += 0.5 * r->stop_stiffness[k] * x * x;
         }
         e += t->e_damp;

@@ -52,6 +52,12 @@ mcs_status mb_restraint3_check(const mb_restraint3_model *m, const mb_world *w, 
         if (m->stop_stiffness[i] > 0 && !(m->lo[i] < m->hi[i]))
             return MCS_ERR(err, MCS_ERR_RANGE, "%s: axis %d: range [%g, %g] is empty", name, i,
                            m->lo[i], m->hi[i]);
+        if (!isfinite(m->zero[i]) || !isfinite(m->preload[i]) ||
+            (m->preload[i] != 0 && !m->has_spring[i]))
+            return MCS_ERR(err, MCS_ERR_RANGE,
+                           "%s: axis %d: neutral angle and preload must be finite; a preload "
+                           "needs a restraint characteristic",
+                           name, i);
         if (m->has_spring[i]) {
             mcs_status st = mcs_hyst2_model_check(&m->spring[i], name, err);
             if (st != MCS_OK) return st;
@@ -89,8 +95,13 @@ void mb_restraint3_reset(const mb_restraint3_model *m, mb_restraint3_state *s, c
     double Rp[9], Rc[9], wp[3], wc[3];
     joint_kin(w, m->joint, Rp, wp, Rc, wc);
     mb_mat_tmul(Rp, Rc, s->neutral);
+    /* the histories start at the initial deflection theta - zero = -zero, so their work there
+     * is the energy the initial posture already holds (as the energy at t = 0 counts it) */
     for (int i = 0; i < 3; i++)
-        if (m->has_spring[i]) mcs_hyst2_reset(&m->spring[i], &s->h[i]);
+        if (m->has_spring[i]) {
+            mcs_hyst2_reset(&m->spring[i], &s->h[i]);
+            if (m->zero[i] != 0) mcs_hyst2_update(&m->spring[i], &s->h[i], -m->zero[i]);
+        }
 }
 
 static double stop_excess(double k, double lo, double hi, double x)
@@ -136,7 +147,9 @@ void mb_restraint3_apply(const mb_restraint3_model *m, mb_restraint3_state *s, m
     double g[3];
     for (int i = 0; i < 3; i++) {
         double x = s->theta[i], r = s->rate[i];
-        double f = m->has_spring[i] ? mcs_hyst2_update(&m->spring[i], &s->h[i], x) : 0;
+        double f = m->has_spring[i] ? m->preload[i] +
+                                          mcs_hyst2_update(&m->spring[i], &s->h[i], x - m->zero[i])
+                                    : 0;
         double fd = m->damping[i] * r, fs = 0, fsd = 0;
         double e = stop_excess(m->stop_stiffness[i], m->lo[i], m->hi[i], x);
         if (e != 0) {
@@ -145,6 +158,7 @@ void mb_restraint3_apply(const mb_restraint3_model *m, mb_restraint3_state *s, m
             if (fs * (fs + fsd) < 0) fsd = -fs; /* a stop only pushes back */
         }
         g[i] = f + fd + fs + fsd;
+        s->load[i] = g[i];
         s->e_damp += (fd + fsd) * r * h;
     }
     /* torque on the child: -J^-T g on the restraint axes, to world */
@@ -169,7 +183,8 @@ double mb_restraint3_stored(const mb_restraint3_model *m, const mb_restraint3_st
     for (int i = 0; i < 3; i++) {
         double x = stop_excess(m->stop_stiffness[i], m->lo[i], m->hi[i], s->theta[i]);
         e += 0.5 * m->stop_stiffness[i] * x * x;
-        if (m->has_spring[i]) e += mcs_hyst2_stored(&m->spring[i], &s->h[i]);
+        if (m->has_spring[i])
+            e += mcs_hyst2_stored(&m->spring[i], &s->h[i]) + m->preload[i] * s->theta[i];
     }
     return e;
 }

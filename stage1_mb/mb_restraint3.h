@@ -3,8 +3,10 @@
  *
  * Deflection: the rotation vector theta (axis times angle, |theta| < pi) of the child's rotation
  * relative to the parent since reset, expressed on the restraint axes (fixed in the parent).
- * Per axis i: g_i = F_h,i(theta_i) + d_i dtheta_i/dt + stop_i(theta_i), F_h the two-branch
- * hysteresis element (core/mcs_hysteresis.h), stops as in mb_restraint.h. The torque on the
+ * Per axis i: g_i = P_i + F_h,i(theta_i - zero_i) + d_i dtheta_i/dt + stop_i(theta_i), P_i a
+ * constant preload, zero_i the neutral angle (the rotation-vector component where F_h,i is
+ * zero), F_h the two-branch hysteresis element (core/mcs_hysteresis.h), stops as in
+ * mb_restraint.h. Stored energy includes P_i theta_i (theta = 0 at reset). The torque on the
  * child is -J^-T g on the restraint axes (the parent gets the opposite), with J the left
  * Jacobian of the rotation vector (omega_rel = J dtheta/dt): then the power is exactly -g .
  * dtheta/dt, so an elastic restraint conserves energy at any angle, not only small ones. */
@@ -24,6 +26,8 @@ typedef struct {
     double lo[3], hi[3];       /* range of theta_i [rad]                                        */
     double stop_stiffness[3];  /* stop beyond the range [N m/rad], 0 = none                     */
     double stop_damping[3];    /* stop damper [N m s/rad]                                       */
+    double zero[3];            /* per axis: theta_i where the characteristic is zero [rad]      */
+    double preload[3];         /* per axis: constant moment added to F_h,i [N m]                */
 } mb_restraint3_model;
 
 typedef struct {
@@ -33,6 +37,7 @@ typedef struct {
     double rate[3];       /* its time derivative [rad/s]                                       */
     double torque[3];     /* torque applied to the child there, world [N m]                   */
     double e_damp;        /* energy dissipated by dampers [J]                                 */
+    double load[3];       /* g_i resisting the deflection there (preload, F_h, damper, stop) [N m] */
 } mb_restraint3_state;
 
 mcs_status mb_restraint3_check(const mb_restraint3_model *m, const mb_world *w, const char *name,

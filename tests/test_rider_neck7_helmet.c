@@ -1,0 +1,124 @@
+/* test_rider_neck7_helmet.c: the rider with MYMOSA's 7-vertebra neck wearing the helmet
+ * (scenarios/models/riders/hybrid3_50th_neck7_helmet.yaml, written by scripts/gen_rider.py;
+ * docs/rider.md): it builds, has the 23 rider segments plus the helmet's shell and liner, weighs
+ * the H3 50th's 78.2 kg plus the 1.4 kg helmet, and sits on the motorcycle: seated by the
+ * positioning step (hands on the grips, feet on the pegs, pelvis on the seat), the helmet keeps
+ * its pose on the head, and 50 ms seated under gravity break nothing. */
+#include "harness.h"
+#include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_vec.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define FILE7H "models/riders/hybrid3_50th_neck7_helmet.yaml"
+
+static mb_model *build_text(const char *txt, mcs_error *err)
+{
+    mcs_scenario *scn = NULL;
+    mb_model *m = NULL;
+    if (mcs_scenario_load_text("scenarios/rider_neck7_helmet.yaml", txt, strlen(txt), &scn, err) ==
+        MCS_OK)
+        mb_model_build(scn, NULL, &m, err);
+    mcs_scenario_destroy(&scn);
+    if (!m) fprintf(stderr, "%s\n", err->msg);
+    return m;
+}
+
+/* the shell's offset from the head in the model file (world = head axes there) [m] */
+static double d0[3];
+
+static double rider_mass(const mb_model *m, int *n)
+{
+    double tot = 0;
+    *n = 0;
+    for (int i = 0; i < m->nbody; i++)
+        if (strncmp(m->body_name[i], "rider_", 6) == 0) tot += m->body[i].mass, (*n)++;
+    return tot;
+}
+
+/* 23 segments (17 with the neck replaced by C7..C1) + shell + liner; 78.2 + 1.4 kg */
+static void test_builds_and_mass(void)
+{
+    const char *txt = "mcrash: 1\ninclude: [" FILE7H "]\n"
+                      "simulation: {end_time: 1 ms, time_step: 10 us}\n";
+    mcs_error err = {0};
+    mb_model *m = build_text(txt, &err);
+    CHECK(m != NULL);
+    if (!m) return;
+    int n = 0;
+    double mass = rider_mass(m, &n);
+    printf("  neck7 + helmet: %d bodies, %.9f kg, %d joints, %d attachments\n", n, mass, m->njoint,
+           m->nattach);
+    CHECK(n == 25);
+    /* the files print masses to 7 digits: 23 roundings of at most 5e-7 relative each */
+    CHECK_NEAR(mass, 78.2 + 1.4, 1e-5);
+    CHECK(m->njoint == 22);
+    CHECK(m->nattach == 6); /* the helmet's two three-point couplings */
+    for (int k = 1; k <= 7; k++) {
+        char nm[32];
+        snprintf(nm, sizeof nm, "rider_c%d", k);
+        CHECK(mb_model_body(m, nm) >= 0);
+    }
+    int h = mb_model_body(m, "rider_head"), s = mb_model_body(m, "rider_helmet_shell");
+    CHECK(h >= 0 && s >= 0 && mb_model_body(m, "rider_helmet_liner") >= 0);
+    if (h >= 0 && s >= 0) mb_sub(m->body[s].pos, m->body[h].pos, d0);
+    mb_model_destroy(&m);
+}
+
+/* seated (40 deg lean, head pitched -10 deg) on sport_208kg with the seat contact, 50 ms */
+static void test_seated(void)
+{
+    const char *txt =
+        "mcrash: 1\n"
+        "include: [models/motorcycles/sport_208kg.yaml, " FILE7H "]\n"
+        "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n"
+        "simulation: {end_time: 50 ms, time_step: 10 us}\n"
+        "rider: {torso_lean: 40 deg, head_pitch: -10 deg}\n"
+        "contacts:\n  - {a: rider_pelvis, b: moto_frame, characteristic: seat}\n";
+    mcs_error err = {0};
+    mb_model *m = build_text(txt, &err);
+    CHECK(m != NULL);
+    if (!m) return;
+    printf("  seated: mount-point residual %.3g m\n", m->rider_residual);
+    CHECK(m->rider_residual >= 0 && m->rider_residual < 1e-12);
+    int h = mb_model_body(m, "rider_head"), sh = mb_model_body(m, "rider_helmet_shell");
+    double R[9], d[3], e[3];
+    mb_quat_to_rot(m->body[h].quat, R);
+    mb_sub(m->body[sh].pos, m->body[h].pos, d);
+    mb_mat_tvec(R, d, e); /* in the head's frame: the file's offset */
+    mb_sub(e, d0, e);
+    printf("  shell offset from the head kept to %.2g m\n", mb_norm(e));
+    CHECK(mb_norm(e) < 1e-12);
+    mb_state *s = NULL;
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    mcs_status st = MCS_OK;
+    while (s && !st && s->step < m->nsteps) st = mb_step(m, s, &err);
+    CHECK(st == MCS_OK);
+    if (s) {
+        double f = 0;
+        int broken = 0;
+        for (int i = 0; i < m->nattach; i++) {
+            broken += s->att[i].broken;
+            if (!strncmp(m->attach_name[i], "rider_helmet", 12))
+                f = fmax(f, mb_norm(s->att[i].force));
+        }
+        printf("  after 50 ms seated: %d attachments, none broken: %s; largest helmet coupling "
+               "force %.1f N; energy drift %.2g\n",
+               m->nattach, broken ? "no" : "yes", f, mb_energy_drift(m, s));
+        CHECK(broken == 0);
+        CHECK(m->nattach == 11); /* the five seat/grip/peg attachments and the six couplings */
+        CHECK(f < 1.4 * 9.81 * 2);
+        CHECK(mb_energy_drift(m, s) < 1e-2);
+    }
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+int main(void)
+{
+    RUN(test_builds_and_mass);
+    RUN(test_seated);
+    TEST_END();
+}

@@ -206,11 +206,11 @@ static mcs_status series_law(mb_model *m, const mcs_node *cn, mb_pair *p, int ip
 }
 
 /* the order of two surfaces with penetration geometry (first one: ellipsoid or cylinder):
- * 1 as given, -1 swapped, 0 none (plane-plane, and cylinders against anything but planes
- * and ellipsoids) */
+ * 1 as given, -1 swapped, 0 none (plane-plane, and cylinders against facets) */
 static int pair_order(const mb_surface *x, const mb_surface *y)
 {
     mb_surf_type a = x->type, b = y->type;
+    if (a == MB_SURF_CYLINDER && b == MB_SURF_CYLINDER) return 1; /* mb_geom_wheel2.h */
     if (a == MB_SURF_CYLINDER && b == MB_SURF_ELLIPSOID) return 1;
     if (b == MB_SURF_CYLINDER && a == MB_SURF_ELLIPSOID) return -1;
     if (a == MB_SURF_ELLIPSOID && b != MB_SURF_CYLINDER) return 1;
@@ -235,7 +235,7 @@ static int list_pairs(const mb_model *m, int a, int b, mb_pair *pairs, const cha
                               m->surf[j].type == MB_SURF_CYLINDER))
                     mcs_log(MCS_LOG_WARN,
                             "stage 1: contact %s: %s against %s is not checked (a cylinder "
-                            "meets planes and ellipsoids only)",
+                            "meets planes, ellipsoids and cylinders only)",
                             contact, m->surf[i].name, m->surf[j].name);
                 continue;
             }
@@ -276,7 +276,7 @@ static mcs_status build_contact(const mcs_node *cn, mb_model *m, int ic, mcs_err
     if (c->npair == 0)
         return mcs_node_error(cn, err, MCS_ERR_RANGE,
                               "no surface pair to check: give %s and %s surfaces (an ellipsoid "
-                              "on one side, or a cylinder against a plane)", mcs_node_str(na),
+                              "on one side, or a cylinder against a plane or a cylinder)", mcs_node_str(na),
                               mcs_node_str(nb));
     double mu = mcs_node_num_or(cn, "friction", NAN);
     for (int k = 0; k < c->npair; k++) {

@@ -13,6 +13,7 @@
  *     angular momentum are kept.
  * Energy: the hysteresis element integrates its work exactly in x; the damper dissipates
  * (F - F_h) x' h per step, friction mu_eff F u h. */
+#include "stage1_mb/mb_contact_wheel2.h"
 #include "stage1_mb/mb_facet.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
@@ -88,6 +89,10 @@ static void detect_wheel(mb_state *s, int i, const mb_pair *p, const mb_surface 
     }
     if (sb->type == MB_SURF_ELLIPSOID) {
         wheel_ellipsoid(s, i, &w, &s->surf_ell[p->sb], c);
+        return;
+    }
+    if (sb->type == MB_SURF_CYLINDER) { /* wheel against wheel (mb_geom_wheel2.h) */
+        mb_wheel_wheel_detect(sb, kin_of(s, p->bb), &w, &s->pair[i], c);
         return;
     }
     place_plane(sb, kin_of(s, p->bb), &pl);

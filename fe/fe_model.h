@@ -306,6 +306,7 @@ typedef struct fe_model {
 /* smaller models run their loops on one thread (a parallel region costs microseconds) */
 #define FE_PAR_MIN_CHUNKS 8      /* element chunks [-]                                   */
 #define FE_PAR_MIN_NODE_CHUNKS 4 /* node chunks [-]                                      */
+#define FE_PAR_MAX 64            /* threads used at most by the FE loops [-]             */
 
 /* ---- the builder ------------------------------------------------------------------------ */
 

@@ -6,6 +6,7 @@
  * thread. The chunks do not depend on the number of threads, so a run gives the same result
  * to the last bit with any OMP_NUM_THREADS (tests/test_fe_parallel.c). */
 #include "fe/fe_elem.h"
+#include "fe/fe_parallel.h"
 
 #include <math.h>
 #ifdef _OPENMP
@@ -65,4 +66,118 @@ void fe_set_threads(int n)
 #else
     (void)n;
 #endif
+}
+
+/* ---- thread shares (fe_parallel.h) ------------------------------------------------------ */
+
+int fe_par_tid(void)
+{
+#ifdef _OPENMP
+    return omp_get_thread_num();
+#else
+    return 0;
+#endif
+}
+
+int fe_par_nth(void)
+{
+#ifdef _OPENMP
+    return omp_get_num_threads();
+#else
+    return 1;
+#endif
+}
+
+double fe_par_clock(void)
+{
+#ifdef _OPENMP
+    return omp_get_wtime();
+#else
+    return 0;
+#endif
+}
+
+/* smallest node of the elements of chunk k */
+static int chunk_first_node(const fe_model *m, int k)
+{
+    const fe_part *p = m->part + m->chunk_part[k];
+    const int e0 = m->chunk_elem[k];
+    const int e1 = e0 + FE_CHUNK_ELEMS < p->elem_end ? e0 + FE_CHUNK_ELEMS : p->elem_end;
+    const int *conn = p->elem_kind == FE_KIND_HEX     ? m->hex_node
+                      : p->elem_kind == FE_KIND_SHELL ? m->shell_node
+                                                      : m->truss_node;
+    const int nper = p->elem_kind == FE_KIND_HEX ? 8 : p->elem_kind == FE_KIND_SHELL ? 4 : 2;
+    int lo = m->nnode;
+    for (int i = nper * e0; i < nper * e1; i++)
+        if (conn[i] < lo) lo = conn[i];
+    return lo;
+}
+
+/* move the element cuts so that every thread's chunks took about the same time in the last
+ * step; kept as they are while the slowest share is within 3 % of the mean (a moved cut sends
+ * the state of the chunks it moves to the other core's cache) */
+static void rebalance(const fe_model *m, fe_state *s, int nt)
+{
+    const double *c = s->chunk_cost;
+    const int nch = m->nchunk;
+    int *cut = s->par_cut;
+    double tot = 0, worst = 0;
+    for (int k = 0; k < nch; k++) tot += c[k];
+    if (!(tot > 0)) return;
+    for (int t = 0; t < nt; t++) {
+        double load = 0;
+        for (int k = cut[t]; k < cut[t + 1]; k++) load += c[k];
+        worst = fmax(worst, load);
+    }
+    if (worst <= 1.03 * tot / nt) return;
+    double cum = 0;
+    int k = 0;
+    for (int t = 1; t < nt; t++) {
+        const double target = tot * t / nt;
+        while (k < nch && cum + c[k] <= target) cum += c[k++];
+        if (k < nch && cum + c[k] - target < target - cum) cum += c[k++];
+        cut[t] = k;
+    }
+}
+
+int fe_par_team(const fe_model *m, fe_state *s)
+{
+    int nt = fe_threads();
+    if (nt > FE_PAR_MAX) nt = FE_PAR_MAX;
+    if (nt > m->nchunk) nt = m->nchunk;
+    if (m->nchunk < FE_PAR_MIN_CHUNKS || nt < 1) nt = 1;
+    if (nt != s->par_nt) {
+        /* a new team: equal numbers of chunks */
+        for (int t = 0; t <= nt; t++) s->par_cut[t] = (int)((long)m->nchunk * t / nt);
+        s->par_nt = nt;
+    } else if (nt > 1) {
+        rebalance(m, s, nt);
+    }
+    /* node shares: from the first node of each thread's first element chunk, to the
+     * nearest node chunk */
+    s->par_ncut[0] = 0;
+    for (int t = 1; t < nt; t++) {
+        int nc = s->par_cut[t] >= m->nchunk ? m->nnode_chunk
+                                             : (chunk_first_node(m, s->par_cut[t]) +
+                                                FE_CHUNK_NODES / 2) / FE_CHUNK_NODES;
+        if (nc < s->par_ncut[t - 1]) nc = s->par_ncut[t - 1];
+        if (nc > m->nnode_chunk) nc = m->nnode_chunk;
+        s->par_ncut[t] = nc;
+    }
+    s->par_ncut[nt] = m->nnode_chunk;
+    return nt;
+}
+
+void fe_par_share(const fe_model *m, const fe_state *s, int t, fe_par_range *r)
+{
+    if (s->par_nt <= 1) {
+        r->c0 = 0, r->c1 = m->nchunk;
+        r->nc0 = 0, r->nc1 = m->nnode_chunk;
+    } else {
+        r->c0 = s->par_cut[t], r->c1 = s->par_cut[t + 1];
+        r->nc0 = s->par_ncut[t], r->nc1 = s->par_ncut[t + 1];
+    }
+    r->n0 = r->nc0 * FE_CHUNK_NODES;
+    r->n1 = r->nc1 * FE_CHUNK_NODES < m->nnode ? r->nc1 * FE_CHUNK_NODES : m->nnode;
+    if (r->n0 > r->n1) r->n0 = r->n1;
 }

@@ -3,6 +3,7 @@
 #include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
 #include "fe/fe_membrane.h"
+#include "fe/fe_parallel.h"
 #include "fe/fe_restraint.h"
 #include "fe/fe_solid.h"
 
@@ -18,54 +19,81 @@ static int chunked_part(const fe_part *p)
            (p->elem_kind == FE_KIND_SHELL && p->section.type != FE_SECTION_MEMBRANE);
 }
 
+/* the element chunks of share t: stresses, slot forces, partial sums; each chunk timed
+ * when threaded (the next step's balance, fe_parallel.c) */
+static void elem_share(const fe_model *m, fe_state *s, int t, int timed)
+{
+    fe_par_range r;
+    fe_par_share(m, s, t, &r);
+    for (int k = r.c0; k < r.c1; k++) {
+        const int ip = m->chunk_part[k], e0 = m->chunk_elem[k];
+        const int e1 = e0 + FE_CHUNK_ELEMS < m->part[ip].elem_end ? e0 + FE_CHUNK_ELEMS
+                                                                 : m->part[ip].elem_end;
+        if (!chunked_part(m->part + ip)) continue;
+        const double t0 = timed ? fe_par_clock() : 0;
+        switch (m->part[ip].elem_kind) {
+        case FE_KIND_HEX: fe_hex_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
+        case FE_KIND_SHELL: fe_shell_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
+        default: fe_truss_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
+        }
+        if (timed) s->chunk_cost[k] = fe_par_clock() - t0;
+    }
+}
+
+/* gather of share t: each node sums its element slots in slot order (no element writes to a
+ * shared node) */
+static void gather_share(const fe_model *m, fe_state *s, int t)
+{
+    const int sb = m->slot_base[FE_KIND_SHELL], se = m->slot_base[FE_KIND_TRUSS];
+    fe_par_range r;
+    fe_par_share(m, s, t, &r);
+    for (int n = r.n0; n < r.n1; n++) {
+        double f0 = 0, f1 = 0, f2 = 0, m0 = 0, m1 = 0, m2 = 0;
+        for (int j = m->node_slot_off[n]; j < m->node_slot_off[n + 1]; j++) {
+            int sl = m->node_slot[j];
+            const double *f = s->slot_f + 3 * (size_t)sl;
+            f0 += f[0];
+            f1 += f[1];
+            f2 += f[2];
+            if (sl >= sb && sl < se) {
+                const double *mm = s->shell_m + 3 * (size_t)(sl - sb);
+                m0 += mm[0];
+                m1 += mm[1];
+                m2 += mm[2];
+            }
+        }
+        double *fi = s->node_fint + 3 * n, *mi = s->node_mint + 3 * n;
+        double *fx = s->node_fext + 3 * n;
+        fi[0] = f0, fi[1] = f1, fi[2] = f2;
+        mi[0] = m0, mi[1] = m1, mi[2] = m2;
+        fx[0] = fx[1] = fx[2] = 0; /* for fe_contact_forces, by the node's own thread */
+    }
+}
+
 /* reads x, v (t - dt/2), stresses; writes stresses, slot forces, node_fint, node_mint,
- * part internal/hourglass/dissipated energies and part element steps. Threaded over element
- * chunks, then over nodes (fe_parallel.c: the result does not depend on the thread count). */
+ * part internal/hourglass/dissipated energies and part element steps; zeroes node_fext.
+ * Threaded: each thread its own element chunks, then its own nodes (fe_parallel.h; the
+ * result does not depend on the thread count). */
 void fe_internal_forces(const fe_model *m, fe_state *s)
 {
-    const int nch = m->nchunk, nnode = m->nnode;
+    const int nch = m->nchunk;
     /* parts without a chunked kernel: whole part at a time, before the gather */
     for (int ip = 0; ip < m->npart; ip++)
         if (m->part[ip].body >= 0) s->part_dt[ip] = INFINITY; /* rigid: no step limit */
         else if (m->part[ip].elem_kind == FE_KIND_SHELL && m->part[ip].section.type == FE_SECTION_MEMBRANE)
             fe_membrane_part(m, s, ip);
-    const int sb = m->slot_base[FE_KIND_SHELL], se = m->slot_base[FE_KIND_TRUSS];
     fe_chunk_acc *ca = s->chunk_acc;
-#pragma omp parallel if (nch >= FE_PAR_MIN_CHUNKS)
-    {
-#pragma omp for schedule(dynamic, 1)
-        for (int k = 0; k < nch; k++) {
-            const int ip = m->chunk_part[k], e0 = m->chunk_elem[k];
-            const int e1 = e0 + FE_CHUNK_ELEMS < m->part[ip].elem_end ? e0 + FE_CHUNK_ELEMS
-                                                                     : m->part[ip].elem_end;
-            if (!chunked_part(m->part + ip)) continue;
-            switch (m->part[ip].elem_kind) {
-            case FE_KIND_HEX: fe_hex_range(m, s, ip, e0, e1, ca + k); break;
-            case FE_KIND_SHELL: fe_shell_range(m, s, ip, e0, e1, ca + k); break;
-            default: fe_truss_range(m, s, ip, e0, e1, ca + k); break;
-            }
+    const int nt = fe_par_team(m, s);
+    if (nt > 1) {
+#pragma omp parallel num_threads(nt)
+        {
+            for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) elem_share(m, s, t, 1);
+#pragma omp barrier
+            for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) gather_share(m, s, t);
         }
-        /* gather: each node sums its element slots (no element writes to a shared node) */
-#pragma omp for schedule(static)
-        for (int n = 0; n < nnode; n++) {
-            double f0 = 0, f1 = 0, f2 = 0, m0 = 0, m1 = 0, m2 = 0;
-            for (int j = m->node_slot_off[n]; j < m->node_slot_off[n + 1]; j++) {
-                int sl = m->node_slot[j];
-                const double *f = s->slot_f + 3 * (size_t)sl;
-                f0 += f[0];
-                f1 += f[1];
-                f2 += f[2];
-                if (sl >= sb && sl < se) {
-                    const double *mm = s->shell_m + 3 * (size_t)(sl - sb);
-                    m0 += mm[0];
-                    m1 += mm[1];
-                    m2 += mm[2];
-                }
-            }
-            double *fi = s->node_fint + 3 * n, *mi = s->node_mint + 3 * n;
-            fi[0] = f0, fi[1] = f1, fi[2] = f2;
-            mi[0] = m0, mi[1] = m1, mi[2] = m2;
-        }
+    } else {
+        elem_share(m, s, 0, 0);
+        gather_share(m, s, 0);
     }
     /* partial sums of each part in chunk order */
     for (int k = 0; k < nch;) {
@@ -77,11 +105,11 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
     fe_discrete_forces(m, s); /* springs and dampers add to node_fint */
 }
 
-/* reads x, time; writes node_fext (zeroed here, then penalty rigid-wall forces) and the
- * walls' forces. Kinematic walls act in fe_integrate (they need the new velocities). */
+/* reads x, time; adds the contact and penalty rigid-wall forces to node_fext (zeroed by
+ * fe_internal_forces, each node by its own thread) and writes the walls' forces. Kinematic
+ * walls act in fe_integrate (they need the new velocities). */
 void fe_contact_forces(const fe_model *m, fe_state *s)
 {
-    memset(s->node_fext, 0, sizeof(double) * 3 * (size_t)m->nnode);
     memset(s->wall_force, 0, sizeof(double) * 3 * (size_t)m->nwall);
     if (m->contact) fe_contact_interfaces(m, s);
     unsigned pen = 0;
@@ -131,106 +159,146 @@ void fe_external_forces(const fe_model *m, fe_state *s)
     fe_gravity_forces(m, s);
 }
 
-/* reads node_fext, node_fint, masses; writes node_a */
-void fe_accelerations(const fe_model *m, fe_state *s)
+static void accel_share(const fe_model *m, fe_state *s, int t)
 {
-    const int nnode = m->nnode;
-#pragma omp parallel for schedule(static) if (m->nnode_chunk >= FE_PAR_MIN_NODE_CHUNKS)
-    for (int n = 0; n < nnode; n++) {
+    fe_par_range r;
+    fe_par_share(m, s, t, &r);
+    for (int n = r.n0; n < r.n1; n++) {
         double mass = m->node_mass[n], inv = mass > 0 ? 1 / mass : 0;
         for (int i = 0; i < 3; i++)
             s->node_a[3 * n + i] = (s->node_fext[3 * n + i] - s->node_fint[3 * n + i]) * inv;
     }
 }
 
+/* reads node_fext, node_fint, masses; writes node_a (each thread its own nodes) */
+void fe_accelerations(const fe_model *m, fe_state *s)
+{
+    const int nt = s->par_nt > 1 ? s->par_nt : 1;
+    if (nt > 1) {
+#pragma omp parallel num_threads(nt)
+        for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) accel_share(m, s, t);
+    } else {
+        accel_share(m, s, 0);
+    }
+}
+
+/* constants of one integration step */
+typedef struct {
+    double dt, dth, tn, c, d0, d1, hb, idth;
+    unsigned kin; /* bit w: wall w is kinematic */
+} integ_par;
+
+/* node chunk k: velocities, positions and the chunk's partial sums in node_acc */
+static void integrate_chunk(const fe_model *m, fe_state *s, int k, const integ_par *P)
+{
+    const double dt = P->dt, dth = P->dth, tn = P->tn, c = P->c, d0 = P->d0, d1 = P->d1;
+    const double hb = P->hb, idth = P->idth;
+    const unsigned kin = P->kin;
+    const int stride = m->node_acc_stride, npart = m->npart, nwall = m->nwall;
+    double *acc = s->node_acc + (size_t)stride * k, *pke = acc + FE_NACC_FIXED;
+    double *wf_acc = pke + npart;
+    for (int i = 0; i < FE_NACC_FIXED + npart + 3 * nwall; i++) acc[i] = 0;
+    double ke = 0, wb = 0, wf = 0, db = 0, dfw = 0;
+    int bad = -1;
+    const int n1 = (k + 1) * FE_CHUNK_NODES < m->nnode ? (k + 1) * FE_CHUNK_NODES : m->nnode;
+    for (int n = k * FE_CHUNK_NODES; n < n1; n++) {
+        const double mass = m->node_mass[n];
+        if (!(mass > 0) || m->node_body[n] >= 0) continue; /* rigid bodies: fe_rigid.c */
+        double *v = s->node_v + 3 * n, *x = s->node_x + 3 * n;
+        const double *a = s->node_a + 3 * n, *fe = s->node_fext + 3 * n;
+        const unsigned fix = m->node_fix[n];
+        double vo[3] = {v[0], v[1], v[2]}, vn[3], vfree[3];
+        for (int i = 0; i < 3; i++) vn[i] = vfree[i] = (d0 * vo[i] + dth * a[i]) * d1;
+        for (int i = 0; i < 3; i++)
+            if (fix & (1u << i)) vn[i] = m->node_vfix[3 * n + i];
+        unsigned mask = m->node_walls[n] & kin;
+        while (mask) {
+            int w = __builtin_ctz(mask);
+            mask &= mask - 1;
+            const fe_wall *W = &m->wall[w];
+            double g = 0;
+            for (int i = 0; i < 3; i++)
+                g += (x[i] + dt * vn[i] - W->point[i] - W->velocity[i] * tn) * W->normal[i];
+            if (g >= 0) continue;
+            /* land on the wall: remove the normal velocity that would penetrate */
+            double dv = -g / dt;
+            for (int i = 0; i < 3; i++) {
+                vn[i] += dv * W->normal[i];
+                wf_acc[3 * w + i] -= mass * dv * idth * W->normal[i];
+            }
+        }
+        /* works of the forces at t: half on the interval before (now), half on the one
+         * after (pending), each weighted by the velocity-update step dth, which makes
+         * K(n+1) - K(n) = sum of the works exactly (fe_state.h); no interval before t = 0 */
+        double ek = 0;
+        for (int i = 0; i < 3; i++) {
+            double r = mass * (vn[i] - vfree[i]) * idth; /* constraint and wall reaction */
+            double fd = -c * mass * 0.5 * (vo[i] + vn[i]);
+            ek += vo[i] * vn[i];
+            wb += 0.5 * (fe[i] + r) * hb * vo[i];
+            wf += 0.5 * (fe[i] + r) * dth * vn[i];
+            db -= 0.5 * fd * hb * vo[i];
+            dfw -= 0.5 * fd * dth * vn[i];
+            v[i] = vn[i];
+            x[i] += dt * vn[i];
+        }
+        if (!isfinite(vn[0] + vn[1] + vn[2]) && bad < 0) bad = n;
+        ek *= 0.5 * mass;
+        const double in = m->node_inertia[n];
+        if (in > 0) {
+            double *w = s->node_w + 3 * n;
+            const double *mi = s->node_mint + 3 * n, iin = dth / in;
+            for (int i = 0; i < 3; i++) {
+                double wo = w[i], wn = (d0 * wo - mi[i] * iin) * d1;
+                if (fix & (8u << i)) wn = 0;
+                ek += 0.5 * in * wo * wn;
+                db += 0.5 * c * in * 0.5 * (wo + wn) * hb * wo;
+                dfw += 0.5 * c * in * 0.5 * (wo + wn) * dth * wn;
+                w[i] = wn;
+            }
+            if (!isfinite(w[0] + w[1] + w[2]) && bad < 0) bad = n;
+        }
+        ke += ek;
+        if (m->node_part[n] >= 0) pke[m->node_part[n]] += ek;
+    }
+    acc[FE_ACC_KE] = ke;
+    acc[FE_ACC_WB] = wb;
+    acc[FE_ACC_WF] = wf;
+    acc[FE_ACC_DB] = db;
+    acc[FE_ACC_DF] = dfw;
+    acc[FE_ACC_BAD] = bad;
+}
+
+static void integrate_share(const fe_model *m, fe_state *s, int t, const integ_par *P)
+{
+    fe_par_range r;
+    fe_par_share(m, s, t, &r);
+    for (int k = r.nc0; k < r.nc1; k++) integrate_chunk(m, s, k, P);
+}
+
 /* reads node_a, node_mint, v, w, x; writes v, w (t + dt/2), x (t + dt), the kinematic
  * walls' forces, kinetic energy and the works of loads, constraints and damping (at t).
- * Threaded over node chunks; each chunk's sums go to node_acc and are added in chunk order. */
+ * Threaded over node chunks (each thread its own, fe_parallel.h); each chunk's sums go to
+ * node_acc and are added in chunk order. */
 void fe_integrate(const fe_model *m, fe_state *s)
 {
-    const double dt = s->dt, dtp = s->dt_prev, dth = 0.5 * (dt + dtp), tn = s->time + dt;
-    const double c = m->opts.damping, d0 = 1 - 0.5 * c * dth, d1 = 1 / (1 + 0.5 * c * dth);
-    const double hb = dtp > 0 ? dth : 0; /* weight of the interval before t */
-    const double idth = 1 / dth;
-    unsigned kin = 0;
+    integ_par P;
+    P.dt = s->dt;
+    const double dtp = s->dt_prev;
+    P.dth = 0.5 * (P.dt + dtp), P.tn = s->time + P.dt;
+    P.c = m->opts.damping, P.d0 = 1 - 0.5 * P.c * P.dth, P.d1 = 1 / (1 + 0.5 * P.c * P.dth);
+    P.hb = dtp > 0 ? P.dth : 0; /* weight of the interval before t */
+    P.idth = 1 / P.dth;
+    P.kin = 0;
     for (int w = 0; w < m->nwall; w++)
-        if (m->wall[w].method == FE_WALL_KINEMATIC) kin |= 1u << w;
+        if (m->wall[w].method == FE_WALL_KINEMATIC) P.kin |= 1u << w;
     const int nch = m->nnode_chunk, stride = m->node_acc_stride, npart = m->npart;
-    const int nwall = m->nwall;
-#pragma omp parallel for schedule(static) if (nch >= FE_PAR_MIN_NODE_CHUNKS)
-    for (int k = 0; k < nch; k++) {
-        double *acc = s->node_acc + (size_t)stride * k, *pke = acc + FE_NACC_FIXED;
-        double *wf_acc = pke + npart;
-        for (int i = 0; i < FE_NACC_FIXED + npart + 3 * nwall; i++) acc[i] = 0;
-        double ke = 0, wb = 0, wf = 0, db = 0, dfw = 0;
-        int bad = -1;
-        const int n1 = (k + 1) * FE_CHUNK_NODES < m->nnode ? (k + 1) * FE_CHUNK_NODES : m->nnode;
-        for (int n = k * FE_CHUNK_NODES; n < n1; n++) {
-            const double mass = m->node_mass[n];
-            if (!(mass > 0) || m->node_body[n] >= 0) continue; /* rigid bodies: fe_rigid.c */
-            double *v = s->node_v + 3 * n, *x = s->node_x + 3 * n;
-            const double *a = s->node_a + 3 * n, *fe = s->node_fext + 3 * n;
-            const unsigned fix = m->node_fix[n];
-            double vo[3] = {v[0], v[1], v[2]}, vn[3], vfree[3];
-            for (int i = 0; i < 3; i++) vn[i] = vfree[i] = (d0 * vo[i] + dth * a[i]) * d1;
-            for (int i = 0; i < 3; i++)
-                if (fix & (1u << i)) vn[i] = m->node_vfix[3 * n + i];
-            unsigned mask = m->node_walls[n] & kin;
-            while (mask) {
-                int w = __builtin_ctz(mask);
-                mask &= mask - 1;
-                const fe_wall *W = &m->wall[w];
-                double g = 0;
-                for (int i = 0; i < 3; i++)
-                    g += (x[i] + dt * vn[i] - W->point[i] - W->velocity[i] * tn) * W->normal[i];
-                if (g >= 0) continue;
-                /* land on the wall: remove the normal velocity that would penetrate */
-                double dv = -g / dt;
-                for (int i = 0; i < 3; i++) {
-                    vn[i] += dv * W->normal[i];
-                    wf_acc[3 * w + i] -= mass * dv * idth * W->normal[i];
-                }
-            }
-            /* works of the forces at t: half on the interval before (now), half on the one
-             * after (pending), each weighted by the velocity-update step dth, which makes
-             * K(n+1) - K(n) = sum of the works exactly (fe_state.h); no interval before t = 0 */
-            double ek = 0;
-            for (int i = 0; i < 3; i++) {
-                double r = mass * (vn[i] - vfree[i]) * idth; /* constraint and wall reaction */
-                double fd = -c * mass * 0.5 * (vo[i] + vn[i]);
-                ek += vo[i] * vn[i];
-                wb += 0.5 * (fe[i] + r) * hb * vo[i];
-                wf += 0.5 * (fe[i] + r) * dth * vn[i];
-                db -= 0.5 * fd * hb * vo[i];
-                dfw -= 0.5 * fd * dth * vn[i];
-                v[i] = vn[i];
-                x[i] += dt * vn[i];
-            }
-            if (!isfinite(vn[0] + vn[1] + vn[2]) && bad < 0) bad = n;
-            ek *= 0.5 * mass;
-            const double in = m->node_inertia[n];
-            if (in > 0) {
-                double *w = s->node_w + 3 * n;
-                const double *mi = s->node_mint + 3 * n, iin = dth / in;
-                for (int i = 0; i < 3; i++) {
-                    double wo = w[i], wn = (d0 * wo - mi[i] * iin) * d1;
-                    if (fix & (8u << i)) wn = 0;
-                    ek += 0.5 * in * wo * wn;
-                    db += 0.5 * c * in * 0.5 * (wo + wn) * hb * wo;
-                    dfw += 0.5 * c * in * 0.5 * (wo + wn) * dth * wn;
-                    w[i] = wn;
-                }
-                if (!isfinite(w[0] + w[1] + w[2]) && bad < 0) bad = n;
-            }
-            ke += ek;
-            if (m->node_part[n] >= 0) pke[m->node_part[n]] += ek;
-        }
-        acc[FE_ACC_KE] = ke;
-        acc[FE_ACC_WB] = wb;
-        acc[FE_ACC_WF] = wf;
-        acc[FE_ACC_DB] = db;
-        acc[FE_ACC_DF] = dfw;
-        acc[FE_ACC_BAD] = bad;
+    const int nwall = m->nwall, nt = s->par_nt > 1 ? s->par_nt : 1;
+    if (nt > 1) {
+#pragma omp parallel num_threads(nt)
+        for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) integrate_share(m, s, t, &P);
+    } else {
+        integrate_share(m, s, 0, &P);
     }
     double ke = 0, wb = 0, wf = 0, db = 0, dfw = 0;
     int bad = -1;

@@ -106,7 +106,8 @@ typedef struct {
     X(double, body_fm, nbody, 6, "N, N m", "force and moment on the body at t")                    \
     X(double, hex_gp, nhex_gp, 7, "Pa", "full hex: stress (6), plastic strain or foam history")   \
     X(fe_chunk_acc, chunk_acc, nchunk, 1, "-", "partial sums of each element chunk")             \
-    X(double, node_acc, nnode_acc, 1, "-", "partial sums of each node chunk (fe_integrate)")
+    X(double, node_acc, nnode_acc, 1, "-", "partial sums of each node chunk (fe_integrate)")     \
+    X(double, chunk_cost, nchunk, 1, "s", "time of each element chunk last step (thread shares)")
 
 struct fe_contact_state;
 
@@ -140,6 +141,10 @@ typedef struct fe_state {
     double free_energy[FE_NENERGY]; /* energies of what belongs to no part: springs and dampers
                                      (internal, dissipated) [J]                                */
     struct fe_contact_state *contact; /* contact interfaces (fe_contact.h), NULL if none */
+    /* thread shares of the threaded loops (fe_parallel.h): team size, each thread's first
+     * element chunk and first node chunk; par_cut[par_nt] = nchunk [-] */
+    int par_nt;
+    int par_cut[FE_PAR_MAX + 1], par_ncut[FE_PAR_MAX + 1];
 } fe_state;
 
 /* allocate every array once (and the scratch arena), then fe_state_reset */

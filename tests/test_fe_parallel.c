@@ -4,6 +4,7 @@
  * sigma = sigma_trial - C dgamma P sigma, q(sigma) = flow stress(epsp + dp),
  * dp = dgamma sqrt(2/3 sigma.P sigma)). */
 #include "tests/harness.h"
+#include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
 #include "tests/fe_test_util.h"
 
@@ -114,6 +115,90 @@ static void test_threads_bitwise(void)
     fe_model_destroy(&m);
 }
 
+/* two J2 plates, the upper one thrown obliquely (20 m/s down, 5 m/s along) onto the lower one
+ * clamped at its edges, two-surface contact with friction 0.3: more than 1024 slave entries
+ * (the contact runs on the threads above FE_CONTACT_OMP_MIN in fe_contact.c) */
+static fe_model *build_plates(void)
+{
+    mcs_error err = {0};
+    fe_builder *b = NULL;
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    const double t = 1e-3;
+    const char *name[2] = {"base", "top"};
+    const double size[2] = {0.064, 0.05}, z[2] = {0, t + 0.05e-3};
+    const int div[2] = {32, 25};
+    for (int i = 0; i < 2; i++) {
+        fe_part_desc d = ft_part(name[i], FE_SECTION_SHELL, 210e9, 0.3, 7850);
+        d.material.model = FE_MAT_ELASTIC_PLASTIC;
+        d.material.yield_stress = 250e6;
+        d.section.thickness = t;
+        d.mesh.generate = FE_MESH_PLATE;
+        d.mesh.size[0] = d.mesh.size[1] = size[i];
+        d.mesh.divisions[0] = d.mesh.divisions[1] = div[i];
+        d.mesh.origin[0] = d.mesh.origin[1] = -0.5 * size[i] + 0.003 * i;
+        d.mesh.origin[2] = z[i];
+        d.initial_velocity[0] = 5 * i, d.initial_velocity[2] = -20 * i;
+        CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    }
+    fe_where sides[4] = {FE_WHERE_X_MIN, FE_WHERE_X_MAX, FE_WHERE_Y_MIN, FE_WHERE_Y_MAX};
+    for (int i = 0; i < 4; i++) {
+        fe_boundary_desc bc = ft_bc("base", sides[i], FE_DOF_ALL);
+        CHECK(fe_builder_add_boundary(b, &bc, &err) == MCS_OK);
+    }
+    fe_contact_desc cd = fe_contact_desc_default();
+    snprintf(cd.name, sizeof cd.name, "c");
+    cd.type = FE_CONTACT_TWO_SURFACE;
+    cd.nslave = cd.nmaster = 1;
+    snprintf(cd.slave[0], FE_NAME_MAX, "top");
+    snprintf(cd.master[0], FE_NAME_MAX, "base");
+    cd.friction = 0.3;
+    CHECK(fe_builder_add_contact(b, &cd, &err) == MCS_OK);
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+    if (err.status) fprintf(stderr, "%s\n", err.msg);
+    fe_builder_destroy(&b);
+    return m;
+}
+
+/* the contact's threaded loops (entries, candidate lists, powers, node_fc into node_fext)
+ * give the same state to the last bit with 1 and 2 threads */
+static void test_contact_threads_bitwise(void)
+{
+    fe_model *m = build_plates();
+    if (!m) return;
+    const fe_contact_model *c = m->contact;
+    CHECK(c && c->nent > 1024 && m->nchunk >= FE_PAR_MIN_CHUNKS);
+    const int steps = 400;
+    fe_state *s1 = run_with(m, 1, steps), *s2 = run_with(m, 2, steps);
+    if (s1 && s2 && c) {
+        SAME_ARRAY(s1, s2, node_x, 3 * m->nnode);
+        SAME_ARRAY(s1, s2, node_v, 3 * m->nnode);
+        SAME_ARRAY(s1, s2, node_w, 3 * m->nnode);
+        SAME_ARRAY(s1, s2, node_fext, 3 * m->nnode);
+        SAME_ARRAY(s1, s2, shell_sig, 3 * m->nshell_ip);
+        SAME_ARRAY(s1, s2, shell_epsp, m->nshell_ip);
+        SAME_ARRAY(s1, s2, part_energy, FE_NENERGY * m->npart);
+        SAME_ARRAY(s1->contact, s2->contact, node_fc, 3 * m->nnode);
+        SAME_ARRAY(s1->contact, s2->contact, ent_ft, 6 * c->nent);
+        SAME_ARRAY(s1->contact, s2->contact, if_force, 3 * c->nif);
+        CHECK(memcmp(s1->energy, s2->energy, sizeof s1->energy) == 0);
+        CHECK(s1->contact->work_nodes == s2->contact->work_nodes);
+        CHECK(s1->dt == s2->dt && s1->time == s2->time);
+        /* the contact carried the impact, slid with friction and searched again */
+        double fric = 0;
+        for (int ip = 0; ip < m->npart; ip++) fric += s1->contact->part_fric[ip];
+        CHECK(s1->energy[FE_E_contact] > 0 && fric > 0);
+        CHECK(s1->contact->nrebuild >= 2);
+        printf("contact threads 1 vs 2: %d steps, %d slave entries, %ld searches: identical; "
+               "contact energy %.3g J (friction %.3g J)\n", steps, c->nent,
+               s1->contact->nrebuild, s1->energy[FE_E_contact], fric);
+    }
+    fe_state_destroy(&s1);
+    fe_state_destroy(&s2);
+    fe_set_threads(1);
+    fe_model_destroy(&m);
+}
+
 /* von Mises stress of a plane stress state */
 static double vm(const double s[3])
 {
@@ -180,5 +265,6 @@ int main(void)
 {
     RUN(test_plane_stress_return);
     RUN(test_threads_bitwise);
+    RUN(test_contact_threads_bitwise);
     TEST_END();
 }

@@ -120,13 +120,16 @@ def run(mcrash, scen, chars="", rider="", end=None, tag="run"):
     return h5, json.loads(r.stdout)["stage1"]
 
 
-def rider_block(scen, extra):
-    """failure forces and attachment k, c: mb_position.c defaults, the scenario, then extra"""
+def rider_block(scen, extra="", text=None):
+    """failure forces and attachment k, c: mb_position.c defaults, then the scenario's rider:
+    block (the file scen, or its text), then extra"""
     vals = {"seat_failure_force": 1500.0, "grip_failure_force": 400.0, "peg_failure_force": 500.0,
             "attachment_stiffness": 2e4, "attachment_damping": 200.0}
-    m = re.search(r"^rider: \{(.*)\}", open(os.path.join(ROOT, scen)).read(), re.M)
-    for text in ([m.group(1)] if m else []) + [extra]:
-        for k, v, unit in re.findall(r"(\w+): ([0-9.eE+-]+)\s*(kN)?", text):
+    if text is None:
+        text = open(os.path.join(ROOT, scen)).read()
+    m = re.search(r"^\s*rider: \{(.*?)\}", text, re.M)
+    for part in ([m.group(1)] if m else []) + [extra]:
+        for k, v, unit in re.findall(r"(\w+): ([0-9.eE+-]+)\s*(kN)?", part):
             if k in vals:
                 vals[k] = float(v) * (1e3 if unit else 1)
     return vals

@@ -5,6 +5,9 @@
 #   docs/img/validation_fork.png      fork deformation angle vs time, MYMOSA's 20 and 30 ms marked
 #   docs/img/validation_force.png     motorcycle-car contact force (sum of the contacts) vs time
 #   docs/img/validation_velocity.png  motorcycle frame and car velocity along the heading
+#   docs/img/validation_mymosa_rider.png, docs/img/validation_413_rider.png  the rider cases:
+#       fork angle, attachment stretch, rider contact forces, head acceleration
+#       (scripts/validation_stage1.py, which also prints the event times)
 # Usage: scripts/plot_validation.sh [bin/mcrash] [output directory for the PNGs]
 set -eu
 MCRASH=${1:-bin/mcrash}
@@ -20,6 +23,9 @@ run() { # name scenario
 }
 run mymosa scenarios/mymosa_lateral_car_1100kg.yaml
 run iso413 scenarios/iso13232_413-0_13.4_sedan.yaml
+# the fork's elastic limit [rad], from the motorcycle model
+PHI_E=$(awk '/^  fork_deformation:/ { f = 1 } f && /elastic_limit:/ { print $2; exit }' \
+        scenarios/models/motorcycles/sport_208kg.yaml)
 
 # a table t [ms], fork angle [rad], contact force [kN], frame vx, car vx [m/s] from the CSV
 # columns named in its header (the car's velocity sensor: car_vel or sedan_vel)
@@ -58,7 +64,7 @@ set label 1 "MYMOSA: deforming from about 20 ms" at 21, graph 0.12 font ",8"
 set label 2 "MYMOSA: maximum at about 30 ms" at 31, graph 0.05 font ",8"
 plot "$WORK/mymosa.dat" using 1:2 with lines lw 2 title "MYMOSA lateral, 1100 kg car", \
      "$WORK/iso413.dat" using 1:2 with lines lw 2 title "413-0/13.4, 1668 kg sedan", \
-     0.05 with lines dt 3 lc rgb "black" title "elastic limit 0.05 rad", \
+     $PHI_E with lines dt 3 lc rgb "black" title "elastic limit $PHI_E rad", \
      0.2 with lines dt 4 lc rgb "black" title "wheel against the engine 0.2 rad"
 unset arrow; unset label
 
@@ -80,4 +86,13 @@ plot "$WORK/mymosa.dat" using 1:4 with lines lw 2 title "motorcycle frame, MYMOS
      208*13.4/1308 with lines dt 2 lc rgb "gray40" title "common velocity 2.13 m/s (1100 kg)", \
      208*13.4/1876 with lines dt 3 lc rgb "gray40" title "common velocity 1.49 m/s (1668 kg)"
 EOF
-echo "plot_validation: $IMG/validation_fork.png $IMG/validation_force.png $IMG/validation_velocity.png"
+
+# the rider cases: event times printed, gnuplot script written by validation_stage1.py
+"$MCRASH" run scenarios/mymosa_lateral_car_1100kg_rider.yaml --stage 1 --quiet -o "$WORK/mymosa_rider.h5" >/dev/null
+"$MCRASH" run scenarios/iso13232_413-0_13.4_sedan_rider.yaml --stage 1 --quiet -o "$WORK/413_rider.h5" >/dev/null
+python3 scripts/validation_stage1.py "$WORK/mymosa_rider.h5" car "$WORK/413_rider.h5" sedan
+gnuplot out/validation/plots.gp
+cp out/validation/mymosa_rider_events.png "$IMG/validation_mymosa_rider.png"
+cp out/validation/413_rider_events.png "$IMG/validation_413_rider.png"
+echo "plot_validation: $IMG/validation_fork.png $IMG/validation_force.png $IMG/validation_velocity.png" \
+     "$IMG/validation_mymosa_rider.png $IMG/validation_413_rider.png"

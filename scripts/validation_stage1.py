@@ -5,7 +5,9 @@
   bin/mcrash run scenarios/iso13232_413-0_13.4_sedan_rider.yaml --stage 1 -o out/413_rider.h5
   python3 scripts/validation_stage1.py out/mymosa_rider.h5 car out/413_rider.h5 sedan
 
-Prints the event times (fork past its elastic limit and at its stop, attachments failing,
+Prints the event times (fork past its elastic limit and at its stop, attachments failing (the
+first sample where the attachment's force |k d + c d'| passes its failure force; the forces are
+read from the run's own scenario text in /meta),
 pelvis and head contacts, head acceleration peak) and writes gnuplot data and a script to
 out/validation/ (gnuplot out/validation/plots.gp makes the PNGs). Reads the HDF5 file with
 h5dump (hdf5-tools); no numpy."""
@@ -67,23 +69,25 @@ def analyse(path, opp, tag, outdir):
             body[b] = (h5(path, "/stage1/bodies/%s/position" % b), h5(path, "/stage1/bodies/%s/orientation" % b))
         return body[b]
     res = {"t": t}
+    import calibrate_front as cf  # the fork's elastic limit, the rider block, attachment failure
     fork = h5(path, "/stage1/channels/moto_fork_deformation_angle")
     res["fork"] = fork
     print("%s: %s" % (tag, path))
     if fork:
-        print("  fork past its elastic limit (0.05 rad): %s ms; at the stop (0.2 rad, wheel against the engine): %s ms; largest %.3f rad"
-              % (ms(first(t, fork, lambda v: abs(v) > 0.05)), ms(first(t, fork, lambda v: abs(v) > 0.2)), max(abs(v) for v in fork)))
-    # attachments: the stretch between the mount points; failure at F/k (1500/400/500 N at 20 kN/m)
-    k = 2e4
-    for name, (a, b, F) in {"seat": ("rider_h_point", "seat_h_point", 1500), "grip_l": ("rider_grip_l", "grip_l", 400),
-                            "grip_r": ("rider_grip_r", "grip_r", 400), "peg_l": ("rider_peg_l", "peg_l", 500),
-                            "peg_r": ("rider_peg_r", "peg_r", 500)}.items():
+        pe = cf.fork_elastic_limit()
+        print("  fork past its elastic limit (%.4f rad): %s ms; at the stop (0.2 rad, wheel against the engine): %s ms; largest %.3f rad"
+              % (pe, ms(first(t, fork, lambda v: abs(v) > pe)), ms(first(t, fork, lambda v: abs(v) > 0.2)), max(abs(v) for v in fork)))
+    # attachments: the stretch between the mount points (plotted) and the first time the
+    # spring-damper force |k d + c d'| passes the failure force of the run's rider: block
+    meta = subprocess.run(["h5dump", "-A", "-a", "/meta/scenario", path], capture_output=True, text=True).stdout
+    rb = cf.rider_block(None, text=meta)
+    fail = cf.attach_times(path, t, rb)
+    for name, (a, b, key, _) in cf.ATTACH.items():
         (ba, pa), (bb, pb) = pts[a], pts[b]
         Pa, Qa = pose(ba)
         Pb, Qb = pose(bb)
-        d = [math.dist(world(Pa, Qa, i, pa), world(Pb, Qb, i, pb)) for i in range(len(t))]
-        res["stretch_" + name] = d
-        print("  attachment %-6s stretch passes F_fail/k = %.0f mm at %s ms" % (name, 1e3 * F / k, ms(first(t, d, lambda v: v > F / k))))
+        res["stretch_" + name] = [math.dist(world(Pa, Qa, i, pa), world(Pb, Qb, i, pb)) for i in range(len(t))]
+        print("  attachment %-6s (fails at %.0f N) fails at %s ms" % (name, rb[key], "never" if fail[name] is None else "%.1f" % fail[name]))
     # contacts of the pelvis with the motorcycle (seat, tank), the head with the opponent
     for ch in ["rider_pelvis_moto_fn", "rider_lower_torso_moto_fn", "rider_thigh_l_moto_fn", "rider_head_%s_fn" % opp,
                "rider_head_%s_upper_fn" % opp, "rider_upper_torso_%s_fn" % opp]:
@@ -124,7 +128,9 @@ def main():
         dat = os.path.join(outdir, tag + ".dat")
         gp += ["set output '%s'" % os.path.join(outdir, tag + "_events.png"),
                "set title '%s: fork angle, attachment stretch, contact forces, head acceleration'" % tag,
-               "set ylabel 'see key'", "set y2tics", "set ytics nomirror", "set xrange [0:300]",
+               "set ylabel 'see key'", "set y2tics", "set ytics nomirror", "set xrange [0:300]", "unset arrow", "unset label"] + [
+               "set arrow from %d, graph 0 to %d, graph 1 nohead dt 2 lc rgb 'gray40'\nset label 'MYMOSA %s %d ms' at %d, graph %.2f font ',8'"
+               % (tm, tm, what, tm, tm + 2, y) for tm, what, y in ((20, "fork", 0.97), (30, "wheel-engine", 0.93), (60, "detach", 0.97), (130, "head", 0.97))] + [
                "plot " + ", ".join(
                    ["'%s' u 1:(abs($%d)*1000) w l t 'fork angle [mrad]'" % (dat, col["fork"])] +
                    ["'%s' u 1:($%d*1000) w l t '%s stretch [mm]'" % (dat, col[k], k[8:]) for k in keys if k.startswith("stretch_") and k in ("stretch_seat", "stretch_grip_l")] +

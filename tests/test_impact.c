@@ -336,7 +336,7 @@ static void test_shipped_check(void)
 typedef struct {
     double t_contact;          /* first motorcycle-opponent contact [s] */
     double v_opp_contact;      /* opponent speed along its heading up to that step [m/s] */
-    double t_plastic, t_stop;  /* fork beyond its elastic limit (0.05 rad) and at 0.2 rad [s] */
+    double t_plastic, t_stop;  /* fork past its characteristic's elastic limit; at 0.2 rad [s] */
     double phi_max, t_phi_max; /* largest fork angle [rad] and when [s] */
     double vcar_max;           /* largest opponent CG speed along the motorcycle heading [m/s] */
     double t_vcar_max;         /* when [s] */
@@ -404,7 +404,8 @@ static mcs_status run_car(const char *path, const char *opp, car_figs *f, FILE *
         if (fsum > f->f_peak) f->f_peak = fsum, f->t_f_peak = s->t;
         double phi = fk >= 0 ? fabs(s->r1[fk].x) : 0;
         if (phi > f->phi_max) f->phi_max = phi, f->t_phi_max = s->t;
-        if (phi > 0.05 && isnan(f->t_plastic)) f->t_plastic = s->t;
+        if (fk >= 0 && phi > m->restraint1[fk].spring.pos.elastic_limit && isnan(f->t_plastic))
+            f->t_plastic = s->t;
         if (phi >= 0.2 && isnan(f->t_stop)) f->t_stop = s->t;
         double vc = mb_dot(s->kin[car].vel, h);
         if (vc > f->vcar_max) f->vcar_max = vc, f->t_vcar_max = s->t;

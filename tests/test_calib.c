@@ -12,9 +12,9 @@
 #define SMYMOSA_RIDER "scenarios/mymosa_lateral_car_1100kg_rider.yaml"
 
 typedef struct {
-    double t_yield;  /* fork hinge past its elastic limit [s] */
-    double t_stop;   /* fork hinge at its stop 0.2 rad (the wheel against the engine) [s] */
-    double phi_e;    /* the fork characteristic's elastic limit [rad] */
+    double t_yield;    /* fork hinge past its elastic limit [s] */
+    double t_stop;     /* fork hinge at its stop 0.2 rad (the wheel against the engine) [s] */
+    double phi_e;      /* the fork characteristic's elastic limit [rad] */
     double t_break[8]; /* attachment failure times [s] (NAN: intact) */
     int nattach;
 } events;

@@ -425,8 +425,7 @@ static void test_car_side_impact(void)
     while (s->step < m->nsteps && !(st = mb_step(m, s, &err))) {
         vcar = fmax(vcar, s->kin[car].vel[0]);
         double phi = fabs(s->r1[fk].x);
-        if (phi > m->restraint1[fk].spring.pos.elastic_limit && isnan(t_plastic))
-            t_plastic = s->t;
+        if (phi > m->restraint1[fk].spring.pos.elastic_limit && isnan(t_plastic)) t_plastic = s->t;
         if (phi > phi_max) phi_max = phi, t_phi_max = s->t;
     }
     CHECK(st == MCS_OK);

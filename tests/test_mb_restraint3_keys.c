@@ -255,6 +255,39 @@ static void test_neutral_and_periods(void)
     remove(out);
 }
 
+/* neutral and preload together: P = 2 N m with neutral 0.2 rad on k = 10 N m/rad gives
+ * g(0) = P + k (0 - n) = 0: a free body (no gravity) stays at rest in its initial posture */
+static void test_preload_cancels_at_neutral(void)
+{
+    const char *y =
+        "mcrash: 1\n"
+        "simulation: {end_time: 0.2 s, time_step: 100 us}\n"
+        "environment: {gravity: 0}\n"
+        "characteristics:\n"
+        "  k: {type: moment, loading: [[0, 0], [1, 10]]}\n"
+        "bodies:\n"
+        "  - {name: b, mass: 1, inertia: [0.02, 0.03, 0.05], position: [0, 0, 1], velocity: [0, 0, 0]}\n"
+        "joints:\n"
+        "  - {name: j, type: spherical, parent: ground, child: b, anchor: [0, 0, 1], restraint: k,\n"
+        "     neutral: [0, 0.2 rad, 0], preload: [0, 2 N*m, 0]}\n";
+    mcs_error err = {0};
+    mb_model *m = load_text(y, &err);
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
+    double worst = 0, gw = 0;
+    while (s && s->step < m->nsteps && mb_step(m, s, &err) == MCS_OK)
+        for (int k = 0; k < 3; k++)
+            worst = fmax(worst, fabs(s->r3[0].theta[k])), gw = fmax(gw, fabs(s->r3[0].load[k]));
+    printf("  preload 2 N m at neutral 0.2 rad: largest angle %.1e rad, moment %.1e N m\n", worst,
+           gw);
+    CHECK(s && s->step == m->nsteps);
+    CHECK(worst < 1e-12 && gw < 1e-12);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 /* ---- bad input: located errors ---- */
 
 static void test_errors(void)
@@ -296,6 +329,7 @@ int main(void)
 {
     RUN(test_preload_gravity);
     RUN(test_neutral_and_periods);
+    RUN(test_preload_cancels_at_neutral);
     RUN(test_errors);
     TEST_END();
 }

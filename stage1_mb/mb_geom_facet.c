@@ -116,9 +116,10 @@ static int edge_contact(const ell_frame *e, const double P[3], const double Rv[3
 /* one triangle with unit outward normal n and unit outward in-plane edge normals m (row i for
  * the edge v[i] -> v[i+1]), everything in the frame of e. The face test: -1 no contact through
  * the plane, 1 face contact (c filled), 0 the support point projects outside (edge region:
- * *Qnn = n'Qn and out[i] = how far outside edge i it is, for tri_edges) */
+ * *Qnn = n'Qn and out[i] = how far outside edge i it is, for tri_edges). *dp: the plane depth
+ * [m], an upper bound of the triangle's contact depth. */
 static int tri_face(const ell_frame *e, const double *v[3], const double n[3], const double m[9],
-                    mb_contact *c, double *Qnn, double out[3])
+                    mb_contact *c, double *Qnn, double out[3], double *dp)
 {
     double rel[3], Qn[3];
     mb_sub(e->c, v[0], rel);
@@ -127,6 +128,7 @@ static int tri_face(const ell_frame *e, const double *v[3], const double n[3], c
     mb_mat_vec(e->Q, n, Qn);
     *Qnn = mb_dot(n, Qn);
     double h = sqrt(*Qnn), depth = h - sd;
+    *dp = depth;
     if (!(depth > 0)) return -1;
     double p[3], pb[3];
     mb_axpy(e->c, -1.0 / h, Qn, p);
@@ -186,8 +188,8 @@ static int tri_edges(const ell_frame *e, const double *v[3], const double n[3], 
 static int tri_contact(const ell_frame *e, const double *v[3], const double n[3], const double m[9],
                        double floor, mb_contact *c)
 {
-    double Qnn, out[3];
-    int f = tri_face(e, v, n, m, c, &Qnn, out);
+    double Qnn, out[3], dp;
+    int f = tri_face(e, v, n, m, c, &Qnn, out, &dp);
     return f == 0 ? tri_edges(e, v, n, m, Qnn, out, floor, c) : f > 0;
 }
 
@@ -497,52 +499,43 @@ int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *
     enum { NCAND = 512 };
     mb_contact_clear(deepest);
     ell_frame e;
-    double lo[3], hi[3], dp[NCAND];
+    double lo[3], hi[3], dp[NCAND], qnn[NCAND], out[NCAND][3];
     int cand[NCAND], nc = 0;
     ell_in_mesh(a, pose, &e, lo, hi);
     int stack[BVH_STACK], sp = 1;
     stack[0] = 0;
     const bvh_node *nd;
+    /* face contacts first (cheap): the deepest one bounds the rest from below; the triangles
+     * in their edge regions are kept with their plane depth (an upper bound of their contact) */
     while ((nd = next_leaf(m, stack, &sp, lo, hi))) {
         for (int i = nd->first; i < nd->first + nd->count; i++) {
             int t = m->tri_order[i];
-            const double *n = m->tri_n + 3 * t;
-            double rel[3], Qn[3];
-            mb_sub(e.c, mesh_v(m, t, 0), rel);
-            double sd = mb_dot(n, rel);
-            if (!(sd > 0)) continue;
-            mb_mat_vec(e.Q, n, Qn);
-            double d = sqrt(mb_dot(n, Qn)) - sd;
-            if (!(d > 0)) continue;
-            if (nc == NCAND) /* more candidates than the buffer: evaluate them all */
-                return mb_geom_ellipsoid_mesh(a, m, pose, deepest, NULL, 0) > 0;
-            cand[nc] = t, dp[nc++] = d;
+            const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
+            mb_contact c;
+            mb_contact_clear(&c);
+            double d;
+            int f = tri_face(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, &c, qnn + nc, out[nc], &d);
+            if (f == 0) {
+                if (nc == NCAND) /* more candidates than the buffer: evaluate them all */
+                    return mb_geom_ellipsoid_mesh(a, m, pose, deepest, NULL, 0) > 0;
+                cand[nc] = t, dp[nc++] = d;
+            }
+            if (f <= 0 || !(c.depth > deepest->depth) || c.depth > max_depth) continue;
+            c.tri = t;
+            finish(&c);
+            *deepest = c;
         }
     }
-    /* face contacts first (cheap): the deepest one bounds the rest from below; then the edge
-     * regions of the triangles whose plane depth (an upper bound of theirs) can still beat it
-     * by more than rounding (coplanar neighbours of the face triangle cannot) */
-    int nedge = 0;
+    /* then the edge regions whose plane depth can still beat the best by more than rounding
+     * (coplanar neighbours of the face triangle cannot) */
     for (int i = 0; i < nc; i++) {
-        int t = cand[i];
-        const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
-        double Qnn, out[3];
-        mb_contact c;
-        mb_contact_clear(&c);
-        int f = tri_face(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, &c, &Qnn, out);
-        if (f == 0) cand[nedge] = t, dp[nedge++] = dp[i];
-        if (f <= 0 || !(c.depth > deepest->depth) || c.depth > max_depth) continue;
-        c.tri = t;
-        finish(&c);
-        *deepest = c;
-    }
-    for (int i = 0; i < nedge; i++) {
         if (dp[i] <= deepest->depth * (1 + 1e-12)) continue;
         int t = cand[i];
         const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
         mb_contact c;
         mb_contact_clear(&c);
-        if (!tri_contact(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, deepest->depth, &c) ||
+        if (!tri_edges(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, qnn[i], out[i], deepest->depth,
+                       &c) ||
             !(c.depth > deepest->depth) || c.depth > max_depth)
             continue;
         c.tri = t;

@@ -17,7 +17,8 @@
 
 static mb_ellipsoid ell(double x, double y, double z, double a, double b, double c)
 {
-    return (mb_ellipsoid){.center = {x, y, z}, .rot = {1, 0, 0, 0, 1, 0, 0, 0, 1}, .semi = {a, b, c}};
+    return (mb_ellipsoid){
+        .center = {x, y, z}, .rot = {1, 0, 0, 0, 1, 0, 0, 0, 1}, .semi = {a, b, c}};
 }
 
 static mb_mesh *make_mesh(int nv, const double *v, int nt, const int *t)
@@ -209,8 +210,8 @@ static void test_closed_path_work(void)
             /* centre on an ellipse in the x-z plane around the ridge, with a wobble in y; the
              * orientation turns back and forth about ax (closed at i = N) */
             double s = 2 * M_PI * i / N;
-            mb_ellipsoid e = ell(0.12 * cos(s), 0.03 * sin(2 * s), 0.075 + 0.02 * sin(s), 0.12,
-                                 0.09, 0.07);
+            mb_ellipsoid e =
+                ell(0.12 * cos(s), 0.03 * sin(2 * s), 0.075 + 0.02 * sin(s), 0.12, 0.09, 0.07);
             double Ra[9];
             mb_rot_axis_angle(ax, 0.4 * sin(s), Ra);
             mb_mat_mul(Ra, R0, e.rot);
@@ -282,6 +283,57 @@ static void test_sphere_bounce_energy(void)
     mb_mesh_destroy(&m);
 }
 
+/* the deepest-only query (face tests first, edges pruned by their plane depth and an overlap
+ * bound) returns the same contact as evaluating every triangle, on a curved panel where the
+ * deepest contact is often an edge's (convex and concave folds of 4 cm triangles) */
+static void test_deepest_vs_all_curved(void)
+{
+    enum { N = 30, NV = (N + 1) * (N + 1), NT = 2 * N * N };
+    static double v[3 * NV];
+    static int t[3 * NT];
+    for (int j = 0; j <= N; j++)
+        for (int i = 0; i <= N; i++) {
+            double *p = v + 3 * (j * (N + 1) + i), x = 1.2 * i / N, y = 1.2 * j / N;
+            p[0] = x, p[1] = y, p[2] = 0.04 * sin(9 * x) * cos(7 * y);
+        }
+    int k = 0;
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            int a = j * (N + 1) + i, b = a + 1, c = a + N + 1, d = c + 1;
+            int q[6] = {a, b, d, a, d, c};
+            for (int l = 0; l < 6; l++)
+                t[k++] = q[l];
+        }
+    mb_mesh *m = make_mesh(NV, v, NT, t);
+    if (!m) return;
+    unsigned seed = 11;
+    int nfeat[4] = {0};
+    for (int trial = 0; trial < 300; trial++) {
+        double x = 0.2 + 0.8 * rand_r(&seed) / RAND_MAX, y = 0.2 + 0.8 * rand_r(&seed) / RAND_MAX;
+        mb_ellipsoid e =
+            ell(x, y, 0, 0.05 + 0.07 * rand_r(&seed) / RAND_MAX,
+                0.05 + 0.07 * rand_r(&seed) / RAND_MAX, 0.04 + 0.05 * rand_r(&seed) / RAND_MAX);
+        random_rot(e.rot, &seed);
+        double up[3] = {0, 0, 1}, low[3];
+        mb_ellipsoid_support(&e, up, low);
+        e.center[2] = 0.04 * sin(9 * x) * cos(7 * y) - low[2] - 0.03 * rand_r(&seed) / RAND_MAX;
+        mb_contact all, deep;
+        int n = mb_geom_ellipsoid_mesh(&e, m, NULL, &all, NULL, 0);
+        CHECK(mb_geom_ellipsoid_mesh_deepest(&e, m, NULL, &deep) == (n > 0));
+        CHECK_NEAR(deep.depth, all.depth, 1e-15);
+        if (n == 0) continue;
+        nfeat[all.feature]++;
+        for (int i = 0; i < 3; i++) {
+            CHECK_NEAR(deep.normal[i], all.normal[i], 1e-12);
+            CHECK_NEAR(deep.point[i], all.point[i], 1e-12);
+        }
+    }
+    printf("  curved panel, deepest contact: face %d, edge %d, vertex %d\n", nfeat[1], nfeat[2],
+           nfeat[3]);
+    CHECK(nfeat[MB_FEATURE_EDGE] > 0);
+    mb_mesh_destroy(&m);
+}
+
 int main(void)
 {
     RUN(test_sphere_edge);
@@ -290,5 +342,6 @@ int main(void)
     RUN(test_flat_two_triangles);
     RUN(test_closed_path_work);
     RUN(test_sphere_bounce_energy);
+    RUN(test_deepest_vs_all_curved);
     TEST_END();
 }

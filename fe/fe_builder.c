@@ -101,11 +101,23 @@ mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_er
         mcs_status st = fe_builder_add_elem(b, part, t1, err);
         return st != MCS_OK ? st : fe_builder_add_elem(b, part, t2, err);
     }
+    int hx[8];
     for (int i = 0; i < nn; i++) {
         if (nodes[i] < 0 || nodes[i] >= b->nnode)
             return MCS_ERR(err, MCS_ERR_RANGE,
                            "fe: part '%s': element %d: node %d does not exist (%d nodes)",
                            b->part[part].name, b->nelem[k], nodes[i], b->nnode);
+    }
+    if (k == FE_KIND_HEX) { /* tetrahedra and pentahedra: degenerate hexahedra (fe_tet.c) */
+        if (!fe_solid_from_lsdyna(nodes, hx))
+            return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                           "fe: part '%s': element %d: repeated nodes that make neither a "
+                           "tetrahedron (n1 n2 n3 n4 n4 n4 n4 n4) nor a pentahedron (n1 n2 n3 "
+                           "n4 n5 n5 n6 n6)",
+                           b->part[part].name, b->nelem[k]);
+        nodes = hx;
+    }
+    for (int i = 0; i < nn && k != FE_KIND_HEX; i++) {
         for (int j = 0; j < i; j++)
             if (nodes[j] == nodes[i] && !(k == FE_KIND_SHELL && i == 3 && j == 2))
                 return MCS_ERR(err, MCS_ERR_RANGE,

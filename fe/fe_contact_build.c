@@ -5,6 +5,7 @@
 #include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -125,6 +126,13 @@ static unsigned char *exterior_faces(const fe_model *m)
             face_rec *q = &r[6 * e + f];
             for (int i = 0; i < 4; i++) q->key[i] = m->hex_node[8 * e + hex_face[f][i]];
             sort4(q->key);
+            /* tetrahedra, pentahedra (fe_tet.c): distinct nodes, padded; a triangle face then
+               matches its neighbour's whichever node is repeated */
+            for (int i = 3; i > 0; i--)
+                if (q->key[i] == q->key[i - 1]) {
+                    for (int j = i; j < 3; j++) q->key[j] = q->key[j + 1];
+                    q->key[3] = INT_MAX;
+                }
             q->hex = e;
             q->face = f;
         }
@@ -132,7 +140,8 @@ static unsigned char *exterior_faces(const fe_model *m)
     for (size_t i = 0; i < nf;) {
         size_t j = i + 1;
         while (j < nf && cmp_face(&r[i], &r[j]) == 0) j++;
-        if (j == i + 1) ext[6 * (size_t)r[i].hex + (size_t)r[i].face] = 1;
+        if (j == i + 1 && r[i].key[2] != INT_MAX) /* collapsed faces (edge, point): none */
+            ext[6 * (size_t)r[i].hex + (size_t)r[i].face] = 1;
         i = j;
     }
     free(r);
@@ -230,6 +239,13 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
                     if (!cb->ext[6 * e + f]) continue;
                     int q[4];
                     for (int i = 0; i < 4; i++) q[i] = h[hex_face[f][i]];
+                    /* a triangle face (tetrahedra, pentahedra) as a b c c, like shells */
+                    for (int r = 0; r < 3 && q[2] != q[3] &&
+                                    (q[0] == q[1] || q[1] == q[2] || q[3] == q[0]);
+                         r++) {
+                        int t = q[0];
+                        q[0] = q[1], q[1] = q[2], q[2] = q[3], q[3] = t;
+                    }
                     double d1[3], d2[3], nn[3];
                     for (int i = 0; i < 3; i++) {
                         d1[i] = m->node_x0[3 * q[2] + i] - m->node_x0[3 * q[0] + i];

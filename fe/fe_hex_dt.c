@@ -54,6 +54,7 @@ mcs_status fe_hex_dt_build(fe_model *m, mcs_error *err)
         if (p->elem_kind != FE_KIND_HEX || p->material.model == FE_MAT_RIGID) continue;
         if (!(p->lambda > 0)) continue;
         for (int e = p->elem_begin; e < p->elem_end; e++) {
+            if (fe_hex_shape(m->hex_node + 8 * e) == 4) continue; /* tetrahedra: fe_tet.c */
             double r = dil_ratio(m, p, e);
             if (!(r > 1)) continue;
             mcs_status st = fe_dt_factors_alloc(m, err);

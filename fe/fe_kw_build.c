@@ -179,14 +179,7 @@ static mcs_status add_elems(fe_builder *b, const fe_kw_deck *dk, int pid, fe_kw_
         if (e->pid[i] != pid) continue;
         int c[8];
         for (int j = 0; j < k; j++) c[j] = map[fe_kw_node_index(dk, e->node[(size_t)k * i + j])];
-        if (t == FE_KW_SOLID)
-            for (int j = 1; j < 8; j++)
-                for (int q = 0; q < j; q++)
-                    if (c[j] == c[q])
-                        return at(dk, e->loc[i], err, MCS_ERR_UNSUPPORTED,
-                                  "*ELEMENT_SOLID %d: a degenerate hexahedron (tetrahedron or "
-                                  "pentahedron); only 8-node hexahedra are built",
-                                  e->id[i]);
+        /* solids: tetrahedra and pentahedra are checked and reordered by the builder */
         mcs_error kerr = {0};
         mcs_status st = fe_builder_add_elem(b, ip, c, &kerr);
         if (st)

@@ -174,6 +174,9 @@ static mcs_status h_solid(kw_ctx *c, const kw_card *cd, int n)
         } else {
             TRY(elem_nodes(c, at, 2, 8, nd));
         }
+        /* a tetrahedron with N5..N8 left blank: N4 repeated, as LS-DYNA writes it */
+        if (nd[3] && !nd[4] && !nd[5] && !nd[6] && !nd[7])
+            nd[4] = nd[5] = nd[6] = nd[7] = nd[3];
         TRY(kw_add_elem(c, FE_KW_SOLID, id, pid, nd, NULL, loc_of(&cd[i])));
     }
     return MCS_OK;

@@ -1,6 +1,7 @@
 /* fe_kw_write: a deck written as LS-DYNA keywords in fixed columns (standard, I10 or long),
  * values converted from SI to the deck's units; and the deck of a built fe_model. */
 #include "fe/fe_kw_impl.h"
+#include "fe/fe_solid.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -379,6 +380,11 @@ mcs_status fe_kw_from_model(const fe_model *m, const double *x, const char *titl
         for (int e = 0; e < ne[k] && !st; e++) {
             int c[8];
             for (int j = 0; j < nn[k]; j++) c[j] = conn[k][(size_t)nn[k] * e + j] + 1;
+            if (k == FE_KIND_HEX) { /* a tetrahedron as n1 n2 n3 n4 n4 n4 n4 n4 (fe_tet.c) */
+                int h[8];
+                memcpy(h, c, sizeof h);
+                fe_solid_to_lsdyna(h, c);
+            }
             st = fe_kw_deck_add_elem(d, et[k], e + 1, part[k][e] + 1, c, err);
         }
     for (int i = 0; i < m->nnode && !st; i++) {

@@ -31,7 +31,9 @@ static double elem_step(const fe_model *m, const fe_part *p, int e, double *mass
         }
         double vol = fe_hex_gradients(xe, b, a);
         *mass = p->material.density * vol;
-        *nn = 8;
+        int u[8];
+        *nn = fe_hex_distinct(c, u); /* tetrahedra, pentahedra: distinct nodes (fe_tet.c) */
+        memcpy(c, u, sizeof u);
         return fe_hex_length(xe, vol) / p->wave_speed;
     }
     if (p->elem_kind == FE_KIND_SHELL) {
@@ -81,10 +83,11 @@ mcs_status fe_massscale_build(fe_model *m, mcs_error *err)
         for (int e = p->elem_begin; e < p->elem_end; e++) {
             double mass;
             int c[8], nn;
-            double dte = sc * elem_step(m, p, e, &mass, c, &nn);
+            /* the step with the factor already there (tetrahedra: fe_tet.c) */
+            double dte = sc * elem_step(m, p, e, &mass, c, &nn) * m->elem_dt_factor[off + e];
             if (!(dte < target)) continue;
             double f = target / dte, dm = mass * (f * f - 1);
-            m->elem_dt_factor[off + e] = f;
+            m->elem_dt_factor[off + e] *= f;
             for (int i = 0; i < nn; i++) {
                 /* shells: the rotary inertia grows with the translational mass */
                 if (p->elem_kind == FE_KIND_SHELL && m->node_mass[c[i]] > 0)

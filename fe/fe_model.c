@@ -138,7 +138,9 @@ static mcs_status lump_masses(fe_model *m, mcs_error *err)
                                    "m^3: inverted or degenerate (order the bottom face "
                                    "counter-clockwise seen from the top)",
                                    p->name, e - p->elem_begin, c[0], c[1], c[2], c[3], v);
-                for (int i = 0; i < 8; i++) m->node_mass[c[i]] += rho * v / 8;
+                /* an equal share per distinct node (tetrahedra, pentahedra: fe_tet.c) */
+                int u[8], nu = fe_hex_distinct(c, u);
+                for (int i = 0; i < nu; i++) m->node_mass[u[i]] += rho * v / nu;
             } else if (p->elem_kind == FE_KIND_SHELL) {
                 double xe[4][3], fr[3][3], xl[4], yl[4];
                 const int *c = m->shell_node + 4 * e;

@@ -34,6 +34,7 @@ mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err)
         }
     }
     st = fe_discrete_build(b, m, err);
+    if (!st) st = fe_tet_dt_build(m, err);
     if (!st) st = fe_massscale_build(m, err);
     if (!st) st = fe_hex_dt_build(m, err);
     if (!st) st = fe_rigid_build(m, err);

@@ -57,6 +57,22 @@ mcs_status fe_massscale_build(fe_model *m, mcs_error *err);
 /* step factors of lightly held one-point hexes (fe_hex_dt.c), after mass scaling */
 mcs_status fe_hex_dt_build(fe_model *m, mcs_error *err);
 
+/* tetrahedra and pentahedra as degenerate hexahedra (fe_tet.c). Shape of a hex connectivity:
+ * 8 (8 distinct nodes), 4 (tetrahedron, slots n1 n2 n3 n3 n4 n4 n4 n4), 6 (pentahedron,
+ * n1 n2 n3 n4 n5 n5 n6 n6), 0 (another degenerate pattern) */
+int fe_hex_shape(const int c[8]);
+/* LS-DYNA's *ELEMENT_SOLID list (tetrahedron n1 n2 n3 n4 n4 n4 n4 n4) into hex slots; the
+ * shape (8, 4, 6) or 0 for an unsupported pattern */
+int fe_solid_from_lsdyna(const int in[8], int out[8]);
+/* hex slots back into LS-DYNA's list */
+void fe_solid_to_lsdyna(const int c[8], int out[8]);
+/* the distinct nodes of hex slots, in slot order; their count */
+int fe_hex_distinct(const int c[8], int u[8]);
+/* largest omega^2 of a lone linear tetrahedron with lumped mass rho V / 4 [1/s^2] */
+double fe_tet_omega2(const double x[4][3], double rho, double lambda, double mu);
+/* step factors of the tetrahedra from their own highest frequency (before mass scaling) */
+mcs_status fe_tet_dt_build(fe_model *m, mcs_error *err);
+
 /* moving rigid walls with mass (fe_wall.c): descriptor check (fe_builder_add_wall), model
  * checks (fe_solid_finish), state reset, and the wall update after the node update (reads
  * wall_force at t, writes wall_x (t + dt), wall_v (t + dt/2), kinetic energy and works) */

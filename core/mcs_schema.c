@@ -703,6 +703,8 @@ static const mcs_skey spring_keys[] = {
     Q("stiffness", MCS_DIM_STIFFNESS, GE, 0, 0, "linear stiffness, F = k (l - l0) [N/m]"),
     C("curve", LEN, FRC, 2, 0, 0, "[[elongation m, force N], ...] instead of stiffness"),
     Q("damping", MCS_DIM_DAMPING, GE, 0, 0, "viscous damping, F = c dl/dt [N s/m]"),
+    S("part", NE, "spring part its energies are reported under (default \"springs\"); not "
+                  "an element part's name"),
     END,
 };
 static const mcs_smap spring_map = {.what = "spring", .keys = spring_keys};

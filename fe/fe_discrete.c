@@ -140,14 +140,44 @@ static double spring_stiffness(const fe_spring *sp)
     return k;
 }
 
+int fe_spring_part_find(const fe_model *m, const char *name)
+{
+    for (int i = 0; i < m->nspring_part; i++)
+        if (strcmp(m->spring_part[i], name) == 0) return i;
+    return -1;
+}
+
+/* the spring part named `name` (created on first use); a name of its own */
+static mcs_status spring_part(const fe_builder *b, fe_model *m, const char *name, int *out,
+                              mcs_error *err)
+{
+    *out = fe_spring_part_find(m, name);
+    if (*out >= 0) return MCS_OK;
+    if (fe_builder_find_part(b, name) >= 0)
+        return MCS_ERR(err, MCS_ERR_KEY,
+                       "fe: spring part '%s' has the name of an element part: give springs a "
+                       "part name of their own",
+                       name);
+    if (strlen(name) >= FE_NAME_MAX)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: spring part name longer than %d characters",
+                       FE_NAME_MAX - 1);
+    /* at most one part per spring: nspring slots allocated with the springs */
+    *out = m->nspring_part++;
+    snprintf(m->spring_part[*out], FE_NAME_MAX, "%s", name);
+    return MCS_OK;
+}
+
 static mcs_status add_springs(const fe_builder *b, fe_model *m, unsigned char *mark, mcs_error *err)
 {
+    mcs_status st = MCS_OK;
     m->nspring = b->nspring;
     m->dt_discrete = INFINITY;
     if (b->nspring == 0) return MCS_OK;
     m->spring = calloc((size_t)b->nspring, sizeof *m->spring);
-    if (!m->spring) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (springs)");
-    m->bytes += sizeof *m->spring * (size_t)b->nspring;
+    m->spring_part = calloc((size_t)b->nspring, sizeof *m->spring_part);
+    if (!m->spring || !m->spring_part)
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (springs)");
+    m->bytes += (sizeof *m->spring + sizeof *m->spring_part) * (size_t)b->nspring;
     for (int i = 0; i < b->nspring; i++) {
         const fe_spring_desc *d = &b->spring[i];
         fe_spring *sp = &m->spring[i];
@@ -176,6 +206,8 @@ static mcs_status add_springs(const fe_builder *b, fe_model *m, unsigned char *m
                            "fe: %s: its ends coincide at t = 0 (no line of action)", what);
         sp->stiffness = d->stiffness;
         sp->damping = d->damping;
+        st = spring_part(b, m, d->part[0] ? d->part : "springs", &sp->part, err);
+        if (st) return st;
         sp->ncurve = d->ncurve;
         memcpy(sp->curve, d->curve, sizeof sp->curve);
     }
@@ -223,6 +255,12 @@ mcs_status fe_discrete_build(const fe_builder *b, fe_model *m, mcs_error *err)
 
 mcs_status fe_discrete_steps(fe_model *m, mcs_error *err) { return spring_steps(m, err); }
 
+double fe_spring_part_energy(const fe_model *m, const fe_state *s, int sp, fe_energy_kind k)
+{
+    if (sp < 0 || sp >= m->nspring_part || k < 0 || k >= FE_NENERGY) return NAN;
+    return s->spring_part_energy[FE_NENERGY * sp + k];
+}
+
 static double spring_force(const fe_spring *sp, double d)
 {
     if (sp->ncurve == 0) return sp->stiffness * d;
@@ -253,8 +291,11 @@ void fe_discrete_forces(const fe_model *m, fe_state *s)
         double f = spring_force(sp, el), fd = sp->damping * rate;
         /* trapezoidal works over the elongation increment since the last evaluation */
         double dd = el - s->spring_d[i];
-        e_int += 0.5 * (s->spring_f[i] + f) * dd;
-        e_diss += 0.5 * (s->spring_fd[i] + fd) * dd;
+        double wi = 0.5 * (s->spring_f[i] + f) * dd, wd = 0.5 * (s->spring_fd[i] + fd) * dd;
+        e_int += wi;
+        e_diss += wd;
+        s->spring_part_energy[FE_NENERGY * sp->part + FE_E_internal] += wi;
+        s->spring_part_energy[FE_NENERGY * sp->part + FE_E_dissipated] += wd;
         s->spring_f[i] = f;
         s->spring_fd[i] = fd;
         s->spring_d[i] = el;

@@ -408,7 +408,8 @@ static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[F
 }
 
 /* the *ELEMENT_DISCRETE of part p as springs (*MAT_S01) or dampers (*MAT_S02), force x S */
-static mcs_status add_springs(fe_builder *b, const fe_kw_deck *dk, const fe_kw_part *p, int *map,
+static mcs_status add_springs(fe_builder *b, const fe_kw_deck *dk, const fe_kw_part *p,
+                              const char *pname, int *map,
                               mcs_error *err)
 {
     const fe_kw_section *s = fe_kw_find_section(dk, p->secid);
@@ -436,6 +437,7 @@ static mcs_status add_springs(fe_builder *b, const fe_kw_deck *dk, const fe_kw_p
         fe_spring_desc d;
         memset(&d, 0, sizeof d);
         snprintf(d.name, sizeof d.name, "discrete_%d", e->id[i]);
+        snprintf(d.part, sizeof d.part, "%s", pname); /* energies reported per deck part */
         for (int j = 0; j < 2; j++) {
             int di = fe_kw_node_index(dk, e->node[2 * i + j]);
             mcs_status st = map[di] >= 0 ? MCS_OK
@@ -474,7 +476,7 @@ mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
         memcpy(d.name, names[k], FE_NAME_MAX);
         st = part_velocity(dk, k, d.initial_velocity, err);
         if (!st && part_etype(dk, p->id) == FE_KW_DISCRETE) {
-            st = add_springs(b, dk, p, map, err);
+            st = add_springs(b, dk, p, names[k], map, err);
             continue;
         }
         if (!st && part_etype(dk, p->id) == -1) {

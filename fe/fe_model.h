@@ -299,6 +299,8 @@ typedef struct fe_model {
     int node_acc_stride;   /* partial sums per node chunk: FE_NACC_FIXED + npart + 3 FE_WALL_MAX */
     int nnode_acc;         /* nnode_chunk x node_acc_stride [-]                            */
     int nshell_rate;       /* nshell_ip when a shell part has a rate factor, else 0 [-]    */
+    int nspring_part;      /* spring parts (energies per part, fe_discrete.c) [-]          */
+    char (*spring_part)[FE_NAME_MAX]; /* their names (nspring_part)                        */
 } fe_model;
 
 #define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */
@@ -360,6 +362,8 @@ typedef struct {
     int ncurve;                    /* > 0: F = curve(l - l0) instead of k [-]              */
     double curve[FE_CURVE_MAX][2]; /* (elongation [m], force [N]), elongation increasing    */
     double damping;                /* F = c dl/dt [N s/m]                                   */
+    char part[FE_NAME_MAX];        /* spring part its energies are reported under ("":
+                                      "springs"); a name of its own, not an element part's    */
 } fe_spring_desc;
 
 /* a point mass: on one node, on the node of a part nearest to a point, or split equally
@@ -374,6 +378,8 @@ typedef struct {
 } fe_mass_desc;
 
 mcs_status fe_builder_add_spring(fe_builder *b, const fe_spring_desc *d, mcs_error *err);
+/* index of a spring part by name, -1 if none */
+int fe_spring_part_find(const struct fe_model *m, const char *name);
 mcs_status fe_builder_add_mass(fe_builder *b, const fe_mass_desc *d, mcs_error *err);
 
 #endif

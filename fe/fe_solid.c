@@ -51,11 +51,13 @@ mcs_status fe_solid_finish(fe_model *m, mcs_error *err)
 void fe_solid_free(fe_model *m)
 {
     free(m->spring);
+    free(m->spring_part);
     free(m->body);
     free(m->body_node);
     free(m->body_r0);
     free(m->elem_dt_factor);
     m->spring = NULL;
+    m->spring_part = NULL;
     m->body = NULL;
     m->body_node = NULL;
     m->body_r0 = NULL;

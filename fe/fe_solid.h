@@ -18,6 +18,7 @@ typedef struct fe_spring {
     double curve[FE_CURVE_MAX][2]; /* (elongation [m], force [N])                             */
     double damping;                /* [N s/m]                                                 */
     char name[FE_NAME_MAX];
+    int part;                      /* its spring part (m->spring_part) [-]                    */
 } fe_spring;
 
 /* a rigid body: one rigid part's nodes moving as one 6-DOF body */

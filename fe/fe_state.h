@@ -98,6 +98,7 @@ typedef struct {
     X(double, spring_f, nspring, 1, "N", "spring force, tension positive")                         \
     X(double, spring_fd, nspring, 1, "N", "damper force, tension positive")                        \
     X(double, spring_d, nspring, 1, "m", "elongation at the last force evaluation")                \
+    X(double, spring_part_energy, nspring_part, FE_NENERGY, "J", "energies of each spring part")   \
     X(double, body_x, nbody, 3, "m", "rigid body centre of mass")                                  \
     X(double, body_v, nbody, 3, "m/s", "rigid body velocity at t + dt/2")                          \
     X(double, body_rot, nbody, 9, "-", "rigid body rotation from t = 0 (row-major)")              \
@@ -176,5 +177,7 @@ void fe_set_threads(int n);
 double fe_stable_dt(const fe_model *m, const fe_state *s);
 /* energies of one part [J] (FE_E_* index) */
 double fe_part_energy(const fe_model *m, const fe_state *s, int part, fe_energy_kind k);
+/* energies of one spring part (internal: elastic, dissipated: dampers) [J] (fe_discrete.c) */
+double fe_spring_part_energy(const fe_model *m, const fe_state *s, int sp, fe_energy_kind k);
 
 #endif

@@ -78,6 +78,8 @@ static mcs_status add_springs(fe_builder *b, const mcs_node *list, mcs_error *er
         if (!st) st = read_end(get(n, "b"), &d.end[1], err);
         d.stiffness = mcs_node_num_or(n, "stiffness", 0);
         d.damping = mcs_node_num_or(n, "damping", 0);
+        const char *part = mcs_node_str(get(n, "part")); /* spring part (energies) */
+        if (part) snprintf(d.part, sizeof d.part, "%s", part);
         if (!st && given(n, "curve")) st = read_table(get(n, "curve"), d.curve, &d.ncurve, err);
         if (st) return st;
         mcs_error kerr = {0};

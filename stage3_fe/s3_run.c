@@ -2,6 +2,7 @@
  * allocated before the loop; the loop calls fe_step and appends rows to results series at
  * the output rate. */
 #include "stage3_fe/s3_run.h"
+#include "stage3_fe/s3_parts.h"
 #include "stage3_fe/s3_restraints.h"
 
 #include "core/mcs_progress.h"
@@ -55,6 +56,7 @@ typedef struct {
     mcs_results_series *con_f[FE_CONTACT_MAX], *con_e[FE_CONTACT_MAX], *ell_f[FE_ELLIPSOID_MAX];
     double *disp; /* [nnode, 3] */
     s3_restraint_out rest; /* airbags and retractors (s3_restraints.c) */
+    s3_part_out parts;     /* per-part energies (s3_parts.c) */
 } s3_out;
 
 /* /stage3/contact/<name>/{force [nt,3] N, energy [nt] J}, /stage3/ellipsoid/<name>/force */
@@ -108,6 +110,7 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
     if (!st) st = open_contact_series(r, m, o, err);
     if (!st) st = mcs_results_field_series(r, 3, (size_t)m->nnode, &o->ftime, &o->fdisp, err);
     if (!st) st = s3_restraint_open(r, m, &o->rest, err);
+    if (!st) st = s3_parts_open(r, m, &o->parts, err);
     return st;
 }
 
@@ -122,6 +125,7 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
     }
     if (!st) st = s3_restraint_sample(s, &o->rest, err);
     if (!st) st = sample_contact(m, s, o, err);
+    if (!st) st = s3_parts_sample(m, s, &o->parts, err);
     return st;
 }
 
@@ -211,6 +215,7 @@ mcs_status s3_run(const s3_problem *p, const s3_run_opts *ro, s3_summary *sum, m
     mcs_results_abort(&r);
     free(o.disp);
     s3_restraint_out_free(&o.rest);
+    s3_parts_free(&o.parts);
     fe_state_destroy(&s);
     sum->wall_time_s = now_s() - wall0;
     return st;

@@ -2,6 +2,7 @@
  * kernel (fe_discrete.c, fe_gravity.c), against closed forms. */
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
+#include "fe/fe_builder_impl.h"
 
 static mcs_status add_free_node(fe_builder *b, double x, double y, double z, int *idx)
 {
@@ -333,8 +334,74 @@ static void test_point_masses_and_errors(void)
     fe_builder_destroy(&b);
 }
 
+/* two spring parts ("front": k1, "rear": k2), each a mass on an anchored spring oscillating:
+ * a linear spring's elastic energy summed with the trapezoidal rule over the elongation
+ * increments telescopes to 1/2 k x^2 (x the elongation now), so each part's internal energy is
+ * exactly its spring's 1/2 k x^2, and the two parts add up to the global internal energy
+ * (the only other part is an untouched hex); a spring named after an element part is refused */
+static void test_spring_part_energies(void)
+{
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    add_dummy_part(b);
+    const double k[2] = {4000, 9000}, mass = 1.5;
+    const char *pn[2] = {"front", "rear"};
+    int nd[2];
+    for (int i = 0; i < 2; i++) {
+        CHECK(add_free_node(b, 0, 0.5 * i, 0, &nd[i]) == MCS_OK);
+        fe_mass_desc md = {.node = nd[i], .mass = mass};
+        CHECK(fe_builder_add_mass(b, &md, &err) == MCS_OK);
+        fe_spring_desc sd = {.stiffness = k[i]};
+        snprintf(sd.name, sizeof sd.name, "s%d", i);
+        snprintf(sd.part, sizeof sd.part, "%s", pn[i]);
+        sd.end[0].node = nd[i];
+        sd.end[1].node = -1;
+        sd.end[1].point[0] = 0.1, sd.end[1].point[1] = 0.5 * i;
+        CHECK(fe_builder_add_spring(b, &sd, &err) == MCS_OK);
+    }
+    fe_opts o = fe_opts_default();
+    o.dt_max = 1e-5;
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        fe_builder_destroy(&b);
+        return;
+    }
+    CHECK(m->nspring_part == 2 && fe_spring_part_find(m, "rear") == 1);
+    m->node_v0[3 * nd[0]] = 0.3, m->node_v0[3 * nd[1]] = -0.2;
+    fe_state *s;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    double emax = 0;
+    for (int n = 0; n < 3000 && fe_step(m, s) == MCS_OK; n++) {
+        double sum = 0;
+        for (int i = 0; i < 2; i++) {
+            double x = s->spring_d[i], e = fe_spring_part_energy(m, s, i, FE_E_internal);
+            emax = fmax(emax, fabs(e - 0.5 * k[i] * x * x) / (0.5 * mass * 0.09));
+            sum += e;
+        }
+        CHECK_NEAR(sum, s->energy[FE_E_internal], 1e-12 * 0.5 * mass * 0.09);
+    }
+    printf("  spring parts: |E_part - k x^2/2| <= %.2e of the energy, parts sum to the global "
+           "internal energy\n",
+           emax);
+    CHECK(emax < 1e-10);
+    CHECK(fe_spring_part_energy(m, s, 0, FE_E_internal) > 0);
+    CHECK(isnan(fe_spring_part_energy(m, s, 2, FE_E_internal)));
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+    /* a spring part named after an element part */
+    snprintf(b->spring[0].part, FE_NAME_MAX, "dummy");
+    mcs_error e2 = {0};
+    CHECK(fe_model_create(b, &o, &m, &e2) == MCS_ERR_KEY);
+    CHECK_STR_CONTAINS(e2.msg, "spring part 'dummy'");
+    fe_builder_destroy(&b);
+}
+
 int main(void)
 {
+    RUN(test_spring_part_energies);
     RUN(test_spring_mass_period);
     RUN(test_spring_damper_decay);
     RUN(test_spring_curve);

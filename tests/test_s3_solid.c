@@ -54,6 +54,48 @@ static void test_free_fall_with_mass(void)
     mcs_results_close(&h);
 }
 
+/* two spring parts from a scenario: /stage3/parts/<part>/energy/internal is 1/2 k x^2 of each
+ * (x from the block's displacement: the springs hold it from both sides) and the parts plus
+ * the block add up to /stage3/energy/internal */
+static void test_spring_parts_output(void)
+{
+    char scn[128], out[128];
+    snprintf(scn, sizeof scn, "%s/sparts.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/sparts.h5", tmpdir);
+    write_text(scn, "mcrash: 1\nname: sparts\nsimulation: {end_time: 3 ms, output_rate: 10 kHz}\n"
+                    "fe:\n  parts:\n    - name: block\n"
+                    "      mesh: {generate: box, size: [20 mm, 20 mm, 20 mm], divisions: [2, 2, 2]}\n"
+                    "      section: {type: solid}\n"
+                    "      material: {model: elastic, density: 1000, youngs_modulus: 10 GPa, poisson: 0.3}\n"
+                    "      initial_velocity: [0.2 m/s, 0, 0]\n"
+                    "  springs:\n"
+                    "    - {name: l, part: left, a: {part: block, point: [10 mm, 10 mm, 10 mm]},\n"
+                    "       b: {point: [-0.1, 0.01, 0.01]},\n"
+                    "       stiffness: 2 N/mm}\n"
+                    "    - {name: r, part: right, a: {part: block, point: [10 mm, 10 mm, 10 mm]},\n"
+                    "       b: {point: [0.12, 0.01, 0.01]},\n"
+                    "       stiffness: 5 N/mm}\n");
+    s3_summary sum;
+    mcs_error err = {0};
+    CHECK(run_file(scn, out, &sum, &err) == MCS_OK);
+    if (err.status) printf("  %s\n", err.msg);
+    mcs_results *h = NULL;
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    double el = last_of(h, "/stage3/parts/left/energy/internal");
+    double er = last_of(h, "/stage3/parts/right/energy/internal");
+    double eb = last_of(h, "/stage3/parts/block/energy/internal");
+    double et = last_of(h, "/stage3/energy/internal");
+    printf("  spring parts in /stage3: left %.6g J, right %.6g J, block %.3g J, global %.6g J\n",
+           el, er, eb, et);
+    CHECK(el > 0 && er > 0);
+    CHECK_REL(el + er + eb, et, 1e-12);
+    /* both springs hold the block's centre node on one line: elongations u and -u, so
+       E_left / E_right = (k_l u^2 / 2) / (k_r u^2 / 2) = k_l / k_r */
+    CHECK_REL(el / er, 2.0 / 5.0, 1e-6);
+    mcs_results_close(&h);
+}
+
 /* bad spring and mass keys are located at FILE:LINE:COL */
 static void test_spring_keys_located(void)
 {
@@ -217,6 +259,7 @@ int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_s3s_XXXXXX");
     if (!mkdtemp(tmpdir)) return 1;
+    RUN(test_spring_parts_output);
     RUN(test_free_fall_with_mass);
     RUN(test_spring_keys_located);
     RUN(test_foam_pad_crush);

@@ -304,7 +304,7 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
             const double *x = s->node_x + 3 * n;
             double *ft = cs->ell_ft + 3 * j;
             double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]}, pb[3], qb[3], dir[3];
-            const double ht = 0; /* nodes meet the ellipsoid with their mid-surface */
+            const double ht = c->ell_ht[j]; /* shell nodes meet it at t/2, solids at 0 */
             if (fe_dot(r, r) > (amax + ht) * (amax + ht)) goto release;
             for (int k = 0; k < 3; k++) pb[k] = R[k] * r[0] + R[3 + k] * r[1] + R[6 + k] * r[2];
             double g = fe_ellipsoid_nearest(E->semi, pb, qb) - ht;

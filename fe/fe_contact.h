@@ -106,6 +106,7 @@ typedef struct fe_contact_model {
     double k_cap;                /* stiffness cap: k (1/m_s + 1/m_m) dt0^2 <= k_cap [-]        */
     double dt0;                  /* stable step the cap refers to [s]                          */
     size_t bytes;                /* memory held [B]                                            */
+    double *ell_ht;              /* (nell_node) half shell thickness at each ellipsoid node [m] */
 } fe_contact_model;
 
 /* called by fe_model_create once the model is frozen (masses, dt_initial known) */

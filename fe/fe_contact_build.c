@@ -381,12 +381,14 @@ static void quat_to_R(const double q0[4], double R[9])
 }
 
 static mcs_status build_ellipsoids(const fe_builder *b, fe_contact_model *c, const fe_model *m,
-                                   unsigned char *mark, mcs_error *err)
+                                   unsigned char *mark, const double *shell_ht, mcs_error *err)
 {
     c->nell = b->nellipsoid;
     c->ell = calloc((size_t)(c->nell ? c->nell : 1), sizeof *c->ell);
     c->ell_node = malloc(sizeof(int) * (size_t)(c->nell ? c->nell : 1) * (size_t)m->nnode);
-    if (!c->ell || !c->ell_node) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
+    c->ell_ht = malloc(sizeof(double) * (size_t)(c->nell ? c->nell : 1) * (size_t)m->nnode);
+    if (!c->ell || !c->ell_node || !c->ell_ht)
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
     unsigned char *mk = malloc((size_t)m->nnode);
     if (!mk) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
     for (int i = 0; i < c->nell; i++) {
@@ -406,7 +408,10 @@ static mcs_status build_ellipsoids(const fe_builder *b, fe_contact_model *c, con
         }
         E->node_begin = c->nell_node;
         for (int n = 0; n < m->nnode; n++)
-            if (mark[n] && m->node_mass[n] > 0) c->ell_node[c->nell_node++] = n;
+            if (mark[n] && m->node_mass[n] > 0) {
+                c->ell_ht[c->nell_node] = shell_ht[n]; /* shells meet it at t/2 */
+                c->ell_node[c->nell_node++] = n;
+            }
         E->node_end = c->nell_node;
     }
     free(mk);
@@ -456,7 +461,7 @@ void fe_contact_model_free(fe_model *m)
     free(c->iface), free(c->pass), free(c->seg_node), free(c->seg_part), free(c->seg_solid);
     free(c->seg_ht), free(c->seg_k);
     free(c->ent_node), free(c->ent_ht), free(c->nbr_off), free(c->nbr);
-    free(c->touch), free(c->ell), free(c->ell_node);
+    free(c->touch), free(c->ell), free(c->ell_node), free(c->ell_ht);
     free(c);
     m->contact = NULL;
 }
@@ -503,7 +508,7 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
         }
     }
     if (!st && any_self) st = build_neighbours(c, m, err);
-    if (!st) st = build_ellipsoids(b, c, m, cb.mark, err);
+    if (!st) st = build_ellipsoids(b, c, m, cb.mark, cb.shell_ht, err);
     if (!st) st = build_touch(c, m, cb.mark, err);
     if (!st) {
         search_margin(c, m);
@@ -514,6 +519,7 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
                     (size_t)c->nseg * (4 * sizeof(int) + sizeof(int) + 1 + 2 * sizeof(double)) +
                     (size_t)c->nent * (sizeof(int) + sizeof(double)) +
                     sizeof(int) * ((size_t)c->nnode_touch + (size_t)c->nell_node) +
+                    sizeof(double) * (size_t)c->nell_node +
                     sizeof *c->ell * (size_t)c->nell;
         m->bytes += c->bytes;
     }

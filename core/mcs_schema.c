@@ -719,6 +719,9 @@ static const mcs_skey fe_mass_keys[] = {
 static const mcs_smap fe_mass_map = {.what = "point mass", .keys = fe_mass_keys};
 static const mcs_skey mass_scaling_keys[] = {
     Q("time_step", MCS_DIM_TIME, REQ | GT, 0, 0, "target step, safety factor included [s]"),
+    I("check_interval", GE, 0, 0, "re-check the elements every this many cycles during the run, "
+                                  "adding mass where the step fell below the target (0: at t = 0 "
+                                  "only, the default)"),
     END,
 };
 static const mcs_smap mass_scaling_map = {.what = "mass scaling", .keys = mass_scaling_keys};

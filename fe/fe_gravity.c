@@ -8,7 +8,7 @@ void fe_gravity_forces(const fe_model *m, fe_state *s)
     const double *g = m->opts.gravity;
     if (g[0] == 0 && g[1] == 0 && g[2] == 0) return;
     for (int n = 0; n < m->nnode; n++) {
-        const double mass = m->node_mass[n];
+        const double mass = m->node_mass[n] + (m->nms_node ? s->node_dm[n] : 0);
         double *f = s->node_fext + 3 * n;
         f[0] += mass * g[0];
         f[1] += mass * g[1];

@@ -179,6 +179,9 @@ typedef struct {
     double gravity[3];          /* acceleration of gravity on every node with mass [m/s^2] (0) */
     double mass_scaling_dt;     /* target step, safety factor included: elements whose step is
                                    smaller get mass so theirs is this (LS-DYNA DT2MS < 0); 0 off [s] */
+    int mass_scaling_interval;  /* > 0: also during the run, every this many cycles, elements
+                                   whose step fell below the target get mass (fe_massscale.c);
+                                   0: at t = 0 only [-]                                        */
 } fe_opts;
 
 fe_opts fe_opts_default(void);
@@ -300,6 +303,9 @@ typedef struct fe_model {
     int nnode_acc;         /* nnode_chunk x node_acc_stride [-]                            */
     int nshell_rate;       /* nshell_ip when a shell part has a rate factor, else 0 [-]    */
     int nspring_part;      /* spring parts (energies per part, fe_discrete.c) [-]          */
+    int nms_node, nms_elem; /* run-time mass scaling: nnode, nelem (0 when off) [-]        */
+    double *elem_ms0;      /* (nms_elem) density factor of the t = 0 mass scaling (1 none) [-] */
+    double *elem_mass0;    /* (nms_elem) element mass at t = 0 without scaling [kg]        */
     char (*spring_part)[FE_NAME_MAX]; /* their names (nspring_part)                        */
 } fe_model;
 

@@ -16,6 +16,8 @@ static mcs_status check_opts(const fe_model *m, mcs_error *err)
             return MCS_ERR(err, MCS_ERR_RANGE, "fe: options: gravity is not finite");
     if (!(o->mass_scaling_dt >= 0) || !isfinite(o->mass_scaling_dt))
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: options: mass scaling time step must be >= 0");
+    if (o->mass_scaling_interval < 0)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: options: mass scaling check interval must be >= 0");
     return MCS_OK;
 }
 
@@ -56,6 +58,9 @@ void fe_solid_free(fe_model *m)
     free(m->body_node);
     free(m->body_r0);
     free(m->elem_dt_factor);
+    free(m->elem_ms0);
+    free(m->elem_mass0);
+    m->elem_ms0 = m->elem_mass0 = NULL;
     m->spring = NULL;
     m->spring_part = NULL;
     m->body = NULL;
@@ -69,4 +74,5 @@ void fe_solid_reset(const fe_model *m, fe_state *s)
     memset(s->free_energy, 0, sizeof s->free_energy);
     fe_rigid_reset(m, s);
     fe_wall_reset(m, s);
+    fe_massscale_reset(m, s);
 }

@@ -55,6 +55,12 @@ void fe_rigid_reset(const fe_model *m, fe_state *s);
 /* m->elem_dt_factor, all 1, unless it exists already (mass scaling, fe_hex_dt.c) */
 mcs_status fe_dt_factors_alloc(fe_model *m, mcs_error *err);
 mcs_status fe_massscale_build(fe_model *m, mcs_error *err);
+/* run-time mass scaling (opts.mass_scaling_interval > 0): state reset; and, in the stable-step
+ * stage, the re-check every interval cycles: elements whose step fell below the target get mass
+ * (node_dm, node_din, elem_ms), its kinetic energy goes into the external work; returns the
+ * smallest step (no safety factor) of the whole model with the scaled elements' own */
+void fe_massscale_reset(const fe_model *m, fe_state *s);
+double fe_massscale_run(const fe_model *m, fe_state *s, double dtmin);
 /* step factors of lightly held one-point hexes (fe_hex_dt.c), after mass scaling */
 mcs_status fe_hex_dt_build(fe_model *m, mcs_error *err);
 

@@ -163,8 +163,9 @@ static void accel_share(const fe_model *m, fe_state *s, int t)
 {
     fe_par_range r;
     fe_par_share(m, s, t, &r);
+    const double *dm = m->nms_node ? s->node_dm : NULL; /* run-time mass scaling */
     for (int n = r.n0; n < r.n1; n++) {
-        double mass = m->node_mass[n], inv = mass > 0 ? 1 / mass : 0;
+        double mass = m->node_mass[n] + (dm ? dm[n] : 0), inv = mass > 0 ? 1 / mass : 0;
         for (int i = 0; i < 3; i++)
             s->node_a[3 * n + i] = (s->node_fext[3 * n + i] - s->node_fint[3 * n + i]) * inv;
     }
@@ -201,8 +202,9 @@ static void integrate_chunk(const fe_model *m, fe_state *s, int k, const integ_p
     double ke = 0, wb = 0, wf = 0, db = 0, dfw = 0;
     int bad = -1;
     const int n1 = (k + 1) * FE_CHUNK_NODES < m->nnode ? (k + 1) * FE_CHUNK_NODES : m->nnode;
+    const double *dm = m->nms_node ? s->node_dm : NULL, *din = m->nms_node ? s->node_din : NULL;
     for (int n = k * FE_CHUNK_NODES; n < n1; n++) {
-        const double mass = m->node_mass[n];
+        const double mass = m->node_mass[n] + (dm ? dm[n] : 0); /* run-time mass scaling */
         if (!(mass > 0) || m->node_body[n] >= 0) continue; /* rigid bodies: fe_rigid.c */
         double *v = s->node_v + 3 * n, *x = s->node_x + 3 * n;
         const double *a = s->node_a + 3 * n, *fe = s->node_fext + 3 * n;
@@ -244,7 +246,7 @@ static void integrate_chunk(const fe_model *m, fe_state *s, int k, const integ_p
         }
         if (!isfinite(vn[0] + vn[1] + vn[2]) && bad < 0) bad = n;
         ek *= 0.5 * mass;
-        const double in = m->node_inertia[n];
+        const double in = m->node_inertia[n] + (din ? din[n] : 0);
         if (in > 0) {
             double *w = s->node_w + 3 * n;
             const double *mi = s->node_mint + 3 * n, iin = dth / in;
@@ -411,6 +413,7 @@ mcs_status fe_stable_step(const fe_model *m, fe_state *s)
     s->time = t + s->dt;
     s->dt_prev = s->dt;
     s->nstep++;
+    if (m->nms_elem) dtmin = fe_massscale_run(m, s, dtmin); /* mass scaling in the run */
     double dt = m->opts.dt_scale * dtmin;
     if (m->opts.dt_max > 0) dt = fmin(dt, m->opts.dt_max);
     if (!(dt >= m->opts.dt_min)) {

@@ -99,6 +99,9 @@ typedef struct {
     X(double, spring_fd, nspring, 1, "N", "damper force, tension positive")                        \
     X(double, spring_d, nspring, 1, "m", "elongation at the last force evaluation")                \
     X(double, spring_part_energy, nspring_part, FE_NENERGY, "J", "energies of each spring part")   \
+    X(double, node_dm, nms_node, 1, "kg", "mass added to the node during the run (mass scaling)")  \
+    X(double, node_din, nms_node, 1, "kg m^2", "rotary inertia added with it")                    \
+    X(double, elem_ms, nms_elem, 1, "-", "run-time density factor of each element (1: none)")     \
     X(double, body_x, nbody, 3, "m", "rigid body centre of mass")                                  \
     X(double, body_v, nbody, 3, "m/s", "rigid body velocity at t + dt/2")                          \
     X(double, body_rot, nbody, 9, "-", "rigid body rotation from t = 0 (row-major)")              \
@@ -146,6 +149,9 @@ typedef struct fe_state {
      * element chunk and first node chunk; par_cut[par_nt] = nchunk [-] */
     int par_nt;
     int par_cut[FE_PAR_MAX + 1], par_ncut[FE_PAR_MAX + 1];
+    double mass_added_run;        /* mass added by mass scaling during the run [kg]           */
+    double dt_ms;                 /* smallest scaled step of the scaled parts at the last check,
+                                     no safety factor [s]                                    */
 } fe_state;
 
 /* allocate every array once (and the scratch arena), then fe_state_reset */

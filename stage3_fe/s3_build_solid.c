@@ -32,6 +32,8 @@ void s3_solid_opts(const mcs_node *root, fe_opts *opts)
     opts->gravity[2] = -mcs_node_num_or(get(root, "environment"), "gravity", 0);
     opts->mass_scaling_dt =
         mcs_node_num_or(get(get(root, "fe"), "mass_scaling"), "time_step", 0);
+    opts->mass_scaling_interval =
+        (int)mcs_node_num_or(get(get(root, "fe"), "mass_scaling"), "check_interval", 0);
 }
 
 /* a table [[x, y], ...] of at most FE_CURVE_MAX points into c */

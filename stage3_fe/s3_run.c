@@ -204,8 +204,8 @@ mcs_status s3_run(const s3_problem *p, const s3_run_opts *ro, s3_summary *sum, m
         if (!st) st = mcs_results_set_attr_int(r, "/stage3", "nodes", m->nnode, err);
         if (!st) st = mcs_results_set_attr_double(r, "/stage3", "energy_drift", sum->energy_drift, err);
         if (!st) st = mcs_results_set_attr_double(r, "/stage3", "output_rate", p->output_rate, err);
-        sum->mass_added = m->mass_added;
-        sum->mass_added_fraction = m->mass_added / fmax(m->mass_total - m->mass_added, DBL_MIN);
+        sum->mass_added = m->mass_added + s->mass_added_run; /* at t = 0 and during the run */
+        sum->mass_added_fraction = sum->mass_added / fmax(m->mass_total - m->mass_added, DBL_MIN);
         if (!st) st = mcs_results_set_attr_double(r, "/stage3", "mass_added", sum->mass_added, err);
         if (!st)
             st = mcs_results_set_attr_double(r, "/stage3", "mass_added_fraction",

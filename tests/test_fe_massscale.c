@@ -97,8 +97,72 @@ static void test_thin_element(void)
     }
 }
 
+/* mass scaling during the run: a 10 mm cube (nu = 0, c = sqrt(E/rho) = 100 m/s, no bulk
+ * viscosity) crushed by its top face at 1 m/s. Its step is L/c with L = V / largest face = z
+ * (the height), so it falls below the target dt_t once z < zs = dt_t c / dt_scale (8 mm here);
+ * checked every cycle, the element's density factor becomes (zs/z)^2 and the added mass
+ *     dM = rho h^3 ((zs/z)^2 - 1)
+ * with z the height at the last check, the run's step stays dt_t, and the kinetic energy of
+ * the mass added to the moving top nodes is counted, so the balance still closes. */
+static void test_crush_rescaled(void)
+{
+    const double h = 0.01, E = 1e7, rho = 1000, v = 1, c = sqrt(E / rho);
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc d = ft_part("cube", FE_SECTION_SOLID, E, 0, rho);
+    d.mesh.generate = FE_MESH_BOX;
+    d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = h;
+    d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 1;
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_boundary_desc lo = ft_bc("cube", FE_WHERE_Z_MIN, FE_DOF_ALL);
+    fe_boundary_desc hi = ft_bc("cube", FE_WHERE_Z_MAX, FE_DOF_TRANS);
+    hi.velocity[2] = -v;
+    CHECK(fe_builder_add_boundary(b, &lo, &err) == MCS_OK);
+    CHECK(fe_builder_add_boundary(b, &hi, &err) == MCS_OK);
+    fe_opts o = fe_opts_default();
+    o.bulk_q1 = o.bulk_q2 = 0;
+    const double zs = 0.008, target = zs / c * o.dt_scale;
+    o.mass_scaling_dt = target;
+    o.mass_scaling_interval = 1;
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+    fe_builder_destroy(&b);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    CHECK(m->mass_added == 0); /* 10 mm: above the target at t = 0 */
+    int top = -1;
+    for (int n = 0; n < m->nnode; n++)
+        if (m->node_x0[3 * n + 2] > 0.5 * h) top = n;
+    fe_state *s;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    double dtdev = 0, emax = 0, eref = 0;
+    while (s->node_x[3 * top + 2] > 0.5 * h && fe_step(m, s) == MCS_OK) {
+        if (s->node_x[3 * top + 2] < zs - 2e-4) dtdev = fmax(dtdev, fabs(s->dt - target) / target);
+        emax = fmax(emax, fabs(s->energy[FE_E_total] - s->energy0));
+        eref = fmax(eref, s->energy[FE_E_internal]);
+    }
+    CHECK(s->err.status == MCS_OK);
+    const double z = s->node_x[3 * top + 2], dM = rho * h * h * h * ((zs / z) * (zs / z) - 1);
+    printf("  crushed cube at z %.4g mm: added %.6g kg (rho h^3 ((zs/z)^2 - 1) = %.6g), step off the "
+           "target by %.1e, energy balance %.1e of the internal energy\n",
+           1e3 * z, s->mass_added_run, dM, dtdev, emax / eref);
+    CHECK_REL(s->mass_added_run, dM, 1e-9);
+    CHECK(dtdev < 1e-12);
+    CHECK(emax < 1e-3 * eref);
+    /* the mass went onto the element's 8 nodes */
+    double sum = 0;
+    for (int n = 0; n < m->nnode; n++) sum += s->node_dm[n];
+    CHECK_REL(sum, dM, 1e-12);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+}
+
 int main(void)
 {
     RUN(test_thin_element);
+    RUN(test_crush_rescaled);
     TEST_END();
 }

@@ -148,6 +148,16 @@ static int seg_gap(const fe_model *m, const double *X, int sg, const double x[3]
     const fe_contact_model *c = m->contact;
     const int *q = c->seg_node + 4 * sg;
     const double *a = X + 3 * q[0], *b = X + 3 * q[1], *cc = X + 3 * q[2], *d = X + 3 * q[3];
+    /* a shell touches only within the offset: a node farther than that from the segment's
+     * box is out (the usual case for a candidate; saves the two triangle projections) */
+    if (!c->seg_solid[sg]) {
+        const double off = ht + c->seg_ht[sg];
+        for (int i = 0; i < 3; i++) {
+            const double l1 = a[i] < b[i] ? a[i] : b[i], l2 = cc[i] < d[i] ? cc[i] : d[i];
+            const double h1 = a[i] > b[i] ? a[i] : b[i], h2 = cc[i] > d[i] ? cc[i] : d[i];
+            if (x[i] < (l1 < l2 ? l1 : l2) - off || x[i] > (h1 > h2 ? h1 : h2) + off) return 0;
+        }
+    }
     double w1[3], w2[3] = {0, 0, 0};
     double d1 = fe_tri_nearest(x, a, b, cc, w1), d2 = INFINITY;
     if (q[3] != q[2]) d2 = fe_tri_nearest(x, a, cc, d, w2);
@@ -217,10 +227,11 @@ static void entry_forces(const fe_model *m, fe_state *s, int e, fe_contact_slot 
             int sg = item[k];
             if (!fe_contact_in_box(cs->seg_box + 6 * sg, x)) continue;
             const int *q = c->seg_node + 4 * sg;
-            if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) continue;
-            /* topology before geometry: in self contact most boxes hit are the node's own
-             * neighbourhood */
-            if (P->self && fe_contact_seg_has_nbr(c, q, node)) continue;
+            /* a bucket also holds the node's own segments and (self contact) its
+             * neighbours', which its candidate list already left out */
+            if (scan && (q[0] == node || q[1] == node || q[2] == node || q[3] == node ||
+                         (P->self && fe_contact_seg_has_nbr(c, q, node))))
+                continue;
             hit h;
             if (!seg_gap(m, s->node_x, sg, x, c->ent_ht[e], &h)) continue;
             if (nh < FE_CONTACT_HITS) hits[nh++] = h;
@@ -357,12 +368,15 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
 
 /* ---- the sub-stage ----------------------------------------------------------------------- */
 
-static double touch_power(const fe_contact_model *c, const fe_state *s)
+/* power of the contact forces on the touched nodes at the current velocities; `zero`: then
+ * clear the forces (the forward half of the work is the last use of last step's forces) */
+static double touch_power(const fe_contact_model *c, fe_state *s, int zero)
 {
-    double p = 0;
+    double p = 0, *fc = s->contact->node_fc;
     for (int t = 0; t < c->nnode_touch; t++) {
-        int n = c->touch[t];
-        p += fe_dot(s->contact->node_fc + 3 * n, s->node_v + 3 * n);
+        const int n = c->touch[t];
+        p += fe_dot(fc + 3 * n, s->node_v + 3 * n);
+        if (zero) fc[3 * n] = fc[3 * n + 1] = fc[3 * n + 2] = 0;
     }
     return p;
 }
@@ -380,7 +394,7 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
     fe_contact_state *cs = s->contact;
     const double dth = 0.5 * (s->dt + s->dt_prev), hb = s->dt_prev > 0 ? dth : 0;
     /* forward half of the previous step's contact work (velocities now at t - dt/2) */
-    cs->work_nodes += 0.5 * cs->dth_prev * touch_power(c, s);
+    cs->work_nodes += 0.5 * cs->dth_prev * touch_power(c, s, 1);
     cs->work_bodies += 0.5 * cs->dth_prev * body_power(c, cs);
     if (c->npass > 0 && (cs->need_rebuild || fe_contact_moved(c, s))) {
         fe_contact_search(m, s);
@@ -393,11 +407,7 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
 #pragma omp parallel for schedule(dynamic, 32) if (npar > FE_CONTACT_OMP_MIN)
 #endif
     for (int i = 0; i < npar; i++) entry_forces(m, s, cs->live[i], cs->slot + 2 * i);
-    /* phase 2: scatter */
-    for (int t = 0; t < c->nnode_touch; t++) {
-        double *f = cs->node_fc + 3 * c->touch[t];
-        f[0] = f[1] = f[2] = 0;
-    }
+    /* phase 2: scatter (node_fc was cleared by the forward power above) */
     memset(cs->part_elastic, 0, sizeof(double) * (size_t)m->npart);
     memset(cs->if_force, 0, sizeof(double) * 3 * (size_t)c->nif);
     memset(cs->if_energy, 0, sizeof(double) * (size_t)c->nif);
@@ -441,11 +451,14 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
     /* phase 3: ellipsoids add to node_fc */
     ellipsoid_forces(m, s);
     /* into the external-force accumulator; back half of this step's contact work */
+    double pw = 0;
     for (int t = 0; t < c->nnode_touch; t++) {
         const int n = c->touch[t];
-        for (int i = 0; i < 3; i++) s->node_fext[3 * n + i] += cs->node_fc[3 * n + i];
+        const double *f = cs->node_fc + 3 * n;
+        for (int i = 0; i < 3; i++) s->node_fext[3 * n + i] += f[i];
+        pw += fe_dot(f, s->node_v + 3 * n);
     }
-    cs->work_nodes += 0.5 * hb * touch_power(c, s);
+    cs->work_nodes += 0.5 * hb * pw;
     cs->work_bodies += 0.5 * hb * body_power(c, cs);
     cs->dth_prev = dth;
     /* energies at t */

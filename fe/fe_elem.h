@@ -99,7 +99,7 @@ static inline int fe_ps_trial(const fe_ps_const *k, double sig[3], const double 
     int seg;
     double sy = fe_ps_flow(k, epsp, &h, &seg);
     if (q2 <= sy * sy) return 0; /* elastic at the static flow stress: no rate factor */
-    double f = fe_rate_factor(k->p, rate);
+    double f = rate > 0 ? fe_rate_factor(k->p, rate) : 1; /* no call without a rate */
     if (f != 1 && q2 <= f * f * sy * sy) return 0;
     *q0sq = q2, *rf = f;
     return 1;

@@ -2,11 +2,21 @@
  * know as LS-DYNA *MAT_FU_CHANG_FOAM (083) and *MAT_LOW_DENSITY_FOAM (057); this is our own
  * formulation, described here in full).
  *
- * Kinematics: the deformation gradient F (t = 0 -> t) at the element centre, the left stretch
- * from B = F F^T = sum_i lambda_i^2 n_i n_i^T (Jacobi eigen-decomposition). Poisson's ratio is
- * 0: each principal direction is uniaxial, independent of the others.
- * Per direction, engineering compressive strain e_i = 1 - lambda_i and nominal stress
- * (force per undeformed area):
+ * Kinematics: the deformation gradient F (t = 0 -> t) at the element centre (or at each Gauss
+ * point of the fully integrated hex, each with its own e_max), the left stretch from
+ * B = F F^T = sum_i lambda_i^2 n_i n_i^T (Jacobi eigen-decomposition), engineering compressive
+ * strains e_i = 1 - lambda_i.
+ * Poisson's ratio nu (0 <= nu < 0.5): the curves are uniaxial-stress curves. Each direction
+ * works on the uniaxial-equivalent strain
+ *     u_i = [(1 - nu) e_i + nu (e_j + e_k)] / ((1 + nu)(1 - 2 nu)),   u = C^-1 e,
+ * C the isotropic compliance pattern (1 on the diagonal, -nu off it): a direction whose
+ * u_j = 0 carries no stress, so under uniaxial stress the lateral strains are -nu e_1, u_1 = e_1
+ * and the axial nominal stress is the curve S(e_1) exactly; under uniaxial strain (lateral
+ * e = 0) s_1 = S((1 - nu) e_1 / ((1 + nu)(1 - 2 nu))), s_lat = S(nu e_1 / ((1 + nu)(1 - 2 nu))).
+ * With linear curves this is linear elasticity; with nonlinear ones it is not hyperelastic (a
+ * closed strain cycle through several directions can leave a small energy residue), the
+ * price of reproducing the uniaxial curve exactly. nu = 0: each direction is independent.
+ * Per direction, with e_i replaced by u_i, nominal stress (force per undeformed area):
  *   loading (e_i >= e_max, the largest compressive strain the element has seen):
  *       s_i = S(e_i, rate)
  *   unloading and reloading below e_max:
@@ -35,10 +45,8 @@ mcs_status fe_foam_check(const fe_part_desc *d, mcs_error *err)
     const char *n = d->name;
     if (d->section.type != FE_SECTION_SOLID)
         return MCS_ERR(err, MCS_ERR_TYPE, "fe: part '%s': foam is for solid (hex8) sections", n);
-    if (m->poisson != 0)
-        return MCS_ERR(err, MCS_ERR_RANGE,
-                       "fe: part '%s': foam: poisson must be 0 (each principal direction is "
-                       "uniaxial), got %g",
+    if (!(m->poisson >= 0 && m->poisson < 0.5))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': foam: poisson must be in [0, 0.5), got %g",
                        n, m->poisson);
     if (m->nfoam_curve < 1 || m->nfoam_curve > FE_FOAM_NCURVE)
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': foam: 1..%d loading curves, got %d",
@@ -121,7 +129,9 @@ void fe_foam_derive(fe_part *p)
             x0 = x1, y0 = y1;
         }
     }
-    p->wave_speed = sqrt(kmax / m->density);
+    /* uniaxial strain: the modulus grows by (1 - nu) / ((1 + nu)(1 - 2 nu)) */
+    const double nu = m->poisson;
+    p->wave_speed = sqrt(kmax * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / m->density);
 }
 
 /* eigenvalues d and eigenvectors (columns of v) of a symmetric 3x3 matrix (cyclic Jacobi) */
@@ -182,10 +192,13 @@ void fe_foam_stress(const fe_part *p, const double F[3][3], const double L[3][3]
     *rate = fe_rate_filter(*rate, r);
     const double hu = m->foam_hysteresis > 0 ? m->foam_hysteresis : 1;
     const double shape = m->foam_shape > 0 ? m->foam_shape : 1;
-    const double em = *emax;
-    double emax_new = em, si[3];
+    const double em = *emax, nu = m->poisson, dn = (1 + nu) * (1 - 2 * nu);
+    double emax_new = em, si[3], ue[3];
+    for (int i = 0; i < 3; i++) /* uniaxial-equivalent strains u = C^-1 e */
+        ue[i] = nu == 0 ? 1 - lam[i]
+                        : ((1 - nu) * (1 - lam[i]) + nu * (2 - lam[(i + 1) % 3] - lam[(i + 2) % 3])) / dn;
     for (int i = 0; i < 3; i++) {
-        double e = 1 - lam[i], s;
+        double e = ue[i], s;
         if (e > 0) {
             s = loading(m, e, *rate);
             if (e < em) s *= hu + (1 - hu) * pow(e / em, shape);

@@ -181,15 +181,107 @@ static void test_tension_linear(void)
     fe_model_destroy(&m);
 }
 
+/* Poisson's ratio (fe_foam.c: u = C^-1 e per direction) against its closed forms, at the
+ * element level (F given, no rate: the 1/s curve S):
+ *   uniaxial stress, F = diag(1 + nu e, 1 + nu e, 1 - e): lateral stress 0, axial nominal
+ *     stress S(e) (the curve is the uniaxial-stress test), Cauchy -S(e)/(1 + nu e)^2;
+ *   uniaxial strain, F = diag(1, 1, 1 - e): axial -S((1 - nu) e / D), lateral
+ *     -S(nu e / D) / (1 - e), D = (1 + nu)(1 - 2 nu) (linear elasticity's confined modulus
+ *     E (1 - nu)/D and lateral ratio nu/(1 - nu) on the linear part);
+ * the stable-step wave speed uses the confined modulus. */
+static void test_poisson_closed_forms(void)
+{
+    const double nu = 0.25, D = (1 + nu) * (1 - 2 * nu);
+    fe_part p;
+    memset(&p, 0, sizeof p);
+    p.material = foam_part(1, 1).material;
+    p.material.poisson = nu;
+    const double L[3][3] = {{0}};
+    double worst = 0;
+    for (int k = 0; k < 3; k++) {
+        const double e = k == 0 ? 0.03 : k == 1 ? 0.3 : 0.6;
+        double sig[6], emax = 0, rate = 0;
+        const double F1[3][3] = {{1 + nu * e, 0, 0}, {0, 1 + nu * e, 0}, {0, 0, 1 - e}};
+        fe_foam_stress(&p, F1, L, sig, &emax, &rate);
+        double S = ref_table(e, 1);
+        worst = fmax(worst, fabs(sig[2] + S / ((1 + nu * e) * (1 + nu * e))) / S);
+        worst = fmax(worst, (fabs(sig[0]) + fabs(sig[1]) + fabs(sig[3]) + fabs(sig[4]) + fabs(sig[5])) / S);
+        const double F2[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1 - e}};
+        emax = 0;
+        fe_foam_stress(&p, F2, L, sig, &emax, &rate);
+        double sa = ref_table((1 - nu) * e / D, 1), sl = ref_table(nu * e / D, 1);
+        worst = fmax(worst, fabs(sig[2] + sa) / sa);
+        worst = fmax(worst, fabs(sig[0] + sl / (1 - e)) / sl + fabs(sig[1] - sig[0]) / sl);
+        if (k == 0) printf("  foam nu 0.25, e 0.03: uniaxial strain sigma_zz %.6g Pa (closed form %.6g), "
+                           "lateral %.6g (%.6g)\n", sig[2], -sa, sig[0], -sl / (1 - e));
+    }
+    printf("  foam nu 0.25: uniaxial stress and strain, largest error %.1e of the stress\n", worst);
+    CHECK(worst < 1e-12);
+    /* the wave speed: the stiffest slope times the confined-modulus factor */
+    fe_foam_derive(&p);
+    double kmax = 1e6; /* youngs_modulus (tension) is the stiffest here? compare with the tables */
+    for (int i = 0; i < NT; i++) {
+        double x0 = i ? tab1[i - 1][0] : 0, y0 = i ? 1.5 * tab1[i - 1][1] : 0;
+        kmax = fmax(kmax, (1.5 * tab1[i][1] - y0) / (tab1[i][0] - x0));
+    }
+    CHECK_REL(p.wave_speed, sqrt(kmax * (1 - nu) / D / 50), 1e-12);
+}
+
+/* the same in the kernel: a free-sided cube (nu 0.25) compressed at 1/s to e = 0.3 by its top
+ * face (bottom and top held along z only): the sides move out to the stretch 1 + nu e and the
+ * top carries the curve's force S(e) L0^2 (uniaxial stress) */
+static void test_poisson_cube(void)
+{
+    const double nu = 0.25, v = L0; /* 1/s */
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc d = foam_part(1, 1);
+    d.material.poisson = nu;
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_boundary_desc lo = ft_bc("pad", FE_WHERE_Z_MIN, FE_DOF_Z);
+    fe_boundary_desc hi = ft_bc("pad", FE_WHERE_Z_MAX, FE_DOF_Z);
+    hi.velocity[2] = -v;
+    CHECK(fe_builder_add_boundary(b, &lo, &err) == MCS_OK);
+    CHECK(fe_builder_add_boundary(b, &hi, &err) == MCS_OK);
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+    fe_builder_destroy(&b);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    fe_state *s;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    while (s->time < 0.3 && fe_step(m, s) == MCS_OK) {
+    }
+    CHECK(s->err.status == MCS_OK);
+    double e = 0.3, wmax = 0, w = 0;
+    for (int n = 0; n < m->nnode; n++) {
+        double dx = s->node_x[3 * n] - m->node_x0[3 * n];
+        wmax = fmax(wmax, fabs(dx));
+        w = fmax(w, dx);
+    }
+    /* top force: the reaction of the prescribed top nodes = sigma_zz x current area */
+    double A = (L0 + 2 * w) * (L0 + 2 * w), fz = -s->hex_sig[2] * A;
+    printf("  foam cube nu 0.25 at e 0.3: side moved out %.5g mm (nu e L0 / 2 = %.5g), top force "
+           "%.5g N (S(e) L0^2 = %.5g)\n",
+           1e3 * w, 1e3 * nu * e * L0 / 2, fz, ref_table(e, 1) * L0 * L0);
+    CHECK_REL(w, nu * e * L0 / 2, 0.01);
+    CHECK_REL(fz, ref_table(e, 1) * L0 * L0, 0.01);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+}
+
 static void test_foam_input_checks(void)
 {
     fe_builder *b;
     mcs_error err = {0};
     CHECK(fe_builder_create(&b, &err) == MCS_OK);
     fe_part_desc d = foam_part(1, 1);
-    d.material.poisson = 0.2;
+    d.material.poisson = -0.1; /* auxetic: allowed for elastic materials, not for foam */
     CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_ERR_RANGE);
-    CHECK_STR_CONTAINS(err.msg, "poisson must be 0");
+    CHECK_STR_CONTAINS(err.msg, "poisson must be in [0, 0.5)");
     d = foam_part(1, 1);
     d.material.foam_rate[1] = 0.5; /* not increasing */
     mcs_error e2 = {0};
@@ -217,5 +309,7 @@ int main(void)
     RUN(test_hysteresis_loop);
     RUN(test_tension_linear);
     RUN(test_foam_input_checks);
+    RUN(test_poisson_closed_forms);
+    RUN(test_poisson_cube);
     TEST_END();
 }

@@ -90,7 +90,7 @@ def analyse(path, opp, tag, outdir):
         print("  attachment %-6s (fails at %.0f N) fails at %s ms" % (name, rb[key], "never" if fail[name] is None else "%.1f" % fail[name]))
     # contacts of the pelvis with the motorcycle (seat, tank), the head with the opponent
     for ch in ["rider_pelvis_moto_fn", "rider_lower_torso_moto_fn", "rider_thigh_l_moto_fn", "rider_head_%s_fn" % opp,
-               "rider_head_%s_upper_fn" % opp, "rider_upper_torso_%s_fn" % opp]:
+               "rider_head_%s_upper_fn" % opp, "rider_upper_torso_%s_fn" % opp, "rider_upper_torso_%s_upper_fn" % opp]:
         y = h5(path, "/stage1/channels/" + ch)
         if y is None:
             continue

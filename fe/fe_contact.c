@@ -11,13 +11,14 @@
  * external work: total energy then checks contact energy = -(work of the contact forces). */
 #include "fe/fe_contact_impl.h"
 #include "fe/fe_elem.h"
+#include "fe/fe_parallel.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define FE_CONTACT_HITS 16 /* segments within contact distance kept per node per step */
-#define FE_CONTACT_OMP_MIN 256 /* fewer live slave nodes: one thread (a parallel region costs more) */
+#define FE_CONTACT_OMP_MIN 1024 /* fewer slave entries: one thread (a parallel region costs more) */
 
 void fe_contact_state_destroy(fe_contact_state **p)
 {
@@ -30,6 +31,7 @@ void fe_contact_state_destroy(fe_contact_state **p)
     free(c->node_fc), free(c->part_fric), free(c->part_elastic), free(c->if_force);
     free(c->if_energy), free(c->if_fric), free(c->ell_c), free(c->ell_R), free(c->ell_v);
     free(c->ell_force);
+    free(c->rec_live), free(c->q_rec0), free(c->q_nrec), free(c->q_done), free(c->pow_chunk);
     free(c);
     *p = NULL;
 }
@@ -82,12 +84,19 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
     s->ell_R = zalloc(9 * (size_t)c->nell, sizeof(double), &b);
     s->ell_v = zalloc(3 * (size_t)c->nell, sizeof(double), &b);
     s->ell_force = zalloc(3 * (size_t)c->nell, sizeof(double), &b);
+    const size_t nq = (ne + FE_CONTACT_LIVE_CHUNK - 1) / FE_CONTACT_LIVE_CHUNK;
+    s->rec_live = zalloc((size_t)s->slot_cap, sizeof(int), &b);
+    s->q_rec0 = zalloc(nq, sizeof(int), &b);
+    s->q_nrec = zalloc(nq, sizeof(int), &b);
+    s->q_done = zalloc(nq, sizeof(int), &b);
+    s->pow_chunk = zalloc((size_t)m->nnode_chunk, sizeof(double), &b);
     s->bytes = b;
     if (!s->pass_hash || !s->pass_cell_base || !s->pass_cell || !s->x_ref || !s->seg_box ||
         !s->cell_off || !s->cell_item || !s->ent_cand_off || !s->ent_cand || !s->ent_flag ||
         !s->live || !s->slot || !s->ent_ft || !s->ent_et || !s->ell_ft || !s->ell_et ||
         !s->node_fc || !s->part_fric || !s->part_elastic || !s->if_force || !s->if_energy ||
-        !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v || !s->ell_force) {
+        !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v || !s->ell_force || !s->rec_live ||
+        !s->q_rec0 || !s->q_nrec || !s->q_done || !s->pow_chunk) {
         fe_contact_state_destroy(&s);
         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact state)");
     }
@@ -368,19 +377,6 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
 
 /* ---- the sub-stage ----------------------------------------------------------------------- */
 
-/* power of the contact forces on the touched nodes at the current velocities; `zero`: then
- * clear the forces (the forward half of the work is the last use of last step's forces) */
-static double touch_power(const fe_contact_model *c, fe_state *s, int zero)
-{
-    double p = 0, *fc = s->contact->node_fc;
-    for (int t = 0; t < c->nnode_touch; t++) {
-        const int n = c->touch[t];
-        p += fe_dot(fc + 3 * n, s->node_v + 3 * n);
-        if (zero) fc[3 * n] = fc[3 * n + 1] = fc[3 * n + 2] = 0;
-    }
-    return p;
-}
-
 static double body_power(const fe_contact_model *c, const fe_contact_state *cs)
 {
     double p = 0;
@@ -388,77 +384,256 @@ static double body_power(const fe_contact_model *c, const fe_contact_state *cs)
     return p;
 }
 
-void fe_contact_interfaces(const fe_model *m, fe_state *s)
+/* ---- thread shares ----------------------------------------------------------------------
+ * With more than FE_CONTACT_OMP_MIN slave entries the contact runs on the FE loops' team
+ * (fe_parallel.h): a chunk of the live list on the thread owning its first slave node, the
+ * touched nodes of a node chunk on the thread owning the chunk, so positions, velocities and
+ * contact forces stay in that core's cache. Powers are summed per node chunk and added in
+ * chunk order; the scatter to the nodes is serial in live order: results do not depend on the
+ * number of threads (tests/test_fe_parallel.c). */
+
+static int contact_team(const fe_model *m, const fe_state *s)
+{
+    const int nt = s->par_nt > 1 ? s->par_nt : 1;
+    return m->contact->nent > FE_CONTACT_OMP_MIN ? nt : 1;
+}
+
+/* node chunks and nodes of share t of a team of nt (one thread: all of them) */
+static fe_par_range contact_share(const fe_model *m, const fe_state *s, int nt, int t)
+{
+    fe_par_range r = {0, m->nchunk, 0, m->nnode_chunk, 0, m->nnode};
+    if (nt > 1) fe_par_share(m, s, t, &r);
+    return r;
+}
+
+/* first index of the (sorted) touch list whose node is >= node */
+static int touch_lo(const fe_contact_model *c, int node)
+{
+    int lo = 0, hi = c->nnode_touch;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (c->touch[mid] < node) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* touched nodes of node chunk k: touch[*t0 .. *t1) */
+static void chunk_touch(const fe_model *m, int k, int *t0, int *t1)
+{
+    const int n1 = (k + 1) * FE_CHUNK_NODES < m->nnode ? (k + 1) * FE_CHUNK_NODES : m->nnode;
+    *t0 = touch_lo(m->contact, k * FE_CHUNK_NODES);
+    *t1 = touch_lo(m->contact, n1);
+}
+
+/* before the entries, on a share: the power of the last step's contact forces at the current
+ * velocities per node chunk (pow_chunk); whether a node moved far enough since the search to
+ * ask for a new one (as fe_contact_moved; *moved set to 1); node_fc zeroed */
+static void pre_share(const fe_model *m, fe_state *s, const fe_par_range *r, int *moved)
 {
     const fe_contact_model *c = m->contact;
     fe_contact_state *cs = s->contact;
-    const double dth = 0.5 * (s->dt + s->dt_prev), hb = s->dt_prev > 0 ? dth : 0;
-    /* forward half of the previous step's contact work (velocities now at t - dt/2) */
-    cs->work_nodes += 0.5 * cs->dth_prev * touch_power(c, s, 1);
-    cs->work_bodies += 0.5 * cs->dth_prev * body_power(c, cs);
-    if (c->npass > 0 && (cs->need_rebuild || fe_contact_moved(c, s))) {
-        fe_contact_search(m, s);
-        fe_contact_candidates(m, s);
+    const double m2 = cs->margin2;
+    int mv = 0;
+    for (int k = r->nc0; k < r->nc1; k++) {
+        int t0, t1;
+        chunk_touch(m, k, &t0, &t1);
+        double p = 0;
+        for (int t = t0; t < t1; t++) {
+            const int n = c->touch[t];
+            double *f = cs->node_fc + 3 * n;
+            const double *x = s->node_x + 3 * n;
+            const float *xr = cs->x_ref + 3 * t;
+            p += fe_dot(f, s->node_v + 3 * n);
+            f[0] = f[1] = f[2] = 0;
+            double d0 = x[0] - xr[0], d1 = x[1] - xr[1], d2 = x[2] - xr[2];
+            mv |= d0 * d0 + d1 * d1 + d2 * d2 > m2;
+        }
+        cs->pow_chunk[k] = p;
     }
-    /* phase 1: the live entries (candidates, or in contact) are independent (each writes its
-     * own slots); those past slot_cap run inline in phase 2 */
-    const int nlive = cs->nlive, npar = nlive < cs->slot_cap ? nlive : cs->slot_cap;
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 32) if (npar > FE_CONTACT_OMP_MIN)
-#endif
-    for (int i = 0; i < npar; i++) entry_forces(m, s, cs->live[i], cs->slot + 2 * i);
-    /* phase 2: scatter (node_fc was cleared by the forward power above) */
+    if (mv) {
+#pragma omp atomic write
+        *moved = 1;
+    }
+}
+
+/* after the scatter, on a share: node_fc into node_fext, the power of the new forces per
+ * node chunk */
+static void post_share(const fe_model *m, fe_state *s, const fe_par_range *r)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
+    for (int k = r->nc0; k < r->nc1; k++) {
+        int t0, t1;
+        chunk_touch(m, k, &t0, &t1);
+        double p = 0;
+        for (int t = t0; t < t1; t++) {
+            const int n = c->touch[t];
+            const double *f = cs->node_fc + 3 * n;
+            for (int i = 0; i < 3; i++) s->node_fext[3 * n + i] += f[i];
+            p += fe_dot(f, s->node_v + 3 * n);
+        }
+        cs->pow_chunk[k] = p;
+    }
+}
+
+/* the node chunks' powers in chunk order [W] */
+static double chunk_power(const fe_model *m, const fe_contact_state *cs)
+{
+    double p = 0;
+    for (int k = 0; k < m->nnode_chunk; k++) p += cs->pow_chunk[k];
+    return p;
+}
+
+static int nlive_chunk(const fe_contact_state *cs)
+{
+    return (cs->nlive + FE_CONTACT_LIVE_CHUNK - 1) / FE_CONTACT_LIVE_CHUNK;
+}
+
+/* phase 1 on share t of nt: the live chunks whose first slave node is the share's; each
+ * entry with a force or a dissipation keeps its two slots as a record in the thread's part of
+ * `slot`; once that part is full the rest of the share's entries are left to the scatter */
+static void live_share(const fe_model *m, fe_state *s, int nt, int t)
+{
+    fe_contact_state *cs = s->contact;
+    const fe_par_range r = contact_share(m, s, nt, t);
+    const int rec1 = (int)((long)cs->slot_cap * (t + 1) / nt), nq = nlive_chunk(cs);
+    int nr = (int)((long)cs->slot_cap * t / nt);
+    for (int q = 0; q < nq; q++) {
+        const int i0 = q * FE_CONTACT_LIVE_CHUNK;
+        const int i1 = i0 + FE_CONTACT_LIVE_CHUNK < cs->nlive ? i0 + FE_CONTACT_LIVE_CHUNK
+                                                               : cs->nlive;
+        const int n = m->contact->ent_node[cs->live[i0]];
+        if (nt > 1 && !(n >= r.n0 && n < r.n1)) continue;
+        cs->q_rec0[q] = nr;
+        cs->q_done[q] = i1;
+        for (int i = i0; i < i1; i++) {
+            if (nr == rec1) {
+                cs->q_done[q] = i;
+                break;
+            }
+            fe_contact_slot *sl = cs->slot + 2 * (size_t)nr;
+            entry_forces(m, s, cs->live[i], sl);
+            if (sl[0].seg >= 0 || sl[1].seg >= 0 || sl[0].d != 0 || sl[1].d != 0)
+                cs->rec_live[nr++] = i;
+        }
+        cs->q_nrec[q] = nr - cs->q_rec0[q];
+    }
+}
+
+/* phase 2 for entry e: its two slots' forces to the slave node and, with the nearest point's
+ * weights, to the segment nodes; energies per part and per interface */
+static void scatter_entry(const fe_model *m, fe_state *s, int e, const fe_contact_slot *r)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
+    const fe_contact_pass *P = &c->pass[fe_contact_ent_pass(c, e)];
+    const int node = c->ent_node[e], ifc = P->iface, rev = P->reverse;
+    const int ps = m->node_part[node];
+    for (int k = 0; k < 2; k++) {
+        const int sg = r[k].seg;
+        const double d = r[k].d;
+        if (d != 0) {
+            cs->if_fric[ifc] += d;
+            if (sg >= 0) {
+                cs->part_fric[ps] += 0.5 * d;
+                cs->part_fric[c->seg_part[sg]] += 0.5 * d;
+            } else {
+                cs->part_fric[ps] += d;
+            }
+        }
+        if (sg < 0) continue;
+        const double *f = r[k].f, *w = r[k].w;
+        const int *q = c->seg_node + 4 * sg;
+        for (int j = 0; j < 3; j++) {
+            cs->node_fc[3 * node + j] += f[j];
+            cs->if_force[3 * ifc + j] += rev ? -f[j] : f[j];
+        }
+        for (int j = 0; j < 4; j++)
+            if (w[j] != 0)
+                for (int l = 0; l < 3; l++) cs->node_fc[3 * q[j] + l] -= w[j] * f[l];
+        const double el = r[k].el;
+        cs->part_elastic[ps] += 0.5 * el;
+        cs->part_elastic[c->seg_part[sg]] += 0.5 * el;
+        cs->if_energy[ifc] += el;
+        cs->pen_max = fmax(cs->pen_max, -r[k].g);
+    }
+}
+
+/* phase 2 (serial, live order) and phase 3: each chunk's records, then the entries its
+ * thread left over (run here); an entry without a record had no force and no dissipation */
+static void scatter(const fe_model *m, fe_state *s)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
     memset(cs->part_elastic, 0, sizeof(double) * (size_t)m->npart);
     memset(cs->if_force, 0, sizeof(double) * 3 * (size_t)c->nif);
     memset(cs->if_energy, 0, sizeof(double) * (size_t)c->nif);
-    for (int i = 0; i < nlive; i++) {
-        const int e = cs->live[i];
-        const fe_contact_pass *P = &c->pass[fe_contact_ent_pass(c, e)];
-        const int node = c->ent_node[e], ifc = P->iface, rev = P->reverse;
-        const int ps = m->node_part[node];
-        fe_contact_slot tmp[2], *r = cs->slot + 2 * i;
-        if (i >= npar) entry_forces(m, s, e, r = tmp);
-        for (int k = 0; k < 2; k++) {
-            const int sg = r[k].seg;
-            const double d = r[k].d;
-            if (d != 0) {
-                cs->if_fric[ifc] += d;
-                if (sg >= 0) {
-                    cs->part_fric[ps] += 0.5 * d;
-                    cs->part_fric[c->seg_part[sg]] += 0.5 * d;
-                } else {
-                    cs->part_fric[ps] += d;
-                }
-            }
-            if (sg < 0) continue;
-            const double *f = r[k].f, *w = r[k].w;
-            const int *q = c->seg_node + 4 * sg;
-            for (int j = 0; j < 3; j++) {
-                cs->node_fc[3 * node + j] += f[j];
-                cs->if_force[3 * ifc + j] += rev ? -f[j] : f[j];
-            }
-            for (int j = 0; j < 4; j++)
-                if (w[j] != 0)
-                    for (int l = 0; l < 3; l++) cs->node_fc[3 * q[j] + l] -= w[j] * f[l];
-            const double el = r[k].el;
-            cs->part_elastic[ps] += 0.5 * el;
-            cs->part_elastic[c->seg_part[sg]] += 0.5 * el;
-            cs->if_energy[ifc] += el;
-            cs->pen_max = fmax(cs->pen_max, -r[k].g);
+    const int nq = nlive_chunk(cs);
+    for (int q = 0; q < nq; q++) {
+        for (int j = cs->q_rec0[q]; j < cs->q_rec0[q] + cs->q_nrec[q]; j++)
+            scatter_entry(m, s, cs->live[cs->rec_live[j]], cs->slot + 2 * (size_t)j);
+        const int i1 = (q + 1) * FE_CONTACT_LIVE_CHUNK < cs->nlive
+                           ? (q + 1) * FE_CONTACT_LIVE_CHUNK
+                           : cs->nlive;
+        for (int i = cs->q_done[q]; i < i1; i++) {
+            fe_contact_slot tmp[2];
+            entry_forces(m, s, cs->live[i], tmp);
+            scatter_entry(m, s, cs->live[i], tmp);
         }
     }
     for (int i = 0; i < c->nif; i++) cs->if_energy[i] += cs->if_fric[i];
     /* phase 3: ellipsoids add to node_fc */
     ellipsoid_forces(m, s);
-    /* into the external-force accumulator; back half of this step's contact work */
-    double pw = 0;
-    for (int t = 0; t < c->nnode_touch; t++) {
-        const int n = c->touch[t];
-        const double *f = cs->node_fc + 3 * n;
-        for (int i = 0; i < 3; i++) s->node_fext[3 * n + i] += f[i];
-        pw += fe_dot(f, s->node_v + 3 * n);
+}
+
+void fe_contact_interfaces(const fe_model *m, fe_state *s)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
+    const double dth = 0.5 * (s->dt + s->dt_prev), hb = s->dt_prev > 0 ? dth : 0;
+    const int nt = contact_team(m, s);
+    /* forward half of the previous step's contact work (velocities now at t - dt/2), the
+     * search margin, node_fc zeroed */
+    int moved = 0;
+    if (nt > 1) {
+#pragma omp parallel num_threads(nt)
+        for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) {
+            const fe_par_range r = contact_share(m, s, nt, t);
+            pre_share(m, s, &r, &moved);
+        }
+    } else {
+        const fe_par_range r = contact_share(m, s, 1, 0);
+        pre_share(m, s, &r, &moved);
     }
-    cs->work_nodes += 0.5 * hb * pw;
+    cs->work_nodes += 0.5 * cs->dth_prev * chunk_power(m, cs);
+    cs->work_bodies += 0.5 * cs->dth_prev * body_power(c, cs);
+    if (c->npass > 0 && (cs->need_rebuild || moved)) {
+        fe_contact_search(m, s);
+        fe_contact_candidates(m, s);
+    }
+    /* phase 1: the live entries (candidates, or in contact) are independent (each writes its
+     * own slots); phase 2 and 3 serial; then node_fc into node_fext */
+    if (nt > 1) {
+#pragma omp parallel num_threads(nt)
+        {
+            for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) live_share(m, s, nt, t);
+#pragma omp barrier
+#pragma omp single
+            scatter(m, s);
+            for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) {
+                const fe_par_range r = contact_share(m, s, nt, t);
+                post_share(m, s, &r);
+            }
+        }
+    } else {
+        live_share(m, s, 1, 0);
+        scatter(m, s);
+        const fe_par_range r = contact_share(m, s, 1, 0);
+        post_share(m, s, &r);
+    }
+    /* back half of this step's contact work */
+    cs->work_nodes += 0.5 * hb * chunk_power(m, cs);
     cs->work_bodies += 0.5 * hb * body_power(c, cs);
     cs->dth_prev = dth;
     /* energies at t */

@@ -18,6 +18,7 @@
 #define FE_CONTACT_MAX 16    /* most contact interfaces                                      */
 #define FE_CONTACT_PARTS 8   /* most parts on each side of an interface                      */
 #define FE_ELLIPSOID_MAX 32  /* most rigid ellipsoids                                        */
+#define FE_CONTACT_LIVE_CHUNK 256 /* live entries per chunk of the threaded entry loop     */
 #define FE_CONTACT_CAND 4    /* candidate segments kept between searches, per slave node on
                                 average (one pool; entries past it scan their buckets)     */
 #define FE_CONTACT_LIVE 8    /* slave entries whose per-step results are kept for the
@@ -158,6 +159,14 @@ typedef struct fe_contact_state {
     double pen_max;         /* deepest penetration seen, relative to the offset [m]           */
     double energy;          /* elastic + frictional energy of every interface at t [J]      */
     size_t bytes;
+    /* threaded loops (fe_contact.c): the live list in chunks of FE_CONTACT_LIVE_CHUNK, each on
+     * the thread owning its first slave node; each thread keeps only the entries with a force
+     * or a dissipation, in its own part of `slot` (records); the serial scatter walks the
+     * records chunk by chunk, then runs inline the entries a full part left over */
+    int *rec_live;          /* (slot_cap) live index of each record                           */
+    int *q_rec0, *q_nrec;   /* (live chunks) first record and number of records of each chunk */
+    int *q_done;            /* (live chunks) first live index the chunk's thread left over    */
+    double *pow_chunk;      /* (nnode_chunk) contact power of each node chunk [W]            */
 } fe_contact_state;
 
 mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mcs_error *err);

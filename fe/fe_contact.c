@@ -496,15 +496,13 @@ static int nlive_chunk(const fe_contact_state *cs)
 static void live_share(const fe_model *m, fe_state *s, int nt, int t)
 {
     fe_contact_state *cs = s->contact;
-    const fe_par_range r = contact_share(m, s, nt, t);
     const int rec1 = (int)((long)cs->slot_cap * (t + 1) / nt), nq = nlive_chunk(cs);
     int nr = (int)((long)cs->slot_cap * t / nt);
     for (int q = 0; q < nq; q++) {
         const int i0 = q * FE_CONTACT_LIVE_CHUNK;
         const int i1 = i0 + FE_CONTACT_LIVE_CHUNK < cs->nlive ? i0 + FE_CONTACT_LIVE_CHUNK
                                                                : cs->nlive;
-        const int n = m->contact->ent_node[cs->live[i0]];
-        if (nt > 1 && !(n >= r.n0 && n < r.n1)) continue;
+        if (q * nt / nq != t) continue; /* an equal share of the live chunks */
         cs->q_rec0[q] = nr;
         cs->q_done[q] = i1;
         for (int i = i0; i < i1; i++) {

@@ -18,7 +18,7 @@
 #define FE_CONTACT_MAX 16    /* most contact interfaces                                      */
 #define FE_CONTACT_PARTS 8   /* most parts on each side of an interface                      */
 #define FE_ELLIPSOID_MAX 32  /* most rigid ellipsoids                                        */
-#define FE_CONTACT_LIVE_CHUNK 256 /* live entries per chunk of the threaded entry loop     */
+#define FE_CONTACT_LIVE_CHUNK 64 /* live entries per chunk of the threaded entry loop      */
 #define FE_CONTACT_CAND 4    /* candidate segments kept between searches, per slave node on
                                 average (one pool; entries past it scan their buckets)     */
 #define FE_CONTACT_LIVE 8    /* slave entries whose per-step results are kept for the

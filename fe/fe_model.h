@@ -310,7 +310,7 @@ typedef struct fe_model {
 } fe_model;
 
 #define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */
-#define FE_CHUNK_NODES 512 /* nodes per chunk of a threaded node loop [-]                  */
+#define FE_CHUNK_NODES 128 /* nodes per chunk of a threaded node loop [-]                  */
 /* smaller models run their loops on one thread (a parallel region costs microseconds) */
 #define FE_PAR_MIN_CHUNKS 8      /* element chunks [-]                                   */
 #define FE_PAR_MIN_NODE_CHUNKS 4 /* node chunks [-]                                      */

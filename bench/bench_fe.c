@@ -80,8 +80,13 @@ static int run(const char *label, fe_builder *b, int cycles)
         fe_model_destroy(&m);
         return 1;
     }
+    /* everything the run allocates: model and state arrays, the state's scratch arena, and the
+     * contact model and state (segments, neighbour lists, bucket grid, boxes, candidate pool,
+     * per-step slots, friction history) */
     double bytes = (double)(m->bytes + s->bytes) / m->nelem;
     double ms = (double)m->bytes / m->nelem, ss = (double)s->bytes / m->nelem;
+    double mc = m->contact ? (double)m->contact->bytes / m->nelem : 0;
+    double sc = s->contact ? (double)s->contact->bytes / m->nelem : 0;
     fe_state_destroy(&s);
     const double ec = (double)cycles * m->nelem;
     /* BENCH_FE_ONE_THREAD=1 skips the 2-thread run (for profiling: perf stat, perf record) */
@@ -91,6 +96,7 @@ static int run(const char *label, fe_builder *b, int cycles)
     printf("%-34s %5d %8.3g  %6.1f  %6.1f   %5.2fx  %5.0f (model %.0f + state %.0f)\n", label,
            m->nelem, t1.dt, 1e9 * t1.wall / ec, 1e9 * t2.wall / ec, t1.wall / t2.wall, bytes, ms,
            ss);
+    if (mc > 0) printf("    of which contact: model %.0f + state %.0f B/element\n", mc, sc);
     printf("    1 thread by sub-stage [ns/element-cycle]:");
     for (int k = 0; k < FE_NSTAGE; k++) printf(" %s %.1f", fe_stage_name[k], 1e9 * t1.timer[k] / ec);
     if (!(one && *one == '1')) {

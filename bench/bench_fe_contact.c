@@ -121,9 +121,12 @@ int main(void)
                s->energy[FE_E_contact], s->contact->nrebuild);
     }
     printf("    whole run: %.1f ns per shell element-cycle CPU (target 250, OpenRadioss ~480), "
-           "dt now %.3g s, %.0f B/element%s%s\n",
+           "dt now %.3g s, %.0f B/element (model %.0f + state %.0f; of which contact %.0f + "
+           "%.0f)%s%s\n",
            1e9 * cpu_all / ((double)cyc * m->nelem), s->dt,
-           (double)(m->bytes + s->bytes) / m->nelem, s->err.status ? "  STOPPED: " : "",
+           (double)(m->bytes + s->bytes) / m->nelem, (double)m->bytes / m->nelem,
+           (double)s->bytes / m->nelem, (double)m->contact->bytes / m->nelem,
+           (double)s->contact->bytes / m->nelem, s->err.status ? "  STOPPED: " : "",
            s->err.status ? s->err.msg : "");
     fe_state_destroy(&s);
     two_threads(m, chunk * nchunk);

@@ -79,15 +79,26 @@ static inline double fe_ps_flow(const fe_ps_const *k, double epsp, double *slope
  * plastic strain increment and leaves the returned stress in sig. */
 double fe_ps_return(const fe_ps_const *k, double sig[3], double q0sq, double epsp, double rf);
 
-/* fe_ps_return for n points at once (the same results; the iterations overlap) */
+/* the static flow stress at a point's plastic strain, its slope and segment, as the trial
+ * found them (fe_ps_flow), so that the return does not look them up again */
+typedef struct {
+    double y, h; /* flow stress, slope [Pa] */
+    int seg;     /* hardening segment [-]   */
+} fe_ps_flowpt;
+
+/* fe_ps_return for n points at once (the same results; the iterations overlap); fl: each
+ * point's fe_ps_flowpt from fe_ps_trial */
 void fe_ps_return_batch(const fe_ps_const *k, int n, double (*sig)[3], const double *q0sq,
-                        const double *epsp, const double *rf, double *dp);
+                        const double *epsp, const double *rf, const fe_ps_flowpt *fl,
+                        double *dp);
 
 /* the elastic trial stress (sig += C de); returns 1 when it exceeds the flow stress, with its
- * von Mises stress squared in *q0sq and the rate factor in *rf. The Cowper-Symonds factor is
- * computed only when the trial exceeds the static flow stress (the factor is >= 1). */
+ * von Mises stress squared in *q0sq, the rate factor in *rf and the static flow stress in *fl.
+ * The Cowper-Symonds factor is computed only when the trial exceeds the static flow stress
+ * (the factor is >= 1). */
 static inline int fe_ps_trial(const fe_ps_const *k, double sig[3], const double de[3],
-                              double epsp, double rate, double *q0sq, double *rf)
+                              double epsp, double rate, double *q0sq, double *rf,
+                              fe_ps_flowpt *fl)
 {
     sig[0] += k->c * de[0] + k->cnu * de[1];
     sig[1] += k->c * de[1] + k->cnu * de[0];
@@ -102,6 +113,7 @@ static inline int fe_ps_trial(const fe_ps_const *k, double sig[3], const double 
     double f = rate > 0 ? fe_rate_factor(k->p, rate) : 1; /* no call without a rate */
     if (f != 1 && q2 <= f * f * sy * sy) return 0;
     *q0sq = q2, *rf = f;
+    fl->y = sy, fl->h = h, fl->seg = seg;
     return 1;
 }
 
@@ -110,7 +122,8 @@ static inline double fe_ps_update(const fe_ps_const *k, double sig[3], const dou
                                   double epsp, double rate)
 {
     double q0sq, rf;
-    if (!fe_ps_trial(k, sig, de, epsp, rate, &q0sq, &rf)) return 0;
+    fe_ps_flowpt fl;
+    if (!fe_ps_trial(k, sig, de, epsp, rate, &q0sq, &rf, &fl)) return 0;
     return fe_ps_return(k, sig, q0sq, epsp, rf);
 }
 

@@ -172,7 +172,8 @@ double fe_ps_return(const fe_ps_const *k, double sig[3], double q0sq, double eps
 }
 
 void fe_ps_return_batch(const fe_ps_const *k, int n, double (*sig)[3], const double *q0sq,
-                        const double *epsp, const double *rf, double *dp)
+                        const double *epsp, const double *rf, const fe_ps_flowpt *fl,
+                        double *dp)
 {
     /* the Newton iterations of fe_ps_return for all points together: independent chains that
      * the processor overlaps. A point whose plastic strain crosses its segment's end is redone
@@ -182,10 +183,10 @@ void fe_ps_return_batch(const fe_ps_const *k, int n, double (*sig)[3], const dou
     int seg[FE_NIP_MAX], act[FE_NIP_MAX];
     for (int i = 0; i < n; i++) {
         const double p0 = sig[i][0] + sig[i][1];
-        double h;
         A[i] = 0.25 * p0 * p0, B[i] = q0sq[i] - A[i];
-        Y[i] = rf[i] * fe_ps_flow(k, epsp[i], &h, &seg[i]);
-        c[i] = 2.0 / 3.0 * rf[i] * h;
+        Y[i] = rf[i] * fl[i].y;
+        seg[i] = fl[i].seg;
+        c[i] = 2.0 / 3.0 * rf[i] * fl[i].h;
         const double q0 = sqrt(q0sq[i]);
         x[i] = (q0 - Y[i]) * q0sq[i] / (q0 * c[i] * q0sq[i] + Y[i] * (a * A[i] + b * B[i]));
         if (!(x[i] > 0)) x[i] = 0;

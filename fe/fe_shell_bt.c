@@ -159,6 +159,7 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
         double *sg = sig_all + 3 * (size_t)stride * e, *ep = epsp_all + (size_t)stride * e;
         double deg[FE_NIP_MAX][3], old[FE_NIP_MAX][3];
         double psig[FE_NIP_MAX][3], pq[FE_NIP_MAX], pep[FE_NIP_MAX], prf[FE_NIP_MAX];
+        fe_ps_flowpt pfl[FE_NIP_MAX];
         double pdp[FE_NIP_MAX];
         int pidx[FE_NIP_MAX], np = 0;
         for (int g = 0; g < nip; g++) {
@@ -176,14 +177,14 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
                 rate = dt > 0 ? sqrt(4.0 / 3.0 * (ex * ex + ey * ey + ex * ey) + gxy * gxy / 3) : 0;
                 rate = *rf = fe_rate_filter(*rf, rate);
             }
-            if (fe_ps_trial(&k, sp, de, ep[g], rate, &pq[np], &prf[np])) {
+            if (fe_ps_trial(&k, sp, de, ep[g], rate, &pq[np], &prf[np], &pfl[np])) {
                 psig[np][0] = sp[0], psig[np][1] = sp[1], psig[np][2] = sp[2];
                 pep[np] = ep[g];
                 pidx[np++] = g;
             }
         }
         if (np > 0) {
-            fe_ps_return_batch(&k, np, psig, pq, pep, prf, pdp);
+            fe_ps_return_batch(&k, np, psig, pq, pep, prf, pfl, pdp);
             for (int i = 0; i < np; i++) {
                 double *sp = sg + 3 * pidx[i];
                 sp[0] = psig[i][0], sp[1] = psig[i][1], sp[2] = psig[i][2];
@@ -214,7 +215,8 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
         for (int q = 0; q < 4; q++) bb += B1[q] * B1[q] + B2[q] * B2[q];
         double gam[4], qh[5] = {0};
         for (int q = 0; q < 4; q++) {
-            gam[q] = (q & 1 ? -1 : 1) - hx * B1[q] - hy * B2[q];
+            static const double hsign[4] = {1, -1, 1, -1}; /* h = (1, -1, 1, -1) */
+            gam[q] = hsign[q] - hx * B1[q] - hy * B2[q];
             qh[0] += gam[q] * vx[q];
             qh[1] += gam[q] * vy[q];
             qh[2] += gam[q] * vz[q];
@@ -224,18 +226,19 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
         const double km = km0 * A * bb, kw = kw0 * A * bb * bb, kr = kr0 * A * bb;
         const double kk[5] = {km, km, kw, kr, kr};
         double *hg = s->shell_hg + 5 * (size_t)e, fh[5];
-        for (int i = 0; i < 5; i++) {
-            if (visc) {
+        if (visc)
+            for (int i = 0; i < 5; i++) {
                 fh[i] = dt > 0 ? kk[i] * dte * qh[i] : 0; /* no rate before step 1 */
                 e_hg += 0.5 * (hg[i] + fh[i]) * qh[i] * dt;
                 hg[i] = fh[i];
-            } else {
+            }
+        else
+            for (int i = 0; i < 5; i++) {
                 double h0 = hg[i];
                 hg[i] += kk[i] * qh[i] * dt;
                 fh[i] = hg[i];
                 e_hg += 0.5 * (h0 + hg[i]) * qh[i] * dt;
             }
-        }
         /* resisting local forces and moments, back to the global frame */
         for (int q = 0; q < 4; q++) {
             double fx = A * (B1[q] * N[0] + B2[q] * N[2]) + fh[0] * gam[q];

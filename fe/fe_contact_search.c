@@ -187,8 +187,8 @@ void fe_contact_candidates(const fe_model *m, fe_state *s)
 #pragma omp parallel for schedule(dynamic, 256) if (c->nent > 4096)
 #endif
     for (int e = 0; e < c->nent; e++)
-        off[e + 1] = entry_candidates(c, cs, e, fe_contact_ent_pass(c, e), s->node_x + 3 * c->ent_node[e],
-                                      NULL, 0);
+        off[e + 1] = entry_candidates(c, cs, e, fe_contact_ent_pass(c, e),
+                                      s->node_x + 3 * c->ent_node[e], NULL, 0);
     off[0] = 0;
     int nlive = 0;
     for (int e = 0; e < c->nent; e++) {

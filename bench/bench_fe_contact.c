@@ -91,6 +91,8 @@ int main(void)
     fe_builder *b0 = tube(0), *b1 = tube(1);
     fe_model *m0 = NULL, *m = NULL;
     fe_state *s = NULL;
+    /* the whole-run figure is one core's (CPU time of this thread), so run it on one thread */
+    fe_set_threads(1);
     if (!b0 || !b1 || fe_model_create(b0, NULL, &m0, &err) != MCS_OK ||
         fe_model_create(b1, NULL, &m, &err) != MCS_OK || fe_state_create(m, &s, &err) != MCS_OK) {
         fprintf(stderr, "bench_fe_contact: %s\n", err.msg);

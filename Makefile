@@ -20,7 +20,7 @@ OMP      ?= -fopenmp
 CFLAGS   += -std=c17 -Wall -Wextra -Werror -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE \
             $(OPT) $(OMP) $(if $(OMP),,-Wno-unknown-pragmas) -MMD -MP -I. $(PKG_CFLAGS) $(SAN)
 LDFLAGS  += $(SAN) $(OMP)
-# the FE kernel (fe/) at -O3: its element loops vectorise further (about -10 % per shell
+# the FE kernel (fe/) at -O3: its element loops vectorise further (hex -20 %, shells -2..5 % per
 # element-cycle, bench/bench_fe.c; the results are the same to the bit, the FE tests check them;
 # not under the sanitizers, where -O3 gives false stringop warnings)
 FE_OPT   ?= -O3

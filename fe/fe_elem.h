@@ -169,4 +169,30 @@ static inline double fe_dot(const double a[3], const double b[3])
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+/* the spin increment W dt of the velocity gradient L (W skew: W01 = w01, W12 = w12,
+ * W20 = w20); used by the one-point and the fully integrated hex */
+static inline void fe_spin(const double L[3][3], double dt, double W[3][3])
+{
+    double w01 = 0.5 * (L[0][1] - L[1][0]) * dt, w12 = 0.5 * (L[1][2] - L[2][1]) * dt,
+           w20 = 0.5 * (L[2][0] - L[0][2]) * dt;
+    W[0][0] = 0, W[0][1] = w01, W[0][2] = -w20;
+    W[1][0] = -w01, W[1][1] = 0, W[1][2] = w12;
+    W[2][0] = w20, W[2][1] = -w12, W[2][2] = 0;
+}
+
+/* Jaumann rotation of sg (xx yy zz xy yz zx) by a spin increment W: sg += W sg - sg W */
+static inline void fe_jaumann(double sg[6], const double W[3][3])
+{
+    double S[3][3] = {{sg[0], sg[3], sg[5]}, {sg[3], sg[1], sg[4]}, {sg[5], sg[4], sg[2]}};
+    double R[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double r = 0;
+            for (int k = 0; k < 3; k++) r += W[i][k] * S[k][j] - S[i][k] * W[k][j];
+            R[i][j] = S[i][j] + r;
+        }
+    sg[0] = R[0][0], sg[1] = R[1][1], sg[2] = R[2][2], sg[3] = R[0][1], sg[4] = R[1][2],
+    sg[5] = R[2][0];
+}
+
 #endif

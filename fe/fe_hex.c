@@ -133,20 +133,12 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
                 for (int j = 0; j < 3; j++) L[i][j] += ve[n][i] * b[n][j];
         double de[6] = {L[0][0] * dt, L[1][1] * dt, L[2][2] * dt, 0.5 * (L[0][1] + L[1][0]) * dt,
                         0.5 * (L[1][2] + L[2][1]) * dt, 0.5 * (L[2][0] + L[0][2]) * dt};
-        double w01 = 0.5 * (L[0][1] - L[1][0]) * dt, w12 = 0.5 * (L[1][2] - L[2][1]) * dt,
-               w20 = 0.5 * (L[2][0] - L[0][2]) * dt;
-        /* Jaumann rotation sig += W sig - sig W (W skew: W01 = w01, W12 = w12, W20 = w20) */
         double *sg = s->hex_sig + 6 * e;
-        double S[3][3] = {{sg[0], sg[3], sg[5]}, {sg[3], sg[1], sg[4]}, {sg[5], sg[4], sg[2]}};
-        double W[3][3] = {{0, w01, -w20}, {-w01, 0, w12}, {w20, -w12, 0}}, R[3][3];
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++) {
-                double r = 0;
-                for (int k = 0; k < 3; k++) r += W[i][k] * S[k][j] - S[i][k] * W[k][j];
-                R[i][j] = S[i][j] + r;
-            }
-        double old[6] = {R[0][0], R[1][1], R[2][2], R[0][1], R[1][2], R[2][0]};
-        memcpy(sg, old, sizeof old);
+        double W[3][3];
+        fe_spin(L, dt, W);
+        fe_jaumann(sg, W); /* the stress at t, rotated with the material */
+        double old[6];
+        memcpy(old, sg, sizeof old);
         double dv = de[0] + de[1] + de[2];
         if (p->material.model == FE_MAT_FOAM) { /* total form (fe_foam.c); epsp: e_max */
             fe_foam_hex(m, p, c, xe, L, sg, &s->hex_epsp[e], &s->hex_rate[e]);

@@ -68,23 +68,6 @@ static void gather8(const double *src, const int *c, double out[8][3])
     for (int n = 0; n < 8; n++) memcpy(out[n], src + 3 * c[n], sizeof out[n]);
 }
 
-/* Jaumann rotation of sig (xx yy zz xy yz zx) by the spin increment W dt */
-static void jaumann(double sg[6], const double L[3][3], double dt)
-{
-    double w01 = 0.5 * (L[0][1] - L[1][0]) * dt, w12 = 0.5 * (L[1][2] - L[2][1]) * dt,
-           w20 = 0.5 * (L[2][0] - L[0][2]) * dt;
-    double S[3][3] = {{sg[0], sg[3], sg[5]}, {sg[3], sg[1], sg[4]}, {sg[5], sg[4], sg[2]}};
-    double W[3][3] = {{0, w01, -w20}, {-w01, 0, w12}, {w20, -w12, 0}}, R[3][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            double r = 0;
-            for (int k = 0; k < 3; k++) r += W[i][k] * S[k][j] - S[i][k] * W[k][j];
-            R[i][j] = S[i][j] + r;
-        }
-    sg[0] = R[0][0], sg[1] = R[1][1], sg[2] = R[2][2], sg[3] = R[0][1], sg[4] = R[1][2],
-    sg[5] = R[2][0];
-}
-
 void fe_hex_full_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chunk_acc *acc)
 {
     const fe_part *p = &m->part[ip];
@@ -128,7 +111,9 @@ void fe_hex_full_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, f
                             0.5 * (L[2][0] + L[0][2]) * dt};
             double *gp = s->hex_gp + 7 * ((size_t)p->gp_begin + 8 * (size_t)(e - p->elem_begin) + q);
             double *sg = gp, old[6];
-            jaumann(sg, L, dt);
+            double W[3][3];
+            fe_spin(L, dt, W);
+            fe_jaumann(sg, W);
             memcpy(old, sg, sizeof old);
             if (foam) {
                 /* the deformation gradient of the point, t = 0 -> t */

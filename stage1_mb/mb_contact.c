@@ -77,16 +77,9 @@ static void wheel_ellipsoid(mb_state *s, int i, const mb_wheel *w, const mb_elli
 static void detect_wheel(mb_state *s, int i, const mb_pair *p, const mb_surface *sa,
                          const mb_surface *sb, mb_contact *c)
 {
-    const mb_body_kin *k = kin_of(s, p->ba);
-    mb_wheel w = {.radius = sa->radius, .tube = sa->tube};
+    mb_wheel w;
     mb_plane pl;
-    if (k) {
-        mb_mat_vec(k->rot, sa->center, w.center);
-        mb_add(w.center, k->pos, w.center);
-        mb_mat_vec(k->rot, sa->normal, w.axis);
-    } else {
-        mb_copy(sa->center, w.center), mb_copy(sa->normal, w.axis);
-    }
+    mb_wheel_place(sa, kin_of(s, p->ba), &w);
     if (sb->type == MB_SURF_ELLIPSOID) {
         wheel_ellipsoid(s, i, &w, &s->surf_ell[p->sb], c);
         return;

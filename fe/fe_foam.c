@@ -3,9 +3,10 @@
  * formulation, described here in full).
  *
  * Kinematics: the deformation gradient F (t = 0 -> t) at the element centre (or at each Gauss
- * point of the fully integrated hex, each with its own e_max), the left stretch from
+ * point of the fully integrated hex, each with its own history), the left stretch from
  * B = F F^T = sum_i lambda_i^2 n_i n_i^T (Jacobi eigen-decomposition), engineering compressive
- * strains e_i = 1 - lambda_i.
+ * strains e_i = 1 - lambda_i. F = sum_i lambda_i n_i N_i^T: the material fibre now along n_i
+ * lay along N_i = F^T n_i / lambda_i at t = 0.
  * Poisson's ratio nu (0 <= nu < 0.5): the curves are uniaxial-stress curves. Each direction
  * works on the uniaxial-equivalent strain
  *     u_i = [(1 - nu) e_i + nu (e_j + e_k)] / ((1 + nu)(1 - 2 nu)),   u = C^-1 e,
@@ -16,15 +17,33 @@
  * With linear curves this is linear elasticity; with nonlinear ones it is not hyperelastic (a
  * closed strain cycle through several directions can leave a small energy residue), the
  * price of reproducing the uniaxial curve exactly. nu = 0: each direction is independent.
+ * Hysteresis memory, per direction: a symmetric tensor M (6 numbers per point) in the t = 0
+ * frame, so it follows the material through any rotation without an objective-rate update
+ * (the frame of F's right side is the material's). Direction i remembers
+ *     e_max,i = N_i . M . N_i,
+ * and after the stresses M += sum_i max(0, u_i - e_max,i) N_i N_i^T: the N_i are orthonormal,
+ * so each current direction's projection becomes exactly max(e_max,i, u_i). Loads that keep
+ * their axes in the material (the cube loaded along x, unloaded, then along y) get one
+ * independent maximum per axis (M diagonal there), as a scalar memory cannot: it would put
+ * the y loading on the unloading branch of the x maximum. Approximate: a direction between
+ * the loaded ones remembers the quadratic interpolation of their maxima (cos^2 weights), not
+ * the largest strain that fibre itself saw (that would need the whole history of every
+ * fibre); axes that turn in the material (shear) smear M over the swept fan of fibres, by
+ * rank-one steps whose sum depends weakly on the step. Where two stretches are equal to
+ * 1e-9 the principal directions in that plane are undefined by B (round-off picks them): they
+ * are taken along the axes of M restricted to the plane, so equal strains with unequal
+ * memories (x loaded before, now y compressed: x and z lateral) keep each axis's own memory.
+ * The state per point is M; *emax (hex_epsp or the Gauss point's slot) only reports the
+ * largest u seen in any direction.
  * Per direction, with e_i replaced by u_i, nominal stress (force per undeformed area):
- *   loading (e_i >= e_max, the largest compressive strain the element has seen):
- *       s_i = S(e_i, rate)
- *   unloading and reloading below e_max:
- *       s_i = S(e_i, rate) [HU + (1 - HU) (e_i / e_max)^shape]
+ *   loading (u_i >= e_max,i):
+ *       s_i = S(u_i, rate)
+ *   unloading and reloading below e_max,i:
+ *       s_i = S(u_i, rate) [HU + (1 - HU) (u_i / e_max,i)^shape]
  *     (HU = hysteresis in (0, 1]: 1 gives no hysteresis; the energy lost per cycle is the
  *      area between the loading and the unloading curve, and unloading ends at zero stress
  *      at zero strain, as a foam that recovers fully);
- *   tension (e_i < 0): s_i = -E e_i, capped at tension_cutoff when that is > 0.
+ *   tension (u_i < 0): s_i = -E u_i, capped at tension_cutoff when that is > 0.
  * S(e, rate) interpolates the loading curves linearly in log(rate) between the two tables
  * that bracket the rate (the lowest and highest table beyond the ends); each table is
  * piecewise linear, from (0, 0) to its first point, its last segment continued.
@@ -171,19 +190,63 @@ static void sym_eigen(const double a_in[3][3], double d[3], double v[3][3])
     for (int i = 0; i < 3; i++) d[i] = a[i][i];
 }
 
+/* x . M . y, M symmetric stored xx yy zz xy yz zx */
+static double sym_form(const double M[6], const double x[3], const double y[3])
+{
+    return x[0] * (M[0] * y[0] + M[3] * y[1] + M[5] * y[2]) +
+           x[1] * (M[3] * y[0] + M[1] * y[1] + M[4] * y[2]) +
+           x[2] * (M[5] * y[0] + M[4] * y[1] + M[2] * y[2]);
+}
+
+/* the material directions N_i = F^T n_i / lambda_i (rows of N), normalised; in a plane of
+ * equal stretches (to 1e-9) both n and N turn onto the axes of the memory M in that plane */
+static void material_directions(const double F[3][3], double n[3][3], const double lam[3],
+                                const double M[6], double N[3][3])
+{
+    for (int i = 0; i < 3; i++) {
+        double l = 0;
+        for (int a = 0; a < 3; a++) {
+            N[i][a] = F[0][a] * n[0][i] + F[1][a] * n[1][i] + F[2][a] * n[2][i];
+            l += N[i][a] * N[i][a];
+        }
+        l = sqrt(l);
+        for (int a = 0; a < 3; a++) N[i][a] = l > 0 ? N[i][a] / l : n[a][i];
+    }
+    for (int sweep = 0; sweep < 4; sweep++) { /* Jacobi on M within the repeated stretches */
+        int turned = 0;
+        for (int i = 0; i < 2; i++)
+            for (int j = i + 1; j < 3; j++) {
+                if (!(fabs(lam[i] - lam[j]) <= 1e-9 * fmax(lam[i], lam[j]))) continue;
+                double a = sym_form(M, N[i], N[i]), b = sym_form(M, N[j], N[j]);
+                double c = sym_form(M, N[i], N[j]);
+                if (!(fabs(c) > 1e-15 * (fabs(a) + fabs(b)))) continue;
+                double phi = 0.5 * atan2(2 * c, a - b), cs = cos(phi), sn = sin(phi);
+                for (int k = 0; k < 3; k++) {
+                    double ni = N[i][k], nj = N[j][k];
+                    N[i][k] = cs * ni + sn * nj, N[j][k] = cs * nj - sn * ni;
+                    ni = n[k][i], nj = n[k][j];
+                    n[k][i] = cs * ni + sn * nj, n[k][j] = cs * nj - sn * ni;
+                }
+                turned = 1;
+            }
+        if (!turned) break;
+    }
+}
+
 void fe_foam_stress(const fe_part *p, const double F[3][3], const double L[3][3], double sig[6],
-                    double *emax, double *rate)
+                    double hist[6], double *emax, double *rate)
 {
     const fe_material_desc *m = &p->material;
-    double B[3][3], d[3], n[3][3], lam[3];
+    double B[3][3], d[3], n[3][3], lam[3], N[3][3];
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             B[i][j] = F[i][0] * F[j][0] + F[i][1] * F[j][1] + F[i][2] * F[j][2];
     sym_eigen(B, d, n);
+    for (int i = 0; i < 3; i++) lam[i] = sqrt(fmax(d[i], 0));
+    material_directions(F, n, lam, hist, N);
     /* engineering strain rate of the fastest principal direction */
     double r = 0;
     for (int i = 0; i < 3; i++) {
-        lam[i] = sqrt(fmax(d[i], 0));
         double dn = 0;
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) dn += n[a][i] * 0.5 * (L[a][b] + L[b][a]) * n[b][i];
@@ -192,17 +255,19 @@ void fe_foam_stress(const fe_part *p, const double F[3][3], const double L[3][3]
     *rate = fe_rate_filter(*rate, r);
     const double hu = m->foam_hysteresis > 0 ? m->foam_hysteresis : 1;
     const double shape = m->foam_shape > 0 ? m->foam_shape : 1;
-    const double em = *emax, nu = m->poisson, dn = (1 + nu) * (1 - 2 * nu);
-    double emax_new = em, si[3], ue[3];
+    const double nu = m->poisson, dn = (1 + nu) * (1 - 2 * nu);
+    double si[3], ue[3], rise[3], eseen = *emax;
     for (int i = 0; i < 3; i++) /* uniaxial-equivalent strains u = C^-1 e */
         ue[i] = nu == 0 ? 1 - lam[i]
                         : ((1 - nu) * (1 - lam[i]) + nu * (2 - lam[(i + 1) % 3] - lam[(i + 2) % 3])) / dn;
     for (int i = 0; i < 3; i++) {
-        double e = ue[i], s;
+        double e = ue[i], em = sym_form(hist, N[i], N[i]), s;
+        rise[i] = 0;
         if (e > 0) {
             s = loading(m, e, *rate);
             if (e < em) s *= hu + (1 - hu) * pow(e / em, shape);
-            emax_new = fmax(emax_new, e);
+            else rise[i] = e - em;
+            eseen = fmax(eseen, e);
             s = -s;
         } else {
             s = -m->youngs_modulus * e;
@@ -211,12 +276,16 @@ void fe_foam_stress(const fe_part *p, const double F[3][3], const double L[3][3]
         double area = lam[(i + 1) % 3] * lam[(i + 2) % 3];
         si[i] = area > 0 ? s / area : 0;
     }
-    *emax = emax_new;
+    *emax = eseen;
     static const int ia[6] = {0, 1, 2, 0, 1, 2}, ib[6] = {0, 1, 2, 1, 2, 0};
     for (int k = 0; k < 6; k++) {
-        double v = 0;
-        for (int i = 0; i < 3; i++) v += si[i] * n[ia[k]][i] * n[ib[k]][i];
+        double v = 0, h = 0;
+        for (int i = 0; i < 3; i++) {
+            v += si[i] * n[ia[k]][i] * n[ib[k]][i];
+            h += rise[i] * N[i][ia[k]] * N[i][ib[k]];
+        }
         sig[k] = v;
+        hist[k] += h;
     }
 }
 
@@ -233,10 +302,10 @@ void fe_hex_deformation(const double x0[8][3], const double x[8][3], double F[3]
 }
 
 void fe_foam_hex(const fe_model *m, const fe_part *p, const int *conn, const double xe[8][3],
-                 const double L[3][3], double sig[6], double *emax, double *rate)
+                 const double L[3][3], double sig[6], double hist[6], double *emax, double *rate)
 {
     double x0[8][3], F[3][3];
     for (int n = 0; n < 8; n++) memcpy(x0[n], m->node_x0 + 3 * conn[n], sizeof x0[n]);
     fe_hex_deformation(x0, xe, F);
-    fe_foam_stress(p, F, L, sig, emax, rate);
+    fe_foam_stress(p, F, L, sig, hist, emax, rate);
 }

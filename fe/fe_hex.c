@@ -141,7 +141,8 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
         memcpy(old, sg, sizeof old);
         double dv = de[0] + de[1] + de[2];
         if (p->material.model == FE_MAT_FOAM) { /* total form (fe_foam.c); epsp: e_max */
-            fe_foam_hex(m, p, c, xe, L, sg, &s->hex_epsp[e], &s->hex_rate[e]);
+            double *h = s->foam_hist + 6 * ((size_t)p->foam_begin + (size_t)(e - p->elem_begin));
+            fe_foam_hex(m, p, c, xe, L, sg, h, &s->hex_epsp[e], &s->hex_rate[e]);
         } else {
             double rate = 0;
             if (cs) { /* effective deviatoric strain rate: only Cowper-Symonds uses it */

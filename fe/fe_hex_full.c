@@ -122,7 +122,9 @@ void fe_hex_full_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, f
                 for (int n = 0; n < 8; n++)
                     for (int i = 0; i < 3; i++)
                         for (int j = 0; j < 3; j++) F[i][j] += xe[n][i] * dx0[n][j];
-                fe_foam_stress(p, F, L, sg, &gp[6], &r);
+                double *h = s->foam_hist +
+                            6 * ((size_t)p->foam_begin + 8 * (size_t)(e - p->elem_begin) + q);
+                fe_foam_stress(p, F, L, sg, h, &gp[6], &r);
                 if (q == 0) rate_new = r;
             } else {
                 double dv = de[0] + de[1] + de[2], rate = 0;

@@ -207,6 +207,7 @@ typedef struct {
     double ip_w[FE_NIP_MAX]; /* their weights, summing to 1 [-]                           */
     int gp_begin;       /* fully integrated hex: first of its 8 x nelem Gauss points in hex_gp */
     int body;           /* rigid part: its body (fe_rigid.c); -1 otherwise [-]          */
+    int foam_begin;     /* foam hex: first of its points (1 or 8 per element) in foam_hist [-] */
 } fe_part;
 
 enum { FE_KIND_HEX, FE_KIND_SHELL, FE_KIND_TRUSS, FE_NKIND };
@@ -307,6 +308,7 @@ typedef struct fe_model {
     double *elem_ms0;      /* (nms_elem) density factor of the t = 0 mass scaling (1 none) [-] */
     double *elem_mass0;    /* (nms_elem) element mass at t = 0 without scaling [kg]        */
     char (*spring_part)[FE_NAME_MAX]; /* their names (nspring_part)                        */
+    int nfoam_ip;          /* integration points of foam hexes (1 or 8 per element) [-]    */
 } fe_model;
 
 #define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */

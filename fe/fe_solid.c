@@ -34,6 +34,12 @@ mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err)
             p->gp_begin = m->nhex_gp;
             m->nhex_gp += 8 * (p->elem_end - p->elem_begin);
         }
+        /* foam history tensors: one per integration point */
+        if (p->elem_kind == FE_KIND_HEX && p->material.model == FE_MAT_FOAM) {
+            p->foam_begin = m->nfoam_ip;
+            int npt = p->section.formulation == FE_HEX_FULL ? 8 : 1;
+            m->nfoam_ip += npt * (p->elem_end - p->elem_begin);
+        }
     }
     st = fe_discrete_build(b, m, err);
     if (!st) st = fe_tet_dt_build(m, err);

@@ -102,13 +102,15 @@ void fe_rigid_integrate(const fe_model *m, fe_state *s);
 void fe_hex_full_range(const fe_model *m, fe_state *s, int ip, int e0, int e1,
                        fe_chunk_acc *acc);
 /* foam stress from the deformation gradient F (t = 0 -> t) and the velocity gradient L:
- * Cauchy stress sig (xx yy zz xy yz zx) written, *emax (largest compressive strain seen) and
- * *rate (filtered engineering strain rate) updated */
+ * Cauchy stress sig (xx yy zz xy yz zx) written; hist (the point's largest-strain tensor in
+ * the t = 0 frame, xx yy zz xy yz zx; zero at t = 0), *emax (largest compressive strain seen
+ * in any direction, reported) and *rate (filtered engineering strain rate) updated */
 void fe_foam_stress(const fe_part *p, const double F[3][3], const double L[3][3], double sig[6],
-                    double *emax, double *rate);
+                    double hist[6], double *emax, double *rate);
 /* the same for a one-point hex: F at the centre from the t = 0 and current node positions */
 void fe_foam_hex(const fe_model *m, const fe_part *p, const int *conn, const double xe[8][3],
-                 const double L[3][3], double sig[6], double *emax, double *rate);
+                 const double L[3][3], double sig[6], double hist[6], double *emax,
+                 double *rate);
 /* deformation gradient at the centre of a hex: x (current) against x0 (t = 0) */
 void fe_hex_deformation(const double x0[8][3], const double x[8][3], double F[3][3]);
 

@@ -111,7 +111,8 @@ typedef struct {
     X(double, hex_gp, nhex_gp, 7, "Pa", "full hex: stress (6), plastic strain or foam history")   \
     X(fe_chunk_acc, chunk_acc, nchunk, 1, "-", "partial sums of each element chunk")             \
     X(double, node_acc, nnode_acc, 1, "-", "partial sums of each node chunk (fe_integrate)")     \
-    X(double, chunk_cost, nchunk, 1, "s", "time of each element chunk last step (thread shares)")
+    X(double, chunk_cost, nchunk, 1, "s", "time of each element chunk last step (thread shares)") \
+    X(double, foam_hist, nfoam_ip, 6, "-", "foam: largest-strain tensor, t = 0 frame (fe_foam.c)")
 
 struct fe_contact_state;
 

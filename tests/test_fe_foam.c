@@ -200,15 +200,16 @@ static void test_poisson_closed_forms(void)
     double worst = 0;
     for (int k = 0; k < 3; k++) {
         const double e = k == 0 ? 0.03 : k == 1 ? 0.3 : 0.6;
-        double sig[6], emax = 0, rate = 0;
+        double sig[6], hist[6] = {0}, emax = 0, rate = 0;
         const double F1[3][3] = {{1 + nu * e, 0, 0}, {0, 1 + nu * e, 0}, {0, 0, 1 - e}};
-        fe_foam_stress(&p, F1, L, sig, &emax, &rate);
+        fe_foam_stress(&p, F1, L, sig, hist, &emax, &rate);
         double S = ref_table(e, 1);
         worst = fmax(worst, fabs(sig[2] + S / ((1 + nu * e) * (1 + nu * e))) / S);
         worst = fmax(worst, (fabs(sig[0]) + fabs(sig[1]) + fabs(sig[3]) + fabs(sig[4]) + fabs(sig[5])) / S);
         const double F2[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1 - e}};
         emax = 0;
-        fe_foam_stress(&p, F2, L, sig, &emax, &rate);
+        memset(hist, 0, sizeof hist);
+        fe_foam_stress(&p, F2, L, sig, hist, &emax, &rate);
         double sa = ref_table((1 - nu) * e / D, 1), sl = ref_table(nu * e / D, 1);
         worst = fmax(worst, fabs(sig[2] + sa) / sa);
         worst = fmax(worst, fabs(sig[0] + sl / (1 - e)) / sl + fabs(sig[1] - sig[0]) / sl);

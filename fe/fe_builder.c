@@ -2,6 +2,7 @@
  * fe_model_create() validates and freezes them. Growable arrays live only here. */
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_restraint.h"
+#include "fe/fe_slipring.h"
 #include "fe/fe_solid.h"
 
 #include <math.h>
@@ -52,6 +53,7 @@ void fe_builder_destroy(fe_builder **p)
     free(b->fix);
     free(b->load);
     fe_restraint_list_free(b);
+    fe_slipring_list_free(b);
     free(b->spring);
     free(b->mass);
     free(b);

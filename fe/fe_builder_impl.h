@@ -40,6 +40,7 @@ struct fe_builder {
     int ncontact, nellipsoid;                     /* contact descriptors (fe_contact.h) */
     fe_contact_desc contact[FE_CONTACT_MAX];
     fe_ellipsoid_desc ellipsoid[FE_ELLIPSOID_MAX];
+    struct fe_slipring_list *sliprings;           /* slip rings to add (fe_slipring.c) */
 };
 
 int fe_kind_nnode(int kind);

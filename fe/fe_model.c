@@ -5,6 +5,7 @@
 #include "fe/fe_elem.h"
 #include "fe/fe_membrane.h"
 #include "fe/fe_restraint.h"
+#include "fe/fe_slipring.h"
 #include "fe/fe_solid.h"
 
 #include <math.h>
@@ -35,6 +36,7 @@ void fe_model_destroy(fe_model **p)
     free(m->nodal_load);
     free(m->load_curve);
     fe_restraints_destroy(&m->restraints);
+    fe_sliprings_destroy(&m->sliprings);
     fe_solid_free(m);
     fe_contact_model_free(m);
     free(m);
@@ -416,6 +418,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
     if (st == MCS_OK) st = resolve_loads(b, m, err);
     if (st == MCS_OK) st = resolve_walls(b, m, err);
     if (st == MCS_OK) st = fe_restraints_create(b, m, err); /* may lower opts.dt_max */
+    if (st == MCS_OK) st = fe_sliprings_create(b, m, err);  /* after the retractors */
     if (st == MCS_OK) st = fe_solid_finish(m, err); /* rigid-body constraints, wall checks */
     if (st == MCS_OK) {
         for (int n = 0; n < m->nnode; n++)

@@ -309,6 +309,7 @@ typedef struct fe_model {
     double *elem_mass0;    /* (nms_elem) element mass at t = 0 without scaling [kg]        */
     char (*spring_part)[FE_NAME_MAX]; /* their names (nspring_part)                        */
     int nfoam_ip;          /* integration points of foam hexes (1 or 8 per element) [-]    */
+    struct fe_sliprings *sliprings; /* belt slip rings (fe_slipring.h), NULL if none      */
 } fe_model;
 
 #define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */

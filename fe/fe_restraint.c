@@ -282,13 +282,14 @@ mcs_status fe_restraint_state_create(const fe_model *m, struct fe_restraint_stat
         s->bag = calloc((size_t)(r->nbag ? r->nbag : 1), sizeof *s->bag);
         s->retractor = calloc((size_t)(r->nretractor ? r->nretractor : 1), sizeof *s->retractor);
         s->retractor_length = calloc((size_t)(r->nretractor ? r->nretractor : 1), sizeof(double));
+        s->retractor_ring = calloc((size_t)(r->nretractor ? r->nretractor : 1), sizeof(double));
     }
-    if (!s || !s->bag || !s->retractor || !s->retractor_length) {
+    if (!s || !s->bag || !s->retractor || !s->retractor_length || !s->retractor_ring) {
         fe_restraint_state_destroy(&s);
         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (restraint state)");
     }
     *bytes += sizeof *s + sizeof *s->bag * (size_t)r->nbag +
-              (sizeof *s->retractor + sizeof(double)) * (size_t)r->nretractor;
+              (sizeof *s->retractor + 2 * sizeof(double)) * (size_t)r->nretractor;
     *out = s;
     return MCS_OK;
 }
@@ -299,6 +300,7 @@ void fe_restraint_state_destroy(struct fe_restraint_state **p)
     free((*p)->bag);
     free((*p)->retractor);
     free((*p)->retractor_length);
+    free((*p)->retractor_ring);
     free(*p);
     *p = NULL;
 }
@@ -319,6 +321,7 @@ void fe_restraint_state_reset(const fe_model *m, fe_state *s)
     for (int i = 0; i < r->nretractor; i++) {
         fe_retractor_state_init(r->retractor[i].model, &rs->retractor[i], 0.0);
         rs->retractor_length[i] = r->retractor[i].l0;
+        rs->retractor_ring[i] = 0;
     }
 }
 

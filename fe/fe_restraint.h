@@ -86,6 +86,8 @@ struct fe_restraint_state {
     fe_gasbag_state *bag;          /* (nbag): gas at energy_time... see fe_restraint_forces */
     fe_retractor_state *retractor; /* (nretractor)                                          */
     double *retractor_length;      /* (nretractor) segment length at the last force [m]     */
+    double *retractor_ring;        /* (nretractor) unstretched length a slip ring moved into
+                                      the segment (fe_slipring.h) [m]                       */
 };
 
 /* model build (fe_model_create) and teardown */

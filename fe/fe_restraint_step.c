@@ -34,8 +34,9 @@ static void retractors(const fe_model *m, fe_state *s)
         double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         s->restraint->retractor_length[i] = l;
         if (s->dt_prev > 0) {
-            /* the tension the segment would carry with the current payout (slack < 0) */
-            double trial = b->k * (l - b->l0 - rs->payout);
+            /* the tension the segment would carry with the current payout and what slip
+             * rings moved into it (slack < 0) */
+            double trial = b->k * (l - b->l0 - rs->payout - s->restraint->retractor_ring[i]);
             mcs_error e = {0};
             mcs_status st = fe_retractor_advance(b->model, rs, s->dt_prev, trial, b->k, &e);
             if (st != MCS_OK) {

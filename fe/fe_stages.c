@@ -5,6 +5,7 @@
 #include "fe/fe_membrane.h"
 #include "fe/fe_parallel.h"
 #include "fe/fe_restraint.h"
+#include "fe/fe_slipring.h"
 #include "fe/fe_solid.h"
 
 #include <math.h>
@@ -156,6 +157,8 @@ void fe_external_forces(const fe_model *m, fe_state *s)
     }
     /* gas bag pressures and retractor pulls (fe_restraint_step.c); errors go to s->err */
     if (m->restraints) fe_restraint_forces(m, s);
+    /* slip rings: webbing flows round the ring under the capstan law (fe_slipring_step.c) */
+    if (m->sliprings) fe_slipring_forces(m, s);
     fe_gravity_forces(m, s);
 }
 

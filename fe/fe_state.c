@@ -2,6 +2,7 @@
 #include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
 #include "fe/fe_restraint.h"
+#include "fe/fe_slipring.h"
 #include "fe/fe_solid.h"
 
 #include <math.h>
@@ -32,6 +33,7 @@ void fe_state_destroy(fe_state **p)
 #undef FE_X_FREE
     mcs_arena_destroy(&s->arena);
     fe_restraint_state_destroy(&s->restraint);
+    fe_slipring_state_destroy(&s->slipring);
     fe_contact_state_destroy(&s->contact);
     free(s);
     *p = NULL;
@@ -57,6 +59,7 @@ mcs_status fe_state_create(const fe_model *m, fe_state **out, mcs_error *err)
 #undef FE_X_ALLOC
     mcs_status st = mcs_arena_create(FE_ARENA_BYTES, &s->arena, err);
     if (st == MCS_OK) st = fe_restraint_state_create(m, &s->restraint, &s->bytes, err);
+    if (st == MCS_OK) st = fe_slipring_state_create(m, &s->slipring, &s->bytes, err);
     if (st == MCS_OK && m->contact) {
         st = fe_contact_state_create(m, &s->contact, err);
         if (st == MCS_OK) s->bytes += s->contact->bytes;
@@ -94,6 +97,7 @@ void fe_state_reset(const fe_model *m, fe_state *s)
     mcs_error_clear(&s->err);
     mcs_arena_reset(s->arena, 0);
     fe_restraint_state_reset(m, s);
+    fe_slipring_state_reset(m, s);
     fe_solid_reset(m, s);
     if (s->contact) fe_contact_state_reset(m, s->contact);
 }

@@ -153,6 +153,7 @@ typedef struct fe_state {
     double mass_added_run;        /* mass added by mass scaling during the run [kg]           */
     double dt_ms;                 /* smallest scaled step of the scaled parts at the last check,
                                      no safety factor [s]                                    */
+    struct fe_slipring_state *slipring; /* slip rings (fe_slipring.h); NULL none            */
 } fe_state;
 
 /* allocate every array once (and the scratch arena), then fe_state_reset */

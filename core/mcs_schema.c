@@ -786,6 +786,20 @@ static const mcs_skey retractor_keys[] = {
     END,
 };
 static const mcs_smap retractor_map = {.what = "retractor", .keys = retractor_keys};
+/* belt slip rings (fe/fe_slipring.h), LS-DYNA *ELEMENT_SEATBELT_SLIPRING */
+static const mcs_skey slipring_keys[] = {
+    S("name", REQ | UNIQ | NE, "slip ring name (results /stage3/slipring/<name>)"),
+    R("part", PART, REQ, "belt part (truss) holding the ring node"),
+    V("point", LEN, 3, 3, REQ, 0, "ring position; the part's nearest node is the ring node [m]"),
+    Q("friction", NONE, GE, 0, 0, "Coulomb coefficient round the ring (LS-DYNA FC; default 0)"),
+    Q("lock_time", MCS_DIM_TIME, GE, 0, 0, "no slip from this time on (LS-DYNA LTIME)"),
+    Q("min_length", LEN, GT, 0, 0, "smallest unstretched side length; the run stops there "
+                                    "(LS-DYNA LMIN; default 5 % of the shorter side)"),
+    S("retractor", NE, "retractor whose webbing segment is one side (its belt end is the ring "
+                       "node): the retractor feeds through the ring"),
+    END,
+};
+static const mcs_smap slipring_map = {.what = "slip ring", .keys = slipring_keys};
 
 /* rigid ellipsoids the FE nodes meet (penalty on the surface; stage-1 bodies later) */
 static const mcs_skey fe_ellipsoid_keys[] = {
@@ -810,6 +824,7 @@ static const mcs_skey fe_keys[] = {
     L("loads", load_map, 0, "nodal loads"),
     L("airbags", airbag_map, 0, "gas bags (uniform pressure) bounded by membrane parts"),
     L("retractors", retractor_map, 0, "belt retractors at truss belt ends"),
+    L("sliprings", slipring_map, 0, "belt slip rings (D-ring, buckle tongue)"),
     Q("damping", MCS_DIM_FREQ, GE, 0, 0, "mass-proportional damping c, f = -c m v [1/s]"),
     Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),
     Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),

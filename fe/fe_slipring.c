@@ -32,7 +32,10 @@ void fe_slipring_list_free(fe_builder *b)
     b->sliprings = NULL;
 }
 
-static int named(const char *name) { return name[0] && memchr(name, 0, FE_NAME_MAX) != NULL; }
+static int named(const char *name)
+{
+    return name[0] && memchr(name, 0, FE_NAME_MAX) != NULL;
+}
 
 mcs_status fe_builder_add_slipring(fe_builder *b, const fe_slipring_desc *d, mcs_error *err)
 {
@@ -79,8 +82,7 @@ static mcs_status ring_node(const fe_builder *b, const fe_model *m, const fe_sli
     }
     int ip = fe_builder_find_part(b, d->part);
     if (ip < 0)
-        return MCS_ERR(err, MCS_ERR_KEY, "fe: slip ring '%s': unknown part '%s'", d->name,
-                       d->part);
+        return MCS_ERR(err, MCS_ERR_KEY, "fe: slip ring '%s': unknown part '%s'", d->name, d->part);
     unsigned char *mark = malloc((size_t)m->nnode + 1);
     if (!mark) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (slip ring)");
     fe_builder_part_nodes(b, ip, mark);
@@ -108,13 +110,14 @@ static double elem_length0(const fe_model *m, int e)
     const double *a = m->node_x0 + 3 * m->truss_node[2 * e];
     const double *b = m->node_x0 + 3 * m->truss_node[2 * e + 1];
     double d2 = 0;
-    for (int i = 0; i < 3; i++) d2 += (b[i] - a[i]) * (b[i] - a[i]);
+    for (int i = 0; i < 3; i++)
+        d2 += (b[i] - a[i]) * (b[i] - a[i]);
     return sqrt(d2);
 }
 
 /* the truss elements at the ring node: elastic, deformable, not another ring's side */
-static mcs_status find_sides(const fe_model *m, const fe_slipring_desc *d, fe_slipring *r,
-                             int need, mcs_error *err)
+static mcs_status find_sides(const fe_model *m, const fe_slipring_desc *d, fe_slipring *r, int need,
+                             mcs_error *err)
 {
     int cnt = 0, el[2] = {-1, -1};
     for (int e = 0; e < m->ntruss; e++) {
@@ -140,8 +143,8 @@ static mcs_status find_sides(const fe_model *m, const fe_slipring_desc *d, fe_sl
     for (int k = 0; k < need; k++) {
         int e = el[k];
         r->elem[off + k] = e;
-        r->far[off + k] = m->truss_node[2 * e] == r->node ? m->truss_node[2 * e + 1]
-                                                         : m->truss_node[2 * e];
+        r->far[off + k] =
+            m->truss_node[2 * e] == r->node ? m->truss_node[2 * e + 1] : m->truss_node[2 * e];
         r->l0[off + k] = elem_length0(m, e);
     }
     if (need == 2 && r->far[1] < r->far[0]) { /* side 0: the lower far node */
@@ -168,8 +171,8 @@ static mcs_status make_ring(const fe_builder *b, fe_model *m, const fe_slipring_
     if (d->retractor[0]) {
         r->retractor = fe_retractor_find(m, d->retractor);
         if (r->retractor < 0)
-            return MCS_ERR(err, MCS_ERR_KEY, "fe: slip ring '%s': unknown retractor '%s'",
-                           d->name, d->retractor);
+            return MCS_ERR(err, MCS_ERR_KEY, "fe: slip ring '%s': unknown retractor '%s'", d->name,
+                           d->retractor);
         const fe_belt_retractor *rt = &m->restraints->retractor[r->retractor];
         if (rt->node != r->node)
             return MCS_ERR(err, MCS_ERR_RANGE,
@@ -289,6 +292,7 @@ double fe_slipring_channel(const fe_slipring_ring_state *s, int channel)
         return s->name;
         FE_SLIPRING_STATE_FIELDS(FE_SLIPRING_X_CASE)
 #undef FE_SLIPRING_X_CASE
-    default: return NAN;
+    default:
+        return NAN;
     }
 }

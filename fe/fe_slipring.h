@@ -58,14 +58,14 @@ mcs_status fe_builder_add_slipring(fe_builder *b, const fe_slipring_desc *d, mcs
  * element whose far node has the lower index) */
 typedef struct {
     char name[FE_NAME_MAX];
-    int node;           /* ring node [-]                                                   */
-    int elem[2];        /* truss element of each side; -1: the retractor segment [-]       */
-    int far[2];         /* the other node of each side's element (retractor: -1) [-]       */
-    int retractor;      /* index of the feeding retractor, -1 none [-]                     */
-    double mu;          /* friction coefficient [-]                                        */
-    double lock_time;   /* [s]; < 0 never                                                  */
-    double min_length;  /* [m]                                                             */
-    double l0[2];       /* unstretched side lengths at t = 0 (retractor: its l0) [m]       */
+    int node;          /* ring node [-]                                                   */
+    int elem[2];       /* truss element of each side; -1: the retractor segment [-]       */
+    int far[2];        /* the other node of each side's element (retractor: -1) [-]       */
+    int retractor;     /* index of the feeding retractor, -1 none [-]                     */
+    double mu;         /* friction coefficient [-]                                        */
+    double lock_time;  /* [s]; < 0 never                                                  */
+    double min_length; /* [m]                                                             */
+    double l0[2];      /* unstretched side lengths at t = 0 (retractor: its l0) [m]       */
 } fe_slipring;
 
 struct fe_sliprings {

@@ -50,8 +50,10 @@ static double solve_flow(const side *h, const side *w, double c, double hi)
         if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
         double g = side_tension(h, x, &d0) - c * side_tension(w, -x, &d1);
         if (fabs(g) <= tol || hi - lo <= 1e-15 * (hi + x)) break;
-        if (g > 0) lo = x;
-        else hi = x;
+        if (g > 0)
+            lo = x;
+        else
+            hi = x;
         slope = d0 + c * d1;
         x = slope < 0 ? x - g / slope : 0.5 * (lo + hi);
     }
@@ -59,8 +61,7 @@ static double solve_flow(const side *h, const side *w, double c, double hi)
 }
 
 /* read side k of ring r at t_n */
-static void read_side(const fe_model *m, const fe_state *s, const fe_slipring *r, int k,
-                      side *q)
+static void read_side(const fe_model *m, const fe_state *s, const fe_slipring *r, int k, side *q)
 {
     const double *xr = s->node_x + 3 * r->node, *xf;
     const fe_slipring_ring_state *g = &s->slipring->ring[r - m->sliprings->ring];
@@ -86,12 +87,13 @@ static void read_side(const fe_model *m, const fe_state *s, const fe_slipring *r
         d2 += q->u[i] * q->u[i];
     }
     q->len = sqrt(d2);
-    for (int i = 0; i < 3; i++) q->u[i] = q->len > 0 ? q->u[i] / q->len : 0;
+    for (int i = 0; i < 3; i++)
+        q->u[i] = q->len > 0 ? q->u[i] / q->len : 0;
 }
 
 /* side k gains dl: stress, forces, energies; returns the elastic energy released [J] */
-static double apply_side(const fe_model *m, fe_state *s, const fe_slipring *r, int k,
-                         const side *q, double dl)
+static double apply_side(const fe_model *m, fe_state *s, const fe_slipring *r, int k, const side *q,
+                         double dl)
 {
     fe_slipring_ring_state *g = &s->slipring->ring[r - m->sliprings->ring];
     double *xr = s->node_x + 3 * r->node;
@@ -112,8 +114,10 @@ static double apply_side(const fe_model *m, fe_state *s, const fe_slipring *r, i
     const double de = log1p(dl / q->l0), sig1 = q->sig - q->E * de;
     double n0 = tonly ? fmax(q->sig, 0) : q->sig, n1 = tonly ? fmax(sig1, 0) : sig1;
     s->truss_sig[e] = sig1;
-    if (k == 0) g->length0 += dl;
-    else g->length1 += dl;
+    if (k == 0)
+        g->length0 += dl;
+    else
+        g->length1 += dl;
     /* element forces: f_b = N e, f_a = -N e (resisting), e from node a to node b */
     const int a = m->truss_node[2 * e], bn = m->truss_node[2 * e + 1];
     double d[3], dold[3];
@@ -164,8 +168,7 @@ static mcs_status ring_step(const fe_model *m, fe_state *s, int i)
         /* the giving side keeps at least min_length; the taking side stops at zero tension */
         double hi_w = qw->truss ? qw->l0 - r->min_length : INFINITY;
         double hi = fmin(hi_w, side_zero(qh)), dd;
-        if (hi_w <= side_zero(qh) &&
-            side_tension(qh, hi, &dd) - c * side_tension(qw, -hi, &dd) > 0)
+        if (hi_w <= side_zero(qh) && side_tension(qh, hi, &dd) - c * side_tension(qw, -hi, &dd) > 0)
             return MCS_ERR(&s->err, MCS_ERR_NUMERIC,
                            "fe: slip ring '%s': side %d (%s) reached its minimum unstretched "
                            "length %g m at t = %.6g s: element handover to the next belt "

@@ -7,6 +7,7 @@
 #include "stage3_fe/s3_build_contact.h"
 #include "stage3_fe/s3_build_solid.h"
 #include "stage3_fe/s3_restraints.h"
+#include "stage3_fe/s3_slipring.h"
 #include "stage3_fe/s3_keyword.h"
 
 #include <math.h>
@@ -333,10 +334,13 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     if (!st) st = add_walls(b, s3_get(fe, "rigid_walls"), err);
     if (!st) st = s3_solid_add(b, fe, err); /* springs, point masses */
     if (!st) st = s3_add_restraints(b, fe, err); /* airbags, retractors (s3_restraints.c) */
+    if (!st) st = s3_add_sliprings(b, fe, err);  /* belt slip rings (s3_slipring.c) */
     if (!st) st = s3_contact_add(b, fe, err); /* contacts, rigid ellipsoids */
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
-        if (st) s3_relocate(st, s3_restraint_node(fe, kerr.msg), &kerr, err);
+        if (st)
+            s3_relocate(st, s3_slipring_node(fe, kerr.msg, s3_restraint_node(fe, kerr.msg)),
+                        &kerr, err);
     }
     fe_builder_destroy(&b);
     return st;

@@ -4,6 +4,7 @@
 #include "stage3_fe/s3_run.h"
 #include "stage3_fe/s3_parts.h"
 #include "stage3_fe/s3_restraints.h"
+#include "stage3_fe/s3_slipring.h"
 
 #include "core/mcs_progress.h"
 #include "core/mcs_results.h"
@@ -56,6 +57,7 @@ typedef struct {
     mcs_results_series *con_f[FE_CONTACT_MAX], *con_e[FE_CONTACT_MAX], *ell_f[FE_ELLIPSOID_MAX];
     double *disp; /* [nnode, 3] */
     s3_restraint_out rest; /* airbags and retractors (s3_restraints.c) */
+    s3_slipring_out rings; /* slip rings (s3_slipring.c) */
     s3_part_out parts;     /* per-part energies (s3_parts.c) */
 } s3_out;
 
@@ -110,6 +112,7 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
     if (!st) st = open_contact_series(r, m, o, err);
     if (!st) st = mcs_results_field_series(r, 3, (size_t)m->nnode, &o->ftime, &o->fdisp, err);
     if (!st) st = s3_restraint_open(r, m, &o->rest, err);
+    if (!st) st = s3_slipring_open(r, m, &o->rings, err);
     if (!st) st = s3_parts_open(r, m, &o->parts, err);
     return st;
 }
@@ -124,6 +127,7 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
         if (!st) st = mcs_results_series_append(o->wall_d[w], &s->wall_disp[w], err);
     }
     if (!st) st = s3_restraint_sample(s, &o->rest, err);
+    if (!st) st = s3_slipring_sample(s, &o->rings, err);
     if (!st) st = sample_contact(m, s, o, err);
     if (!st) st = s3_parts_sample(m, s, &o->parts, err);
     return st;
@@ -215,6 +219,7 @@ mcs_status s3_run(const s3_problem *p, const s3_run_opts *ro, s3_summary *sum, m
     mcs_results_abort(&r);
     free(o.disp);
     s3_restraint_out_free(&o.rest);
+    s3_slipring_out_free(&o.rings);
     s3_parts_free(&o.parts);
     fe_state_destroy(&s);
     sum->wall_time_s = now_s() - wall0;

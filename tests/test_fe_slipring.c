@@ -15,9 +15,9 @@ enum { NMAX = 8 };
 
 /* a belt of two elastic cable elements far0 - ring - far1 (EA = E A), nodes given */
 typedef struct {
-    double x[NMAX][3];  /* node positions [m]                                   */
+    double x[NMAX][3]; /* node positions [m]                                   */
     int nnode;
-    int elem[NMAX][2];  /* belt elements                                        */
+    int elem[NMAX][2]; /* belt elements                                        */
     int nelem;
     unsigned fix[NMAX]; /* FE_DOF_* of each node                                */
     double mass[NMAX];  /* point mass on each node [kg]                         */
@@ -48,8 +48,10 @@ static fe_model *rig_model(const rig *r, mcs_error *err)
     belt.section.tension_only = 1;
     int pb = -1, n[NMAX];
     mcs_status st = fe_builder_add_part(b, &belt, &pb, err);
-    for (int i = 0; i < r->nnode && !st; i++) st = fe_builder_add_node(b, r->x[i], &n[i], err);
-    for (int i = 0; i < r->nelem && !st; i++) st = fe_builder_add_elem(b, pb, r->elem[i], err);
+    for (int i = 0; i < r->nnode && !st; i++)
+        st = fe_builder_add_node(b, r->x[i], &n[i], err);
+    for (int i = 0; i < r->nelem && !st; i++)
+        st = fe_builder_add_elem(b, pb, r->elem[i], err);
     for (int i = 0; i < r->nnode && !st; i++) {
         if (r->fix[i]) st = fe_builder_fix_node(b, i, r->fix[i], NULL, err);
         fe_mass_desc md = {.node = i, .mass = r->mass[i]};
@@ -58,7 +60,7 @@ static fe_model *rig_model(const rig *r, mcs_error *err)
     for (int i = 0; i < r->nload && !st; i++) {
         double f[3] = {r->load_dir[i][0], r->load_dir[i][1], r->load_dir[i][2]};
         st = fe_builder_add_nodal_load(b, r->load_node[i], f, r->load_n[i],
-                                       (const double (*)[2])r->load_curve[i], err);
+                                       (const double(*)[2])r->load_curve[i], err);
     }
     if (!st && r->retractor) st = fe_builder_add_retractor(b, r->retractor, err);
     fe_slipring_desc d = fe_slipring_desc_default();
@@ -337,8 +339,8 @@ static double ring_tension(double x, double L, double k, double EA, double lc0)
  * through the ring. Reference: Newton's law for the mass, M x'' = -T(x, L(t)) with the tension
  * of the massless belt system above (ring_tension), integrated by RK4 at 1 us; the FE run
  * follows it within 0.05 mm of the 100 mm stroke (the central-difference step); the tensions
- * on both sides of the ring are equal (frictionless) to round-off. (With a constant stiffness the driven
- * oscillator of test_fe_belt would do; here the chest belt stiffens as it shortens.) */
+ * on both sides of the ring are equal (frictionless) to round-off. (With a constant stiffness the
+ * driven oscillator of test_fe_belt would do; here the chest belt stiffens as it shortens.) */
 static void test_retractor_through_ring(void)
 {
     rig r = rig_default();
@@ -397,8 +399,7 @@ static void test_retractor_through_ring(void)
     if (s->err.status != MCS_OK) printf("  %s\n", s->err.msg);
     printf("  retractor through ring: mass %.2f mm vs reference %.2f mm, worst |dx| %.3f mm; "
            "|T_seg - T_belt| <= %.1e N; webbing into the segment %.2f mm; wrap %.4f rad\n",
-           1e3 * xn, 1e3 * xr, 1e3 * worst_x, worst_T, 1e3 * g->slip,
-           g->wrap_angle);
+           1e3 * xn, 1e3 * xr, 1e3 * worst_x, worst_T, 1e3 * g->slip, g->wrap_angle);
     CHECK(worst_x < 5e-5);
     CHECK(worst_T < 1e-6);
     CHECK(g->slip > 0.09); /* into the retractor segment (side 0) */

@@ -388,9 +388,13 @@ static double body_power(const fe_contact_model *c, const fe_contact_state *cs)
  * With more than FE_CONTACT_OMP_MIN slave entries the contact runs on the FE loops' team
  * (fe_parallel.h): a chunk of the live list on the thread owning its first slave node, the
  * touched nodes of a node chunk on the thread owning the chunk, so positions, velocities and
- * contact forces stay in that core's cache. Powers are summed per node chunk and added in
- * chunk order; the scatter to the nodes is serial in live order: results do not depend on the
- * number of threads (tests/test_fe_parallel.c). */
+ * contact forces stay in that core's cache (a chunk run by the other thread puts the lines of
+ * its nodes in both cores' caches, and the owner's next write of x and v then waits for the
+ * other copy to be invalidated: in the tube crush that doubled the integration's time on 2
+ * threads). The time of each live chunk goes to its node chunk (fe_state.node_cost), so the
+ * thread shares balance the elements and the contact together (fe_parallel.c). Powers are
+ * summed per node chunk and added in chunk order; the scatter to the nodes is serial in live
+ * order: results do not depend on the number of threads (tests/test_fe_parallel.c). */
 
 static int contact_team(const fe_model *m, const fe_state *s)
 {
@@ -450,6 +454,7 @@ static void pre_share(const fe_model *m, fe_state *s, const fe_par_range *r, int
             mv |= d0 * d0 + d1 * d1 + d2 * d2 > m2;
         }
         cs->pow_chunk[k] = p;
+        s->node_cost[k] = 0;
     }
     if (mv) {
 #pragma omp atomic write
@@ -490,19 +495,46 @@ static int nlive_chunk(const fe_contact_state *cs)
     return (cs->nlive + FE_CONTACT_LIVE_CHUNK - 1) / FE_CONTACT_LIVE_CHUNK;
 }
 
+/* the thread of a team of nt owning live chunk q (that of its first slave node) */
+static int chunk_owner(const fe_model *m, const fe_state *s, int nt, int q)
+{
+    const int nc = m->contact->ent_node[s->contact->live[q * FE_CONTACT_LIVE_CHUNK]] /
+                   FE_CHUNK_NODES;
+    int t = 0;
+    while (t + 1 < nt && s->par_ncut[t + 1] <= nc) t++;
+    return t;
+}
+
+/* each thread's first record: the records split in proportion to the live chunks each thread
+ * owns (rec0[0 .. nt]) */
+static void record_shares(const fe_model *m, const fe_state *s, int nt, int *rec0)
+{
+    const fe_contact_state *cs = s->contact;
+    const int nq = nlive_chunk(cs);
+    int cnt[FE_PAR_MAX] = {0}, cum = 0;
+    for (int q = 0; q < nq; q++) cnt[chunk_owner(m, s, nt, q)]++;
+    for (int t = 0; t < nt; t++) {
+        rec0[t] = nq > 0 ? (int)((long)cs->slot_cap * cum / nq) : 0;
+        cum += cnt[t];
+    }
+    rec0[nt] = cs->slot_cap;
+}
+
 /* phase 1 on share t of nt: the live chunks whose first slave node is the share's; each
  * entry with a force or a dissipation keeps its two slots as a record in the thread's part of
- * `slot`; once that part is full the rest of the share's entries are left to the scatter */
-static void live_share(const fe_model *m, fe_state *s, int nt, int t)
+ * `slot` (rec0[t] .. rec0[t + 1]); once that part is full the rest of the share's entries are
+ * left to the scatter. Threaded, each chunk's time goes to its first node chunk. */
+static void live_share(const fe_model *m, fe_state *s, int nt, int t, const int *rec0)
 {
     fe_contact_state *cs = s->contact;
-    const int rec1 = (int)((long)cs->slot_cap * (t + 1) / nt), nq = nlive_chunk(cs);
-    int nr = (int)((long)cs->slot_cap * t / nt);
+    const int rec1 = rec0[t + 1], nq = nlive_chunk(cs);
+    int nr = rec0[t];
     for (int q = 0; q < nq; q++) {
         const int i0 = q * FE_CONTACT_LIVE_CHUNK;
         const int i1 = i0 + FE_CONTACT_LIVE_CHUNK < cs->nlive ? i0 + FE_CONTACT_LIVE_CHUNK
                                                                : cs->nlive;
-        if (q * nt / nq != t) continue; /* an equal share of the live chunks */
+        if (nt > 1 && chunk_owner(m, s, nt, q) != t) continue;
+        const double c0 = nt > 1 ? fe_par_clock() : 0;
         cs->q_rec0[q] = nr;
         cs->q_done[q] = i1;
         for (int i = i0; i < i1; i++) {
@@ -516,6 +548,8 @@ static void live_share(const fe_model *m, fe_state *s, int nt, int t)
                 cs->rec_live[nr++] = i;
         }
         cs->q_nrec[q] = nr - cs->q_rec0[q];
+        if (nt > 1) s->node_cost[m->contact->ent_node[cs->live[i0]] / FE_CHUNK_NODES] +=
+            fe_par_clock() - c0;
     }
 }
 
@@ -585,11 +619,10 @@ static void scatter(const fe_model *m, fe_state *s)
     ellipsoid_forces(m, s);
 }
 
-void fe_contact_interfaces(const fe_model *m, fe_state *s)
+void fe_contact_begin(const fe_model *m, fe_state *s)
 {
     const fe_contact_model *c = m->contact;
     fe_contact_state *cs = s->contact;
-    const double dth = 0.5 * (s->dt + s->dt_prev), hb = s->dt_prev > 0 ? dth : 0;
     const int nt = contact_team(m, s);
     /* forward half of the previous step's contact work (velocities now at t - dt/2), the
      * search margin, node_fc zeroed */
@@ -610,13 +643,39 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
         fe_contact_search(m, s);
         fe_contact_candidates(m, s);
     }
-    /* phase 1: the live entries (candidates, or in contact) are independent (each writes its
-     * own slots); phase 2 and 3 serial; then node_fc into node_fext */
+    /* phase 1 is left to fe_contact_live (threaded, in the element loops' region) */
+    cs->live_nt = nt;
+    cs->live_done = 0;
+    if (nt > 1) record_shares(m, s, nt, cs->rec0);
+    else cs->rec0[0] = 0, cs->rec0[1] = cs->slot_cap;
+}
+
+int fe_contact_threaded(const fe_model *m, const fe_state *s)
+{
+    return m->contact && s->contact->live_nt > 1;
+}
+
+void fe_contact_live(const fe_model *m, fe_state *s, int t)
+{
+    fe_contact_state *cs = s->contact;
+    live_share(m, s, cs->live_nt, t, cs->rec0);
+}
+
+void fe_contact_finish(const fe_model *m, fe_state *s)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
+    const double dth = 0.5 * (s->dt + s->dt_prev), hb = s->dt_prev > 0 ? dth : 0;
+    const int nt = cs->live_nt;
+    /* phase 1 (unless fe_contact_live ran it), phase 2 and 3 serial; then node_fc into
+     * node_fext */
     if (nt > 1) {
 #pragma omp parallel num_threads(nt)
         {
-            for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) live_share(m, s, nt, t);
+            if (!cs->live_done) {
+                for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) live_share(m, s, nt, t, cs->rec0);
 #pragma omp barrier
+            }
 #pragma omp single
             scatter(m, s);
             for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) {
@@ -625,7 +684,7 @@ void fe_contact_interfaces(const fe_model *m, fe_state *s)
             }
         }
     } else {
-        live_share(m, s, 1, 0);
+        if (!cs->live_done) live_share(m, s, 1, 0, cs->rec0);
         scatter(m, s);
         const fe_par_range r = contact_share(m, s, 1, 0);
         post_share(m, s, &r);
@@ -656,4 +715,10 @@ double fe_contact_work(const fe_model *m, const fe_state *s)
 {
     (void)m;
     return s->contact ? s->contact->work_nodes - s->contact->work_bodies : 0;
+}
+
+void fe_contact_interfaces(const fe_model *m, fe_state *s)
+{
+    fe_contact_begin(m, s);
+    fe_contact_finish(m, s);
 }

@@ -167,6 +167,9 @@ typedef struct fe_contact_state {
     int *q_rec0, *q_nrec;   /* (live chunks) first record and number of records of each chunk */
     int *q_done;            /* (live chunks) first live index the chunk's thread left over    */
     double *pow_chunk;      /* (nnode_chunk) contact power of each node chunk [W]            */
+    int live_nt;            /* threads of this step's live list (fe_contact_begin) [-]        */
+    int live_done;          /* fe_contact_live ran every thread's chunks this step            */
+    int rec0[FE_PAR_MAX + 1]; /* each thread's first record this step [-]                     */
 } fe_contact_state;
 
 mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mcs_error *err);
@@ -178,6 +181,18 @@ void fe_contact_state_reset(const fe_model *m, fe_contact_state *c);
  * of the external work (the contact is internal to the structure) */
 struct fe_state;
 void fe_contact_interfaces(const fe_model *m, struct fe_state *s);
+/* the same in three parts, so that the slave entries can run in the element loops' parallel
+ * region (fe_internal_forces) with no barrier between them:
+ *   fe_contact_begin   before the elements, after fe_par_team: last step's power, the search
+ *                      when a node moved far enough, the live list (reads x, v, node_fc);
+ *   fe_contact_live    thread t's live chunks (those of its nodes), when fe_contact_threaded;
+ *                      writes only its own records; any time before fe_contact_finish;
+ *   fe_contact_finish  after the gather zeroed node_fext: the entries fe_contact_live did not
+ *                      run, the scatter, node_fc into node_fext, energies. */
+void fe_contact_begin(const fe_model *m, struct fe_state *s);
+int fe_contact_threaded(const fe_model *m, const struct fe_state *s);
+void fe_contact_live(const fe_model *m, struct fe_state *s, int t);
+void fe_contact_finish(const fe_model *m, struct fe_state *s);
 /* contact energy at t (elastic + dissipated) and the contact work included in work_ext [J] */
 double fe_contact_energy(const fe_model *m, const struct fe_state *s);
 double fe_contact_work(const fe_model *m, const struct fe_state *s);

@@ -252,7 +252,8 @@ typedef struct {
     X(int, truss_part, ntruss, 1, "-", "part of each truss")                                     \
     X(int, node_body, nnode, 1, "-", "rigid body carrying the node, -1 none")                      \
     X(int, chunk_part, nchunk, 1, "-", "part of each element chunk (threaded element loops)")      \
-    X(int, chunk_elem, nchunk, 1, "-", "first element of each chunk, index in its kind")
+    X(int, chunk_elem, nchunk, 1, "-", "first element of each chunk, index in its kind")           \
+    X(int, chunk_nc, nchunk, 1, "-", "first node chunk of each element chunk's thread share")
 
 struct fe_contact_model;
 

@@ -13,6 +13,22 @@
 #include <omp.h>
 #endif
 
+/* smallest node of the elements of chunk k */
+static int chunk_first_node(const fe_model *m, int k)
+{
+    const fe_part *p = m->part + m->chunk_part[k];
+    const int e0 = m->chunk_elem[k];
+    const int e1 = e0 + FE_CHUNK_ELEMS < p->elem_end ? e0 + FE_CHUNK_ELEMS : p->elem_end;
+    const int *conn = p->elem_kind == FE_KIND_HEX     ? m->hex_node
+                      : p->elem_kind == FE_KIND_SHELL ? m->shell_node
+                                                      : m->truss_node;
+    const int nper = p->elem_kind == FE_KIND_HEX ? 8 : p->elem_kind == FE_KIND_SHELL ? 4 : 2;
+    int lo = m->nnode;
+    for (int i = nper * e0; i < nper * e1; i++)
+        if (conn[i] < lo) lo = conn[i];
+    return lo;
+}
+
 void fe_build_chunks(fe_model *m)
 {
     int k = 0;
@@ -26,6 +42,13 @@ void fe_build_chunks(fe_model *m)
     m->nnode_chunk = (m->nnode + FE_CHUNK_NODES - 1) / FE_CHUNK_NODES;
     m->node_acc_stride = FE_NACC_FIXED + m->npart + 3 * FE_WALL_MAX;
     m->nnode_acc = m->nnode_chunk * m->node_acc_stride;
+    /* a share starting at element chunk k starts at the node chunk nearest the first node of
+     * k's elements, never before the share before it */
+    for (k = 0; k < m->nchunk; k++) {
+        int nc = (chunk_first_node(m, k) + FE_CHUNK_NODES / 2) / FE_CHUNK_NODES;
+        if (k > 0 && nc < m->chunk_nc[k - 1]) nc = m->chunk_nc[k - 1];
+        m->chunk_nc[k] = nc < m->nnode_chunk ? nc : m->nnode_chunk;
+    }
 }
 
 void fe_chunk_commit(fe_state *s, int ip, const fe_chunk_acc *acc)
@@ -97,32 +120,35 @@ double fe_par_clock(void)
 #endif
 }
 
-/* smallest node of the elements of chunk k */
-static int chunk_first_node(const fe_model *m, int k)
+/* node chunks nc0 .. nc1-1 that go with element chunks k0 .. k1-1 */
+static void chunk_nodes(const fe_model *m, int k0, int k1, int *nc0, int *nc1)
 {
-    const fe_part *p = m->part + m->chunk_part[k];
-    const int e0 = m->chunk_elem[k];
-    const int e1 = e0 + FE_CHUNK_ELEMS < p->elem_end ? e0 + FE_CHUNK_ELEMS : p->elem_end;
-    const int *conn = p->elem_kind == FE_KIND_HEX     ? m->hex_node
-                      : p->elem_kind == FE_KIND_SHELL ? m->shell_node
-                                                      : m->truss_node;
-    const int nper = p->elem_kind == FE_KIND_HEX ? 8 : p->elem_kind == FE_KIND_SHELL ? 4 : 2;
-    int lo = m->nnode;
-    for (int i = nper * e0; i < nper * e1; i++)
-        if (conn[i] < lo) lo = conn[i];
-    return lo;
+    *nc0 = k0 < m->nchunk ? m->chunk_nc[k0] : m->nnode_chunk;
+    *nc1 = k1 < m->nchunk ? m->chunk_nc[k1] : m->nnode_chunk;
 }
 
-/* move the element cuts so that every thread's chunks took about the same time in the last
- * step; kept as they are while the slowest share is within 3 % of the mean (a moved cut sends
- * the state of the chunks it moves to the other core's cache) */
+/* the cost of element chunk k in the last step: its elements' time and the contact time of
+ * the node chunks that go with it (a thread's contact work is that of its nodes) */
+static double chunk_load(const fe_model *m, const fe_state *s, int k)
+{
+    int nc0, nc1;
+    chunk_nodes(m, k, k + 1, &nc0, &nc1);
+    double c = s->chunk_cost[k];
+    for (int j = nc0; j < nc1; j++) c += s->node_cost[j];
+    return c;
+}
+
+/* move the element cuts so that every thread's chunks, with the contact work of their
+ * nodes, took about the same time in the last step; kept as they are while the slowest share
+ * is within 3 % of the mean (a moved cut sends the state of the chunks it moves to the other
+ * core's cache) */
 static void rebalance(const fe_model *m, fe_state *s, int nt)
 {
-    const double *c = s->chunk_cost;
     const int nch = m->nchunk;
     int *cut = s->par_cut;
+    double *c = s->chunk_cost; /* becomes the chunk loads (rewritten by the next step) */
     double tot = 0, worst = 0;
-    for (int k = 0; k < nch; k++) tot += c[k];
+    for (int k = 0; k < nch; k++) tot += c[k] = chunk_load(m, s, k);
     if (!(tot > 0)) return;
     for (int t = 0; t < nt; t++) {
         double load = 0;
@@ -153,17 +179,10 @@ int fe_par_team(const fe_model *m, fe_state *s)
     } else if (nt > 1) {
         rebalance(m, s, nt);
     }
-    /* node shares: from the first node of each thread's first element chunk, to the
-     * nearest node chunk */
+    /* node shares: the node chunks that go with each thread's first element chunk */
     s->par_ncut[0] = 0;
-    for (int t = 1; t < nt; t++) {
-        int nc = s->par_cut[t] >= m->nchunk ? m->nnode_chunk
-                                             : (chunk_first_node(m, s->par_cut[t]) +
-                                                FE_CHUNK_NODES / 2) / FE_CHUNK_NODES;
-        if (nc < s->par_ncut[t - 1]) nc = s->par_ncut[t - 1];
-        if (nc > m->nnode_chunk) nc = m->nnode_chunk;
-        s->par_ncut[t] = nc;
-    }
+    for (int t = 1; t < nt; t++)
+        s->par_ncut[t] = s->par_cut[t] < m->nchunk ? m->chunk_nc[s->par_cut[t]] : m->nnode_chunk;
     s->par_ncut[nt] = m->nnode_chunk;
     return nt;
 }

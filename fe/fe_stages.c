@@ -30,7 +30,10 @@ static void elem_share(const fe_model *m, fe_state *s, int t, int timed)
         const int ip = m->chunk_part[k], e0 = m->chunk_elem[k];
         const int e1 = e0 + FE_CHUNK_ELEMS < m->part[ip].elem_end ? e0 + FE_CHUNK_ELEMS
                                                                  : m->part[ip].elem_end;
-        if (!chunked_part(m->part + ip)) continue;
+        if (!chunked_part(m->part + ip)) {
+            if (timed) s->chunk_cost[k] = 0;
+            continue;
+        }
         const double t0 = timed ? fe_par_clock() : 0;
         switch (m->part[ip].elem_kind) {
         case FE_KIND_HEX: fe_hex_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
@@ -74,7 +77,10 @@ static void gather_share(const fe_model *m, fe_state *s, int t)
 /* reads x, v (t - dt/2), stresses; writes stresses, slot forces, node_fint, node_mint,
  * part internal/hourglass/dissipated energies and part element steps; zeroes node_fext.
  * Threaded: each thread its own element chunks, then its own nodes (fe_parallel.h; the
- * result does not depend on the thread count). */
+ * result does not depend on the thread count). With threaded contact, each thread also runs
+ * the contact entries of its nodes after its elements, with no barrier between: the thread
+ * shares balance the two together (fe_parallel.c), which they could not do across a barrier
+ * (the entries need only x and v at t; fe_contact.h). */
 void fe_internal_forces(const fe_model *m, fe_state *s)
 {
     const int nch = m->nchunk;
@@ -85,10 +91,15 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
             fe_membrane_part(m, s, ip);
     fe_chunk_acc *ca = s->chunk_acc;
     const int nt = fe_par_team(m, s);
+    if (m->contact) fe_contact_begin(m, s);
+    const int live = fe_contact_threaded(m, s);
     if (nt > 1) {
 #pragma omp parallel num_threads(nt)
         {
-            for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) elem_share(m, s, t, 1);
+            for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) {
+                elem_share(m, s, t, 1);
+                if (live) fe_contact_live(m, s, t);
+            }
 #pragma omp barrier
             for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) gather_share(m, s, t);
         }
@@ -96,6 +107,7 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
         elem_share(m, s, 0, 0);
         gather_share(m, s, 0);
     }
+    if (live) s->contact->live_done = 1;
     /* partial sums of each part in chunk order */
     for (int k = 0; k < nch;) {
         const int ip = m->chunk_part[k];
@@ -112,7 +124,7 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
 void fe_contact_forces(const fe_model *m, fe_state *s)
 {
     memset(s->wall_force, 0, sizeof(double) * 3 * (size_t)m->nwall);
-    if (m->contact) fe_contact_interfaces(m, s);
+    if (m->contact) fe_contact_finish(m, s); /* begun in fe_internal_forces */
     unsigned pen = 0;
     for (int w = 0; w < m->nwall; w++)
         if (m->wall[w].method == FE_WALL_PENALTY) pen |= 1u << w;

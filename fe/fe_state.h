@@ -112,7 +112,8 @@ typedef struct {
     X(fe_chunk_acc, chunk_acc, nchunk, 1, "-", "partial sums of each element chunk")             \
     X(double, node_acc, nnode_acc, 1, "-", "partial sums of each node chunk (fe_integrate)")     \
     X(double, chunk_cost, nchunk, 1, "s", "time of each element chunk last step (thread shares)") \
-    X(double, foam_hist, nfoam_ip, 6, "-", "foam: largest-strain tensor, t = 0 frame (fe_foam.c)")
+    X(double, foam_hist, nfoam_ip, 6, "-", "foam: largest-strain tensor, t = 0 frame (fe_foam.c)") \
+    X(double, node_cost, nnode_chunk, 1, "s", "time of the contact work of each node chunk last step")
 
 struct fe_contact_state;
 

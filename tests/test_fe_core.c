@@ -2,8 +2,8 @@
  * gradients, patch tests of the hex and the Belytschko-Tsay shell, materials. */
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
+#include "tests/fe_test_build.h"
 
-#include "fe/fe_builder_impl.h" /* tests move generated nodes to distort a patch */
 #include "fe/fe_elem.h"
 
 /* the volume of a trilinear hex by 2x2x2 Gauss (exact: det J is at most quadratic per variable) */
@@ -67,15 +67,12 @@ static void test_hex_gradients(void)
 
 static void test_mesh_generators(void)
 {
+    fe_part_desc box = ft_part("box", FE_SECTION_SOLID, 210e9, 0.3, 7850);
+    ft_box(&box, 0.2, 0.1, 0.05, 4, 2, 1);
+    box.mesh.origin[0] = 1;
     fe_builder *b;
     mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
-    fe_part_desc box = ft_part("box", FE_SECTION_SOLID, 210e9, 0.3, 7850);
-    box.mesh.generate = FE_MESH_BOX;
-    box.mesh.size[0] = 0.2, box.mesh.size[1] = 0.1, box.mesh.size[2] = 0.05;
-    box.mesh.divisions[0] = 4, box.mesh.divisions[1] = 2, box.mesh.divisions[2] = 1;
-    box.mesh.origin[0] = 1;
-    CHECK(fe_builder_add_part(b, &box, NULL, &err) == MCS_OK);
+    CHECK(ft_builder(&b, &box, NULL, &err) == MCS_OK);
     fe_part_desc sq = ft_part("sq", FE_SECTION_SHELL, 210e9, 0.3, 7850);
     sq.section.thickness = 1.5e-3;
     sq.mesh.generate = FE_MESH_SQUARE_TUBE;
@@ -234,36 +231,14 @@ static void test_validation(void)
  * internal force at the interior node. */
 static void test_patch_hex(void)
 {
-    fe_builder *b;
     mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
-    fe_part_desc d = ft_part("cube", FE_SECTION_SOLID, 200e9, 0.3, 7800);
-    d.mesh.generate = FE_MESH_BOX;
-    d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = 1;
-    d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 2;
-    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
-    b->x[3 * 13 + 0] += 0.13, b->x[3 * 13 + 1] -= 0.08, b->x[3 * 13 + 2] += 0.11; /* centre */
-    b->x[3 * 4 + 0] += 0.07, b->x[3 * 10 + 2] -= 0.09, b->x[3 * 22 + 1] += 0.06;   /* faces */
     fe_model *m;
-    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
     fe_state *s;
-    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
-    const double G[3][3] = {{1e-3, 4e-4, -2e-4}, {1e-4, -5e-4, 3e-4}, {-3e-4, 2e-4, 7e-4}};
-    for (int n = 0; n < m->nnode; n++)
-        for (int i = 0; i < 3; i++) {
-            double v = 0;
-            for (int j = 0; j < 3; j++) v += G[i][j] * m->node_x0[3 * n + j];
-            s->node_v[3 * n + i] = v;
-        }
-    s->dt_prev = 1.0;
-    fe_internal_forces(m, s);
+    CHECK(ft_patch_cube(FE_HEX_ONE_POINT, &m, &s, &err) == MCS_OK);
+    if (!m) return;
+    double ref[6];
+    ft_patch_forces(m, s, ref);
     const fe_part *p = &m->part[0];
-    double de[6] = {G[0][0], G[1][1], G[2][2], 0.5 * (G[0][1] + G[1][0]),
-                    0.5 * (G[1][2] + G[2][1]), 0.5 * (G[2][0] + G[0][2])}, ref[6] = {0};
-    /* the Jaumann spin of the first increment acts on a zero stress: C : de exactly */
-    double tr = de[0] + de[1] + de[2];
-    for (int i = 0; i < 3; i++) ref[i] = p->lambda * tr + 2 * p->mu * de[i];
-    for (int i = 3; i < 6; i++) ref[i] = 2 * p->mu * de[i];
     for (int e = 0; e < m->nhex; e++)
         for (int i = 0; i < 6; i++) CHECK_NEAR(s->hex_sig[6 * e + i], ref[i], 1e-9 * p->mu * 1e-3);
     /* interior node 13 is in equilibrium; a corner node carries a force of order sigma A */
@@ -273,7 +248,6 @@ static void test_patch_hex(void)
     CHECK_NEAR(s->part_energy[FE_E_hourglass], 0, 1e-12 * fscale);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
-    fe_builder_destroy(&b);
 }
 
 /* The same for the Belytschko-Tsay shell: a distorted 2 x 2 patch in a tilted plane with a
@@ -282,9 +256,6 @@ static void test_patch_hex(void)
  * node's membrane force vanishes. */
 static void test_patch_shell(void)
 {
-    fe_builder *b;
-    mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
     fe_part_desc d = ft_part("plate", FE_SECTION_SHELL, 200e9, 0.3, 7800);
     d.section.thickness = 0.01;
     d.section.integration_points = 5;
@@ -292,8 +263,10 @@ static void test_patch_shell(void)
     d.mesh.size[0] = d.mesh.size[1] = 1;
     d.mesh.divisions[0] = d.mesh.divisions[1] = 2;
     d.mesh.axis = 2;
+    fe_builder *b;
+    mcs_error err = {0};
     int ip;
-    CHECK(fe_builder_add_part(b, &d, &ip, &err) == MCS_OK);
+    CHECK(ft_builder(&b, &d, &ip, &err) == MCS_OK);
     b->x[3 * 4 + 0] += 0.12, b->x[3 * 4 + 1] -= 0.07; /* interior node */
     b->x[3 * 1 + 0] += 0.08, b->x[3 * 5 + 1] += 0.1;
     /* tilt the plane: rotate about the x axis by 30 degrees (local frame e1, e2 in-plane) */
@@ -413,13 +386,12 @@ static void test_materials(void)
  * third of each triangle's mass to its nodes and carries no hourglass energy. */
 static void test_patch_triangles(void)
 {
-    fe_builder *b;
-    mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
     fe_part_desc d = ft_part("tri", FE_SECTION_SHELL, 200e9, 0.3, 7800);
     d.section.thickness = 0.01;
+    fe_builder *b;
+    mcs_error err = {0};
     int ip;
-    CHECK(fe_builder_add_part(b, &d, &ip, &err) == MCS_OK);
+    CHECK(ft_builder(&b, &d, &ip, &err) == MCS_OK);
     const double X[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.62, 0.41, 0}};
     for (int n = 0; n < 5; n++) CHECK(fe_builder_add_node(b, X[n], NULL, &err) == MCS_OK);
     for (int k = 0; k < 4; k++) {

@@ -4,8 +4,8 @@
  * conservation of a free elastic block, input checks. */
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
+#include "tests/fe_test_build.h"
 
-#include "fe/fe_builder_impl.h" /* the patch moves generated nodes */
 #include "fe/fe_elem.h"
 
 /* Patch test (Irons; MacNeal & Harder 1985): a linear velocity field v = G X on a distorted
@@ -13,38 +13,15 @@
  * C : sym(G) dt everywhere, and no resultant force on the interior node */
 static void test_patch_full(void)
 {
-    fe_builder *b;
     mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
-    fe_part_desc d = ft_part("cube", FE_SECTION_SOLID, 200e9, 0.3, 7800);
-    d.section.formulation = FE_HEX_FULL;
-    d.mesh.generate = FE_MESH_BOX;
-    d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = 1;
-    d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 2;
-    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
-    b->x[3 * 13 + 0] += 0.13, b->x[3 * 13 + 1] -= 0.08, b->x[3 * 13 + 2] += 0.11; /* centre */
-    b->x[3 * 4 + 0] += 0.07, b->x[3 * 10 + 2] -= 0.09, b->x[3 * 22 + 1] += 0.06;   /* faces */
     fe_model *m;
-    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
-    fe_builder_destroy(&b);
-    CHECK(m->nhex_gp == 64);
     fe_state *s;
-    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
-    const double G[3][3] = {{1e-3, 4e-4, -2e-4}, {1e-4, -5e-4, 3e-4}, {-3e-4, 2e-4, 7e-4}};
-    for (int n = 0; n < m->nnode; n++)
-        for (int i = 0; i < 3; i++) {
-            double v = 0;
-            for (int j = 0; j < 3; j++) v += G[i][j] * m->node_x0[3 * n + j];
-            s->node_v[3 * n + i] = v;
-        }
-    s->dt_prev = 1.0;
-    fe_internal_forces(m, s);
+    CHECK(ft_patch_cube(FE_HEX_FULL, &m, &s, &err) == MCS_OK);
+    if (!m) return;
+    CHECK(m->nhex_gp == 64);
+    double ref[6];
+    ft_patch_forces(m, s, ref);
     const fe_part *p = &m->part[0];
-    double de[6] = {G[0][0], G[1][1], G[2][2], 0.5 * (G[0][1] + G[1][0]),
-                    0.5 * (G[1][2] + G[2][1]), 0.5 * (G[2][0] + G[0][2])}, ref[6] = {0};
-    double tr = de[0] + de[1] + de[2];
-    for (int i = 0; i < 3; i++) ref[i] = p->lambda * tr + 2 * p->mu * de[i];
-    for (int i = 3; i < 6; i++) ref[i] = 2 * p->mu * de[i];
     double maxerr = 0;
     for (int g = 0; g < m->nhex_gp; g++)
         for (int i = 0; i < 6; i++) maxerr = fmax(maxerr, fabs(s->hex_gp[7 * g + i] - ref[i]));
@@ -77,9 +54,7 @@ static double cantilever(fe_hex_formulation form, double qhg, int nz, double nu,
     d.section.formulation = form;
     d.section.hourglass = FE_HG_STIFFNESS;
     d.section.hourglass_coefficient = qhg;
-    d.mesh.generate = FE_MESH_BOX;
-    d.mesh.size[0] = L, d.mesh.size[1] = w, d.mesh.size[2] = h;
-    d.mesh.divisions[0] = 40, d.mesh.divisions[1] = 1, d.mesh.divisions[2] = nz;
+    ft_box(&d, L, w, h, 40, 1, nz);
     fe_builder_add_part(b, &d, NULL, &err);
     fe_boundary_desc bc = ft_bc("beam", FE_WHERE_X_MIN, FE_DOF_ALL);
     fe_builder_add_boundary(b, &bc, &err);
@@ -144,15 +119,12 @@ static void test_cantilever(void)
  * freely for 3000 steps: the total energy stays constant within 1 % (issue 5's bar) */
 static void test_free_block_energy(void)
 {
-    fe_builder *b;
-    mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
     fe_part_desc d = ft_part("blk", FE_SECTION_SOLID, 1e7, 0.3, 1000);
     d.section.formulation = FE_HEX_FULL;
-    d.mesh.generate = FE_MESH_BOX;
-    d.mesh.size[0] = 0.1, d.mesh.size[1] = 0.06, d.mesh.size[2] = 0.04;
-    d.mesh.divisions[0] = 5, d.mesh.divisions[1] = 3, d.mesh.divisions[2] = 2;
-    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    ft_box(&d, 0.1, 0.06, 0.04, 5, 3, 2);
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(ft_builder(&b, &d, NULL, &err) == MCS_OK);
     fe_opts o = fe_opts_default();
     o.bulk_q1 = o.bulk_q2 = 0; /* no bulk viscosity: a conservative system */
     fe_model *m = NULL;

@@ -5,12 +5,12 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "fe/fe_builder_impl.h"
 #include "fe/fe_elem.h"
 #include "fe/fe_keyword.h"
 #include "fe/fe_solid.h"
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
+#include "tests/fe_test_build.h"
 
 static double tet_volume(const double *a, const double *b, const double *c, const double *d)
 {
@@ -138,44 +138,25 @@ static void test_tet_gradients(void)
  * rho V and are rho V_e / n per node */
 static void patch(int tets)
 {
+    fe_part_desc d = ft_part("patch", FE_SECTION_SOLID, 200e9, 0.3, 7800);
     fe_builder *b;
     mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
-    fe_part_desc d = ft_part("patch", FE_SECTION_SOLID, 200e9, 0.3, 7800);
     int ip;
-    CHECK(fe_builder_add_part(b, &d, &ip, &err) == MCS_OK);
+    CHECK(ft_builder(&b, &d, &ip, &err) == MCS_OK);
     const double h[3] = {0.5, 0.5, 0.5};
     add_grid(b, 2, 2, 2, h);
-    b->x[3 * 13 + 0] += 0.07, b->x[3 * 13 + 1] -= 0.05, b->x[3 * 13 + 2] += 0.06; /* centre */
-    b->x[3 * 4 + 0] += 0.04, b->x[3 * 10 + 2] -= 0.05, b->x[3 * 22 + 1] += 0.03;   /* faces */
+    ft_distort_patch(b, (const double[3]){0.07, -0.05, 0.06}, (const double[3]){0.04, -0.05, 0.03});
     if (tets) add_tets(b, ip, 2, 2, 2);
     else add_pentas(b, ip, 2, 2, 2);
-    fe_model *m = NULL;
-    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
-    fe_builder_destroy(&b);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    fe_model *m;
+    fe_state *s;
+    CHECK(ft_model_state(&b, NULL, &m, &s, &err) == MCS_OK);
+    if (!m) return;
     CHECK(m->nhex == (tets ? 48 : 16));
     CHECK_REL(m->mass_total, 7800.0, 1e-12); /* the distortion keeps the outer box */
-    fe_state *s;
-    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
-    const double G[3][3] = {{1e-3, 4e-4, -2e-4}, {1e-4, -5e-4, 3e-4}, {-3e-4, 2e-4, 7e-4}};
-    for (int n = 0; n < m->nnode; n++)
-        for (int i = 0; i < 3; i++) {
-            double v = 0;
-            for (int j = 0; j < 3; j++) v += G[i][j] * m->node_x0[3 * n + j];
-            s->node_v[3 * n + i] = v;
-        }
-    s->dt_prev = 1.0;
-    fe_internal_forces(m, s);
-    const fe_part *p = &m->part[0];
-    double de[6] = {G[0][0], G[1][1], G[2][2], 0.5 * (G[0][1] + G[1][0]),
-                    0.5 * (G[1][2] + G[2][1]), 0.5 * (G[2][0] + G[0][2])}, ref[6];
-    double tr = de[0] + de[1] + de[2], emax = 0;
-    for (int i = 0; i < 3; i++) ref[i] = p->lambda * tr + 2 * p->mu * de[i];
-    for (int i = 3; i < 6; i++) ref[i] = 2 * p->mu * de[i];
+    double ref[6];
+    ft_patch_forces(m, s, ref);
+    double emax = 0;
     for (int e = 0; e < m->nhex; e++)
         for (int i = 0; i < 6; i++) emax = fmax(emax, fabs(s->hex_sig[6 * e + i] - ref[i]));
     double fscale = fabs(ref[0]) * 0.25, fmid = 0;
@@ -201,12 +182,11 @@ static void test_patch_penta(void) { patch(0); }
  * step is not the hex formula's third of it. A tetrahedron has no hourglass energy. */
 static double lone_tet(double scale, double *ratio)
 {
+    fe_part_desc d = ft_part("tet", FE_SECTION_SOLID, 200e9, 0.3, 7800);
     fe_builder *b;
     mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
-    fe_part_desc d = ft_part("tet", FE_SECTION_SOLID, 200e9, 0.3, 7800);
     int ip;
-    CHECK(fe_builder_add_part(b, &d, &ip, &err) == MCS_OK);
+    CHECK(ft_builder(&b, &d, &ip, &err) == MCS_OK);
     const double x[4][3] = {{0, 0, 0}, {0.011, 0.001, 0}, {0.002, 0.009, 0.001}, {0.003, 0.002, 0.012}};
     for (int n = 0; n < 4; n++) CHECK(fe_builder_add_node(b, x[n], NULL, &err) == MCS_OK);
     int c[8] = {0, 1, 2, 3, 3, 3, 3, 3};
@@ -257,13 +237,12 @@ static void bar(int tets)
 {
     const double E = 200e9, rho = 7800, a = 0.01, L = 0.4, v0 = 5;
     const int nx = 40;
-    fe_builder *b;
-    mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
     fe_part_desc d = ft_part("bar", FE_SECTION_SOLID, E, 0, rho);
     d.initial_velocity[0] = -v0;
+    fe_builder *b;
+    mcs_error err = {0};
     int ip;
-    CHECK(fe_builder_add_part(b, &d, &ip, &err) == MCS_OK);
+    CHECK(ft_builder(&b, &d, &ip, &err) == MCS_OK);
     const double h[3] = {L / nx, a, a};
     add_grid(b, nx, 1, 1, h);
     if (tets) add_tets(b, ip, nx, 1, 1);
@@ -271,15 +250,10 @@ static void bar(int tets)
     fe_wall_desc w = {.normal = {1, 0, 0}};
     snprintf(w.name, sizeof w.name, "wall");
     CHECK(fe_builder_add_wall(b, &w, &err) == MCS_OK);
-    fe_model *m = NULL;
-    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
-    fe_builder_destroy(&b);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    fe_model *m;
     fe_state *s;
-    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    CHECK(ft_model_state(&b, NULL, &m, &s, &err) == MCS_OK);
+    if (!m) return;
     const double c = sqrt(E / rho), tc = 2 * L / c, F = rho * c * a * a * v0;
     int mid[4];
     CHECK(ft_nodes_at(m, 0, L / 2, 1e-9, mid, 4) == 4);
@@ -306,21 +280,27 @@ static void bar(int tets)
 static void test_bar_tet(void) { bar(1); }
 static void test_bar_penta(void) { bar(0); }
 
+/* the head of the keyword decks below: one solid part of elastic steel (7800 kg/m^3, 200 GPa,
+ * nu 0.3), nodes 1 at the origin and 2 at x = 1 m; then nodes 3 and 4 at y = 1 and z = 1 m */
+#define KW_HEAD                                                                                    \
+    "*KEYWORD\n"                                                                                   \
+    "*PART\nsolid\n         1         1         1\n"                                              \
+    "*SECTION_SOLID\n         1         1\n"                                                      \
+    "*MAT_ELASTIC\n         1    7800.0   2.0E11       0.3\n"                                     \
+    "*NODE\n"                                                                                      \
+    "       1             0.0             0.0             0.0\n"                                   \
+    "       2             1.0             0.0             0.0\n"
+#define KW_NODES_3_4                                                                               \
+    "       3             0.0             1.0             0.0\n"                                   \
+    "       4             0.0             0.0             1.0\n"
+
 /* a deck with a tetrahedron (N4 repeated, and N5..N8 blank) and a pentahedron builds with
  * masses rho V / 4 and rho V / 6 per node and writes back in LS-DYNA's order; another
  * degenerate pattern is refused with the deck line */
 static void test_keyword_tet_penta(void)
 {
     static const char deck[] =
-        "*KEYWORD\n"
-        "*PART\nsolid\n         1         1         1\n"
-        "*SECTION_SOLID\n         1         1\n"
-        "*MAT_ELASTIC\n         1    7800.0   2.0E11       0.3\n"
-        "*NODE\n"
-        "       1             0.0             0.0             0.0\n"
-        "       2             1.0             0.0             0.0\n"
-        "       3             0.0             1.0             0.0\n"
-        "       4             0.0             0.0             1.0\n"
+        KW_HEAD KW_NODES_3_4
         "       5             1.0             1.0             0.0\n"
         "       6             1.0             1.0             1.0\n"
         "       7             0.0             1.0             1.0\n"
@@ -362,13 +342,7 @@ static void test_keyword_tet_penta(void)
     fe_kw_deck_destroy(&dk);
     /* a pentahedron 1 2 5 3 / 4 4 6 6 (quad 1-2-5-3, ridge 4-6) of volume 1/2 */
     static const char deck2[] =
-        "*KEYWORD\n"
-        "*PART\nsolid\n         1         1         1\n"
-        "*SECTION_SOLID\n         1         1\n"
-        "*MAT_ELASTIC\n         1    7800.0   2.0E11       0.3\n"
-        "*NODE\n"
-        "       1             0.0             0.0             0.0\n"
-        "       2             1.0             0.0             0.0\n"
+        KW_HEAD
         "       3             0.0             0.0             1.0\n"
         "       4             0.0             1.0             0.0\n"
         "       5             1.0             0.0             1.0\n"
@@ -392,15 +366,7 @@ static void test_keyword_tet_penta(void)
     fe_kw_deck_destroy(&dk);
     /* n1 n1 ...: neither pattern */
     static const char deck3[] =
-        "*KEYWORD\n"
-        "*PART\nsolid\n         1         1         1\n"
-        "*SECTION_SOLID\n         1         1\n"
-        "*MAT_ELASTIC\n         1    7800.0   2.0E11       0.3\n"
-        "*NODE\n"
-        "       1             0.0             0.0             0.0\n"
-        "       2             1.0             0.0             0.0\n"
-        "       3             0.0             1.0             0.0\n"
-        "       4             0.0             0.0             1.0\n"
+        KW_HEAD KW_NODES_3_4
         "*ELEMENT_SOLID\n"
         "       1       1       1       1       2       3       4       4       4       4\n"
         "*END\n";
@@ -419,15 +385,12 @@ static void test_keyword_tet_penta(void)
  * face is one, it bounces back without passing through, and the balance holds */
 static void test_tet_contact(void)
 {
+    fe_part_desc base = ft_part("base", FE_SECTION_SOLID, 2e8, 0.3, 1000);
+    ft_box(&base, 0.02, 0.02, 0.01, 2, 2, 1);
+    base.mesh.origin[2] = -0.0101;
     fe_builder *b;
     mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
-    fe_part_desc base = ft_part("base", FE_SECTION_SOLID, 2e8, 0.3, 1000);
-    base.mesh.generate = FE_MESH_BOX;
-    base.mesh.size[0] = base.mesh.size[1] = 0.02, base.mesh.size[2] = 0.01;
-    base.mesh.divisions[0] = base.mesh.divisions[1] = 2, base.mesh.divisions[2] = 1;
-    base.mesh.origin[2] = -0.0101;
-    CHECK(fe_builder_add_part(b, &base, NULL, &err) == MCS_OK);
+    CHECK(ft_builder(&b, &base, NULL, &err) == MCS_OK);
     fe_boundary_desc bc = ft_bc("base", FE_WHERE_Z_MIN, FE_DOF_ALL);
     CHECK(fe_builder_add_boundary(b, &bc, &err) == MCS_OK);
     fe_part_desc d = ft_part("tets", FE_SECTION_SOLID, 2e8, 0.3, 1000);
@@ -447,13 +410,10 @@ static void test_tet_contact(void)
     snprintf(cd.slave[0], FE_NAME_MAX, "tets");
     snprintf(cd.master[0], FE_NAME_MAX, "base");
     CHECK(fe_builder_add_contact(b, &cd, &err) == MCS_OK);
-    fe_model *m = NULL;
-    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
-    fe_builder_destroy(&b);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    fe_model *m;
+    fe_state *s;
+    CHECK(ft_model_state(&b, NULL, &m, &s, &err) == MCS_OK);
+    if (!m) return;
     int ntri = 0;
     for (int g = 0; g < m->contact->nseg; g++)
         if (m->contact->seg_part[g] == 1) {
@@ -461,8 +421,6 @@ static void test_tet_contact(void)
             ntri += q[2] == q[3] && q[0] != q[1] && q[1] != q[2] && q[0] != q[2];
         }
     CHECK(ntri == 48);
-    fe_state *s;
-    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
     double zmin = 1, emax = 0;
     while (s->time < 6e-3 && fe_step(m, s) == MCS_OK) {
         for (int n = n0; n < m->nnode; n++) zmin = fmin(zmin, s->node_x[3 * n + 2]);

@@ -682,6 +682,9 @@ static const mcs_skey fe_contact_keys[] = {
     Q("friction_decay", NONE, GE, 0, 0, "exponential decay of friction with slip speed [s/m]"),
     /* on the shell offsets t/2 (LS-DYNA SST/MST scale) */
     Q("thickness_scale", NONE, GT, 0, 0, "scale on the shell contact thickness (default 1)"),
+    /* membrane parts: two fabric layers rest t_c apart (docs/fe.md "Contact") */
+    Q("fabric_thickness", LEN, GT, 0, 0,
+      "contact thickness of fabric (membrane) parts [m] (default max(fabric thickness, 1 mm))"),
     END,
 };
 static const mcs_smap fe_contact_map = {

@@ -44,7 +44,14 @@ typedef struct {
     double friction_decay;                    /* mu = mu_d + (mu_s - mu_d) exp(-dc |v_t|) [s/m] */
     double penalty_scale;                     /* s of k = s K A^2/V, s K A/diag; 0 -> 0.1 [-] */
     double thickness_scale;                   /* on the shell offsets t/2; 0 -> 1 [-]         */
+    double fabric_thickness;                  /* contact thickness of membrane (fabric) parts;
+                                                 0 -> max(section thickness,
+                                                 FE_CONTACT_FABRIC_TMIN) [m]                   */
 } fe_contact_desc;
+
+/* the smallest default contact thickness of fabric (membrane parts): two layers rest this far
+ * apart; airbag practice (OpenRadioss airbag self contact GAP_MIN = 1 mm) [m] */
+#define FE_CONTACT_FABRIC_TMIN 1e-3
 
 typedef struct {
     char name[FE_NAME_MAX];

@@ -55,6 +55,9 @@ mcs_status fe_builder_add_contact(fe_builder *b, const fe_contact_desc *d, mcs_e
                        "fe: contact '%s': friction, decay, penalty_scale and thickness_scale "
                        "must be >= 0 and friction_dynamic <= friction",
                        d->name);
+    if (!(d->fabric_thickness >= 0) || !isfinite(d->fabric_thickness))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: contact '%s': fabric_thickness must be >= 0",
+                       d->name);
     b->contact[b->ncontact] = *d;
     if (!b->contact[b->ncontact].name[0])
         snprintf(b->contact[b->ncontact].name, FE_NAME_MAX, "contact%d", b->ncontact);
@@ -153,8 +156,17 @@ typedef struct {
     int cap_seg, cap_ent;
     unsigned char *ext;    /* exterior hex faces                  */
     unsigned char *mark;   /* scratch per node                    */
-    double *shell_ht;      /* half thickness of shells at a node  */
+    double *shell_ht;      /* half thickness of shells and membranes at a node (ellipsoids) */
+    double *plain_ht;      /* half thickness of the (non-membrane) shells at a node */
+    double *fabric_t;      /* section thickness of the membranes at a node (0 none) */
 } cbuild;
+
+/* contact thickness of a membrane (fabric) of section thickness t in contact d: the key, or
+ * the fabric thickness but at least FE_CONTACT_FABRIC_TMIN (docs/fe.md "Contact") [m] */
+static double fabric_contact_thickness(const fe_contact_desc *d, double t)
+{
+    return d->fabric_thickness > 0 ? d->fabric_thickness : fmax(t, FE_CONTACT_FABRIC_TMIN);
+}
 
 static int grow_arrays(cbuild *cb, int nseg, int nent)
 {
@@ -207,7 +219,8 @@ static void set_seg(fe_contact_model *c, int sg, const int nodes[4], int part, i
 
 /* segments of the parts in list: shell elements; exterior faces of hexes */
 static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, int n,
-                               double scale, double tscale, mcs_error *err)
+                               double scale, double tscale, const fe_contact_desc *d,
+                               mcs_error *err)
 {
     fe_contact_model *c = cb->c;
     for (int ip = 0; ip < m->npart; ip++) {
@@ -220,16 +233,21 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
                 double xe[4][3], fr[3][3], xl[4], yl[4];
                 for (int i = 0; i < 4; i++) memcpy(xe[i], m->node_x0 + 3 * q[i], sizeof xe[i]);
                 double A = fe_shell_frame(xe, fr, xl, yl), dmax = 0;
-                for (int i = 0; i < 2; i++) {
-                    double d[3] = {xe[i + 2][0] - xe[i][0], xe[i + 2][1] - xe[i][1],
-                                   xe[i + 2][2] - xe[i][2]};
+                /* a quad's diagonals; a triangle's (a b c c) sides, so that the two halves
+                 * of a split quad get the same stiffness whichever way they are numbered */
+                const int tri = q[2] == q[3];
+                for (int i = 0; i < (tri ? 3 : 2); i++) {
+                    const int j = tri ? (i + 1) % 3 : i + 2;
+                    double d[3] = {xe[j][0] - xe[i][0], xe[j][1] - xe[i][1], xe[j][2] - xe[i][2]};
                     dmax = fmax(dmax, sqrt(fe_dot(d, d)));
                 }
                 if (grow_arrays(cb, c->nseg + 1, 0))
                     return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact segments)");
-                /* LS-DYNA shells: k = s K A / max diagonal */
-                set_seg(c, c->nseg++, q, ip, 0, 0.5 * tscale * p->section.thickness,
-                        scale * K * A / dmax);
+                /* LS-DYNA shells: k = s K A / max diagonal; fabric at its contact thickness */
+                double ht = p->section.type == FE_SECTION_MEMBRANE
+                                ? 0.5 * fabric_contact_thickness(d, p->section.thickness)
+                                : 0.5 * tscale * p->section.thickness;
+                set_seg(c, c->nseg++, q, ip, 0, ht, scale * K * A / dmax);
             } else if (p->elem_kind == FE_KIND_HEX) {
                 double xe[8][3], bb[8][3], aa[8][3];
                 const int *h = m->hex_node + 8 * e;
@@ -266,7 +284,7 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
 
 /* slave entries: every node with mass of the parts in list (hex parts: surface nodes only) */
 static mcs_status add_entries(cbuild *cb, const fe_model *m, const int *list, int n,
-                              double tscale, mcs_error *err)
+                              double tscale, const fe_contact_desc *d, mcs_error *err)
 {
     fe_contact_model *c = cb->c;
     memset(cb->mark, 0, (size_t)m->nnode);
@@ -290,7 +308,10 @@ static mcs_status add_entries(cbuild *cb, const fe_model *m, const int *list, in
         if (grow_arrays(cb, 0, c->nent + 1))
             return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact nodes)");
         c->ent_node[c->nent] = nd;
-        c->ent_ht[c->nent] = tscale * cb->shell_ht[nd];
+        /* shells at t/2 (scaled), fabric at half its contact thickness; the larger */
+        const double tf = cb->fabric_t[nd];
+        c->ent_ht[c->nent] = fmax(tscale * cb->plain_ht[nd],
+                                  tf > 0 ? 0.5 * fabric_contact_thickness(d, tf) : 0);
         c->nent++;
     }
     return MCS_OK;
@@ -315,8 +336,8 @@ static mcs_status add_pass(cbuild *cb, const fe_model *m, int iface, int self, i
     p->reverse = rev;
     p->ent_begin = c->nent;
     p->seg_begin = c->nseg;
-    mcs_status st = add_entries(cb, m, sl, nsl, tscale, err);
-    if (!st) st = add_segments(cb, m, ma, nma, scale, tscale, err);
+    mcs_status st = add_entries(cb, m, sl, nsl, tscale, d, err);
+    if (!st) st = add_segments(cb, m, ma, nma, scale, tscale, d, err);
     p->ent_end = c->nent;
     p->seg_end = c->nseg;
     c->npass++;
@@ -478,14 +499,21 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
     cb.ext = exterior_faces(m);
     cb.mark = malloc((size_t)m->nnode);
     cb.shell_ht = calloc((size_t)m->nnode, sizeof(double));
+    cb.plain_ht = calloc((size_t)m->nnode, sizeof(double));
+    cb.fabric_t = calloc((size_t)m->nnode, sizeof(double));
     mcs_status st = MCS_OK;
-    if (!c->iface || !c->pass || !cb.ext || !cb.mark || !cb.shell_ht || grow_arrays(&cb, 1, 1))
+    if (!c->iface || !c->pass || !cb.ext || !cb.mark || !cb.shell_ht || !cb.plain_ht ||
+        !cb.fabric_t || grow_arrays(&cb, 1, 1))
         st = MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
     for (int e = 0; e < m->nshell && !st; e++) {
-        double ht = 0.5 * m->part[m->shell_part[e]].section.thickness;
+        const fe_section_desc *sec = &m->part[m->shell_part[e]].section;
+        const int fabric = sec->type == FE_SECTION_MEMBRANE;
+        double ht = 0.5 * sec->thickness;
         for (int i = 0; i < 4; i++) {
-            double *h = &cb.shell_ht[m->shell_node[4 * e + i]];
-            *h = fmax(*h, ht);
+            const int nd = m->shell_node[4 * e + i];
+            cb.shell_ht[nd] = fmax(cb.shell_ht[nd], ht);
+            if (fabric) cb.fabric_t[nd] = fmax(cb.fabric_t[nd], sec->thickness);
+            else cb.plain_ht[nd] = fmax(cb.plain_ht[nd], ht);
         }
     }
     int any_self = 0;
@@ -526,6 +554,8 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
     free(cb.ext);
     free(cb.mark);
     free(cb.shell_ht);
+    free(cb.plain_ht);
+    free(cb.fabric_t);
     if (st) fe_contact_model_free(m);
     return st;
 }

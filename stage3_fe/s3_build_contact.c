@@ -58,6 +58,7 @@ static mcs_status add_contact(fe_builder *b, const mcs_node *c, int index, mcs_e
     d.friction_decay = mcs_node_num_or(c, "friction_decay", 0);
     d.penalty_scale = mcs_node_num_or(c, "penalty_scale", 0);
     d.thickness_scale = mcs_node_num_or(c, "thickness_scale", 0);
+    d.fabric_thickness = mcs_node_num_or(c, "fabric_thickness", 0);
     if (s3_given(c, "friction_dynamic") && d.friction_dynamic > d.friction)
         return mcs_node_error(s3_get(c, "friction_dynamic"), err, MCS_ERR_RANGE,
                               "must not exceed friction (%g)", d.friction);

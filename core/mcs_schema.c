@@ -642,7 +642,7 @@ static const mcs_skey wall_keys[] = {
     Q("penalty_scale", NONE, GT, 0, 0, "penalty stiffness scale (default 0.1)"),
     RS("parts", PART, 1, 0, "parts it stops (default every part)"),
     Q("mass", MCS_DIM_MASS, GT, 0, 0, "a free wall of this mass moving along its normal, velocity = "
-                              "its initial velocity; needs method penalty [kg]"),
+                              "its initial velocity [kg]"),
     END,
 };
 static const mcs_smap wall_map = {.what = "rigid wall", .keys = wall_keys};

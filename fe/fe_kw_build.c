@@ -379,10 +379,10 @@ static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[F
             d.normal[i] = k->head[i] - k->tail[i];
         }
         if (k->moving) {
-            /* a free wall with mass: penalty contact (fe_wall.c), V0 along the normal */
+            /* a free wall with mass, V0 along the normal: the constraint method, as LS-DYNA
+             * treats rigid walls by default (fe_wall_kin.c) */
             double nn = sqrt(d.normal[0] * d.normal[0] + d.normal[1] * d.normal[1] +
                              d.normal[2] * d.normal[2]);
-            d.method = FE_WALL_PENALTY;
             d.mass = k->mass;
             for (int i = 0; i < 3; i++) d.velocity[i] = k->v0 * d.normal[i] / nn;
         }

@@ -159,8 +159,8 @@ typedef struct {
     int nparts;               /* 0: every node in front of the wall at t = 0 is a slave       */
     char parts[8][FE_NAME_MAX]; /* slave parts                                              */
     double mass;              /* > 0: a free wall of this mass moving along its normal, with
-                                 `velocity` (along the normal) as its initial velocity; needs
-                                 method penalty (LS-DYNA *RIGIDWALL_PLANAR_MOVING) [kg]    */
+                                 `velocity` (along the normal) as its initial velocity, either
+                                 method (LS-DYNA *RIGIDWALL_PLANAR_MOVING) [kg]             */
 } fe_wall_desc;
 
 /* ---- model options (not per part) ----------------------------------------------------- */
@@ -311,6 +311,10 @@ typedef struct fe_model {
     char (*spring_part)[FE_NAME_MAX]; /* their names (nspring_part)                        */
     int nfoam_ip;          /* integration points of foam hexes (1 or 8 per element) [-]    */
     struct fe_sliprings *sliprings; /* belt slip rings (fe_slipring.h), NULL if none      */
+    /* kinematic walls with mass (fe_wall_kin.c): their slave nodes, wall by wall */
+    int nwall_slave;       /* slave nodes of kinematic walls with mass, all walls [-]      */
+    int *wall_slave;       /* (nwall_slave) node indices                                   */
+    int wall_slave_off[FE_WALL_MAX + 1]; /* wall w's slaves: wall_slave_off[w] ..[w+1] [-]  */
 } fe_model;
 
 #define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */

@@ -66,6 +66,8 @@ void fe_solid_free(fe_model *m)
     free(m->elem_dt_factor);
     free(m->elem_ms0);
     free(m->elem_mass0);
+    free(m->wall_slave);
+    m->wall_slave = NULL;
     m->elem_ms0 = m->elem_mass0 = NULL;
     m->spring = NULL;
     m->spring_part = NULL;

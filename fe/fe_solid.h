@@ -88,6 +88,22 @@ mcs_status fe_wall_finish(fe_model *m, mcs_error *err);
 void fe_wall_reset(const fe_model *m, fe_state *s);
 void fe_wall_integrate(const fe_model *m, fe_state *s);
 
+/* constants of one node update (fe_integrate) the wall solve needs */
+typedef struct {
+    double dt, dth, hb;   /* step, velocity-update step, weight of the interval before t [s] */
+    double d0, d1;        /* mass-damping factors of the velocity update [-]                 */
+} fe_wall_step;
+/* before the node update: every wall's displacement at t + dt (wall_xn); kinematic walls with
+ * mass solved with their slaves (fe_wall_kin.c) */
+void fe_wall_predict(const fe_model *m, fe_state *s, const fe_wall_step *P);
+/* a kinematic wall with mass (fe_wall_kin.c) */
+static inline int fe_wall_kin_mass(const fe_wall *W)
+{
+    return W->mass > 0 && W->method == FE_WALL_KINEMATIC;
+}
+void fe_wall_kin_solve(const fe_model *m, fe_state *s, int w, const fe_wall_step *P);
+mcs_status fe_wall_kin_finish(fe_model *m, mcs_error *err);
+
 /* ---- the time loop ---- */
 
 /* state reset: bodies at rest at t = 0 with the nodes' initial velocities */

@@ -207,7 +207,7 @@ typedef struct {
 /* node chunk k: velocities, positions and the chunk's partial sums in node_acc */
 static void integrate_chunk(const fe_model *m, fe_state *s, int k, const integ_par *P)
 {
-    const double dt = P->dt, dth = P->dth, tn = P->tn, c = P->c, d0 = P->d0, d1 = P->d1;
+    const double dt = P->dt, dth = P->dth, c = P->c, d0 = P->d0, d1 = P->d1;
     const double hb = P->hb, idth = P->idth;
     const unsigned kin = P->kin;
     const int stride = m->node_acc_stride, npart = m->npart, nwall = m->nwall;
@@ -235,7 +235,7 @@ static void integrate_chunk(const fe_model *m, fe_state *s, int k, const integ_p
             const fe_wall *W = &m->wall[w];
             double g = 0;
             for (int i = 0; i < 3; i++)
-                g += (x[i] + dt * vn[i] - W->point[i] - W->velocity[i] * tn) * W->normal[i];
+                g += (x[i] + dt * vn[i] - W->point[i] - s->wall_xn[3 * w + i]) * W->normal[i];
             if (g >= 0) continue;
             /* land on the wall: remove the normal velocity that would penetrate */
             double dv = -g / dt;
@@ -309,6 +309,10 @@ void fe_integrate(const fe_model *m, fe_state *s)
     P.kin = 0;
     for (int w = 0; w < m->nwall; w++)
         if (m->wall[w].method == FE_WALL_KINEMATIC) P.kin |= 1u << w;
+    if (m->nwall) { /* walls at t + dt; kinematic walls with mass solved with their slaves */
+        fe_wall_step ws = {P.dt, P.dth, P.hb, P.d0, P.d1};
+        fe_wall_predict(m, s, &ws);
+    }
     const int nch = m->nnode_chunk, stride = m->node_acc_stride, npart = m->npart;
     const int nwall = m->nwall, nt = s->par_nt > 1 ? s->par_nt : 1;
     if (nt > 1) {

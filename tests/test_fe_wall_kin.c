@@ -1,0 +1,268 @@
+/* test_fe_wall_kin: kinematic (constraint) rigid walls with mass (fe/fe_wall_kin.c) against
+ * closed forms: the perfectly plastic two-body collision, the exact active set of several
+ * landing nodes, and an elastic bar striking a free wall (1-D wave solution). */
+#include <math.h>
+#include <string.h>
+
+#include "tests/harness.h"
+#include "fe/fe_solid.h"
+#include "tests/fe_test_util.h"
+
+/* a dummy part far behind the wall (not a slave) and n point masses at x[i] with velocity
+ * v[i] along x; a free kinematic wall of mass M at x = 0, normal +x, at rest */
+static fe_model *build_points(int n, const double *x, const double *mass, double M, double dt,
+                              int *node)
+{
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc d = ft_part("dummy", FE_SECTION_SOLID, 1e6, 0.3, 1000);
+    d.mesh.generate = FE_MESH_BOX;
+    d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = 0.01;
+    d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 1;
+    d.mesh.origin[0] = -10;
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    for (int i = 0; i < n; i++) {
+        double p[3] = {x[i], 0.01 * i, 0};
+        CHECK(fe_builder_add_node(b, p, &node[i], &err) == MCS_OK);
+        fe_mass_desc md = {.node = node[i], .mass = mass[i]};
+        CHECK(fe_builder_add_mass(b, &md, &err) == MCS_OK);
+    }
+    fe_wall_desc w = {.normal = {1, 0, 0}, .method = FE_WALL_KINEMATIC, .mass = M};
+    snprintf(w.name, sizeof w.name, "free");
+    CHECK(fe_builder_add_wall(b, &w, &err) == MCS_OK);
+    fe_opts o = fe_opts_default();
+    o.dt_max = dt;
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+    if (!m) fprintf(stderr, "%s\n", err.msg);
+    fe_builder_destroy(&b);
+    return m;
+}
+
+/* a block (point mass m) at v0 onto a free wall of mass M at rest, perfectly plastic (the
+ * constraint wall lands the node on the plane): afterwards both move at the common velocity
+ *     V = m v0 / (m + M)
+ * (momentum; e.g. Goldstein, Classical Mechanics, 3rd ed., sec. 3.10, the inelastic limit), and
+ * the kinetic energy lost, 1/2 m M v0^2 / (m + M), is in `dissipated`, the total constant. */
+static void test_plastic_collision(void)
+{
+    const double mb = 1.5, M = 4, v0 = 2, dt = 1e-6;
+    double x = 1.234e-3, mass = mb;
+    int node;
+    fe_model *m = build_points(1, &x, &mass, M, dt, &node);
+    if (!m) return;
+    CHECK(m->nwall_slave == 1);
+    mcs_error err = {0};
+    fe_state *s = NULL;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    s->node_v[3 * node] = -v0;
+    double perr = 0, pen = 0;
+    while (s->time < 2e-3 && fe_step(m, s) == MCS_OK) {
+        perr = fmax(perr, fabs(M * s->wall_v[0] + mb * s->node_v[3 * node] + mb * v0));
+        pen = fmin(pen, s->node_x[3 * node] - s->wall_x[0]);
+    }
+    CHECK(s->err.status == MCS_OK);
+    const double V = -mb * v0 / (mb + M), loss = 0.5 * mb * M * v0 * v0 / (mb + M);
+    const double E0 = 0.5 * mb * v0 * v0;
+    printf("  block %g kg at %g m/s onto a free %g kg kinematic wall: wall %.15f, block %.15f "
+           "(m v0/(m+M) %.15f), momentum error %.2e, dissipated %.12g J (closed form %.12g), "
+           "total drift %.2e of E0, penetration %.2e m\n",
+           mb, v0, M, s->wall_v[0], s->node_v[3 * node], V, perr, s->energy[FE_E_dissipated],
+           loss, (s->energy[FE_E_total] - s->energy0) / E0, -pen);
+    CHECK_NEAR(s->wall_v[0], V, 1e-14 * v0);
+    CHECK_NEAR(s->node_v[3 * node], V, 1e-14 * v0);
+    CHECK(perr < 1e-14 * mb * v0);
+    CHECK(pen > -1e-15);
+    CHECK_REL(s->energy[FE_E_dissipated], loss, 1e-10);
+    CHECK_REL(s->energy[FE_E_kinetic], 0.5 * (mb + M) * V * V, 1e-10);
+    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-12 * E0);
+    CHECK_NEAR(s->energy[FE_E_external_work], 0, 1e-12 * E0);
+    CHECK(s->wall_normal[0] == 0); /* together, no force */
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+}
+
+/* several nodes in one step: the exact active set. The wall velocity V must be the root of
+ *     M V + sum_i m_i max(0, V - w_i) = M V0,   w_i = u_i + g_i / dt
+ * (found here by bisection, independently of the sorted scan), each node either lands on the
+ * plane (x = wall at t + dt) or keeps its free velocity and stays in front of it
+ * (complementarity), and the momentum is conserved. */
+static void test_active_set(void)
+{
+    enum { N = 6 };
+    const double dt = 1e-4, M = 2;
+    double x[N] = {1e-4, 2e-4, 5e-5, 3e-4, 1e-3, 2e-5}, mass[N] = {1, 0.5, 2, 1, 1, 0.3};
+    double v[N] = {-3, -1, -1, -4, -5, 0.1};
+    int node[N];
+    fe_model *m = build_points(N, x, mass, M, dt, node);
+    if (!m) return;
+    mcs_error err = {0};
+    fe_state *s = NULL;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    if (!s) return;
+    const double V0 = -0.4; /* the wall already moving away from the nodes */
+    s->wall_v[0] = V0;
+    double p0 = M * V0, w[N];
+    for (int i = 0; i < N; i++) {
+        s->node_v[3 * node[i]] = v[i];
+        p0 += mass[i] * v[i];
+        w[i] = v[i] + x[i] / s->dt; /* no force on the point masses: u_i = v_i */
+    }
+    double lo = -10, hi = V0;
+    for (int it = 0; it < 200; it++) {
+        double V = 0.5 * (lo + hi), f = M * (V - V0);
+        for (int i = 0; i < N; i++) f += mass[i] * fmax(0, V - w[i]);
+        if (f > 0) hi = V;
+        else lo = V;
+    }
+    const double dt0 = s->dt;
+    CHECK(fe_step(m, s) == MCS_OK);
+    double p1 = M * s->wall_v[0];
+    int landed = 0, bad = 0;
+    for (int i = 0; i < N; i++) {
+        const int n = node[i];
+        p1 += mass[i] * s->node_v[3 * n];
+        double gap = s->node_x[3 * n] - s->wall_x[0];
+        if (w[i] < s->wall_v[0]) {
+            landed++;
+            bad += fabs(gap) > 1e-15;
+        } else {
+            bad += gap < -1e-15 || s->node_v[3 * n] != v[i];
+        }
+    }
+    printf("  %d nodes, %d land: wall V %.15f (bisection %.15f), momentum error %.2e, step %g\n",
+           N, landed, s->wall_v[0], 0.5 * (lo + hi), fabs(p1 - p0), dt0);
+    CHECK(landed == 2); /* nodes 0 and 3; node 2 (w < V0) could land but does not */
+    CHECK(bad == 0);
+    CHECK_NEAR(s->wall_v[0], 0.5 * (lo + hi), 1e-13);
+    CHECK(fabs(p1 - p0) < 1e-14 * 10);
+    CHECK(s->wall_x[0] == dt0 * s->wall_v[0]);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+}
+
+/* an elastic bar (mass m_b, length L, impedance Z = rho c A) at v0 strikes a free wall of mass
+ * M at rest. 1-D waves (d'Alembert; the rod-mass impact of Goldsmith, Impact, 1960, ch. 2):
+ * while the wave reflected at the free end is on its way, the contact force is Z (v0 - V), so
+ * M dV/dt = Z (v0 - V), V = v0 (1 - exp(-Z t / M)); the returning unloading wave makes the
+ * force jump to Z (-v0 - V) < 0 at t = 2L/c, where the wall separates with
+ *     V = v0 (1 - exp(-2 m_b / M))      (Z 2L/c = 2 m_b).
+ * Momentum M V + sum m v is conserved at every step; the balance stays closed. */
+static void test_bar_onto_free_wall(void)
+{
+    const double E = 2e9, rho = 1000, a = 0.01, L = 0.2, v0 = 5;
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc d = ft_part("bar", FE_SECTION_SOLID, E, 0, rho);
+    d.mesh.generate = FE_MESH_BOX;
+    d.mesh.size[0] = L, d.mesh.size[1] = d.mesh.size[2] = a;
+    d.mesh.divisions[0] = 80, d.mesh.divisions[1] = d.mesh.divisions[2] = 1;
+    d.mesh.origin[0] = 1e-4;
+    d.initial_velocity[0] = -v0;
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    const double mb = rho * a * a * L, M = 2 * mb;
+    fe_wall_desc w = {.normal = {1, 0, 0}, .method = FE_WALL_KINEMATIC, .mass = M};
+    snprintf(w.name, sizeof w.name, "free");
+    CHECK(fe_builder_add_wall(b, &w, &err) == MCS_OK);
+    fe_opts o = fe_opts_default();
+    o.bulk_q1 = o.bulk_q2 = 0; /* elastic */
+    o.dt_max = 1e-6; /* below the stable 1.6 us: a constant step, the balance exact (fe_state.h) */
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
+    fe_builder_destroy(&b);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    fe_state *s = NULL;
+    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    const double c = sqrt(E / rho), t0 = 1e-4 / v0, tend = t0 + 4 * L / c;
+    double perr = 0, tsep = 0, fmax_ = 0;
+    while (s->time < tend && fe_step(m, s) == MCS_OK) {
+        double pm = M * s->wall_v[0];
+        for (int n = 0; n < m->nnode; n++) pm += m->node_mass[n] * s->node_v[3 * n];
+        perr = fmax(perr, fabs(pm + mb * v0));
+        if (s->wall_normal[0] > 0) tsep = s->energy_time;
+        fmax_ = fmax(fmax_, s->wall_normal[0]);
+    }
+    CHECK(s->err.status == MCS_OK);
+    const double Vx = -v0 * (1 - exp(-2 * mb / M)), E0 = 0.5 * mb * v0 * v0;
+    printf("  bar %g kg at %g m/s onto a free %g kg kinematic wall: wall %.5f m/s after "
+           "separation (1-D waves %.5f, %+.2f %%), contact %.4g us (2L/c %.4g us), peak %.4g N "
+           "(rho c A v0 %.4g), momentum error %.2e of m v0, total drift %.2e of E0, "
+           "dissipated %.2e of E0\n",
+           mb, v0, M, s->wall_v[0], Vx, 100 * (s->wall_v[0] / Vx - 1), 1e6 * (tsep - t0),
+           2e6 * L / c, fmax_, rho * c * a * a * v0, perr / (mb * v0),
+           (s->energy[FE_E_total] - s->energy0) / E0, s->energy[FE_E_dissipated] / E0);
+    CHECK(perr < 1e-12 * mb * v0);
+    CHECK_REL(s->wall_v[0], Vx, 0.02);
+    CHECK_REL(tsep - t0, 2 * L / c, 0.03);
+    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-12 * E0);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+}
+
+/* a hex bar (1440 elements, 2576 nodes: threaded element and node loops) onto a free kinematic
+ * wall: the same state to the last bit with 1 and 2 threads (the wall solve is serial, before
+ * the threaded node loop) */
+static void test_threads_bitwise(void)
+{
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc d = ft_part("bar", FE_SECTION_SOLID, 2e9, 0.3, 1000);
+    d.mesh.generate = FE_MESH_BOX;
+    d.mesh.size[0] = 0.2, d.mesh.size[1] = d.mesh.size[2] = 0.015;
+    d.mesh.divisions[0] = 160, d.mesh.divisions[1] = d.mesh.divisions[2] = 3;
+    d.mesh.origin[0] = 1e-5;
+    d.initial_velocity[0] = -20, d.initial_velocity[1] = 3;
+    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_wall_desc w = {.normal = {1, 0.2, 0}, .method = FE_WALL_KINEMATIC, .mass = 0.02};
+    snprintf(w.name, sizeof w.name, "free");
+    CHECK(fe_builder_add_wall(b, &w, &err) == MCS_OK);
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+    fe_builder_destroy(&b);
+    if (!m) return;
+    CHECK(m->nnode_chunk >= FE_PAR_MIN_NODE_CHUNKS && m->nchunk >= FE_PAR_MIN_CHUNKS);
+    fe_state *st[2] = {NULL, NULL};
+    double fmax_ = 0;
+    for (int k = 0; k < 2; k++) {
+        fe_set_threads(k + 1);
+        CHECK(fe_state_create(m, &st[k], &err) == MCS_OK);
+        for (int i = 0; i < 400 && st[k]; i++) {
+            CHECK(fe_step(m, st[k]) == MCS_OK);
+            fmax_ = fmax(fmax_, st[k]->wall_normal[0]);
+        }
+    }
+    fe_set_threads(1);
+    if (st[0] && st[1]) {
+        const fe_state *a = st[0], *c = st[1];
+        const size_t n3 = sizeof(double) * 3 * (size_t)m->nnode;
+        CHECK(memcmp(a->node_x, c->node_x, n3) == 0);
+        CHECK(memcmp(a->node_v, c->node_v, n3) == 0);
+        CHECK(memcmp(a->wall_x, c->wall_x, 3 * sizeof(double)) == 0);
+        CHECK(memcmp(a->wall_v, c->wall_v, 3 * sizeof(double)) == 0);
+        CHECK(memcmp(a->wall_force, c->wall_force, 3 * sizeof(double)) == 0);
+        CHECK(memcmp(a->energy, c->energy, sizeof a->energy) == 0);
+        CHECK(fmax_ > 0 && a->wall_v[0] < 0);
+        printf("  threads 1 vs 2: 400 steps, %d nodes, a free kinematic wall (V %.4g m/s): "
+               "identical; total drift %.2e of E0\n", m->nnode, a->wall_v[0],
+               (a->energy[FE_E_total] - a->energy0) / a->energy0);
+        CHECK_NEAR(a->energy[FE_E_total], a->energy0, 1e-3 * a->energy0);
+    }
+    fe_state_destroy(&st[0]);
+    fe_state_destroy(&st[1]);
+    fe_model_destroy(&m);
+}
+
+int main(void)
+{
+    RUN(test_plastic_collision);
+    RUN(test_active_set);
+    RUN(test_bar_onto_free_wall);
+    RUN(test_threads_bitwise);
+    TEST_END();
+}

@@ -391,7 +391,7 @@ static double body_power(const fe_contact_model *c, const fe_contact_state *cs)
  * contact forces stay in that core's cache (a chunk run by the other thread puts the lines of
  * its nodes in both cores' caches, and the owner's next write of x and v then waits for the
  * other copy to be invalidated: in the tube crush that doubled the integration's time on 2
- * threads). The time of each live chunk goes to its node chunk (fe_state.node_cost), so the
+ * threads). The time of each live chunk is added to its node chunk's (fe_state.node_cost), so the
  * thread shares balance the elements and the contact together (fe_parallel.c). Powers are
  * summed per node chunk and added in chunk order; the scatter to the nodes is serial in live
  * order: results do not depend on the number of threads (tests/test_fe_parallel.c). */
@@ -454,7 +454,6 @@ static void pre_share(const fe_model *m, fe_state *s, const fe_par_range *r, int
             mv |= d0 * d0 + d1 * d1 + d2 * d2 > m2;
         }
         cs->pow_chunk[k] = p;
-        s->node_cost[k] = 0;
     }
     if (mv) {
 #pragma omp atomic write

@@ -323,6 +323,7 @@ typedef struct fe_model {
 #define FE_PAR_MIN_CHUNKS 8      /* element chunks [-]                                   */
 #define FE_PAR_MIN_NODE_CHUNKS 4 /* node chunks [-]                                      */
 #define FE_PAR_MAX 64            /* threads used at most by the FE loops [-]             */
+#define FE_PAR_WINDOW 64         /* steps between two balances of the thread shares [-]  */
 
 /* ---- the builder ------------------------------------------------------------------------ */
 

@@ -127,8 +127,8 @@ static void chunk_nodes(const fe_model *m, int k0, int k1, int *nc0, int *nc1)
     *nc1 = k1 < m->nchunk ? m->chunk_nc[k1] : m->nnode_chunk;
 }
 
-/* the cost of element chunk k in the last step: its elements' time and the contact time of
- * the node chunks that go with it (a thread's contact work is that of its nodes) */
+/* the cost of element chunk k since the last balance: its elements' time and the contact
+ * time of the node chunks that go with it (a thread's contact work is that of its nodes) */
 static double chunk_load(const fe_model *m, const fe_state *s, int k)
 {
     int nc0, nc1;
@@ -138,32 +138,45 @@ static double chunk_load(const fe_model *m, const fe_state *s, int k)
     return c;
 }
 
-/* move the element cuts so that every thread's chunks, with the contact work of their
- * nodes, took about the same time in the last step; kept as they are while the slowest share
- * is within 3 % of the mean (a moved cut sends the state of the chunks it moves to the other
- * core's cache) */
+/* at the end of each window of steps, move the element cuts so that every thread's chunks,
+ * with the contact work of their nodes, took about the same time over the window; kept as
+ * they are while the slowest share is within 3 % of the mean. A moved cut sends the state of
+ * the chunks it moves to the other core's cache: balanced on single steps, the timing noise
+ * moved the cut every 5 steps in the tube crush. The windows grow 1, 2, 4, ... to
+ * FE_PAR_WINDOW steps, so that a new team finds its balance within a few steps. */
 static void rebalance(const fe_model *m, fe_state *s, int nt)
 {
+    const int win = s->par_nbal < 30 && (1 << s->par_nbal) < FE_PAR_WINDOW ? 1 << s->par_nbal
+                                                                          : FE_PAR_WINDOW;
+    if (++s->par_steps < win) return;
+    s->par_nbal++;
     const int nch = m->nchunk;
     int *cut = s->par_cut;
-    double *c = s->chunk_cost; /* becomes the chunk loads (rewritten by the next step) */
+    double *c = s->chunk_cost; /* becomes the chunk loads, then zero for the next window */
     double tot = 0, worst = 0;
     for (int k = 0; k < nch; k++) tot += c[k] = chunk_load(m, s, k);
-    if (!(tot > 0)) return;
+    s->par_steps = 0;
+    for (int j = 0; j < m->nnode_chunk; j++) s->node_cost[j] = 0;
+    if (!(tot > 0)) {
+        for (int k = 0; k < nch; k++) c[k] = 0;
+        return;
+    }
     for (int t = 0; t < nt; t++) {
         double load = 0;
         for (int k = cut[t]; k < cut[t + 1]; k++) load += c[k];
         worst = fmax(worst, load);
     }
-    if (worst <= 1.03 * tot / nt) return;
-    double cum = 0;
-    int k = 0;
-    for (int t = 1; t < nt; t++) {
-        const double target = tot * t / nt;
-        while (k < nch && cum + c[k] <= target) cum += c[k++];
-        if (k < nch && cum + c[k] - target < target - cum) cum += c[k++];
-        cut[t] = k;
+    if (worst > 1.03 * tot / nt) {
+        double cum = 0;
+        int k = 0;
+        for (int t = 1; t < nt; t++) {
+            const double target = tot * t / nt;
+            while (k < nch && cum + c[k] <= target) cum += c[k++];
+            if (k < nch && cum + c[k] - target < target - cum) cum += c[k++];
+            cut[t] = k;
+        }
     }
+    for (int k = 0; k < nch; k++) c[k] = 0;
 }
 
 int fe_par_team(const fe_model *m, fe_state *s)
@@ -176,6 +189,9 @@ int fe_par_team(const fe_model *m, fe_state *s)
         /* a new team: equal numbers of chunks */
         for (int t = 0; t <= nt; t++) s->par_cut[t] = (int)((long)m->nchunk * t / nt);
         s->par_nt = nt;
+        s->par_steps = s->par_nbal = 0;
+        for (int k = 0; k < m->nchunk; k++) s->chunk_cost[k] = 0;
+        for (int j = 0; j < m->nnode_chunk; j++) s->node_cost[j] = 0;
     } else if (nt > 1) {
         rebalance(m, s, nt);
     }

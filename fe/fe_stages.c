@@ -20,8 +20,8 @@ static int chunked_part(const fe_part *p)
            (p->elem_kind == FE_KIND_SHELL && p->section.type != FE_SECTION_MEMBRANE);
 }
 
-/* the element chunks of share t: stresses, slot forces, partial sums; each chunk timed
- * when threaded (the next step's balance, fe_parallel.c) */
+/* the element chunks of share t: stresses, slot forces, partial sums; each chunk's time
+ * summed when threaded (the next balance, fe_parallel.c) */
 static void elem_share(const fe_model *m, fe_state *s, int t, int timed)
 {
     fe_par_range r;
@@ -31,7 +31,6 @@ static void elem_share(const fe_model *m, fe_state *s, int t, int timed)
         const int e1 = e0 + FE_CHUNK_ELEMS < m->part[ip].elem_end ? e0 + FE_CHUNK_ELEMS
                                                                  : m->part[ip].elem_end;
         if (!chunked_part(m->part + ip)) {
-            if (timed) s->chunk_cost[k] = 0;
             continue;
         }
         const double t0 = timed ? fe_par_clock() : 0;
@@ -40,7 +39,7 @@ static void elem_share(const fe_model *m, fe_state *s, int t, int timed)
         case FE_KIND_SHELL: fe_shell_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
         default: fe_truss_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
         }
-        if (timed) s->chunk_cost[k] = fe_par_clock() - t0;
+        if (timed) s->chunk_cost[k] += fe_par_clock() - t0;
     }
 }
 

@@ -115,9 +115,9 @@ typedef struct {
     X(double, hex_gp, nhex_gp, 7, "Pa", "full hex: stress (6), plastic strain or foam history")   \
     X(fe_chunk_acc, chunk_acc, nchunk, 1, "-", "partial sums of each element chunk")             \
     X(double, node_acc, nnode_acc, 1, "-", "partial sums of each node chunk (fe_integrate)")     \
-    X(double, chunk_cost, nchunk, 1, "s", "time of each element chunk last step (thread shares)") \
+    X(double, chunk_cost, nchunk, 1, "s", "time of each element chunk, summed since the last balance") \
     X(double, foam_hist, nfoam_ip, 6, "-", "foam: largest-strain tensor, t = 0 frame (fe_foam.c)") \
-    X(double, node_cost, nnode_chunk, 1, "s", "time of the contact work of each node chunk last step")
+    X(double, node_cost, nnode_chunk, 1, "s", "contact time of each node chunk, summed since the last balance")
 
 struct fe_contact_state;
 
@@ -155,6 +155,9 @@ typedef struct fe_state {
      * element chunk and first node chunk; par_cut[par_nt] = nchunk [-] */
     int par_nt;
     int par_cut[FE_PAR_MAX + 1], par_ncut[FE_PAR_MAX + 1];
+    int par_steps;                /* steps summed in chunk_cost and node_cost since the last
+                                     balance (fe_parallel.c) [-]                               */
+    int par_nbal;                 /* balances since the team was formed [-]                  */
     double mass_added_run;        /* mass added by mass scaling during the run [kg]           */
     double dt_ms;                 /* smallest scaled step of the scaled parts at the last check,
                                      no safety factor [s]                                    */

@@ -22,13 +22,14 @@ static int grow(void **p, int *cap, int need, size_t sz)
     return 0;
 }
 
-static const int kind_nnode[FE_NKIND] = {8, 4, 2};
+static const int kind_nnode[FE_NKIND] = {8, 4, 2, 10};
 
 int fe_kind_nnode(int kind) { return kind_nnode[kind]; }
 
 int fe_section_kind(fe_section_type t)
 {
     if (t == FE_SECTION_MEMBRANE) return FE_KIND_SHELL; /* degenerate triangles (fe_membrane.c) */
+    if (t == FE_SECTION_TET10) return FE_KIND_TET10;
     return t == FE_SECTION_SOLID ? FE_KIND_HEX : t == FE_SECTION_SHELL ? FE_KIND_SHELL : FE_KIND_TRUSS;
 }
 
@@ -202,7 +203,7 @@ static mcs_status check_section(const fe_part_desc *d, mcs_error *err)
     } else if (s->type == FE_SECTION_TRUSS) {
         if (!(s->area > 0))
             return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': section.area must be > 0", n);
-    } else if (s->type != FE_SECTION_SOLID) {
+    } else if (s->type != FE_SECTION_SOLID && s->type != FE_SECTION_TET10) {
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED, "fe: part '%s': section.type not built yet", n);
     }
     if (!(s->hourglass_coefficient >= 0) || s->shear_factor < 0)

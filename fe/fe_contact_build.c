@@ -336,6 +336,14 @@ static mcs_status add_pass(cbuild *cb, const fe_model *m, int iface, int self, i
     p->reverse = rev;
     p->ent_begin = c->nent;
     p->seg_begin = c->nseg;
+    for (int i = 0; i < nsl + nma; i++) { /* tet10 surfaces are not built (fe_tet10.c) */
+        const int ip = i < nsl ? sl[i] : ma[i - nsl];
+        if (ip >= 0 && m->part[ip].elem_kind == FE_KIND_TET10)
+            return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                           "fe: contact '%s': part '%s' is of tet10 elements, whose contact "
+                           "surfaces are not built yet",
+                           d->name, m->part[ip].name);
+    }
     mcs_status st = add_entries(cb, m, sl, nsl, tscale, d, err);
     if (!st) st = add_segments(cb, m, ma, nma, scale, tscale, d, err);
     p->ent_end = c->nent;
@@ -347,8 +355,9 @@ static mcs_status add_pass(cbuild *cb, const fe_model *m, int iface, int self, i
 /* nodes sharing an element with each node (itself included), CSR */
 static mcs_status build_neighbours(fe_contact_model *c, const fe_model *m, mcs_error *err)
 {
-    const int *conn[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node};
-    const int nel[FE_NKIND] = {m->nhex, m->nshell, m->ntruss}, nn[FE_NKIND] = {8, 4, 2};
+    const int *conn[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node, m->tet10_node};
+    const int nel[FE_NKIND] = {m->nhex, m->nshell, m->ntruss, m->ntet10};
+    const int nn[FE_NKIND] = {8, 4, 2, 10};
     c->nbr_off = calloc((size_t)m->nnode + 1, sizeof(int));
     if (!c->nbr_off) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
     for (int k = 0; k < FE_NKIND; k++)

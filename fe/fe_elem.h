@@ -154,7 +154,10 @@ double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem);
 static inline double fe_dt_factor(const fe_model *m, int kind, int e)
 {
     if (!m->elem_dt_factor) return 1;
-    int off = kind == FE_KIND_HEX ? 0 : kind == FE_KIND_SHELL ? m->nhex : m->nhex + m->nshell;
+    int off = kind == FE_KIND_HEX     ? 0
+              : kind == FE_KIND_SHELL ? m->nhex
+              : kind == FE_KIND_TRUSS ? m->nhex + m->nshell
+                                      : m->nhex + m->nshell + m->ntruss;
     return m->elem_dt_factor[off + e];
 }
 

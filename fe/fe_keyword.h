@@ -30,9 +30,13 @@
 #define FE_KW_TITLE_MAX 81 /* an 80-column title + 1 */
 #define FE_KW_NAME_MAX 48  /* longest keyword name kept for the unknown list + 1 */
 
-typedef enum { FE_KW_SHELL, FE_KW_SOLID, FE_KW_BEAM, FE_KW_DISCRETE, FE_KW_NETYPE } fe_kw_etype;
+/* FE_KW_TET10: 10-node tetrahedra of *ELEMENT_SOLID (two-card form, N1..N10; or
+ * *ELEMENT_SOLID_TET4TOTET10, whose mid-edge nodes the reader adds: fe_kw_tet10.c) */
+typedef enum {
+    FE_KW_SHELL, FE_KW_SOLID, FE_KW_BEAM, FE_KW_DISCRETE, FE_KW_TET10, FE_KW_NETYPE
+} fe_kw_etype;
 
-/* nodes per element of each type as stored (shell 4, solid 8, beam 2, discrete 2) */
+/* nodes per element of each type as stored (shell 4, solid 8, beam 2, discrete 2, tet10 10) */
 int fe_kw_etype_nnode(fe_kw_etype t);
 const char *fe_kw_etype_name(fe_kw_etype t); /* "SHELL", "SOLID", ... */
 

@@ -48,7 +48,8 @@ static mcs_status section_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_sec
                                       "the kernel uses the constant thickness T1",
                         dk->file[k->loc.file], k->loc.line, k->id, i + 1);
     } else if (k->kind == FE_KW_SEC_SOLID) {
-        if (k->elform != 0 && k->elform != 1)
+        /* ELFORM 16/17 (10-node tetrahedra): fe_kw_add_part decides by the elements */
+        if (k->elform != 0 && k->elform != 1 && k->elform != 16 && k->elform != 17)
             mcs_log(MCS_LOG_WARN, "%s:%d: warning: *SECTION_SOLID %d: ELFORM %d is run as the "
                                   "one-point hexahedron with hourglass control (ELFORM 1)",
                     dk->file[k->loc.file], k->loc.line, k->id, k->elform);
@@ -168,7 +169,7 @@ static int part_etype(const fe_kw_deck *dk, int pid)
 }
 
 static const fe_section_type etype_section[FE_KW_NETYPE] = {
-    FE_SECTION_SHELL, FE_SECTION_SOLID, FE_SECTION_TRUSS, FE_SECTION_TRUSS};
+    FE_SECTION_SHELL, FE_SECTION_SOLID, FE_SECTION_TRUSS, FE_SECTION_TRUSS, FE_SECTION_TET10};
 
 static mcs_status add_elems(fe_builder *b, const fe_kw_deck *dk, int pid, fe_kw_etype t, int ip,
                             const int *map, mcs_error *err)
@@ -177,7 +178,7 @@ static mcs_status add_elems(fe_builder *b, const fe_kw_deck *dk, int pid, fe_kw_
     const int k = fe_kw_etype_nnode(t);
     for (int i = 0; i < e->n; i++) {
         if (e->pid[i] != pid) continue;
-        int c[8];
+        int c[10];
         for (int j = 0; j < k; j++) c[j] = map[fe_kw_node_index(dk, e->node[(size_t)k * i + j])];
         /* solids: tetrahedra and pentahedra are checked and reordered by the builder */
         mcs_error kerr = {0};
@@ -208,11 +209,18 @@ mcs_status fe_kw_add_part(fe_builder *b, const fe_kw_deck *dk, int pid, const fe
     d.mesh.generate = FE_MESH_NONE;
     mcs_status st = props_from_deck ? fe_kw_part_props(dk, pid, &d, err) : MCS_OK;
     if (st) return st;
+    /* a solid section on 10-node tetrahedra is the tet10 (LS-DYNA ELFORM 16/17) */
+    if (t == FE_KW_TET10 && d.section.type == FE_SECTION_SOLID) {
+        d.section.type = FE_SECTION_TET10;
+        d.section.formulation = FE_HEX_ONE_POINT;
+    }
     if (d.section.type != etype_section[t])
         return MCS_ERR(err, MCS_ERR_TYPE,
                        "%s: error: part %d has *ELEMENT_%s elements; its section must be %s", fn,
                        pid, fe_kw_etype_name((fe_kw_etype)t),
-                       t == FE_KW_SHELL ? "shell" : t == FE_KW_SOLID ? "solid" : "truss");
+                       t == FE_KW_SHELL                        ? "shell"
+                       : t == FE_KW_SOLID || t == FE_KW_TET10 ? "solid"
+                                                               : "truss");
     int *map = node_map, ip = -1;
     if (!map) {
         map = malloc(sizeof(int) * (size_t)(dk->nnode ? dk->nnode : 1));

@@ -168,9 +168,14 @@ static mcs_status h_solid(kw_ctx *c, const kw_card *cd, int n)
             TRY(need(c, cd, n, i + 1, 1));
             at = &cd[++i];
             TRY(elem_nodes(c, at, 0, 10, nd));
-            if (nd[8] || nd[9])
-                return unsupported_field(c, at, &KW_L_ELEM, nd[8] ? 8 : 9, "N9/N10",
-                                         "higher-order solids are not built");
+            if (nd[8] || nd[9]) { /* the 10-node tetrahedron */
+                for (int k = 0; k < 10; k++)
+                    if (!nd[k])
+                        return unsupported_field(c, at, &KW_L_ELEM, k, "N1..N10",
+                                                 "a 10-node tetrahedron needs all ten nodes");
+                TRY(kw_add_elem(c, FE_KW_TET10, id, pid, nd, NULL, loc_of(&cd[i])));
+                continue;
+            }
         } else {
             TRY(elem_nodes(c, at, 2, 8, nd));
         }
@@ -178,6 +183,34 @@ static mcs_status h_solid(kw_ctx *c, const kw_card *cd, int n)
         if (nd[3] && !nd[4] && !nd[5] && !nd[6] && !nd[7])
             nd[4] = nd[5] = nd[6] = nd[7] = nd[3];
         TRY(kw_add_elem(c, FE_KW_SOLID, id, pid, nd, NULL, loc_of(&cd[i])));
+    }
+    return MCS_OK;
+}
+
+/* *ELEMENT_SOLID_TET4TOTET10: 4-node tetrahedra (either form) that become 10-node ones */
+static mcs_status h_solid_tet10(kw_ctx *c, const kw_card *cd, int n)
+{
+    for (int i = 0; i < n; i++) {
+        if (blank_card(&cd[i])) continue;
+        int id, pid, nd[10] = {0};
+        const kw_card *at = &cd[i];
+        TRY(kw_int(c, at, &KW_L_ELEM, 0, "EID", 0, &id));
+        TRY(kw_int(c, at, &KW_L_ELEM, 1, "PID", 0, &pid));
+        int two = 1;
+        for (int k = 2; k < 10; k++) two = two && kw_blank(c, at, &KW_L_ELEM, k);
+        if (two) {
+            TRY(need(c, cd, n, i + 1, 1));
+            at = &cd[++i];
+        }
+        TRY(elem_nodes(c, at, two ? 0 : 2, 8, nd));
+        int tet = nd[0] && nd[1] && nd[2] && nd[3];
+        for (int k = 4; k < 8; k++) tet = tet && (nd[k] == 0 || nd[k] == nd[3]);
+        if (!tet)
+            return unsupported_field(c, at, &KW_L_ELEM, two ? 0 : 2, "N1..N8",
+                                     "TET4TOTET10 takes tetrahedra (N1 N2 N3 N4, N5..N8 blank "
+                                     "or N4)");
+        for (int k = 4; k < 8; k++) nd[k] = 0; /* mid-edge nodes: kw_tet4_to_tet10 */
+        TRY(kw_add_elem(c, FE_KW_TET10, id, pid, nd, NULL, loc_of(&cd[i])));
     }
     return MCS_OK;
 }
@@ -707,6 +740,7 @@ static const struct {
     {"NODE", h_node, 0},
     {"ELEMENT_SHELL", h_shell, 0},
     {"ELEMENT_SOLID", h_solid, 0},
+    {"ELEMENT_SOLID_TET4TOTET10", h_solid_tet10, 0},
     {"ELEMENT_BEAM", h_beam, 0},
     {"ELEMENT_DISCRETE", h_discrete, 0},
     {"PART", h_part, 0},

@@ -5,8 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const int etype_nnode[FE_KW_NETYPE] = {4, 8, 2, 2};
-static const char *const etype_name[FE_KW_NETYPE] = {"SHELL", "SOLID", "BEAM", "DISCRETE"};
+static const int etype_nnode[FE_KW_NETYPE] = {4, 8, 2, 2, 10};
+static const char *const etype_name[FE_KW_NETYPE] = {"SHELL", "SOLID", "BEAM", "DISCRETE",
+                                                     "SOLID"};
 
 int fe_kw_etype_nnode(fe_kw_etype t) { return etype_nnode[t]; }
 const char *fe_kw_etype_name(fe_kw_etype t) { return etype_name[t]; }
@@ -183,6 +184,8 @@ mcs_status kw_finish(kw_ctx *c)
                            "node %d is defined twice (also at %s:%d)", c->node[i].id,
                            d->file[c->node[i - 1].loc.file], c->node[i - 1].loc.line);
         }
+    mcs_status st0 = kw_tet4_to_tet10(c); /* mid-edge nodes of TET4TOTET10 (sorted IDs kept) */
+    if (st0) return st0;
     d->node_id = malloc(sizeof(int) * (size_t)(c->nnode ? c->nnode : 1));
     d->node_x = malloc(3 * sizeof(double) * (size_t)(c->nnode ? c->nnode : 1));
     if (!d->node_id || !d->node_x) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");

@@ -78,6 +78,10 @@ mcs_status kw_add_node(kw_ctx *c, int id, const double x[3], fe_kw_loc loc);
 mcs_status kw_add_elem(kw_ctx *c, fe_kw_etype t, int id, int pid, const int *nodes,
                        const double *dval, fe_kw_loc loc);
 int kw_add_file(fe_kw_deck *d, const char *path); /* index, -1 out of memory */
+/* *ELEMENT_SOLID_TET4TOTET10 elements (tet10 with N5..N10 = 0) get their mid-edge nodes,
+ * shared along edges, numbered from the largest node ID + 1 (fe_kw_tet10.c); c->node must be
+ * sorted by ID, and stays so */
+mcs_status kw_tet4_to_tet10(kw_ctx *c);
 /* sort nodes, check unique IDs and that every element's nodes exist */
 mcs_status kw_finish(kw_ctx *c);
 /* a new entry at the end of a deck list (zeroed); NULL out of memory */

@@ -215,7 +215,7 @@ static void w_nodes(kw_out *o, const fe_kw_deck *d)
 static void w_elems(kw_out *o, const fe_kw_deck *d)
 {
     static const char *names[FE_KW_NETYPE] = {"ELEMENT_SHELL", "ELEMENT_SOLID", "ELEMENT_BEAM",
-                                              "ELEMENT_DISCRETE"};
+                                              "ELEMENT_DISCRETE", "ELEMENT_SOLID"};
     for (int t = 0; t < FE_KW_NETYPE; t++) {
         const fe_kw_elems *e = &d->elem[t];
         if (e->n == 0) continue;
@@ -223,6 +223,7 @@ static void w_elems(kw_out *o, const fe_kw_deck *d)
         int k = fe_kw_etype_nnode((fe_kw_etype)t);
         for (int i = 0; i < e->n; i++) {
             put_int(o, 8, e->id[i]), put_int(o, 8, e->pid[i]);
+            if (t == FE_KW_TET10) endl(o); /* the two-card form: EID PID, then N1..N10 */
             for (int j = 0; j < k; j++) put_int(o, 8, e->node[(size_t)k * i + j]);
             if (t == FE_KW_DISCRETE) {
                 put_int(o, 8, 0), put_real(o, 16, e->dval[2 * i]), put_int(o, 8, 0);
@@ -329,6 +330,8 @@ static mcs_status model_props(const fe_model *m, int ip, fe_kw_deck *d, mcs_erro
         for (int i = 0; i < 4; i++) s->t[i] = p->section.thickness;
     } else if (p->section.type == FE_SECTION_SOLID) {
         s->kind = FE_KW_SEC_SOLID, s->elform = 1;
+    } else if (p->section.type == FE_SECTION_TET10) {
+        s->kind = FE_KW_SEC_SOLID, s->elform = 16;
     } else {
         s->kind = FE_KW_SEC_BEAM, s->elform = 3, s->area = p->section.area;
     }
@@ -372,20 +375,23 @@ mcs_status fe_kw_from_model(const fe_model *m, const double *x, const char *titl
         st = fe_kw_deck_add_part(d, &p, err);
         if (!st) st = model_props(m, ip, d, err);
     }
-    static const fe_kw_etype et[FE_NKIND] = {FE_KW_SOLID, FE_KW_SHELL, FE_KW_BEAM};
-    const int *conn[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node};
-    const int *part[FE_NKIND] = {m->hex_part, m->shell_part, m->truss_part};
-    const int ne[FE_NKIND] = {m->nhex, m->nshell, m->ntruss}, nn[FE_NKIND] = {8, 4, 2};
+    static const fe_kw_etype et[FE_NKIND] = {FE_KW_SOLID, FE_KW_SHELL, FE_KW_BEAM, FE_KW_TET10};
+    const int *conn[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node, m->tet10_node};
+    const int *part[FE_NKIND] = {m->hex_part, m->shell_part, m->truss_part, m->tet10_part};
+    const int ne[FE_NKIND] = {m->nhex, m->nshell, m->ntruss, m->ntet10};
+    const int nn[FE_NKIND] = {8, 4, 2, 10};
     for (int k = 0; k < FE_NKIND && !st; k++)
         for (int e = 0; e < ne[k] && !st; e++) {
-            int c[8];
+            int c[10];
             for (int j = 0; j < nn[k]; j++) c[j] = conn[k][(size_t)nn[k] * e + j] + 1;
             if (k == FE_KIND_HEX) { /* a tetrahedron as n1 n2 n3 n4 n4 n4 n4 n4 (fe_tet.c) */
                 int h[8];
                 memcpy(h, c, sizeof h);
                 fe_solid_to_lsdyna(h, c);
             }
-            st = fe_kw_deck_add_elem(d, et[k], e + 1, part[k][e] + 1, c, err);
+            /* tet10 IDs follow the hexes' (both are *ELEMENT_SOLID) */
+            const int id = e + 1 + (k == FE_KIND_TET10 ? m->nhex : 0);
+            st = fe_kw_deck_add_elem(d, et[k], id, part[k][e] + 1, c, err);
         }
     for (int i = 0; i < m->nnode && !st; i++) {
         if (!m->node_fix[i]) continue;

@@ -104,7 +104,10 @@ mcs_status fe_massscale_build(fe_model *m, mcs_error *err)
     int nscaled = 0;
     for (int ip = 0; ip < m->npart; ip++) {
         const fe_part *p = &m->part[ip];
-        if (p->material.model == FE_MAT_RIGID || p->section.type == FE_SECTION_MEMBRANE) continue;
+        /* tet10 parts are not scaled (their step is their own frequency's: fe_tet10.c) */
+        if (p->material.model == FE_MAT_RIGID || p->section.type == FE_SECTION_MEMBRANE ||
+            p->elem_kind == FE_KIND_TET10)
+            continue;
         const int off = p->elem_kind == FE_KIND_HEX     ? 0
                         : p->elem_kind == FE_KIND_SHELL ? m->nhex
                                                         : m->nhex + m->nshell;
@@ -149,7 +152,8 @@ void fe_massscale_reset(const fe_model *m, fe_state *s)
 
 static int scalable(const fe_part *p)
 {
-    return p->material.model != FE_MAT_RIGID && p->section.type != FE_SECTION_MEMBRANE;
+    return p->material.model != FE_MAT_RIGID && p->section.type != FE_SECTION_MEMBRANE &&
+           p->elem_kind != FE_KIND_TET10;
 }
 
 /* the kernel's step of element e of part p (no safety factor, no step factor) at the current

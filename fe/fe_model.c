@@ -7,6 +7,7 @@
 #include "fe/fe_restraint.h"
 #include "fe/fe_slipring.h"
 #include "fe/fe_solid.h"
+#include "fe/fe_tet10.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -72,7 +73,7 @@ static void derive_part(fe_part *p)
     p->mu = E / (2 * (1 + nu));
     p->lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
     p->bulk = E / (3 * (1 - 2 * nu));
-    if (p->elem_kind == FE_KIND_HEX)
+    if (p->elem_kind == FE_KIND_HEX || p->elem_kind == FE_KIND_TET10)
         p->wave_speed = sqrt((p->lambda + 2 * p->mu) / rho);
     else if (p->elem_kind == FE_KIND_SHELL)
         p->wave_speed = sqrt(E / (rho * (1 - nu * nu)));
@@ -104,8 +105,8 @@ static mcs_status alloc_arrays(fe_model *m, mcs_error *err)
 /* elements of each kind, stably sorted by part (counting sort) */
 static void sort_elements(const fe_builder *b, fe_model *m)
 {
-    int *dst_node[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node};
-    int *dst_part[FE_NKIND] = {m->hex_part, m->shell_part, m->truss_part};
+    int *dst_node[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node, m->tet10_node};
+    int *dst_part[FE_NKIND] = {m->hex_part, m->shell_part, m->truss_part, m->tet10_part};
     for (int k = 0; k < FE_NKIND; k++) {
         int nn = fe_kind_nnode(k), pos = 0;
         for (int ip = 0; ip < m->npart; ip++) {
@@ -128,6 +129,11 @@ static mcs_status lump_masses(fe_model *m, mcs_error *err)
     for (int ip = 0; ip < m->npart; ip++) {
         const fe_part *p = &m->part[ip];
         double rho = p->material.density;
+        if (p->elem_kind == FE_KIND_TET10) { /* HRZ lumping (fe_tet10.c) */
+            mcs_status st = fe_tet10_lump(m, ip, err);
+            if (st) return st;
+            continue;
+        }
         for (int e = p->elem_begin; e < p->elem_end; e++) {
             if (p->elem_kind == FE_KIND_HEX) {
                 double xe[8][3], bb[8][3], a[8][3];
@@ -184,21 +190,20 @@ static mcs_status lump_masses(fe_model *m, mcs_error *err)
 /* node -> element-slot gather lists (CSR), slots in increasing order */
 static void build_gather(fe_model *m)
 {
-    const int *conn[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node};
-    int nel[FE_NKIND] = {m->nhex, m->nshell, m->ntruss};
+    const int *conn[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node, m->tet10_node};
+    const int *epart[FE_NKIND] = {m->hex_part, m->shell_part, m->truss_part, m->tet10_part};
+    int nel[FE_NKIND] = {m->nhex, m->nshell, m->ntruss, m->ntet10};
     m->slot_base[0] = 0;
     m->slot_base[1] = 8 * m->nhex;
     m->slot_base[2] = m->slot_base[1] + 4 * m->nshell;
+    m->slot_base[3] = m->slot_base[2] + 2 * m->ntruss;
     for (int n = 0; n < m->nnode; n++) m->node_part[n] = -1;
     for (int k = 0; k < FE_NKIND; k++) {
         int nn = fe_kind_nnode(k);
         for (int s = 0; s < nn * nel[k]; s++) {
             int node = conn[k][s];
             m->node_slot_off[node + 1]++;
-            if (m->node_part[node] < 0) {
-                const int *pp = k == 0 ? m->hex_part : k == 1 ? m->shell_part : m->truss_part;
-                m->node_part[node] = pp[s / nn];
-            }
+            if (m->node_part[node] < 0) m->node_part[node] = epart[k][s / nn];
         }
     }
     for (int n = 0; n < m->nnode; n++) m->node_slot_off[n + 1] += m->node_slot_off[n];
@@ -368,8 +373,9 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
     m->nhex = b->nelem[FE_KIND_HEX];
     m->nshell = b->nelem[FE_KIND_SHELL];
     m->ntruss = b->nelem[FE_KIND_TRUSS];
-    m->nelem = m->nhex + m->nshell + m->ntruss;
-    m->nslot = 8 * m->nhex + 4 * m->nshell + 2 * m->ntruss;
+    m->ntet10 = b->nelem[FE_KIND_TET10];
+    m->nelem = m->nhex + m->nshell + m->ntruss + m->ntet10;
+    m->nslot = 8 * m->nhex + 4 * m->nshell + 2 * m->ntruss + 10 * m->ntet10;
     m->npart = b->npart;
     mcs_status st = MCS_OK;
     m->part = calloc((size_t)m->npart, sizeof *m->part);

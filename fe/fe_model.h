@@ -55,7 +55,8 @@ typedef enum {
     FE_SECTION_SOLID,
     FE_SECTION_SHELL,
     FE_SECTION_TRUSS,
-    FE_SECTION_MEMBRANE /* 3-node membrane (fe_membrane.c); stored as degenerate shells */
+    FE_SECTION_MEMBRANE, /* 3-node membrane (fe_membrane.c); stored as degenerate shells */
+    FE_SECTION_TET10     /* 10-node quadratic tetrahedron, 4 Gauss points (fe_tet10.c) */
 } fe_section_type;
 typedef enum { FE_HG_VISCOUS, FE_HG_STIFFNESS } fe_hourglass;
 /* hex8 formulation: one point + hourglass control (default), or 2x2x2 Gauss with the mean
@@ -192,7 +193,7 @@ typedef struct {
     char name[FE_NAME_MAX];
     fe_section_desc section;
     fe_material_desc material;
-    int elem_kind;      /* FE_KIND_HEX | FE_KIND_SHELL | FE_KIND_TRUSS                */
+    int elem_kind;      /* FE_KIND_HEX | FE_KIND_SHELL | FE_KIND_TRUSS | FE_KIND_TET10 */
     int elem_begin;     /* first element of this part in its kind's arrays [-]          */
     int elem_end;       /* one past the last [-]                                       */
     int node_begin;     /* nodes created with the part (generated meshes) [-]           */
@@ -210,7 +211,7 @@ typedef struct {
     int foam_begin;     /* foam hex: first of its points (1 or 8 per element) in foam_hist [-] */
 } fe_part;
 
-enum { FE_KIND_HEX, FE_KIND_SHELL, FE_KIND_TRUSS, FE_NKIND };
+enum { FE_KIND_HEX, FE_KIND_SHELL, FE_KIND_TRUSS, FE_KIND_TET10, FE_NKIND };
 
 typedef struct {
     double point[3], normal[3], velocity[3]; /* [m], [-], [m/s]                             */
@@ -250,6 +251,9 @@ typedef struct {
     X(int, shell_part, nshell, 1, "-", "part of each shell")                                       \
     X(int, truss_node, ntruss, 2, "-", "truss connectivity")                                       \
     X(int, truss_part, ntruss, 1, "-", "part of each truss")                                     \
+    X(int, tet10_node, ntet10, 10, "-", "tet10 connectivity: corners 1-4, then mid-edges 12 23 31 14 24 34") \
+    X(int, tet10_part, ntet10, 1, "-", "part of each tet10")                                       \
+    X(double, tet10_dtf, ntet10, 1, "-", "tet10 step factor: (2 / omega_max) / (l / c) at t = 0") \
     X(int, node_body, nnode, 1, "-", "rigid body carrying the node, -1 none")                      \
     X(int, chunk_part, nchunk, 1, "-", "part of each element chunk (threaded element loops)")      \
     X(int, chunk_elem, nchunk, 1, "-", "first element of each chunk, index in its kind")           \
@@ -261,8 +265,9 @@ typedef struct fe_model {
     /* sizes */
     int nnode, nelem;      /* nodes; elements of every kind                              */
     int nhex, nshell, ntruss;
+    int ntet10;            /* 10-node tetrahedra (fe_tet10.c) [-]                         */
     int npart, nwall, nload, nnodal_load;
-    int nslot;             /* element-node force slots: 8 nhex + 4 nshell + 2 ntruss      */
+    int nslot;             /* element-node force slots: 8 nhex + 4 nshell + 2 ntruss + 10 ntet10 */
     int nip_max;           /* largest number of shell points through the thickness        */
     int nshell_ip;         /* nshell x nip_max: shell stress points [-]                    */
 
@@ -334,7 +339,8 @@ void fe_builder_destroy(fe_builder **p);
 
 /* add a part; a generated mesh is created now. Returns the part index in *index (may be NULL). */
 mcs_status fe_builder_add_part(fe_builder *b, const fe_part_desc *d, int *index, mcs_error *err);
-/* explicit meshes: a node, then elements of a part (4 nodes for shells, 8 hex, 2 truss).
+/* explicit meshes: a node, then elements of a part (4 nodes for shells, 8 hex, 2 truss,
+ * 10 tet10: corners N1..N4, then the mid-edge nodes of 1-2, 2-3, 3-1, 1-4, 2-4, 3-4).
  * A shell with its 3rd and 4th node equal is a degenerate triangle. */
 mcs_status fe_builder_add_node(fe_builder *b, const double x[3], int *index, mcs_error *err);
 mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_error *err);

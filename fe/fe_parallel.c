@@ -21,8 +21,12 @@ static int chunk_first_node(const fe_model *m, int k)
     const int e1 = e0 + FE_CHUNK_ELEMS < p->elem_end ? e0 + FE_CHUNK_ELEMS : p->elem_end;
     const int *conn = p->elem_kind == FE_KIND_HEX     ? m->hex_node
                       : p->elem_kind == FE_KIND_SHELL ? m->shell_node
+                      : p->elem_kind == FE_KIND_TET10 ? m->tet10_node
                                                       : m->truss_node;
-    const int nper = p->elem_kind == FE_KIND_HEX ? 8 : p->elem_kind == FE_KIND_SHELL ? 4 : 2;
+    const int nper = p->elem_kind == FE_KIND_HEX     ? 8
+                     : p->elem_kind == FE_KIND_SHELL ? 4
+                     : p->elem_kind == FE_KIND_TET10 ? 10
+                                                     : 2;
     int lo = m->nnode;
     for (int i = nper * e0; i < nper * e1; i++)
         if (conn[i] < lo) lo = conn[i];

@@ -45,10 +45,16 @@ static void inv3(const double a[3][3], double r[3][3])
 
 static const int *kind_conn(const fe_model *m, int k)
 {
-    return k == FE_KIND_HEX ? m->hex_node : k == FE_KIND_SHELL ? m->shell_node : m->truss_node;
+    return k == FE_KIND_HEX     ? m->hex_node
+           : k == FE_KIND_SHELL ? m->shell_node
+           : k == FE_KIND_TET10 ? m->tet10_node
+                                : m->truss_node;
 }
 
-static int kind_width(int k) { return k == FE_KIND_HEX ? 8 : k == FE_KIND_SHELL ? 4 : 2; }
+static int kind_width(int k)
+{
+    return k == FE_KIND_HEX ? 8 : k == FE_KIND_SHELL ? 4 : k == FE_KIND_TET10 ? 10 : 2;
+}
 
 /* the nodes of each rigid part become one body */
 mcs_status fe_rigid_build(fe_model *m, mcs_error *err)

@@ -3,6 +3,7 @@
  * fe_model_create, fe_model_destroy and fe_state_reset. */
 #include "fe/fe_elem.h"
 #include "fe/fe_solid.h"
+#include "fe/fe_tet10.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -43,6 +44,7 @@ mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err)
     }
     st = fe_discrete_build(b, m, err);
     if (!st) st = fe_tet_dt_build(m, err);
+    if (!st) st = fe_tet10_dt_build(m, err);
     if (!st) st = fe_massscale_build(m, err);
     if (!st) st = fe_hex_dt_build(m, err);
     if (!st) st = fe_rigid_build(m, err);

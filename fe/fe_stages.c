@@ -7,6 +7,7 @@
 #include "fe/fe_restraint.h"
 #include "fe/fe_slipring.h"
 #include "fe/fe_solid.h"
+#include "fe/fe_tet10.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -17,6 +18,7 @@ static int chunked_part(const fe_part *p)
 {
     if (p->body >= 0) return 0; /* rigid part: no element work (fe_rigid.c) */
     return p->elem_kind == FE_KIND_HEX || p->elem_kind == FE_KIND_TRUSS ||
+           p->elem_kind == FE_KIND_TET10 ||
            (p->elem_kind == FE_KIND_SHELL && p->section.type != FE_SECTION_MEMBRANE);
 }
 
@@ -37,6 +39,7 @@ static void elem_share(const fe_model *m, fe_state *s, int t, int timed)
         switch (m->part[ip].elem_kind) {
         case FE_KIND_HEX: fe_hex_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
         case FE_KIND_SHELL: fe_shell_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
+        case FE_KIND_TET10: fe_tet10_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
         default: fe_truss_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
         }
         if (timed) s->chunk_cost[k] += fe_par_clock() - t0;

@@ -113,6 +113,10 @@ typedef struct {
     X(double, body_w, nbody, 3, "rad/s", "rigid body angular velocity at t + dt/2")                \
     X(double, body_fm, nbody, 6, "N, N m", "force and moment on the body at t")                    \
     X(double, hex_gp, nhex_gp, 7, "Pa", "full hex: stress (6), plastic strain or foam history")   \
+    X(double, tet10_gp, ntet10, 32, "Pa", "tet10: per point stress (6), plastic strain, bulk q") \
+    X(double, tet10_sig, ntet10, 6, "Pa", "tet10: volume-mean Cauchy stress xx yy zz xy yz zx")  \
+    X(double, tet10_epsp, ntet10, 1, "-", "tet10: mean equivalent plastic strain of the points")  \
+    X(double, tet10_rate, ntet10, 1, "1/s", "tet10: filtered effective strain rate")              \
     X(fe_chunk_acc, chunk_acc, nchunk, 1, "-", "partial sums of each element chunk")             \
     X(double, node_acc, nnode_acc, 1, "-", "partial sums of each node chunk (fe_integrate)")     \
     X(double, chunk_cost, nchunk, 1, "s", "time of each element chunk, summed since the last balance") \

@@ -3,6 +3,7 @@
  * compression (a slack cable: the stress keeps tracking the strain elastically, the force is
  * max(sigma, 0) A). Power: N (v_b - v_a).e, so f_b = N e, f_a = -N e (resisting). */
 #include "fe/fe_elem.h"
+#include "fe/fe_tet10.h"
 
 #include <math.h>
 
@@ -68,6 +69,11 @@ double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem)
     if (p->body >= 0) return INFINITY; /* rigid parts do not limit the step */
     for (int e = p->elem_begin; e < p->elem_end; e++) {
         double len = 0;
+        if (p->elem_kind == FE_KIND_TET10) { /* its own frequency ratio (fe_tet10.c) */
+            double dte = fe_tet10_dt(m, p, e, x);
+            if (dte < dtmin) dtmin = dte, *elem = e;
+            continue;
+        }
         if (p->elem_kind == FE_KIND_HEX) {
             double xe[8][3], b[8][3], a[8][3];
             for (int n = 0; n < 8; n++)

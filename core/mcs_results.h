@@ -11,8 +11,13 @@
  *
  * Conventions beyond DESIGN.md (extensions, nothing renamed):
  *   /stageN/mesh/<part>/elements  int [ne,k], 0-based rows of that part's `nodes`;
- *                                 attr `type`: line2 | tri3 | quad4 | tet4 | hex8
- *                                 (optional: without it the width k decides, 4 = quad4)
+ *                                 attr `type`: line2 | tri3 | quad4 | tet4 | wedge6 | hex8 |
+ *                                 tet10 (optional: without it the width k decides, 4 = quad4);
+ *                                 node orders as VTK / XDMF (Tetrahedron, Wedge, Hexahedron,
+ *                                 Tetrahedron_10)
+ *   /stageN/mesh/<part>/elements_<type>  the same for the elements of another type when a part
+ *                                 holds several (e.g. hexahedra in `elements`, the tetrahedra
+ *                                 and wedges of the same part in elements_tet4, elements_wedge6)
  *   /stageN/mesh/<part>/nodes     attr `node_offset` (int): first row of this part in the
  *                                 stage's node numbering used by the arrays in /stageN/fields
  *   /stageN/fields/time           [nout] s: the output times of /stageN/fields/displacement
@@ -192,6 +197,12 @@ mcs_status mcs_results_put_injury(mcs_results *r, int stage, const char *criteri
 mcs_status mcs_results_put_mesh(mcs_results *r, int stage, const char *part, size_t nn,
                                 const double *nodes, size_t ne, int k, const int *elements,
                                 const char *type, int node_offset, mcs_error *err);
+
+/* /stageN/mesh/<part>/elements_<type> [ne,k]: another element block of a part written by
+ * mcs_results_put_mesh (nn: its node count, for the range check) */
+mcs_status mcs_results_put_mesh_block(mcs_results *r, int stage, const char *part, size_t nn,
+                                      size_t ne, int k, const int *elements, const char *type,
+                                      mcs_error *err);
 
 /* /stageN/fields/displacement [nout, nn, 3] m as a series (one row per output time) and
  * /stageN/fields/time [nout] s beside it; append the time, then the field */

@@ -159,7 +159,8 @@ static int type_width(const char *type)
     static const struct {
         const char *name;
         int k;
-    } t[] = {{"line2", 2}, {"tri3", 3}, {"quad4", 4}, {"tet4", 4}, {"hex8", 8}};
+    } t[] = {{"line2", 2}, {"tri3", 3},   {"quad4", 4},  {"tet4", 4},
+             {"hex8", 8},  {"wedge6", 6}, {"tet10", 10}};
     for (size_t i = 0; type && i < sizeof t / sizeof *t; i++)
         if (strcmp(type, t[i].name) == 0) return t[i].k;
     return 0;
@@ -174,9 +175,9 @@ mcs_status mcs_results_put_mesh(mcs_results *r, int stage, const char *part, siz
     if (st) return st;
     if (type && type_width(type) != k)
         return MCS_ERR(err, MCS_ERR_USAGE, "results: part %s: element type \"%s\" with %d nodes "
-                                           "(line2, tri3, quad4, tet4, hex8)",
+                                           "(line2, tri3, quad4, tet4, wedge6, hex8, tet10)",
                        part, type, k);
-    if (k < 2 || k > 8 || node_offset < 0)
+    if (k < 2 || k > 10 || node_offset < 0)
         return MCS_ERR(err, MCS_ERR_USAGE, "results: part %s: %d nodes per element", part, k);
     for (size_t i = 0; i < ne * (size_t)k; i++)
         if (elements[i] < 0 || (size_t)elements[i] >= nn)
@@ -190,6 +191,30 @@ mcs_status mcs_results_put_mesh(mcs_results *r, int stage, const char *part, siz
     if (!st) st = mcs_results_set_attr_int(r, pn, "node_offset", node_offset, err);
     if (!st) st = mcs_results_write_int(r, pe, 2, de, elements, "-", err);
     if (!st && type) st = mcs_results_set_attr_str(r, pe, "type", type, err);
+    return st;
+}
+
+mcs_status mcs_results_put_mesh_block(mcs_results *r, int stage, const char *part, size_t nn,
+                                      size_t ne, int k, const int *elements, const char *type,
+                                      mcs_error *err)
+{
+    mcs_status st = check_stage(stage, err);
+    if (!st) st = check_name("part", part, err);
+    if (st) return st;
+    if (!type || type_width(type) != k)
+        return MCS_ERR(err, MCS_ERR_USAGE, "results: part %s: element block of type \"%s\" with "
+                                           "%d nodes",
+                       part, type ? type : "(none)", k);
+    for (size_t i = 0; i < ne * (size_t)k; i++)
+        if (elements[i] < 0 || (size_t)elements[i] >= nn)
+            return MCS_ERR(err, MCS_ERR_RANGE, "results: part %s: element %zu names node %d of %zu",
+                           part, i / (size_t)k, elements[i], nn);
+    char pe[1024];
+    if ((st = fmt_path(pe, sizeof pe, err, "/stage%d/mesh/%s/elements_%s", stage, part, type)))
+        return st;
+    size_t de[2] = {ne, (size_t)k};
+    st = mcs_results_write_int(r, pe, 2, de, elements, "-", err);
+    if (!st) st = mcs_results_set_attr_str(r, pe, "type", type, err);
     return st;
 }
 

@@ -202,21 +202,24 @@ static const char *topology(const char *type, size_t k)
     static const struct {
         const char *type, *topo;
         size_t k;
-    } t[] = {{"line2", "Polyline", 2},       {"tri3", "Triangle", 3}, {"quad4", "Quadrilateral", 4},
-             {"tet4", "Tetrahedron", 4},     {"hex8", "Hexahedron", 8}};
+    } t[] = {{"line2", "Polyline", 2},   {"tri3", "Triangle", 3},  {"quad4", "Quadrilateral", 4},
+             {"tet4", "Tetrahedron", 4}, {"hex8", "Hexahedron", 8}, {"wedge6", "Wedge", 6},
+             {"tet10", "Tetrahedron_10", 10}};
     for (size_t i = 0; i < sizeof t / sizeof *t; i++)
         if (type ? strcmp(type, t[i].type) == 0 && k == t[i].k : k == t[i].k && i != 3)
             return t[i].topo;
     return NULL;
 }
 
-static mcs_status read_part(mcs_results *r, int stage, const char *name, fe_part *p,
-                            mcs_error *err)
+/* one element block of a part: `elements`, or block "elements_<type>" (grid "<part>.<type>") */
+static mcs_status read_part(mcs_results *r, int stage, const char *name, const char *block,
+                            fe_part *p, mcs_error *err)
 {
     memset(p, 0, sizeof *p);
-    snprintf(p->name, sizeof p->name, "%s", name);
+    snprintf(p->name, sizeof p->name, "%s%s%s", name, block ? "." : "", block ? block : "");
     snprintf(p->nodes, sizeof p->nodes, "/stage%d/mesh/%s/nodes", stage, name);
-    snprintf(p->elems, sizeof p->elems, "/stage%d/mesh/%s/elements", stage, name);
+    snprintf(p->elems, sizeof p->elems, "/stage%d/mesh/%s/elements%s%s", stage, name,
+             block ? "_" : "", block ? block : "");
     int rn, re;
     size_t dn[3], de[3];
     mcs_status st = mcs_results_shape(r, p->nodes, &rn, dn, err);
@@ -236,8 +239,8 @@ static mcs_status read_part(mcs_results *r, int stage, const char *name, fe_part
     p->topo = topology(type, p->k);
     if (!p->topo)
         st = MCS_ERR(err, MCS_ERR_UNSUPPORTED, "%s: part %s: %zu-node elements%s%s%s: XDMF "
-                                               "export knows line2, tri3, quad4, tet4, hex8",
-                     mcs_results_path(r), name, p->k, type ? " of type \"" : "",
+                                               "export knows line2, tri3, quad4, tet4, wedge6, hex8, tet10",
+                     mcs_results_path(r), p->name, p->k, type ? " of type \"" : "",
                      type ? type : "", type ? "\"" : "");
     free(type);
     double off = 0;
@@ -308,10 +311,23 @@ static mcs_status fe_stage(xw *w, int stage, int *ngrids, mcs_error *err)
         mcs_results_list_free(&names, np);
         return st;
     }
-    fe_part *parts = calloc((size_t)np, sizeof *parts);
+    /* each part's `elements` and its further blocks elements_<type> (mcs_results.h) */
+    static const char *const blocks[] = {"tet4", "wedge6", "hex8", "tet10"};
+    const int nb = (int)(sizeof blocks / sizeof *blocks);
+    fe_part *parts = calloc((size_t)np * (size_t)(1 + nb), sizeof *parts);
     if (!parts) st = MCS_ERR(err, MCS_ERR_NOMEM, "export: out of memory");
-    for (int i = 0; i < np && !st; i++) st = read_part(w->r, stage, names[i], &parts[i], err);
+    int ng = 0;
+    for (int i = 0; i < np && !st; i++) {
+        st = read_part(w->r, stage, names[i], NULL, &parts[ng++], err);
+        for (int b = 0; b < nb && !st; b++) {
+            char pb[512];
+            snprintf(pb, sizeof pb, "/stage%d/mesh/%s/elements_%s", stage, names[i], blocks[b]);
+            if (mcs_results_kind(w->r, pb) == MCS_RES_DATASET)
+                st = read_part(w->r, stage, names[i], blocks[b], &parts[ng++], err);
+        }
+    }
     mcs_results_list_free(&names, np);
+    np = ng;
 
     int has_disp = !st && mcs_results_kind(w->r, disp) == MCS_RES_DATASET;
     int dr = 0;

@@ -279,7 +279,8 @@ static double elem_rate(const fe_part *p, const double xe[10][3], const double v
         if (!(fe_tet10_grad(xe, q, dx) > 0)) return rate0;
         for (int n = 0; n < 10; n++)
             for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++) D[i][j] += 0.125 * (ve[n][i] * dx[n][j] + ve[n][j] * dx[n][i]);
+                for (int j = 0; j < 3; j++)
+                    D[i][j] += 0.125 * (ve[n][i] * dx[n][j] + ve[n][j] * dx[n][i]);
     }
     const double tr = (D[0][0] + D[1][1] + D[2][2]) / 3;
     double d2 = 0;

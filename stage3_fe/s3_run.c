@@ -2,6 +2,7 @@
  * allocated before the loop; the loop calls fe_step and appends rows to results series at
  * the output rate. */
 #include "stage3_fe/s3_run.h"
+#include "stage3_fe/s3_mesh.h"
 #include "stage3_fe/s3_parts.h"
 #include "stage3_fe/s3_restraints.h"
 #include "stage3_fe/s3_slipring.h"
@@ -22,33 +23,6 @@ static double now_s(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-/* one part's initial mesh: the rows lo..hi of the model's nodes spanned by its elements
- * (generated meshes own a contiguous block) and its elements renumbered from lo; node_offset
- * = lo locates the part in /stage3/fields/displacement */
-static mcs_status put_part_mesh(mcs_results *r, const fe_model *m, const fe_part *p,
-                                mcs_error *err)
-{
-    static const int width[FE_NKIND] = {8, 4, 2};
-    static const char *type[FE_NKIND] = {"hex8", "quad4", "line2"};
-    const int *conn[FE_NKIND] = {m->hex_node, m->shell_node, m->truss_node};
-    const int k = width[p->elem_kind], ne = p->elem_end - p->elem_begin;
-    const int *c = conn[p->elem_kind] + (size_t)k * (size_t)p->elem_begin;
-    if (ne <= 0) return MCS_OK;
-    int lo = m->nnode, hi = -1;
-    for (size_t i = 0; i < (size_t)k * (size_t)ne; i++) {
-        lo = c[i] < lo ? c[i] : lo;
-        hi = c[i] > hi ? c[i] : hi;
-    }
-    int *el = malloc(sizeof(int) * (size_t)ne * (size_t)k);
-    if (!el) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory writing part '%s'", p->name);
-    for (size_t i = 0; i < (size_t)k * (size_t)ne; i++) el[i] = c[i] - lo;
-    mcs_status st = mcs_results_put_mesh(r, 3, p->name, (size_t)(hi - lo + 1),
-                                         m->node_x0 + 3 * (size_t)lo, (size_t)ne, k, el,
-                                         type[p->elem_kind], lo, err);
-    free(el);
-    return st;
 }
 
 typedef struct {
@@ -191,7 +165,7 @@ mcs_status s3_run(const s3_problem *p, const s3_run_opts *ro, s3_summary *sum, m
         o.disp = malloc(sizeof(double) * 3 * (size_t)(m->nnode > 0 ? m->nnode : 1));
         if (!o.disp) st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
     }
-    for (int i = 0; i < m->npart && !st; i++) st = put_part_mesh(r, m, &m->part[i], err);
+    for (int i = 0; i < m->npart && !st; i++) st = s3_put_part_mesh(r, m, &m->part[i], err);
     if (!st) st = open_series(r, m, &o, err);
     if (!st) st = loop(p, ro, s, &o, err);
     if (!st) {

@@ -13,10 +13,15 @@ tr_kw_export_opts tr_kw_export_opts_default(void)
     return o;
 }
 
+/* further element blocks of a part: /stageN/mesh/<part>/elements_<type> (mcs_results.h) */
+#define TR_NBLK 4
+static const char *const tr_blk[TR_NBLK] = {"tet4", "wedge6", "hex8", "tet10"};
+
 typedef struct {
     char **names;
     int n;
     mcs_array *nodes, *elems;
+    mcs_array (*blk)[TR_NBLK]; /* the blocks present (rank 0: absent) */
     int *offset;
     char (*type)[16];
 } mesh_set;
@@ -26,9 +31,11 @@ static void mesh_free(mesh_set *m)
     for (int i = 0; i < m->n; i++) {
         if (m->nodes) mcs_array_free(&m->nodes[i]);
         if (m->elems) mcs_array_free(&m->elems[i]);
+        for (int b = 0; m->blk && b < TR_NBLK; b++) mcs_array_free(&m->blk[i][b]);
     }
     free(m->nodes);
     free(m->elems);
+    free(m->blk);
     free(m->offset);
     free(m->type);
     mcs_results_list_free(&m->names, m->n);
@@ -67,7 +74,8 @@ static mcs_status read_meshes(mcs_results *r, int stage, mesh_set *m, mcs_error 
     m->elems = calloc((size_t)m->n + 1, sizeof *m->elems);
     m->offset = calloc((size_t)m->n + 1, sizeof *m->offset);
     m->type = calloc((size_t)m->n + 1, sizeof *m->type);
-    if (!m->nodes || !m->elems || !m->offset || !m->type)
+    m->blk = calloc((size_t)m->n + 1, sizeof *m->blk);
+    if (!m->nodes || !m->elems || !m->offset || !m->type || !m->blk)
         return MCS_ERR(err, MCS_ERR_NOMEM, "export --k: out of memory");
     for (int i = 0; i < m->n && !st; i++) {
         snprintf(path, sizeof path, "/stage%d/mesh/%s/nodes", stage, m->names[i]);
@@ -89,6 +97,15 @@ static mcs_status read_meshes(mcs_results *r, int stage, mesh_set *m, mcs_error 
         if (!st && m->elems[i].rank != 2)
             st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: %s: expected [ne, k] elements",
                          mcs_results_path(r), path);
+        for (int b = 0; b < TR_NBLK && !st; b++) {
+            snprintf(path, sizeof path, "/stage%d/mesh/%s/elements_%s", stage, m->names[i],
+                     tr_blk[b]);
+            if (mcs_results_kind(r, path) != MCS_RES_DATASET) continue;
+            st = mcs_results_read_int(r, path, &m->blk[i][b], err);
+            if (!st && m->blk[i][b].rank != 2)
+                st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: %s: expected [ne, k] elements",
+                             mcs_results_path(r), path);
+        }
     }
     return st;
 }
@@ -103,6 +120,14 @@ static int map_elem(const char *type, int k, const int *in, int base, int *out, 
     } else if (strcmp(type, "tet4") == 0 && k == 4) {
         for (int j = 0; j < 8; j++) out[j] = in[j < 4 ? j : 3] + base;
         *t = FE_KW_SOLID;
+    } else if (strcmp(type, "wedge6") == 0 && k == 6) {
+        /* VTK wedge (a b c | d e f) -> LS-DYNA's n1 n2 n3 n4 n5 n5 n6 n6 (s3_mesh.c) */
+        static const int w[8] = {0, 1, 4, 3, 2, 2, 5, 5};
+        for (int j = 0; j < 8; j++) out[j] = in[w[j]] + base;
+        *t = FE_KW_SOLID;
+    } else if (strcmp(type, "tet10") == 0 && k == 10) {
+        for (int j = 0; j < 10; j++) out[j] = in[j] + base;
+        *t = FE_KW_TET10;
     } else if (strcmp(type, "quad4") == 0 && k == 4) {
         for (int j = 0; j < 4; j++) out[j] = in[j] + base;
         *t = FE_KW_SHELL;
@@ -180,22 +205,30 @@ mcs_status tr_kw_deck_from_results(mcs_results *r, const tr_kw_export_opts *o, f
         fe_kw_part p = {.id = i + 1};
         snprintf(p.title, sizeof p.title, "%s", m.names[i]);
         st = fe_kw_deck_add_part(d, &p, err);
-        const mcs_array *e = &m.elems[i];
-        int k = (int)e->dims[1];
-        for (size_t j = 0; j < e->dims[0] && !st; j++) {
-            int c[8] = {0};
-            fe_kw_etype t = FE_KW_SOLID;
-            const int *row = e->iv + (size_t)k * j;
-            for (int q = 0; q < k && !st; q++)
-                if (row[q] < 0 || (size_t)row[q] >= m.nodes[i].dims[0])
-                    st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: part '%s': element %zu names row %d "
-                                                      "of %zu nodes",
-                                 mcs_results_path(r), m.names[i], j, row[q], m.nodes[i].dims[0]);
-            if (!st && map_elem(m.type[i], k, row, m.offset[i] + 1, c, &t))
-                st = MCS_ERR(err, MCS_ERR_UNSUPPORTED, "%s: part '%s': element type '%s' with %d "
-                                                       "nodes has no keyword counterpart here",
-                             mcs_results_path(r), m.names[i], m.type[i], k);
-            if (!st) st = fe_kw_deck_add_elem(d, t, ++eid[t], i + 1, c, err);
+        for (int b = -1; b < TR_NBLK && !st; b++) {
+            const mcs_array *e = b < 0 ? &m.elems[i] : &m.blk[i][b];
+            const char *etype = b < 0 ? m.type[i] : tr_blk[b];
+            if (e->rank != 2) continue;
+            int k = (int)e->dims[1];
+            for (size_t j = 0; j < e->dims[0] && !st; j++) {
+                int c[10] = {0};
+                fe_kw_etype t = FE_KW_SOLID;
+                const int *row = e->iv + (size_t)k * j;
+                for (int q = 0; q < k && !st; q++)
+                    if (row[q] < 0 || (size_t)row[q] >= m.nodes[i].dims[0])
+                        st = MCS_ERR(err, MCS_ERR_FORMAT,
+                                     "%s: part '%s': element %zu names row %d of %zu nodes",
+                                     mcs_results_path(r), m.names[i], j, row[q],
+                                     m.nodes[i].dims[0]);
+                if (!st && map_elem(etype, k, row, m.offset[i] + 1, c, &t))
+                    st = MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                                 "%s: part '%s': element type '%s' with %d nodes has no keyword "
+                                 "counterpart here",
+                                 mcs_results_path(r), m.names[i], etype, k);
+                /* solids of every shape share *ELEMENT_SOLID's IDs */
+                const int et = t == FE_KW_TET10 ? FE_KW_SOLID : t;
+                if (!st) st = fe_kw_deck_add_elem(d, t, ++eid[et], i + 1, c, err);
+            }
         }
     }
     free(x);

@@ -42,9 +42,11 @@ const int fe_tet10_edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}
 #define HRZ_CORNER (1.0 / 36.0) /* mass fraction of a corner node [-]   */
 #define HRZ_EDGE (4.0 / 27.0)   /* mass fraction of a mid-edge node [-] */
 
-/* LAPACK: eigenvalues of a symmetric matrix */
+/* LAPACK: eigenvalues of a symmetric matrix (Fortran: the lengths of the two character
+ * arguments are passed after the others, by value) */
 extern void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda,
-                   double *w, double *work, const int *lwork, int *info);
+                   double *w, double *work, const int *lwork, int *info, size_t ljobz,
+                   size_t luplo);
 
 static void volume_coords(const double xi[3], double L[4])
 {
@@ -165,7 +167,7 @@ double fe_tet10_omega2(const double x[10][3], double rho, double lambda, double 
     const int n = 30, lwork = 30 * 34;
     double ev[30], work[30 * 34];
     int info = 0;
-    dsyev_("N", "U", &n, &K[0][0], &n, ev, work, &lwork, &info);
+    dsyev_("N", "U", &n, &K[0][0], &n, ev, work, &lwork, &info, 1, 1);
     return info == 0 ? ev[29] : 0;
 }
 

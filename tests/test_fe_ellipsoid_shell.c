@@ -5,6 +5,7 @@
 #include "fe/fe_contact.h"
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
+#include "tests/fe_test_build.h"
 
 /* a 20 mm steel plate, 2 mm thick, dropped from 0.2 mm onto a fixed rigid sphere of radius
  * 50 mm under 1000 m/s^2 with mass damping: it comes to rest with its mid-surface at t/2 above
@@ -14,9 +15,6 @@
 static void test_plate_on_sphere(void)
 {
     const double R = 0.05, t = 0.002, L = 0.02;
-    fe_builder *b;
-    mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
     fe_part_desc d = ft_part("plate", FE_SECTION_SHELL, 210e9, 0.3, 7850);
     d.section.thickness = t;
     d.section.integration_points = 3;
@@ -26,20 +24,19 @@ static void test_plate_on_sphere(void)
     d.mesh.divisions[0] = d.mesh.divisions[1] = 4;
     d.mesh.origin[0] = d.mesh.origin[1] = -L / 2;
     d.mesh.origin[2] = R + t / 2 + 2e-4;
-    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(ft_builder(&b, &d, NULL, &err) == MCS_OK);
     fe_ellipsoid_desc e = {.semi_axes = {R, R, R}};
     snprintf(e.name, sizeof e.name, "ball");
     CHECK(fe_builder_add_ellipsoid(b, &e, &err) == MCS_OK);
     fe_opts o = fe_opts_default();
     o.gravity[2] = -1000;
     o.damping = 2000;
-    fe_model *m = NULL;
-    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
-    fe_builder_destroy(&b);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    fe_model *m;
+    fe_state *s;
+    CHECK(ft_model_state(&b, &o, &m, &s, &err) == MCS_OK);
+    if (!m) return;
     int mid[1];
     CHECK(ft_nodes_at(m, 0, 0, 1e-12, NULL, 0) >= 1);
     mid[0] = -1;
@@ -47,8 +44,6 @@ static void test_plate_on_sphere(void)
         if (fabs(m->node_x0[3 * n]) < 1e-12 && fabs(m->node_x0[3 * n + 1]) < 1e-12) mid[0] = n;
     CHECK(mid[0] >= 0);
     if (mid[0] < 0) return;
-    fe_state *s;
-    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
     while (s->time < 20e-3 && fe_step(m, s) == MCS_OK) {
     }
     CHECK(s->err.status == MCS_OK);

@@ -2,6 +2,7 @@
  * element runs at the target step, and the added mass is that element's rho V (f^2 - 1). */
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
+#include "tests/fe_test_build.h"
 
 #include "fe/fe_elem.h"
 
@@ -107,14 +108,11 @@ static void test_thin_element(void)
 static void test_crush_rescaled(void)
 {
     const double h = 0.01, E = 1e7, rho = 1000, v = 1, c = sqrt(E / rho);
+    fe_part_desc d = ft_part("cube", FE_SECTION_SOLID, E, 0, rho);
+    ft_box(&d, h, h, h, 1, 1, 1);
     fe_builder *b;
     mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
-    fe_part_desc d = ft_part("cube", FE_SECTION_SOLID, E, 0, rho);
-    d.mesh.generate = FE_MESH_BOX;
-    d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = h;
-    d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 1;
-    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    CHECK(ft_builder(&b, &d, NULL, &err) == MCS_OK);
     fe_boundary_desc lo = ft_bc("cube", FE_WHERE_Z_MIN, FE_DOF_ALL);
     fe_boundary_desc hi = ft_bc("cube", FE_WHERE_Z_MAX, FE_DOF_TRANS);
     hi.velocity[2] = -v;
@@ -125,19 +123,14 @@ static void test_crush_rescaled(void)
     const double zs = 0.008, target = zs / c * o.dt_scale;
     o.mass_scaling_dt = target;
     o.mass_scaling_interval = 1;
-    fe_model *m = NULL;
-    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
-    fe_builder_destroy(&b);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    fe_model *m;
+    fe_state *s;
+    CHECK(ft_model_state(&b, &o, &m, &s, &err) == MCS_OK);
+    if (!m) return;
     CHECK(m->mass_added == 0); /* 10 mm: above the target at t = 0 */
     int top = -1;
     for (int n = 0; n < m->nnode; n++)
         if (m->node_x0[3 * n + 2] > 0.5 * h) top = n;
-    fe_state *s;
-    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
     double dtdev = 0, emax = 0, eref = 0;
     while (s->node_x[3 * top + 2] > 0.5 * h && fe_step(m, s) == MCS_OK) {
         if (s->node_x[3 * top + 2] < zs - 2e-4) dtdev = fmax(dtdev, fabs(s->dt - target) / target);

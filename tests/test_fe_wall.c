@@ -5,6 +5,7 @@
 #include "fe/fe_keyword.h"
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
+#include "tests/fe_test_build.h"
 
 #include <stdlib.h>
 #include <unistd.h>
@@ -19,16 +20,13 @@
 static void test_wall_hits_point_mass(void)
 {
     const double M = 3, mpt = 1, V = 2, dt = 1e-6;
-    fe_builder *b;
-    mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
     /* a part far behind the wall so that the model has one (not a slave: behind the plane) */
     fe_part_desc d = ft_part("dummy", FE_SECTION_SOLID, 1e6, 0.3, 1000);
-    d.mesh.generate = FE_MESH_BOX;
-    d.mesh.size[0] = d.mesh.size[1] = d.mesh.size[2] = 0.01;
-    d.mesh.divisions[0] = d.mesh.divisions[1] = d.mesh.divisions[2] = 1;
+    ft_box(&d, 0.01, 0.01, 0.01, 1, 1, 1);
     d.mesh.origin[0] = -10;
-    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(ft_builder(&b, &d, NULL, &err) == MCS_OK);
     int node;
     double p[3] = {0.001, 0, 0};
     CHECK(fe_builder_add_node(b, p, &node, &err) == MCS_OK);
@@ -48,15 +46,10 @@ static void test_wall_hits_point_mass(void)
     fe_opts o = fe_opts_default();
     o.dt_max = dt;
     o.history_capacity = 100000;
-    fe_model *m = NULL;
-    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
-    fe_builder_destroy(&b);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
-    fe_state *s = NULL;
-    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    fe_model *m;
+    fe_state *s;
+    CHECK(ft_model_state(&b, &o, &m, &s, &err) == MCS_OK);
+    if (!m) return;
     double pmax = 0, fmax_ = 0;
     while (s->time < 3e-3 && fe_step(m, s) == MCS_OK) {
         double pm = M * s->wall_v[0] + mpt * s->node_v[3 * node];
@@ -90,15 +83,12 @@ static void test_wall_hits_point_mass(void)
 static void test_wall_hits_bar(void)
 {
     const double E = 2e9, rho = 1000, a = 0.01, L = 0.2, V = 5;
+    fe_part_desc d = ft_part("bar", FE_SECTION_SOLID, E, 0, rho);
+    ft_box(&d, L, a, a, 40, 1, 1);
+    d.mesh.origin[0] = 1e-4;
     fe_builder *b;
     mcs_error err = {0};
-    CHECK(fe_builder_create(&b, &err) == MCS_OK);
-    fe_part_desc d = ft_part("bar", FE_SECTION_SOLID, E, 0, rho);
-    d.mesh.generate = FE_MESH_BOX;
-    d.mesh.size[0] = L, d.mesh.size[1] = d.mesh.size[2] = a;
-    d.mesh.divisions[0] = 40, d.mesh.divisions[1] = d.mesh.divisions[2] = 1;
-    d.mesh.origin[0] = 1e-4;
-    CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
+    CHECK(ft_builder(&b, &d, NULL, &err) == MCS_OK);
     const double mbar = rho * a * a * L, M = 2 * mbar;
     fe_wall_desc w = {.normal = {1, 0, 0}, .velocity = {V, 0, 0}, .method = FE_WALL_PENALTY,
                       .mass = M, .penalty_scale = 0.1};
@@ -106,15 +96,10 @@ static void test_wall_hits_bar(void)
     CHECK(fe_builder_add_wall(b, &w, &err) == MCS_OK);
     fe_opts o = fe_opts_default();
     o.bulk_q1 = o.bulk_q2 = 0; /* no bulk viscosity: elastic, energy conserved */
-    fe_model *m = NULL;
-    CHECK(fe_model_create(b, &o, &m, &err) == MCS_OK);
-    fe_builder_destroy(&b);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
-    fe_state *s = NULL;
-    CHECK(fe_state_create(m, &s, &err) == MCS_OK);
+    fe_model *m;
+    fe_state *s;
+    CHECK(ft_model_state(&b, &o, &m, &s, &err) == MCS_OK);
+    if (!m) return;
     const double c = sqrt(E / rho), tend = 6 * L / c;
     double perr = 0, fmax_ = 0;
     while (s->time < tend && fe_step(m, s) == MCS_OK) {

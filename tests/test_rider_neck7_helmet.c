@@ -5,6 +5,7 @@
  * positioning step (hands on the grips, feet on the pegs, pelvis on the seat), the helmet keeps
  * its pose on the head, and 50 ms seated under gravity break nothing. */
 #include "harness.h"
+#include "tests/mb_test_util.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -14,41 +15,17 @@
 
 #define FILE7H "models/riders/hybrid3_50th_neck7_helmet.yaml"
 
-static mb_model *build_text(const char *txt, mcs_error *err)
-{
-    mcs_scenario *scn = NULL;
-    mb_model *m = NULL;
-    if (mcs_scenario_load_text("scenarios/rider_neck7_helmet.yaml", txt, strlen(txt), &scn, err) ==
-        MCS_OK)
-        mb_model_build(scn, NULL, &m, err);
-    mcs_scenario_destroy(&scn);
-    if (!m) fprintf(stderr, "%s\n", err->msg);
-    return m;
-}
-
 /* the shell's offset from the head in the model file (world = head axes there) [m] */
 static double d0[3];
-
-static double rider_mass(const mb_model *m, int *n)
-{
-    double tot = 0;
-    *n = 0;
-    for (int i = 0; i < m->nbody; i++)
-        if (strncmp(m->body_name[i], "rider_", 6) == 0) tot += m->body[i].mass, (*n)++;
-    return tot;
-}
 
 /* 23 segments (17 with the neck replaced by C7..C1) + shell + liner; 78.2 + 1.4 kg */
 static void test_builds_and_mass(void)
 {
-    const char *txt = "mcrash: 1\ninclude: [" FILE7H "]\n"
-                      "simulation: {end_time: 1 ms, time_step: 10 us}\n";
-    mcs_error err = {0};
-    mb_model *m = build_text(txt, &err);
+    mb_model *m = mt_rider_alone(FILE7H);
     CHECK(m != NULL);
     if (!m) return;
     int n = 0;
-    double mass = rider_mass(m, &n);
+    double mass = mt_rider_mass(m, &n);
     printf("  neck7 + helmet: %d bodies, %.9f kg, %d joints, %d attachments\n", n, mass, m->njoint,
            m->nattach);
     CHECK(n == 25);
@@ -70,40 +47,21 @@ static void test_builds_and_mass(void)
 /* seated (40 deg lean, head pitched -10 deg) on sport_208kg with the seat contact, 50 ms */
 static void test_seated(void)
 {
-    const char *txt =
-        "mcrash: 1\n"
-        "include: [models/motorcycles/sport_208kg.yaml, " FILE7H "]\n"
-        "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n"
-        "simulation: {end_time: 50 ms, time_step: 10 us}\n"
-        "rider: {torso_lean: 40 deg, head_pitch: -10 deg}\n"
-        "contacts:\n  - {a: rider_pelvis, b: moto_frame, characteristic: seat}\n";
     mcs_error err = {0};
-    mb_model *m = build_text(txt, &err);
+    mb_model *m = mt_rider_seated_helmet("scenarios/rider_neck7_helmet.yaml", FILE7H, NULL);
     CHECK(m != NULL);
     if (!m) return;
     printf("  seated: mount-point residual %.3g m\n", m->rider_residual);
     CHECK(m->rider_residual >= 0 && m->rider_residual < 1e-12);
-    int h = mb_model_body(m, "rider_head"), sh = mb_model_body(m, "rider_helmet_shell");
-    double R[9], d[3], e[3];
-    mb_quat_to_rot(m->body[h].quat, R);
-    mb_sub(m->body[sh].pos, m->body[h].pos, d);
-    mb_mat_tvec(R, d, e); /* in the head's frame: the file's offset */
-    mb_sub(e, d0, e);
-    printf("  shell offset from the head kept to %.2g m\n", mb_norm(e));
-    CHECK(mb_norm(e) < 1e-12);
+    double e = mt_helmet_offset_error(m, d0);
+    printf("  shell offset from the head kept to %.2g m\n", e);
+    CHECK(e < 1e-12);
     mb_state *s = NULL;
-    CHECK(mb_state_create(m, &s, &err) == MCS_OK);
-    mcs_status st = MCS_OK;
-    while (s && !st && s->step < m->nsteps) st = mb_step(m, s, &err);
-    CHECK(st == MCS_OK);
+    CHECK(mt_run(m, &s, &err) == MCS_OK);
     if (s) {
-        double f = 0;
+        double f = mt_helmet_coupling_force(m, s);
         int broken = 0;
-        for (int i = 0; i < m->nattach; i++) {
-            broken += s->att[i].broken;
-            if (!strncmp(m->attach_name[i], "rider_helmet", 12))
-                f = fmax(f, mb_norm(s->att[i].force));
-        }
+        for (int i = 0; i < m->nattach; i++) broken += s->att[i].broken;
         printf("  after 50 ms seated: %d attachments, none broken: %s; largest helmet coupling "
                "force %.1f N; energy drift %.2g\n",
                m->nattach, broken ? "no" : "yes", f, mb_energy_drift(m, s));

@@ -1,0 +1,100 @@
+/* mb_test_util.h: set-up shared by the stage-1 tests (every tests/test_*.c is its own binary,
+ * so these are static inline): a model from scenario text, a run to the end, and the rider:
+ * alone, its mass, seated on the motorcycle with a helmet. */
+#ifndef MB_TEST_UTIL_H
+#define MB_TEST_UTIL_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_vec.h"
+
+/* the model of scenario `text` read as the file `name` (its includes are relative to it);
+ * NULL on failure, with the error in *err, or printed ("name: message") when err is NULL */
+static inline mb_model *mt_model_text(const char *name, const char *text, mcs_error *err)
+{
+    mcs_error local = {0}, *e = err ? err : &local;
+    mcs_scenario *scn = NULL;
+    mb_model *m = NULL;
+    if (mcs_scenario_load_text(name, text, strlen(text), &scn, e) == MCS_OK)
+        mb_model_build(scn, NULL, &m, e);
+    mcs_scenario_destroy(&scn);
+    if (!m && !err) fprintf(stderr, "%s: %s\n", name, local.msg);
+    return m;
+}
+
+/* a new state *s of m stepped to the model's end (m->nsteps); the first failing status */
+static inline mcs_status mt_run(const mb_model *m, mb_state **s, mcs_error *err)
+{
+    mcs_status st = mb_state_create(m, s, err);
+    while (!st && (*s)->step < m->nsteps) st = mb_step(m, *s, err);
+    return st;
+}
+
+/* ---- the rider (scenarios/models/riders/, docs/rider.md) ---- */
+
+/* the rider of model file `file` (relative to scenarios/) alone: free fall, no contacts, 1 ms;
+ * NULL on failure, the error printed */
+static inline mb_model *mt_rider_alone(const char *file)
+{
+    char txt[1024];
+    snprintf(txt, sizeof txt,
+             "mcrash: 1\ninclude: [%s]\nsimulation: {end_time: 1 ms, time_step: 10 us}\n", file);
+    return mt_model_text("scenarios/rider_alone.yaml", txt, NULL);
+}
+
+/* the total mass of the rider's bodies (names rider_*) [kg], their number in *n */
+static inline double mt_rider_mass(const mb_model *m, int *n)
+{
+    double tot = 0;
+    *n = 0;
+    for (int i = 0; i < m->nbody; i++)
+        if (strncmp(m->body_name[i], "rider_", 6) == 0) tot += m->body[i].mass, (*n)++;
+    return tot;
+}
+
+/* the rider of model file `file` (relative to scenarios/, one with the helmet) seated by the
+ * positioning step (40 deg lean, head pitched -10 deg) on sport_208kg with the seat contact,
+ * 50 ms under gravity, read as the file `name` in scenarios/; NULL on failure (error in *err,
+ * or printed when err is NULL) */
+static inline mb_model *mt_rider_seated_helmet(const char *name, const char *file,
+                                               mcs_error *err)
+{
+    char txt[2048];
+    snprintf(txt, sizeof txt,
+             "mcrash: 1\n"
+             "include: [models/motorcycles/sport_208kg.yaml, %s]\n"
+             "environment: {gravity: 9.81 m/s^2, ground: {height: 0 m, friction: 0.9}}\n"
+             "simulation: {end_time: 50 ms, time_step: 10 us}\n"
+             "rider: {torso_lean: 40 deg, head_pitch: -10 deg}\n"
+             "contacts:\n  - {a: rider_pelvis, b: moto_frame, characteristic: seat}\n",
+             file);
+    return mt_model_text(name, txt, err);
+}
+
+/* how far the helmet shell's offset from the head, in the head's frame, is from d0 (the
+ * offset in the model file, where the head's axes are the world's) [m] */
+static inline double mt_helmet_offset_error(const mb_model *m, const double d0[3])
+{
+    int h = mb_model_body(m, "rider_head"), sh = mb_model_body(m, "rider_helmet_shell");
+    double R[9], d[3], e[3];
+    mb_quat_to_rot(m->body[h].quat, R);
+    mb_sub(m->body[sh].pos, m->body[h].pos, d);
+    mb_mat_tvec(R, d, e);
+    mb_sub(e, d0, e);
+    return mb_norm(e);
+}
+
+/* the largest force of the helmet's couplings (attachments rider_helmet*) in state s [N] */
+static inline double mt_helmet_coupling_force(const mb_model *m, const mb_state *s)
+{
+    double f = 0;
+    for (int i = 0; i < m->nattach; i++)
+        if (!strncmp(m->attach_name[i], "rider_helmet", 12)) f = fmax(f, mb_norm(s->att[i].force));
+    return f;
+}
+
+#endif

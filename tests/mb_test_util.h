@@ -1,6 +1,7 @@
 /* mb_test_util.h: set-up shared by the stage-1 tests (every tests/test_*.c is its own binary,
- * so these are static inline): a model from scenario text, a run to the end, and the rider:
- * alone, its mass, seated on the motorcycle with a helmet. */
+ * so these are static inline): a model from scenario text or a file, a run to the end, a
+ * channel of a results file, and the rider: alone, its mass, seated on the motorcycle with a
+ * helmet. */
 #ifndef MB_TEST_UTIL_H
 #define MB_TEST_UTIL_H
 
@@ -9,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/mcs_results.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -26,12 +28,49 @@ static inline mb_model *mt_model_text(const char *name, const char *text, mcs_er
     return m;
 }
 
+/* the model of the scenario file `path`; NULL on failure, the error printed */
+static inline mb_model *mt_model_file(const char *path)
+{
+    mcs_scenario *scn = NULL;
+    mcs_error err = {0};
+    mb_model *m = NULL;
+    if (mcs_scenario_load(path, &scn, &err) || mb_model_build(scn, NULL, &m, &err))
+        fprintf(stderr, "%s: %s\n", path, err.msg);
+    mcs_scenario_destroy(&scn);
+    return m;
+}
+
 /* a new state *s of m stepped to the model's end (m->nsteps); the first failing status */
 static inline mcs_status mt_run(const mb_model *m, mb_state **s, mcs_error *err)
 {
     mcs_status st = mb_state_create(m, s, err);
     while (!st && (*s)->step < m->nsteps) st = mb_step(m, *s, err);
     return st;
+}
+
+/* the dataset /stage1/channels/<name> of the results file `path` (malloc'ed, *n values, its
+ * unit into unit[32] unless unit is NULL); NULL on failure, with the error in *err, or printed
+ * when err is NULL */
+static inline double *mt_read_channel(const char *path, const char *name, size_t *n, char *unit,
+                                      mcs_error *err)
+{
+    mcs_results *r = NULL;
+    mcs_error local = {0}, *e = err ? err : &local;
+    mcs_array a = {0};
+    char ds[160];
+    snprintf(ds, sizeof ds, "/stage1/channels/%s", name);
+    double *v = NULL;
+    if (mcs_results_open(&r, path, e) == MCS_OK && mcs_results_read(r, ds, &a, e) == MCS_OK) {
+        v = malloc(a.n * sizeof *v);
+        memcpy(v, a.v, a.n * sizeof *v);
+        *n = a.n;
+        if (unit) snprintf(unit, 32, "%s", a.unit);
+    } else if (!err) {
+        fprintf(stderr, "%s: %s\n", ds, local.msg);
+    }
+    mcs_array_free(&a);
+    mcs_results_close(&r);
+    return v;
 }
 
 /* ---- the rider (scenarios/models/riders/, docs/rider.md) ---- */

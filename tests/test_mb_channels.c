@@ -3,23 +3,12 @@
  * runs every step (mb_energy_check_step), not only at the output samples. */
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "tests/mb_test_util.h"
 #include "stage1_mb/mb_model.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-static mb_model *load_text(const char *text)
-{
-    mcs_scenario *scn = NULL;
-    mb_model *m = NULL;
-    mcs_error err = {0};
-    if (mcs_scenario_load_text("channels.yaml", text, strlen(text), &scn, &err) == MCS_OK)
-        mb_model_build(scn, NULL, &m, &err);
-    if (!m) fprintf(stderr, "%s\n", err.msg);
-    mcs_scenario_destroy(&scn);
-    return m;
-}
 
 /* a damped ball bouncing on the ground with friction (sliding), a restrained pendulum beside */
 static const char *SCN =
@@ -40,33 +29,12 @@ static const char *SCN =
     "     axis: [0, 1, 0], restraint: spring}\n"
     "contacts: [{name: drop, a: ball, b: ground, characteristic: pad}]\n";
 
-static double *read_channel(const char *path, const char *name, size_t *n, char *unit)
-{
-    mcs_results *r = NULL;
-    mcs_error err = {0};
-    mcs_array a = {0};
-    char ds[160];
-    snprintf(ds, sizeof ds, "/stage1/channels/%s", name);
-    double *v = NULL;
-    if (mcs_results_open(&r, path, &err) == MCS_OK && mcs_results_read(r, ds, &a, &err) == MCS_OK) {
-        v = malloc(a.n * sizeof *v);
-        memcpy(v, a.v, a.n * sizeof *v);
-        *n = a.n;
-        snprintf(unit, 32, "%s", a.unit);
-    } else {
-        fprintf(stderr, "%s: %s\n", ds, err.msg);
-    }
-    mcs_array_free(&a);
-    mcs_results_close(&r);
-    return v;
-}
-
 /* the file's channels against the same (deterministic) run stepped here: at every output step
  * fn = the pair's normal force, ft = |friction|, pen = depth, angle = the joint position and
  * moment = minus the load applied to the child; exact (same numbers, same order) */
 static void test_channels_equal_state(void)
 {
-    mb_model *m = load_text(SCN);
+    mb_model *m = mt_model_text("channels.yaml", SCN, NULL);
     CHECK(m != NULL);
     if (!m) return;
     const char *out = "/tmp/mcrash_test_channels.h5";
@@ -94,7 +62,7 @@ static void test_channels_equal_state(void)
     for (int c = 0; c < 5; c++) {
         size_t n = 0;
         char unit[32] = "";
-        double *v = read_channel(out, names[c], &n, unit);
+        double *v = mt_read_channel(out, names[c], &n, unit, NULL);
         CHECK(v != NULL && n == no);
         CHECK(strcmp(unit, units[c]) == 0);
         int bad = 0;
@@ -131,7 +99,7 @@ static void test_energy_checked_every_step(void)
                     "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [0.1, 0.1, "
                     "0.1]}]}\n"
                     "contacts: [{a: ball, b: ground, characteristic: stiff}]\n";
-    mb_model *m = load_text(y);
+    mb_model *m = mt_model_text("channels.yaml", y, NULL);
     CHECK(m != NULL);
     if (!m) return;
     CHECK(m->out_every == 1000);

@@ -8,22 +8,13 @@
  * restraint torque about the axis is exactly g_i = P_i + k (theta_i - n_i) + d dtheta_i/dt. */
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "tests/mb_test_util.h"
 #include "stage1_mb/mb_model.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static mb_model *load_text(const char *text, mcs_error *err)
-{
-    mcs_scenario *scn = NULL;
-    mb_model *m = NULL;
-    if (mcs_scenario_load_text("r3.yaml", text, strlen(text), &scn, err) == MCS_OK)
-        mb_model_build(scn, NULL, &m, err);
-    mcs_scenario_destroy(&scn);
-    return m;
-}
 
 /* ---- static deflection under a gravity moment ---- */
 
@@ -50,7 +41,7 @@ static double settled(const char *arm, const char *keys, int axis, double *other
              "     restraint: k, restraint_negative: topout, %s}\n",
              arm, keys);
     mcs_error err = {0};
-    mb_model *m = load_text(y, &err);
+    mb_model *m = mt_model_text("r3.yaml", y, &err);
     if (!m) fprintf(stderr, "%s\n", err.msg);
     CHECK(m != NULL);
     if (!m) return NAN;
@@ -124,25 +115,6 @@ static void test_preload_gravity(void)
 
 /* ---- neutral offset: oscillation about the neutral angle, period per axis ---- */
 
-static double *read_channel(const char *path, const char *name, size_t *n, char *unit)
-{
-    mcs_results *r = NULL;
-    mcs_error err = {0};
-    mcs_array a = {0};
-    char ds[160];
-    snprintf(ds, sizeof ds, "/stage1/channels/%s", name);
-    double *v = NULL;
-    if (mcs_results_open(&r, path, &err) == MCS_OK && mcs_results_read(r, ds, &a, &err) == MCS_OK) {
-        v = malloc(a.n * sizeof *v);
-        memcpy(v, a.v, a.n * sizeof *v);
-        *n = a.n;
-        snprintf(unit, 32, "%s", a.unit);
-    }
-    mcs_array_free(&a);
-    mcs_results_close(&r);
-    return v;
-}
-
 /* upward crossings of v(t) - c, linearly interpolated; returns the mean spacing */
 static double mean_period(const double *v, size_t n, double dt, double c, int *ncross)
 {
@@ -191,7 +163,7 @@ static const char *OSC =
 static void test_neutral_and_periods(void)
 {
     mcs_error err = {0};
-    mb_model *m = load_text(OSC, &err);
+    mb_model *m = mt_model_text("r3.yaml", OSC, &err);
     if (!m) fprintf(stderr, "%s\n", err.msg);
     CHECK(m != NULL);
     if (!m) return;
@@ -209,8 +181,8 @@ static void test_neutral_and_periods(void)
     for (int c = 0; c < 5; c++) {
         size_t n = 0, nm = 0;
         char unit[32] = "", unit2[32] = "";
-        double *v = read_channel(out, chan[c], &n, unit);
-        double *g = read_channel(out, mom[c], &nm, unit2);
+        double *v = mt_read_channel(out, chan[c], &n, unit, NULL);
+        double *g = mt_read_channel(out, mom[c], &nm, unit2, NULL);
         CHECK(v != NULL && g != NULL && n == nm && n > 1000);
         if (!v || !g) {
             free(v), free(g);
@@ -242,11 +214,12 @@ static void test_neutral_and_periods(void)
     /* the other axes stay still; a universal joint writes no _z channel */
     size_t n = 0;
     char unit[32];
-    double *v = read_channel(out, "sx_angle_y", &n, unit), peak = 0;
+    double *v = mt_read_channel(out, "sx_angle_y", &n, unit, NULL), peak = 0;
     for (size_t i = 0; v && i < n; i++) peak = fmax(peak, fabs(v[i]));
     CHECK(v != NULL && peak < 1e-9);
     free(v);
-    v = read_channel(out, "ua_angle_z", &n, unit);
+    mcs_error none = {0};
+    v = mt_read_channel(out, "ua_angle_z", &n, unit, &none);
     CHECK(v == NULL);
     free(v);
     printf("  energy drift of the five oscillators %.1e\n", sum.energy_drift);
@@ -271,7 +244,7 @@ static void test_preload_cancels_at_neutral(void)
         "  - {name: j, type: spherical, parent: ground, child: b, anchor: [0, 0, 1], restraint: k,\n"
         "     neutral: [0, 0.2 rad, 0], preload: [0, 2 N*m, 0]}\n";
     mcs_error err = {0};
-    mb_model *m = load_text(y, &err);
+    mb_model *m = mt_model_text("r3.yaml", y, &err);
     CHECK(m != NULL);
     if (!m) return;
     mb_state *s = NULL;
@@ -315,7 +288,7 @@ static void test_errors(void)
         char y[1200];
         snprintf(y, sizeof y, "%s%s", head, bad[i][0]);
         mcs_error err = {0};
-        mb_model *m = load_text(y, &err);
+        mb_model *m = mt_model_text("r3.yaml", y, &err);
         CHECK(m == NULL);
         CHECK(err.status != MCS_OK);
         CHECK_STR_CONTAINS(err.msg, bad[i][1]);

@@ -17,6 +17,7 @@
  * and the pendulum's deceleration pulse) were not retrieved from a source here. */
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "tests/mb_test_util.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -28,32 +29,6 @@
 #define DROP "scenarios/verification/h3_head_drop_572_32.yaml"
 #define G0 9.80665 /* standard gravity: accelerations in g [m/s^2] */
 
-static mb_model *load_file(const char *path)
-{
-    mcs_scenario *scn = NULL;
-    mcs_error err = {0};
-    mb_model *m = NULL;
-    if (mcs_scenario_load(path, &scn, &err) || mb_model_build(scn, NULL, &m, &err))
-        fprintf(stderr, "%s: %s\n", path, err.msg);
-    mcs_scenario_destroy(&scn);
-    return m;
-}
-
-/* the rider alone, from its model file */
-static mb_model *rider(void)
-{
-    const char *txt = "mcrash: 1\ninclude: [models/riders/hybrid3_50th.yaml]\n"
-                      "simulation: {end_time: 1 ms, time_step: 10 us}\n";
-    mcs_scenario *scn = NULL;
-    mcs_error err = {0};
-    mb_model *m = NULL;
-    if (mcs_scenario_load_text("scenarios/rider_alone.yaml", txt, strlen(txt), &scn, &err) ||
-        mb_model_build(scn, NULL, &m, &err))
-        fprintf(stderr, "rider: %s\n", err.msg);
-    mcs_scenario_destroy(&scn);
-    return m;
-}
-
 static int surf_of(const mb_model *m, int b)
 {
     for (int s = 0; s < m->nsurf; s++)
@@ -64,7 +39,7 @@ static int surf_of(const mb_model *m, int b)
 /* the drop's head is the rider's head: same mass, inertia, ellipsoid and loading curve */
 static void test_drop_head_is_rider_head(void)
 {
-    mb_model *r = rider(), *d = load_file(DROP);
+    mb_model *r = mt_rider_alone("models/riders/hybrid3_50th.yaml"), *d = mt_model_file(DROP);
     CHECK(r != NULL && d != NULL);
     if (r && d) {
         int hr = mb_model_body(r, "rider_head"), hd = mb_model_body(d, "rider_head");
@@ -90,26 +65,6 @@ static void test_drop_head_is_rider_head(void)
     }
     mb_model_destroy(&r);
     mb_model_destroy(&d);
-}
-
-static double *read_channel(const char *path, const char *name, size_t *n)
-{
-    mcs_results *r = NULL;
-    mcs_error err = {0};
-    mcs_array a = {0};
-    char ds[160];
-    snprintf(ds, sizeof ds, "/stage1/channels/%s", name);
-    double *v = NULL;
-    if (mcs_results_open(&r, path, &err) == MCS_OK && mcs_results_read(r, ds, &a, &err) == MCS_OK) {
-        v = malloc(a.n * sizeof *v);
-        memcpy(v, a.v, a.n * sizeof *v);
-        *n = a.n;
-    } else {
-        fprintf(stderr, "%s: %s\n", ds, err.msg);
-    }
-    mcs_array_free(&a);
-    mcs_results_close(&r);
-    return v;
 }
 
 /* 572.32 corridor on the CFC 1000 head channels. The sensor gives the kinematic acceleration
@@ -150,7 +105,7 @@ static double closed_form_peak(const mb_model *m, double *d_out)
 
 static void test_head_drop_572_32(void)
 {
-    mb_model *m = load_file(DROP);
+    mb_model *m = mt_model_file(DROP);
     CHECK(m != NULL);
     if (!m) return;
     const char *out = "/tmp/mcrash_test_h3_head_drop.h5";
@@ -159,8 +114,10 @@ static void test_head_drop_572_32(void)
     mb_run_summary sum = {0};
     CHECK(mb_run(m, &o, &sum, &err) == MCS_OK);
     size_t n[4] = {0};
-    double *ax = read_channel(out, "head_ax", &n[0]), *ay = read_channel(out, "head_ay", &n[1]);
-    double *az = read_channel(out, "head_az", &n[2]), *pen = read_channel(out, "head_plate_pen", &n[3]);
+    double *ax = mt_read_channel(out, "head_ax", &n[0], NULL, NULL);
+    double *ay = mt_read_channel(out, "head_ay", &n[1], NULL, NULL);
+    double *az = mt_read_channel(out, "head_az", &n[2], NULL, NULL);
+    double *pen = mt_read_channel(out, "head_plate_pen", &n[3], NULL, NULL);
     CHECK(ax && ay && az && pen && n[0] == n[1] && n[1] == n[2] && n[2] == n[3] && n[0] > 100);
     if (ax && ay && az && pen && n[0] == n[1] && n[1] == n[2] && n[2] == n[3]) {
         size_t nt = n[0], ip = 0;

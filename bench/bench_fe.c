@@ -10,14 +10,7 @@
 #include "fe/fe_contact.h"
 #include "fe/fe_model.h"
 #include "fe/fe_state.h"
-
-/* wall clock, and this thread's CPU time (the figure that means something on a shared machine) */
-static double now(clockid_t id)
-{
-    struct timespec ts;
-    clock_gettime(id, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+#include "bench/bench_fe_util.h"
 
 static fe_part_desc steel(const char *name, fe_section_type type)
 {
@@ -51,10 +44,10 @@ static timing timed_run(const fe_model *m, int threads, int cycles)
     if (fe_state_create(m, &s, &err) != MCS_OK) return r;
     for (int i = 0; i < 5; i++) fe_step(m, s); /* warm-up (and thread start-up) */
     memset(s->timer, 0, sizeof s->timer);
-    double t0 = now(CLOCK_MONOTONIC), c0 = now(CLOCK_PROCESS_CPUTIME_ID);
+    double t0 = bf_now(CLOCK_MONOTONIC), c0 = bf_now(CLOCK_PROCESS_CPUTIME_ID);
     for (int i = 0; i < cycles && s->err.status == MCS_OK; i++) fe_step(m, s);
-    r.wall = now(CLOCK_MONOTONIC) - t0;
-    r.cpu = now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+    r.wall = bf_now(CLOCK_MONOTONIC) - t0;
+    r.cpu = bf_now(CLOCK_PROCESS_CPUTIME_ID) - c0;
     memcpy(r.timer, s->timer, sizeof r.timer);
     r.dt = s->dt, r.t = s->time;
     r.eerr = s->energy_ref > 0 ? (s->energy[FE_E_total] - s->energy0) / s->energy_ref : 0;
@@ -125,22 +118,8 @@ int main(void)
     fe_builder *b;
     fe_builder_create(&b, &err);
     fe_part_desc t = steel("tube", FE_SECTION_SHELL);
-    t.section.thickness = 1.5e-3;
-    t.section.integration_points = 5;
-    t.mesh.generate = FE_MESH_SQUARE_TUBE;
-    t.mesh.side = 0.05, t.mesh.length = 0.2, t.mesh.element_size = 2.5e-3, t.mesh.axis = 2;
-    fe_builder_add_part(b, &t, NULL, &err);
-    fe_boundary_desc bc;
-    memset(&bc, 0, sizeof bc);
-    snprintf(bc.part, sizeof bc.part, "tube");
-    bc.where = FE_WHERE_Z_MIN;
-    bc.fix = FE_DOF_ALL;
-    fe_builder_add_boundary(b, &bc, &err);
-    fe_wall_desc w;
-    memset(&w, 0, sizeof w);
-    snprintf(w.name, sizeof w.name, "ram");
-    w.point[2] = 0.2, w.normal[2] = -1, w.velocity[2] = -10;
-    fe_builder_add_wall(b, &w, &err);
+    bf_tube_part(&t);
+    bf_tube_crush(b, &t, &err);
     rc |= run("BT shell, yielding (J2), 5 pts", b, 400);
     /* the same tube with single-surface (self) contact on it: the comparison case */
     fe_contact_desc cd = fe_contact_desc_default();
@@ -153,9 +132,7 @@ int main(void)
     fe_builder_destroy(&b);
     fe_builder_create(&b, &err);
     t.material.model = FE_MAT_ELASTIC;
-    fe_builder_add_part(b, &t, NULL, &err);
-    fe_builder_add_boundary(b, &bc, &err);
-    fe_builder_add_wall(b, &w, &err);
+    bf_tube_crush(b, &t, &err);
     rc |= run("BT shell, elastic, 5 pts", b, 400);
     fe_builder_destroy(&b);
 
@@ -167,8 +144,7 @@ int main(void)
     h.mesh.divisions[0] = h.mesh.divisions[1] = 20, h.mesh.divisions[2] = 10;
     h.initial_velocity[2] = -20;
     fe_builder_add_part(b, &h, NULL, &err);
-    snprintf(bc.part, sizeof bc.part, "block");
-    fe_builder_add_boundary(b, &bc, &err);
+    bf_clamp_base(b, "block", &err);
     rc |= run("hex8 1 pt + FB hourglass, J2", b, 400);
     fe_builder_destroy(&b);
     return rc;

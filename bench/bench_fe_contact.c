@@ -13,13 +13,7 @@
 #include "fe/fe_contact.h"
 #include "fe/fe_model.h"
 #include "fe/fe_state.h"
-
-static double now(clockid_t id)
-{
-    struct timespec ts;
-    clock_gettime(id, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+#include "bench/bench_fe_util.h"
 
 static fe_builder *tube(int contact)
 {
@@ -27,30 +21,14 @@ static fe_builder *tube(int contact)
     fe_builder *b;
     if (fe_builder_create(&b, &err) != MCS_OK) return NULL;
     fe_part_desc t = fe_part_desc_default();
-    snprintf(t.name, sizeof t.name, "tube");
-    t.section.type = FE_SECTION_SHELL;
-    t.section.thickness = 1.5e-3;
-    t.section.integration_points = 5;
+    bf_tube_part(&t);
     t.material.model = FE_MAT_ELASTIC_PLASTIC;
     t.material.density = 7850, t.material.youngs_modulus = 210e9, t.material.poisson = 0.3;
     t.material.nhardening = 3;
     t.material.hardening[0][0] = 0, t.material.hardening[0][1] = 250e6;
     t.material.hardening[1][0] = 0.05, t.material.hardening[1][1] = 300e6;
     t.material.hardening[2][0] = 1, t.material.hardening[2][1] = 400e6;
-    t.mesh.generate = FE_MESH_SQUARE_TUBE;
-    t.mesh.side = 0.05, t.mesh.length = 0.2, t.mesh.element_size = 2.5e-3, t.mesh.axis = 2;
-    fe_builder_add_part(b, &t, NULL, &err);
-    fe_boundary_desc bc;
-    memset(&bc, 0, sizeof bc);
-    snprintf(bc.part, sizeof bc.part, "tube");
-    bc.where = FE_WHERE_Z_MIN;
-    bc.fix = FE_DOF_ALL;
-    fe_builder_add_boundary(b, &bc, &err);
-    fe_wall_desc w;
-    memset(&w, 0, sizeof w);
-    snprintf(w.name, sizeof w.name, "ram");
-    w.point[2] = 0.2, w.normal[2] = -1, w.velocity[2] = -10;
-    fe_builder_add_wall(b, &w, &err);
+    bf_tube_crush(b, &t, &err);
     if (contact) {
         fe_contact_desc c = fe_contact_desc_default();
         c.type = FE_CONTACT_SINGLE_SURFACE;
@@ -74,9 +52,9 @@ static void two_threads(const fe_model *m, int steps)
         fe_state *s = NULL;
         fe_set_threads(th);
         if (fe_state_create(m, &s, &err) != MCS_OK) return;
-        double t0 = now(CLOCK_MONOTONIC);
+        double t0 = bf_now(CLOCK_MONOTONIC);
         for (int i = 0; i < steps && s->err.status == MCS_OK; i++) fe_step(m, s);
-        wall[th - 1] = now(CLOCK_MONOTONIC) - t0;
+        wall[th - 1] = bf_now(CLOCK_MONOTONIC) - t0;
         fe_state_destroy(&s);
     }
     const double ec = (double)steps * m->nelem;
@@ -108,10 +86,10 @@ int main(void)
     long cyc = 0;
     for (int k = 0; k < nchunk && s->err.status == MCS_OK; k++) {
         memcpy(timer0, s->timer, sizeof timer0);
-        double c0 = now(CLOCK_THREAD_CPUTIME_ID);
+        double c0 = bf_now(CLOCK_THREAD_CPUTIME_ID);
         int i = 0;
         for (; i < chunk && s->err.status == MCS_OK; i++) fe_step(m, s);
-        double cpu = now(CLOCK_THREAD_CPUTIME_ID) - c0;
+        double cpu = bf_now(CLOCK_THREAD_CPUTIME_ID) - c0;
         cpu_all += cpu;
         cyc += i;
         double dsum = 0, dcon = s->timer[FE_STAGE_contact] - timer0[FE_STAGE_contact];

@@ -46,6 +46,12 @@ struct fe_builder {
 int fe_kind_nnode(int kind);
 int fe_section_kind(fe_section_type t);
 void fe_builder_part_nodes(const fe_builder *b, int part, unsigned char *mark);
+/* the node of part `name` nearest to p at t = 0 (m->node_x0), using mark (nnode + 1 bytes)
+ * as scratch; -1 with an error naming `what` if the part is unknown or has no nodes
+ * (fe_discrete.c) */
+int fe_builder_nearest_node(const fe_builder *b, const fe_model *m, const char *name,
+                            const double p[3], unsigned char *mark, const char *what,
+                            mcs_error *err);
 /* generate the mesh of part ip (fe_mesh.c) */
 mcs_status fe_mesh_generate(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
 /* sphere_shell and cylinder_shell (fe_mesh_shell.c) */

@@ -80,9 +80,9 @@ mcs_status fe_builder_add_mass(fe_builder *b, const fe_mass_desc *d, mcs_error *
     return MCS_OK;
 }
 
-/* the node of part `name` nearest to p; -1 with an error if the part is unknown */
-static int nearest_node(const fe_builder *b, const fe_model *m, const char *name, const double p[3],
-                        unsigned char *mark, const char *what, mcs_error *err)
+int fe_builder_nearest_node(const fe_builder *b, const fe_model *m, const char *name,
+                            const double p[3], unsigned char *mark, const char *what,
+                            mcs_error *err)
 {
     int ip = fe_builder_find_part(b, name);
     if (ip < 0) {
@@ -113,7 +113,7 @@ static mcs_status add_masses(const fe_builder *b, fe_model *m, unsigned char *ma
         if (d->node >= 0) {
             idx[0] = d->node;
         } else if (d->at_point) {
-            idx[0] = nearest_node(b, m, d->part, d->point, mark, what, err);
+            idx[0] = fe_builder_nearest_node(b, m, d->part, d->point, mark, what, err);
             if (idx[0] < 0) return err->status;
         } else {
             int ip = fe_builder_find_part(b, d->part);
@@ -188,7 +188,7 @@ static mcs_status add_springs(const fe_builder *b, fe_model *m, unsigned char *m
         for (int e = 0; e < 2; e++) {
             const fe_spring_end *x = &d->end[e];
             sp->node[e] = x->node >= 0 ? x->node
-                          : x->part[0] ? nearest_node(b, m, x->part, x->point, mark, what, err)
+                          : x->part[0] ? fe_builder_nearest_node(b, m, x->part, x->point, mark, what, err)
                                        : -1;
             if (sp->node[e] < 0 && (x->node >= 0 || x->part[0])) return err->status;
             memcpy(sp->anchor[e], x->point, sizeof sp->anchor[e]);

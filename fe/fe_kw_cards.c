@@ -154,19 +154,32 @@ static mcs_status h_shell(kw_ctx *c, const kw_card *cd, int n)
     return MCS_OK;
 }
 
+/* EID and PID of the solid element on card *i; the two-card form (fields 3..10 of the first
+ * card blank: EID PID, then N1..N10 on the next card) sets *two and moves *i and *at to the
+ * node card */
+static mcs_status solid_head(kw_ctx *c, const kw_card *cd, int n, int *i, int *id, int *pid,
+                             const kw_card **at, int *two)
+{
+    *at = &cd[*i];
+    TRY(kw_int(c, *at, &KW_L_ELEM, 0, "EID", 0, id));
+    TRY(kw_int(c, *at, &KW_L_ELEM, 1, "PID", 0, pid));
+    *two = 1;
+    for (int k = 2; k < 10; k++) *two = *two && kw_blank(c, *at, &KW_L_ELEM, k);
+    if (*two) {
+        TRY(need(c, cd, n, *i + 1, 1));
+        *at = &cd[++*i];
+    }
+    return MCS_OK;
+}
+
 static mcs_status h_solid(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n; i++) {
         if (blank_card(&cd[i])) continue;
-        int id, pid, nd[10] = {0};
-        const kw_card *at = &cd[i];
-        TRY(kw_int(c, at, &KW_L_ELEM, 0, "EID", 0, &id));
-        TRY(kw_int(c, at, &KW_L_ELEM, 1, "PID", 0, &pid));
-        int two = 1;
-        for (int k = 2; k < 10; k++) two = two && kw_blank(c, at, &KW_L_ELEM, k);
-        if (two) { /* the two-card form: EID PID, then N1..N10 */
-            TRY(need(c, cd, n, i + 1, 1));
-            at = &cd[++i];
+        int id, pid, nd[10] = {0}, two;
+        const kw_card *at;
+        TRY(solid_head(c, cd, n, &i, &id, &pid, &at, &two));
+        if (two) {
             TRY(elem_nodes(c, at, 0, 10, nd));
             if (nd[8] || nd[9]) { /* the 10-node tetrahedron */
                 for (int k = 0; k < 10; k++)
@@ -192,16 +205,9 @@ static mcs_status h_solid_tet10(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n; i++) {
         if (blank_card(&cd[i])) continue;
-        int id, pid, nd[10] = {0};
-        const kw_card *at = &cd[i];
-        TRY(kw_int(c, at, &KW_L_ELEM, 0, "EID", 0, &id));
-        TRY(kw_int(c, at, &KW_L_ELEM, 1, "PID", 0, &pid));
-        int two = 1;
-        for (int k = 2; k < 10; k++) two = two && kw_blank(c, at, &KW_L_ELEM, k);
-        if (two) {
-            TRY(need(c, cd, n, i + 1, 1));
-            at = &cd[++i];
-        }
+        int id, pid, nd[10] = {0}, two;
+        const kw_card *at;
+        TRY(solid_head(c, cd, n, &i, &id, &pid, &at, &two));
         TRY(elem_nodes(c, at, two ? 0 : 2, 8, nd));
         int tet = nd[0] && nd[1] && nd[2] && nd[3];
         for (int k = 4; k < 8; k++) tet = tet && (nd[k] == 0 || nd[k] == nd[3]);

@@ -80,29 +80,13 @@ static mcs_status ring_node(const fe_builder *b, const fe_model *m, const fe_sli
         *node = d->node;
         return MCS_OK;
     }
-    int ip = fe_builder_find_part(b, d->part);
-    if (ip < 0)
-        return MCS_ERR(err, MCS_ERR_KEY, "fe: slip ring '%s': unknown part '%s'", d->name, d->part);
     unsigned char *mark = malloc((size_t)m->nnode + 1);
     if (!mark) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (slip ring)");
-    fe_builder_part_nodes(b, ip, mark);
-    int best = -1;
-    double dbest = INFINITY;
-    for (int n = 0; n < m->nnode; n++) {
-        if (!mark[n]) continue;
-        double d2 = 0;
-        for (int i = 0; i < 3; i++) {
-            double dx = m->node_x0[3 * n + i] - d->point[i];
-            d2 += dx * dx;
-        }
-        if (d2 < dbest) dbest = d2, best = n;
-    }
+    char what[FE_NAME_MAX + 16];
+    snprintf(what, sizeof what, "slip ring '%s'", d->name);
+    *node = fe_builder_nearest_node(b, m, d->part, d->point, mark, what, err);
     free(mark);
-    if (best < 0)
-        return MCS_ERR(err, MCS_ERR_RANGE, "fe: slip ring '%s': part '%s' has no nodes", d->name,
-                       d->part);
-    *node = best;
-    return MCS_OK;
+    return *node >= 0 ? MCS_OK : err->status;
 }
 
 static double elem_length0(const fe_model *m, int e)

@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "fe/fe_builder_impl.h" /* the patch moves generated nodes */
+#include "fe/fe_elem.h"
 #include "fe/fe_model.h"
 #include "fe/fe_state.h"
 #include "tests/fe_test_util.h"
@@ -91,6 +92,35 @@ static inline void ft_patch_forces(const fe_model *m, fe_state *s, double ref[6]
     double tr = de[0] + de[1] + de[2];
     for (int i = 0; i < 3; i++) ref[i] = p->lambda * tr + 2 * p->mu * de[i];
     for (int i = 3; i < 6; i++) ref[i] = 2 * p->mu * de[i];
+}
+
+/* six times the signed volume of tetrahedron a b c d [m^3] */
+static inline double ft_tet_volume6(const double *a, const double *b, const double *c,
+                                    const double *d)
+{
+    double u[3], v[3], w[3], x[3];
+    for (int i = 0; i < 3; i++) u[i] = b[i] - a[i], v[i] = c[i] - a[i], w[i] = d[i] - a[i];
+    fe_cross(u, v, x);
+    return fe_dot(x, w);
+}
+
+/* the grid nodes of tetrahedron p (0..5) of grid cube (i, j, k) in Kuhn's subdivision (6
+ * tetrahedra along the cube's main diagonal: a conforming mesh), grid point (i, j, k) being node
+ * base + i + (nx + 1) (j + (ny + 1) k), ordered so that its volume with the positions x is
+ * positive */
+static inline void ft_kuhn_tet(const double *x, int nx, int ny, int base, int i, int j, int k,
+                               int p, int v[4])
+{
+    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    int ijk[3] = {i, j, k};
+    for (int s = 0; s < 4; s++) {
+        if (s > 0) ijk[perm[p][s - 1]]++;
+        v[s] = base + ijk[0] + (nx + 1) * (ijk[1] + (ny + 1) * ijk[2]);
+    }
+    if (ft_tet_volume6(x + 3 * v[0], x + 3 * v[1], x + 3 * v[2], x + 3 * v[3]) < 0) {
+        int t = v[1];
+        v[1] = v[2], v[2] = t;
+    }
 }
 
 #endif

@@ -14,10 +14,7 @@
 
 static double tet_volume(const double *a, const double *b, const double *c, const double *d)
 {
-    double u[3], v[3], w[3], x[3];
-    for (int i = 0; i < 3; i++) u[i] = b[i] - a[i], v[i] = c[i] - a[i], w[i] = d[i] - a[i];
-    fe_cross(u, v, x);
-    return fe_dot(x, w) / 6;
+    return ft_tet_volume6(a, b, c, d) / 6;
 }
 
 /* nodes of an (nx+1) x (ny+1) x (nz+1) grid of spacing h, index i + (nx+1)(j + (ny+1) k) */
@@ -41,21 +38,13 @@ static void add_grid(fe_builder *b, int nx, int ny, int nz, const double h[3])
  * given in LS-DYNA's order n1 n2 n3 n4 n4 n4 n4 n4, positively oriented */
 static void add_tets_from(fe_builder *b, int part, int nx, int ny, int nz, int base)
 {
-    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
     mcs_error err = {0};
     for (int k = 0; k < nz; k++)
         for (int j = 0; j < ny; j++)
             for (int i = 0; i < nx; i++)
                 for (int p = 0; p < 6; p++) {
-                    int ijk[3] = {i, j, k}, v[4];
-                    for (int s = 0; s < 4; s++) {
-                        if (s > 0) ijk[perm[p][s - 1]]++;
-                        v[s] = base + ijk[0] + (nx + 1) * (ijk[1] + (ny + 1) * ijk[2]);
-                    }
-                    if (tet_volume(b->x + 3 * v[0], b->x + 3 * v[1], b->x + 3 * v[2], b->x + 3 * v[3]) < 0) {
-                        int t = v[1];
-                        v[1] = v[2], v[2] = t;
-                    }
+                    int v[4];
+                    ft_kuhn_tet(b->x, nx, ny, base, i, j, k, p, v);
                     int c[8] = {v[0], v[1], v[2], v[3], v[3], v[3], v[3], v[3]};
                     CHECK(fe_builder_add_elem(b, part, c, &err) == MCS_OK);
                 }

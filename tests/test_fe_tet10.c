@@ -7,6 +7,7 @@
 
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_elem.h"
+#include "tests/fe_test_build.h"
 #include "fe/fe_keyword.h"
 #include "fe/fe_tet10.h"
 #include "tests/harness.h"
@@ -43,19 +44,10 @@ static int mid_node(fe_builder *b, edge_map *em, int p, int q)
     return id;
 }
 
-static double tet_volume6(const double *a, const double *b, const double *c, const double *d)
-{
-    double u[3], v[3], w[3], x[3];
-    for (int i = 0; i < 3; i++) u[i] = b[i] - a[i], v[i] = c[i] - a[i], w[i] = d[i] - a[i];
-    fe_cross(u, v, x);
-    return fe_dot(x, w);
-}
-
 /* grid nodes i + (nx+1)(j + (ny+1) k) of spacing h, then cubes as tetrahedra: tet10 with
  * quad = 1 (mid-edge nodes added after the grid), else linear tetrahedra (degenerate hexes) */
 static void add_box(fe_builder *b, int part, int nx, int ny, int nz, const double h[3], int quad)
 {
-    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
     mcs_error err = {0};
     const int base = fe_builder_nnode(b);
     for (int k = 0; k <= nz; k++)
@@ -69,15 +61,8 @@ static void add_box(fe_builder *b, int part, int nx, int ny, int nz, const doubl
         for (int j = 0; j < ny; j++)
             for (int i = 0; i < nx; i++)
                 for (int p = 0; p < 6; p++) {
-                    int ijk[3] = {i, j, k}, v[4];
-                    for (int s = 0; s < 4; s++) {
-                        if (s > 0) ijk[perm[p][s - 1]]++;
-                        v[s] = base + ijk[0] + (nx + 1) * (ijk[1] + (ny + 1) * ijk[2]);
-                    }
-                    if (tet_volume6(b->x + 3 * v[0], b->x + 3 * v[1], b->x + 3 * v[2], b->x + 3 * v[3]) < 0) {
-                        int t = v[1];
-                        v[1] = v[2], v[2] = t;
-                    }
+                    int v[4];
+                    ft_kuhn_tet(b->x, nx, ny, base, i, j, k, p, v);
                     if (quad) {
                         int c[10] = {v[0], v[1], v[2], v[3]};
                         for (int q = 0; q < 6; q++)
@@ -195,7 +180,7 @@ static void test_quadratic_reproduction(void)
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) eg = fmax(eg, fabs(gh[i][j] - g[i][j])), gmax = fmax(gmax, fabs(g[i][j]));
     }
-    double v6 = tet_volume6(xc[0], xc[1], xc[2], xc[3]);
+    double v6 = ft_tet_volume6(xc[0], xc[1], xc[2], xc[3]);
     printf("  quadratic field: interpolation error %.1e of |u|, gradient error at the Gauss "
            "points %.1e of |grad u|\n",
            eu / umax, eg / gmax);
@@ -736,7 +721,7 @@ static void test_keyword(void)
     double v3 = 0;
     {
         const double a[3] = {4, 0, 0}, bb[3] = {4, 1, 1}, c[3] = {3, 1, 0}, d[3] = {3, 0, 1};
-        v3 = tet_volume6(a, bb, c, d) / 6;
+        v3 = ft_tet_volume6(a, bb, c, d) / 6;
     }
     CHECK(v3 > 0);
     CHECK_REL(m->mass_total, 7800.0 * (1.0 / 6 + 1.0 / 6 + v3), 1e-12);

@@ -631,6 +631,32 @@ static const mcs_skey load_keys[] = {
 };
 static const mcs_smap load_map = {.what = "load", .keys = load_keys};
 
+/* a rigid wall moved by a curve (fe/fe_wall_motion.c; LS-DYNA
+ * *BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL VAD 0, 1, 2): along `direction` (default the normal),
+ * on top of `velocity` t (the initial velocity of an acceleration curve) */
+static const mcs_skey wall_vel_keys[] = {
+    C("curve", MCS_DIM_TIME, VEL, 1, REQ, 0, "[[time s, velocity m/s], ...]"), END};
+static const mcs_skey wall_acc_keys[] = {
+    C("curve", MCS_DIM_TIME, MCS_DIM_ACCEL, 1, REQ, 0, "[[time s, acceleration m/s^2], ...]"), END};
+static const mcs_skey wall_disp_keys[] = {
+    C("curve", MCS_DIM_TIME, LEN, 1, REQ, 0, "[[time s, displacement m], ...]"), END};
+static const mcs_smap wall_vel_map = {.what = "wall velocity curve", .keys = wall_vel_keys};
+static const mcs_smap wall_acc_map = {.what = "wall acceleration curve", .keys = wall_acc_keys};
+static const mcs_smap wall_disp_map = {.what = "wall displacement curve", .keys = wall_disp_keys};
+static const mcs_svariant wall_motion_variants[] = {{"velocity", &wall_vel_map},
+                                                    {"acceleration", &wall_acc_map},
+                                                    {"displacement", &wall_disp_map},
+                                                    {0}};
+static const mcs_skey wall_motion_keys[] = {
+    D("type", "what the curve gives"),
+    V("direction", NONE, 3, 3, NZ, 0, "direction of the motion (default the wall's normal)"),
+    END,
+};
+static const mcs_smap wall_motion_map = {.what = "wall motion",
+                                         .keys = wall_motion_keys,
+                                         .disc = "type",
+                                         .variants = wall_motion_variants};
+
 static const mcs_skey wall_keys[] = {
     S("name", REQ | UNIQ | NE, "wall name"),
     V("point", LEN, 3, 3, REQ, 0, "a point of the wall [m]"),
@@ -643,6 +669,7 @@ static const mcs_skey wall_keys[] = {
     RS("parts", PART, 1, 0, "parts it stops (default every part)"),
     Q("mass", MCS_DIM_MASS, GT, 0, 0, "a free wall of this mass moving along its normal, velocity = "
                               "its initial velocity [kg]"),
+    M("motion", wall_motion_map, 0, "motion from a curve, on top of velocity t"),
     END,
 };
 static const mcs_smap wall_map = {.what = "rigid wall", .keys = wall_keys};

@@ -123,6 +123,17 @@ typedef struct {
     double v0;                  /* V0: its initial velocity along the normal [m/s]          */
 } fe_kw_wall;
 
+/* *BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL: ID DOF VAD LCID SF VID DEATH BIRTH, the card of
+ * *BOUNDARY_PRESCRIBED_MOTION with the rigid wall's ID (its _ID, else its number in the deck) */
+typedef struct {
+    int wall;       /* rigid wall ID [-]                                                   */
+    int dof;        /* 1 x, 2 y, 3 z [-]                                                    */
+    int vad;        /* 0 velocity, 1 acceleration, 2 displacement [-]                       */
+    int lcid;       /* curve of the value vs. time, in the deck's units [-]                 */
+    double sf;      /* scale on the curve's value [-]                                       */
+    fe_kw_loc loc;
+} fe_kw_wmotion;
+
 /* what an initial velocity or constraint applies to */
 typedef enum { FE_KW_ON_NODE, FE_KW_ON_NODESET, FE_KW_ON_PART, FE_KW_ON_PARTSET } fe_kw_target;
 
@@ -164,6 +175,7 @@ typedef struct fe_kw_deck {
     int nspc, cap_spc;         fe_kw_spc *spc;
     int nunknown, cap_unknown; fe_kw_unknown *unknown;
     double unit[3];       /* SI value of the deck's length [m], time [s], mass [kg] units  */
+    int nwmotion, cap_wmotion; fe_kw_wmotion *wmotion; /* rigid wall motions              */
 } fe_kw_deck;
 
 typedef struct {

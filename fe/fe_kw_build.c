@@ -372,6 +372,45 @@ static mcs_status add_spcs(fe_builder *b, const fe_kw_deck *dk, const int *map, 
     return MCS_OK;
 }
 
+/* the deck wall a motion's ID names: the wall with that _ID, else the ID-th wall; -1 none */
+static int motion_wall(const fe_kw_deck *dk, int id)
+{
+    for (int j = 0; j < dk->nwall; j++)
+        if (dk->wall[j].id == id) return j;
+    return id >= 1 && id <= dk->nwall ? id - 1 : -1;
+}
+
+/* the motions of deck wall w: curve abscissa in the deck's time unit, ordinate x SF in its
+ * velocity, acceleration or length unit */
+static mcs_status wall_motions(const fe_kw_deck *dk, int w, fe_wall_desc *d, mcs_error *err)
+{
+    const double T = dk->unit[1], L = dk->unit[0];
+    for (int i = 0; i < dk->nwmotion; i++) {
+        const fe_kw_wmotion *mo = &dk->wmotion[i];
+        const int j = motion_wall(dk, mo->wall);
+        if (j < 0) return at(dk, mo->loc, err, MCS_ERR_KEY, "rigid wall %d is not defined", mo->wall);
+        if (j != w) continue;
+        const fe_kw_curve *c = fe_kw_find_curve(dk, mo->lcid);
+        if (!c) return at(dk, mo->loc, err, MCS_ERR_KEY, "LCID %d is not defined", mo->lcid);
+        if (d->nmotion >= FE_WALL_NMOTION || c->n > FE_CURVE_MAX)
+            return at(dk, mo->loc, err, MCS_ERR_RANGE,
+                      "a wall takes at most %d motions of at most %d curve points",
+                      FE_WALL_NMOTION, FE_CURVE_MAX);
+        fe_wall_motion *m = &d->motion[d->nmotion++];
+        static const fe_motion_kind kind[3] = {FE_MOTION_VELOCITY, FE_MOTION_ACCELERATION,
+                                               FE_MOTION_DISPLACEMENT};
+        const double unit[3] = {L / T, L / (T * T), L};
+        m->kind = kind[mo->vad];
+        m->direction[mo->dof - 1] = 1;
+        m->ncurve = c->n;
+        for (int p = 0; p < c->n; p++) {
+            m->curve[p][0] = c->xy[2 * p] * T;
+            m->curve[p][1] = c->xy[2 * p + 1] * mo->sf * unit[mo->vad];
+        }
+    }
+    return MCS_OK;
+}
+
 static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[FE_NAME_MAX],
                             mcs_error *err)
 {
@@ -394,6 +433,8 @@ static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[F
             d.mass = k->mass;
             for (int i = 0; i < 3; i++) d.velocity[i] = k->v0 * d.normal[i] / nn;
         }
+        mcs_status mst = wall_motions(dk, w, &d, err); /* *BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL */
+        if (mst) return mst;
         for (int p = 0; p < dk->npart && k->nsid; p++) {
             int c = 0;
             mcs_status st = covers(dk, FE_KW_ON_NODESET, k->nsid, k->loc, p, &c, err);

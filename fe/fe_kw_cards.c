@@ -633,6 +633,46 @@ static mcs_status h_wall_moving(kw_ctx *c, const kw_card *cd, int n)
     return wall_cards(c, cd, n, 1);
 }
 
+/* *BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL(_ID): [ID card] / ID DOF VAD LCID SF VID DEATH BIRTH */
+static mcs_status h_wall_motion(kw_ctx *c, const kw_card *cd, int n)
+{
+    int i = 0, id0;
+    TRY(id_card(c, cd, n, &i, &id0, NULL));
+    for (; i < n; i++) {
+        if (blank_card(&cd[i])) continue;
+        fe_kw_wmotion mo = {.loc = loc_of(&cd[i])};
+        int vid;
+        double death, birth;
+        const kw_layout *l = &KW_L10;
+        TRY(kw_int(c, &cd[i], l, 0, "ID", 0, &mo.wall));
+        TRY(kw_int(c, &cd[i], l, 1, "DOF", 0, &mo.dof));
+        TRY(kw_int(c, &cd[i], l, 2, "VAD", 0, &mo.vad));
+        TRY(kw_int(c, &cd[i], l, 3, "LCID", 0, &mo.lcid));
+        TRY(kw_real(c, &cd[i], l, 4, "SF", 1, &mo.sf));
+        TRY(kw_int(c, &cd[i], l, 5, "VID", 0, &vid));
+        TRY(kw_real(c, &cd[i], l, 6, "DEATH", 0, &death));
+        TRY(kw_real(c, &cd[i], l, 7, "BIRTH", 0, &birth));
+        if (mo.sf == 0) mo.sf = 1; /* LS-DYNA: 0 takes the default 1 */
+        if (mo.dof < 1 || mo.dof > 3)
+            return unsupported_field(c, &cd[i], l, 1, "DOF",
+                                     "1, 2 or 3 (x, y, z translation) are built");
+        if (mo.vad < 0 || mo.vad > 2)
+            return unsupported_field(c, &cd[i], l, 2, "VAD",
+                                     "0 velocity, 1 acceleration or 2 displacement are built");
+        if (vid || birth != 0 || (death != 0 && death < 1e20))
+            return unsupported_field(c, &cd[i], l, vid ? 5 : birth != 0 ? 7 : 6,
+                                     "VID/DEATH/BIRTH", "not built (leave blank)");
+        if (mo.lcid <= 0)
+            return kw_fail(c, cd[i].file, cd[i].line, 0, MCS_ERR_FORMAT,
+                           "field LCID: a motion needs a curve, got %d", mo.lcid);
+        fe_kw_wmotion *p =
+            kw_push((void **)&c->d->wmotion, &c->d->nwmotion, &c->d->cap_wmotion, sizeof *p);
+        if (!p) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
+        *p = mo;
+    }
+    return MCS_OK;
+}
+
 static fe_kw_initvel *new_iv(kw_ctx *c)
 {
     return kw_push((void **)&c->d->iv, &c->d->niv, &c->d->cap_iv, sizeof(fe_kw_initvel));
@@ -775,6 +815,7 @@ static const struct {
     {"INITIAL_VELOCITY_GENERATION", h_initvel_gen, 0},
     {"BOUNDARY_SPC_NODE", h_spc_node, 1},
     {"BOUNDARY_SPC_SET", h_spc_set, 1},
+    {"BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL", h_wall_motion, 1},
 };
 
 int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st)

@@ -70,6 +70,7 @@ void fe_kw_deck_destroy(fe_kw_deck **p)
     free(d->curve);
     free(d->set);
     free(d->wall);
+    free(d->wmotion);
     free(d->iv);
     free(d->spc);
     free(d->unknown);

@@ -262,7 +262,9 @@ static void w_conditions(kw_out *o, const fe_kw_deck *d)
     }
     for (int i = 0; i < d->nwall; i++) {
         const fe_kw_wall *w = &d->wall[i];
-        kw(o, w->moving ? "RIGIDWALL_PLANAR_MOVING" : "RIGIDWALL_PLANAR");
+        kw(o, w->id ? (w->moving ? "RIGIDWALL_PLANAR_MOVING_ID" : "RIGIDWALL_PLANAR_ID")
+                    : (w->moving ? "RIGIDWALL_PLANAR_MOVING" : "RIGIDWALL_PLANAR"));
+        if (w->id) fprintf(o->f, "%10d%.70s\n", w->id, w->title); /* I10 + A70 in every format */
         put_int(o, 10, w->nsid), endl(o);
         for (int k = 0; k < 3; k++) put_real(o, 10, w->tail[k] / kw_u_len(d));
         for (int k = 0; k < 3; k++) put_real(o, 10, w->head[k] / kw_u_len(d));
@@ -271,6 +273,12 @@ static void w_conditions(kw_out *o, const fe_kw_deck *d)
             put_real(o, 10, w->mass / d->unit[2]);
             put_real(o, 10, w->v0 / kw_u_vel(d)), endl(o);
         }
+    }
+    for (int i = 0; i < d->nwmotion; i++) { /* the curves are written as read */
+        const fe_kw_wmotion *mo = &d->wmotion[i];
+        kw(o, "BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL");
+        put_int(o, 10, mo->wall), put_int(o, 10, mo->dof), put_int(o, 10, mo->vad);
+        put_int(o, 10, mo->lcid), put_real(o, 10, mo->sf), endl(o);
     }
 }
 

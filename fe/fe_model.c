@@ -331,6 +331,10 @@ static mcs_status resolve_walls(const fe_builder *b, fe_model *m, mcs_error *err
         }
         W->method = d->method;
         W->mass = d->mass;
+        W->friction = d->friction; /* motion and friction: fe_wall.c, fe_wall_motion.c */
+        W->nmotion = d->nmotion;
+        memcpy(W->motion, d->motion, sizeof W->motion);
+        for (int k = 0; k < W->nmotion; k++) fe_wall_motion_unit(&W->motion[k]);
         W->penalty_scale = d->penalty_scale > 0 ? d->penalty_scale : 0.1;
         memset(inpart, d->nparts ? 0 : 1, (size_t)m->nnode);
         for (int j = 0; j < d->nparts; j++) {

@@ -150,6 +150,21 @@ typedef struct {
 
 typedef enum { FE_WALL_KINEMATIC, FE_WALL_PENALTY } fe_wall_method;
 
+/* what a wall motion curve gives (LS-DYNA *BOUNDARY_PRESCRIBED_MOTION VAD 0, 1, 2) */
+typedef enum { FE_MOTION_VELOCITY, FE_MOTION_ACCELERATION, FE_MOTION_DISPLACEMENT } fe_motion_kind;
+
+/* one component of a wall's prescribed motion (fe_wall_motion.c): the wall moves along
+ * `direction` by the curve's displacement, or its integral (velocity) or double integral from
+ * rest (acceleration), on top of `velocity` t */
+typedef struct {
+    fe_motion_kind kind;
+    double direction[3];           /* made unit at build [-]                              */
+    int ncurve;                    /* points, 1..FE_CURVE_MAX [-]                          */
+    double curve[FE_CURVE_MAX][2]; /* (time [s], value [m | m/s | m/s^2]), time increasing,
+                                      held constant beyond the ends                         */
+} fe_wall_motion;
+#define FE_WALL_NMOTION 3 /* most motion components of one wall */
+
 typedef struct {
     char name[FE_NAME_MAX];   /* wall name (results: /stage3/rigidwall/<name>)               */
     double point[3];          /* a point of the plane at t = 0 [m]                           */
@@ -162,6 +177,10 @@ typedef struct {
     double mass;              /* > 0: a free wall of this mass moving along its normal, with
                                  `velocity` (along the normal) as its initial velocity, either
                                  method (LS-DYNA *RIGIDWALL_PLANAR_MOVING) [kg]             */
+    int nmotion;              /* prescribed motion components (0: `velocity` alone) [-]      */
+    fe_wall_motion motion[FE_WALL_NMOTION]; /* LS-DYNA *BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL */
+    double friction;          /* Coulomb coefficient (LS-DYNA FRIC): 0 frictionless, 1 (or
+                                 more) no sliding once in contact [-]                       */
 } fe_wall_desc;
 
 /* ---- model options (not per part) ----------------------------------------------------- */
@@ -219,6 +238,9 @@ typedef struct {
     double penalty_scale;                    /* [-]                                          */
     char name[FE_NAME_MAX];
     double mass;                             /* > 0: free wall moving along its normal [kg]  */
+    int nmotion;                             /* prescribed motion components [-]             */
+    fe_wall_motion motion[FE_WALL_NMOTION];  /* unit directions                              */
+    double friction;                         /* Coulomb coefficient; >= 1: sticking [-]      */
 } fe_wall;
 
 typedef struct {

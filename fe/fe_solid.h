@@ -103,6 +103,12 @@ static inline int fe_wall_kin_mass(const fe_wall *W)
 }
 void fe_wall_kin_solve(const fe_model *m, fe_state *s, int w, const fe_wall_step *P);
 mcs_status fe_wall_kin_finish(fe_model *m, mcs_error *err);
+/* walls moved by curves (fe_wall_motion.c): checks of the motion and friction fields, unit
+ * directions, a component's displacement at t [m], the wall's displacement at t [m] */
+mcs_status fe_wall_motion_check(const fe_wall_desc *d, mcs_error *err);
+void fe_wall_motion_unit(fe_wall_motion *mo);
+double fe_wall_motion_disp(const fe_wall_motion *mo, double t);
+void fe_wall_motion_x(const fe_wall *W, double t, double x[3]);
 
 /* ---- the time loop ---- */
 

@@ -21,7 +21,8 @@ mcs_status fe_wall_check(const fe_wall_desc *d, mcs_error *err)
     if (!(d->mass >= 0) || !isfinite(d->mass))
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: rigid wall '%s': mass must be >= 0, got %g",
                        d->name, d->mass);
-    if (d->mass == 0) return MCS_OK;
+    mcs_status st = fe_wall_motion_check(d, err); /* motion curves, friction */
+    if (st || d->mass == 0) return st;
     double nn = sqrt(fe_dot(d->normal, d->normal)), vn = fe_dot(d->velocity, d->normal) / nn;
     double vt2 = fe_dot(d->velocity, d->velocity) - vn * vn;
     if (vt2 > 1e-18 * fe_dot(d->velocity, d->velocity))
@@ -58,11 +59,13 @@ mcs_status fe_wall_finish(fe_model *m, mcs_error *err)
 
 void fe_wall_reset(const fe_model *m, fe_state *s)
 {
-    for (int w = 0; w < m->nwall; w++)
+    for (int w = 0; w < m->nwall; w++) {
         for (int i = 0; i < 3; i++) {
             s->wall_x[3 * w + i] = 0;
             s->wall_v[3 * w + i] = m->wall[w].velocity[i];
         }
+        if (m->wall[w].nmotion > 0) fe_wall_motion_x(&m->wall[w], 0, s->wall_x + 3 * w);
+    }
 }
 
 void fe_wall_predict(const fe_model *m, fe_state *s, const fe_wall_step *P)
@@ -70,9 +73,14 @@ void fe_wall_predict(const fe_model *m, fe_state *s, const fe_wall_step *P)
     const double tn = s->time + P->dt;
     for (int w = 0; w < m->nwall; w++) {
         const fe_wall *W = &m->wall[w];
-        if (fe_wall_kin_mass(W)) fe_wall_kin_solve(m, s, w, P);
-        else if (!(W->mass > 0))
-            for (int i = 0; i < 3; i++) s->wall_xn[3 * w + i] = W->velocity[i] * tn; /* d = V t */
+        double *xn = s->wall_xn + 3 * w;
+        if (fe_wall_kin_mass(W)) {
+            fe_wall_kin_solve(m, s, w, P);
+        } else if (W->nmotion > 0) { /* curves (fe_wall_motion.c) */
+            fe_wall_motion_x(W, tn, xn);
+        } else if (!(W->mass > 0)) {
+            for (int i = 0; i < 3; i++) xn[i] = W->velocity[i] * tn; /* d = V t */
+        }
     }
 }
 
@@ -92,8 +100,11 @@ void fe_wall_integrate(const fe_model *m, fe_state *s)
     for (int w = 0; w < m->nwall; w++) {
         const fe_wall *W = &m->wall[w];
         double *x = s->wall_x + 3 * w, *v = s->wall_v + 3 * w;
-        if (!(W->mass > 0)) { /* prescribed */
-            for (int i = 0; i < 3; i++) x[i] = s->wall_xn[3 * w + i];
+        if (!(W->mass > 0)) { /* prescribed; moved by curves: the velocity at t + dt/2 */
+            for (int i = 0; i < 3; i++) {
+                if (W->nmotion > 0) v[i] = (s->wall_xn[3 * w + i] - x[i]) / dt;
+                x[i] = s->wall_xn[3 * w + i];
+            }
             continue;
         }
         const double vo = fe_dot(v, W->normal);

@@ -243,6 +243,27 @@ static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error 
     return MCS_OK;
 }
 
+static mcs_status wall_motion(const mcs_node *mo, fe_wall_desc *d, mcs_error *err)
+{
+    const char *type = mcs_node_str(s3_get(mo, "type"));
+    fe_wall_motion *k = &d->motion[d->nmotion++];
+    k->kind = strcmp(type, "velocity") == 0       ? FE_MOTION_VELOCITY
+              : strcmp(type, "acceleration") == 0 ? FE_MOTION_ACCELERATION
+                                                  : FE_MOTION_DISPLACEMENT;
+    memcpy(k->direction, d->normal, sizeof k->direction);
+    mcs_status st = s3_given(mo, "direction") ? mcs_node_vec3(s3_get(mo, "direction"), k->direction, err)
+                                              : MCS_OK;
+    const mcs_node *c = s3_get(mo, "curve");
+    int n = mcs_node_curve_len(c);
+    if (!st && n > FE_CURVE_MAX)
+        return mcs_node_error(c, err, MCS_ERR_RANGE, "at most %d points, got %d", FE_CURVE_MAX, n);
+    double x[FE_CURVE_MAX], y[FE_CURVE_MAX];
+    if (!st) st = mcs_node_curve(c, x, y, FE_CURVE_MAX, err);
+    for (int i = 0; i < n && !st; i++) k->curve[i][0] = x[i], k->curve[i][1] = y[i];
+    k->ncurve = n;
+    return st;
+}
+
 static mcs_status add_walls(fe_builder *b, const mcs_node *list, mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(list); i++) {
@@ -266,6 +287,10 @@ static mcs_status add_walls(fe_builder *b, const mcs_node *list, mcs_error *err)
         if (method && strcmp(method, "penalty") == 0) d.method = FE_WALL_PENALTY;
         d.penalty_scale = mcs_node_num_or(w, "penalty_scale", 0);
         d.mass = mcs_node_num_or(w, "mass", 0); /* a free wall with mass (fe_wall.c) */
+        if (s3_given(w, "motion")) { /* moved by a curve (fe_wall_motion.c) */
+            st = wall_motion(s3_get(w, "motion"), &d, err);
+            if (st) return st;
+        }
         const mcs_node *parts = s3_get(w, "parts");
         if (mcs_node_len(parts) > 8)
             return mcs_node_error(parts, err, MCS_ERR_RANGE, "at most 8 parts, got %d",

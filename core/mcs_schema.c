@@ -662,7 +662,7 @@ static const mcs_skey wall_keys[] = {
     V("point", LEN, 3, 3, REQ, 0, "a point of the wall [m]"),
     V("normal", NONE, 3, 3, REQ | NZ, 0, "normal, pointing to the side it stops"),
     V("velocity", VEL, 3, 3, 0, 0, "prescribed velocity [m/s] (default fixed)"),
-    Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
+    Q("friction", NONE, GE, 0, 0, "Coulomb coefficient (>= 1: no sliding; LS-DYNA FRIC)"),
     V("size", LEN, 2, 2, GT, 0, "extent of a finite wall [m] (default infinite)"),
     E("method", "kinematic|penalty", 0, "contact treatment (default kinematic)"),
     Q("penalty_scale", NONE, GT, 0, 0, "penalty stiffness scale (default 0.1)"),

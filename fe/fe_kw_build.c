@@ -416,9 +416,12 @@ static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[F
 {
     for (int w = 0; w < dk->nwall; w++) {
         const fe_kw_wall *k = &dk->wall[w];
-        if (k->fric != 0)
-            return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED, "rigid wall friction is not built");
-        fe_wall_desc d = {.method = FE_WALL_KINEMATIC};
+        if (!(k->fric >= 0 && k->fric <= 1))
+            return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+                      "FRIC %g: 0 (frictionless), Coulomb 0 < FRIC < 1 and 1 (no sliding) are "
+                      "built, not welding (2, 3)",
+                      k->fric);
+        fe_wall_desc d = {.method = FE_WALL_KINEMATIC, .friction = k->fric};
         if (k->title[0] && strlen(k->title) < FE_NAME_MAX) memcpy(d.name, k->title, strlen(k->title) + 1);
         else snprintf(d.name, sizeof d.name, "wall_%d", k->id ? k->id : w + 1);
         for (int i = 0; i < 3; i++) {

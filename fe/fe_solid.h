@@ -103,6 +103,15 @@ static inline int fe_wall_kin_mass(const fe_wall *W)
 }
 void fe_wall_kin_solve(const fe_model *m, fe_state *s, int w, const fe_wall_step *P);
 mcs_status fe_wall_kin_finish(fe_model *m, mcs_error *err);
+/* wall friction (fe_wall_fric.c): a landed node's tangential velocity change on kinematic
+ * wall w (dvn its normal velocity change; vn updated, the reaction added to wacc, the
+ * dissipation before/after t added to diss); the penalty walls' friction forces (after the
+ * penalty forces) and their dissipation after t (after the node update) */
+void fe_wall_kin_friction(const fe_model *m, const fe_state *s, int w, double mass, double dvn,
+                          const double vo[3], double vn[3], double hb, double dth, double dt,
+                          double *wacc, double diss[2]);
+void fe_wall_penalty_friction(const fe_model *m, fe_state *s);
+void fe_wall_penalty_friction_after(const fe_model *m, fe_state *s);
 /* walls moved by curves (fe_wall_motion.c): checks of the motion and friction fields, unit
  * directions, a component's displacement at t [m], the wall's displacement at t [m] */
 mcs_status fe_wall_motion_check(const fe_wall_desc *d, mcs_error *err);

@@ -150,6 +150,7 @@ void fe_contact_forces(const fe_model *m, fe_state *s)
             }
         }
     }
+    if (m->nwall_slave) fe_wall_penalty_friction(m, s); /* after the normal forces */
 }
 
 /* reads time, the load curves; adds nodal loads to node_fext */
@@ -244,6 +245,11 @@ static void integrate_chunk(const fe_model *m, fe_state *s, int k, const integ_p
             for (int i = 0; i < 3; i++) {
                 vn[i] += dv * W->normal[i];
                 wf_acc[3 * w + i] -= mass * dv * idth * W->normal[i];
+            }
+            if (W->friction > 0) { /* Coulomb (fe_wall_fric.c) */
+                double fd[2] = {0, 0};
+                fe_wall_kin_friction(m, s, w, mass, dv, vo, vn, hb, dth, dt, wf_acc + 3 * w, fd);
+                db += fd[0], dfw += fd[1], wb += fd[0], wf += fd[1];
             }
         }
         /* works of the forces at t: half on the interval before (now), half on the one

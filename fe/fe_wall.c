@@ -97,6 +97,11 @@ void fe_wall_integrate(const fe_model *m, fe_state *s)
 {
     const double dt = s->dt, dtp = s->dt_prev, dth = 0.5 * (dt + dtp), hb = dtp > 0 ? dth : 0;
     double ke = 0, wb = 0, wf = 0, lb = 0, lf = 0;
+    if (m->nwall_slave) fe_wall_penalty_friction_after(m, s); /* fe_wall_fric.c */
+    for (int w = 0; w < m->nwall; w++) { /* landing losses, penalty friction */
+        lb += s->wall_diss[2 * w];
+        lf += s->wall_diss[2 * w + 1];
+    }
     for (int w = 0; w < m->nwall; w++) {
         const fe_wall *W = &m->wall[w];
         double *x = s->wall_x + 3 * w, *v = s->wall_v + 3 * w;
@@ -112,8 +117,6 @@ void fe_wall_integrate(const fe_model *m, fe_state *s)
             /* solved before the node update: the force is the momentum the nodes gave it */
             const double vn = fe_dot(s->wall_vn + 3 * w, W->normal);
             wall_work(W->mass, W->mass * (vn - vo) / dth, vo, vn, dth, hb, &ke, &wb, &wf);
-            lb += s->wall_diss[2 * w];
-            lf += s->wall_diss[2 * w + 1];
             for (int i = 0; i < 3; i++) {
                 v[i] = s->wall_vn[3 * w + i];
                 x[i] = s->wall_xn[3 * w + i];
@@ -129,7 +132,8 @@ void fe_wall_integrate(const fe_model *m, fe_state *s)
         }
     }
     s->energy[FE_E_kinetic] += ke;
-    /* the kinematic landing loss: dissipated, and given back to the external work */
+    /* the kinematic landing loss and the penalty friction: dissipated, and given back to the
+     * external work */
     s->work_ext += wb + lb;
     s->work_pending[0] += wf + lf;
     s->work_damp += lb;

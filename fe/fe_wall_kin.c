@@ -104,20 +104,26 @@ void fe_wall_kin_solve(const fe_model *m, fe_state *s, int w, const fe_wall_step
     }
 }
 
-/* the slave lists of the kinematic walls with mass */
+/* walls that keep a slave list: kinematic with mass, penalty with friction (fe_wall_fric.c) */
+static int listed(const fe_wall *W)
+{
+    return fe_wall_kin_mass(W) || (W->method == FE_WALL_PENALTY && W->friction > 0);
+}
+
+/* the slave lists */
 mcs_status fe_wall_kin_finish(fe_model *m, mcs_error *err)
 {
     int cnt = 0;
     for (int w = 0; w <= m->nwall; w++) {
         m->wall_slave_off[w] = cnt;
-        if (w == m->nwall || !fe_wall_kin_mass(&m->wall[w])) continue;
+        if (w == m->nwall || !listed(&m->wall[w])) continue;
         for (int n = 0; n < m->nnode; n++) cnt += (m->node_walls[n] >> w) & 1u;
     }
     m->nwall_slave = cnt;
     m->wall_slave = malloc(sizeof(int) * (size_t)(cnt ? cnt : 1));
     if (!m->wall_slave) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (wall slaves)");
     for (int w = 0, k = 0; w < m->nwall; w++) {
-        if (!fe_wall_kin_mass(&m->wall[w])) continue;
+        if (!listed(&m->wall[w])) continue;
         for (int n = 0; n < m->nnode; n++)
             if ((m->node_walls[n] >> w) & 1u) m->wall_slave[k++] = n;
     }

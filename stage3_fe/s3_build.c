@@ -268,8 +268,6 @@ static mcs_status add_walls(fe_builder *b, const mcs_node *list, mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(list); i++) {
         const mcs_node *w = mcs_node_at(list, i);
-        if (mcs_node_num_or(w, "friction", 0) > 0)
-            return unsupported(s3_get(w, "friction"), err, "rigid wall friction");
         if (s3_given(w, "size"))
             return unsupported(s3_get(w, "size"), err, "finite rigid wall size");
         const char *name = mcs_node_str(s3_get(w, "name"));
@@ -287,6 +285,7 @@ static mcs_status add_walls(fe_builder *b, const mcs_node *list, mcs_error *err)
         if (method && strcmp(method, "penalty") == 0) d.method = FE_WALL_PENALTY;
         d.penalty_scale = mcs_node_num_or(w, "penalty_scale", 0);
         d.mass = mcs_node_num_or(w, "mass", 0); /* a free wall with mass (fe_wall.c) */
+        d.friction = mcs_node_num_or(w, "friction", 0); /* Coulomb (fe_wall_fric.c) */
         if (s3_given(w, "motion")) { /* moved by a curve (fe_wall_motion.c) */
             st = wall_motion(s3_get(w, "motion"), &d, err);
             if (st) return st;

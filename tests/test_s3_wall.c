@@ -68,11 +68,47 @@ static void test_wall_motion_scenario(void)
     CHECK_STR_CONTAINS(e2.msg, "lift.yaml:14:22: error: fe.rigid_walls[0].motion.type");
 }
 
+/* a block sliding on a floor with friction 0.5 (scenario key rigid_walls[].friction): the
+ * friction dissipates the kinetic energy the deceleration mu g takes */
+static void test_wall_friction_scenario(void)
+{
+    char scn[128], out[128];
+    snprintf(scn, sizeof scn, "%s/slide.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/slide.h5", tmpdir);
+    write_text(scn, "mcrash: 1\nname: slide\nsimulation: {end_time: 5 ms, output_rate: 10 kHz}\n"
+                    "environment: {gravity: 9.81 m/s^2}\n"
+                    "fe:\n  parts:\n    - name: block\n"
+                    "      mesh: {generate: box, size: [20 mm, 20 mm, 20 mm], divisions: [2, 2, 2]}\n"
+                    "      section: {type: solid}\n"
+                    "      material: {model: elastic, density: 1000, youngs_modulus: 10 MPa, poisson: 0.3}\n"
+                    "      initial_velocity: [2, 0, 0]\n"
+                    "  rigid_walls:\n    - name: floor\n      point: [0, 0, 0]\n"
+                    "      normal: [0, 0, 1]\n      friction: 0.5\n");
+    s3_summary sum;
+    mcs_error err = {0};
+    CHECK(run_file(scn, out, &sum, &err) == MCS_OK);
+    if (err.status) printf("  %s\n", err.msg);
+    mcs_results *h = NULL;
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    const double diss = last_of(h, "/stage3/energy/dissipated");
+    const double tot = last_of(h, "/stage3/energy/total"), ke = last_of(h, "/stage3/energy/kinetic");
+    printf("  scenario block on a floor with friction 0.5: dissipated %.4g J, kinetic %.4g J, "
+           "total %.3g J\n", diss, ke, tot);
+    /* sliding at mu g: 1/2 m (v0^2 - (v0 - mu g t)^2) dissipated (the block lands on the
+     * floor at once: it starts on it) */
+    const double t = last_of(h, "/stage3/time"), dv = 0.5 * 9.81 * t, m = 8e-3;
+    CHECK_REL(diss, 0.5 * m * (4 - (2 - dv) * (2 - dv)), 0.05);
+    CHECK(ke < 0.5 * m * 4);
+    mcs_results_close(&h);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_s3w_XXXXXX");
     if (!mkdtemp(tmpdir)) return 1;
     RUN(test_wall_motion_scenario);
+    RUN(test_wall_friction_scenario);
     char cmd[96];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     if (system(cmd) != 0) return 1;

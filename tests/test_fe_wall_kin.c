@@ -204,8 +204,8 @@ static void test_bar_onto_free_wall(void)
     fe_model_destroy(&m);
 }
 
-/* a hex bar (1440 elements, 2576 nodes: threaded element and node loops) onto a free kinematic
- * wall: the same state to the last bit with 1 and 2 threads (the wall solve is serial, before
+/* a hex bar (1440 elements, 2576 nodes: threaded element and node loops) obliquely onto a free
+ * kinematic wall with friction 0.3: the same state to the last bit with 1 and 2 threads (the wall solve is serial, before
  * the threaded node loop) */
 static void test_threads_bitwise(void)
 {
@@ -219,7 +219,8 @@ static void test_threads_bitwise(void)
     d.mesh.origin[0] = 1e-5;
     d.initial_velocity[0] = -20, d.initial_velocity[1] = 3;
     CHECK(fe_builder_add_part(b, &d, NULL, &err) == MCS_OK);
-    fe_wall_desc w = {.normal = {1, 0.2, 0}, .method = FE_WALL_KINEMATIC, .mass = 0.02};
+    fe_wall_desc w = {.normal = {1, 0.2, 0}, .method = FE_WALL_KINEMATIC, .mass = 0.02,
+                      .friction = 0.3};
     snprintf(w.name, sizeof w.name, "free");
     CHECK(fe_builder_add_wall(b, &w, &err) == MCS_OK);
     fe_model *m = NULL;

@@ -60,7 +60,8 @@ void fe_wall_kin_solve(const fe_model *m, fe_state *s, int w, const fe_wall_step
 {
     const fe_wall *W = &m->wall[w];
     const double *nrm = W->normal, *d = s->wall_x + 3 * w, dt = P->dt, M = W->mass;
-    const double V0 = fe_dot(s->wall_v + 3 * w, nrm), dn = fe_dot(d, nrm), pn = fe_dot(W->point, nrm);
+    const double V0 = fe_dot(s->wall_v + 3 * w, nrm), dn = fe_dot(d, nrm);
+    const double pn = fe_dot(W->point, nrm);
     const int k0 = m->wall_slave_off[w], k1 = m->wall_slave_off[w + 1];
     double *c = s->wall_scr + 2 * (size_t)k0; /* (w_i, m_i) of the nodes that may land */
     int nc = 0;

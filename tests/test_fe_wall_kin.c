@@ -205,8 +205,8 @@ static void test_bar_onto_free_wall(void)
 }
 
 /* a hex bar (1440 elements, 2576 nodes: threaded element and node loops) obliquely onto a free
- * kinematic wall with friction 0.3: the same state to the last bit with 1 and 2 threads (the wall solve is serial, before
- * the threaded node loop) */
+ * kinematic wall with friction 0.3: the same state to the last bit with 1 and 2 threads (the
+ * wall solve is serial, before the threaded node loop; the friction is per node) */
 static void test_threads_bitwise(void)
 {
     fe_builder *b;

@@ -432,7 +432,7 @@ static void chunk_touch(const fe_model *m, int k, int *t0, int *t1)
 
 /* before the entries, on a share: the power of the last step's contact forces at the current
  * velocities per node chunk (pow_chunk); whether a node moved far enough since the search to
- * ask for a new one (as fe_contact_moved; *moved set to 1); node_fc zeroed */
+ * ask for a new one (*moved set to 1); node_fc zeroed */
 static void pre_share(const fe_model *m, fe_state *s, const fe_par_range *r, int *moved)
 {
     const fe_contact_model *c = m->contact;
@@ -666,15 +666,13 @@ void fe_contact_finish(const fe_model *m, fe_state *s)
     fe_contact_state *cs = s->contact;
     const double dth = 0.5 * (s->dt + s->dt_prev), hb = s->dt_prev > 0 ? dth : 0;
     const int nt = cs->live_nt;
-    /* phase 1 (unless fe_contact_live ran it), phase 2 and 3 serial; then node_fc into
-     * node_fext */
+    /* phase 1 here unless fe_contact_live ran it (one thread), phase 2 and 3 serial; then
+     * node_fc into node_fext by each node's thread */
+    if (!cs->live_done)
+        for (int t = 0; t < nt; t++) live_share(m, s, nt, t, cs->rec0);
     if (nt > 1) {
 #pragma omp parallel num_threads(nt)
         {
-            if (!cs->live_done) {
-                for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) live_share(m, s, nt, t, cs->rec0);
-#pragma omp barrier
-            }
 #pragma omp single
             scatter(m, s);
             for (int t = fe_par_tid(); t < nt; t += fe_par_nth()) {
@@ -683,7 +681,6 @@ void fe_contact_finish(const fe_model *m, fe_state *s)
             }
         }
     } else {
-        if (!cs->live_done) live_share(m, s, 1, 0, cs->rec0);
         scatter(m, s);
         const fe_par_range r = contact_share(m, s, 1, 0);
         post_share(m, s, &r);
@@ -714,10 +711,4 @@ double fe_contact_work(const fe_model *m, const fe_state *s)
 {
     (void)m;
     return s->contact ? s->contact->work_nodes - s->contact->work_bodies : 0;
-}
-
-void fe_contact_interfaces(const fe_model *m, fe_state *s)
-{
-    fe_contact_begin(m, s);
-    fe_contact_finish(m, s);
 }

@@ -6,8 +6,8 @@
  * Model side (built once by fe_model_create from the builder's descriptors): segments, slave
  * node lists, penalty stiffnesses, neighbour lists for self-contact. State side: the bucket
  * grid (rebuilt when a segment node has moved more than the search margin), friction history,
- * contact energies and force histories. fe_contact_forces (fe_stages.c) calls
- * fe_contact_interfaces, which adds the contact forces to node_fext. */
+ * contact energies and force histories. fe_internal_forces and fe_contact_forces (fe_stages.c)
+ * call the three parts below, which add the contact forces to node_fext. */
 #ifndef FE_CONTACT_H
 #define FE_CONTACT_H
 
@@ -183,13 +183,12 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
 void fe_contact_state_destroy(fe_contact_state **p);
 void fe_contact_state_reset(const fe_model *m, fe_contact_state *c);
 
-/* reads x, v (t - dt/2), time; adds contact forces to node_fext; updates the contact
- * energies (part_energy[FE_E_contact]) and the contact work that fe_stable_step takes out
- * of the external work (the contact is internal to the structure) */
 struct fe_state;
-void fe_contact_interfaces(const fe_model *m, struct fe_state *s);
-/* the same in three parts, so that the slave entries can run in the element loops' parallel
- * region (fe_internal_forces) with no barrier between them:
+/* the contact sub-stage: reads x, v (t - dt/2), time; adds contact forces to node_fext;
+ * updates the contact energies (part_energy[FE_E_contact]) and the contact work that
+ * fe_stable_step takes out of the external work (the contact is internal to the structure).
+ * In three parts, so that the slave entries can run in the element loops' parallel region
+ * (fe_internal_forces) with no barrier between them:
  *   fe_contact_begin   before the elements, after fe_par_team: last step's power, the search
  *                      when a node moved far enough, the live list (reads x, v, node_fc);
  *   fe_contact_live    thread t's live chunks (those of its nodes), when fe_contact_threaded;

@@ -31,8 +31,6 @@ int fe_contact_buckets(const fe_contact_state *cs, int p, const double x[3], int
 /* after a search: each entry's candidate list (the segments whose grown box holds it, its own
  * and in self contact its neighbours' left out) and the live list */
 void fe_contact_candidates(const fe_model *m, fe_state *s);
-/* whether a node has moved far enough since the search to ask for a new one */
-int fe_contact_moved(const fe_contact_model *c, const fe_state *s);
 
 /* the pass of slave entry e (each pass's entries are contiguous) */
 static inline int fe_contact_ent_pass(const fe_contact_model *c, int e)

@@ -209,15 +209,3 @@ void fe_contact_candidates(const fe_model *m, fe_state *s)
             entry_candidates(c, cs, e, fe_contact_ent_pass(c, e), s->node_x + 3 * c->ent_node[e],
                              cs->ent_cand + off[e], off[e + 1] - off[e]);
 }
-
-int fe_contact_moved(const fe_contact_model *c, const fe_state *s)
-{
-    const double m2 = s->contact->margin2;
-    for (int t = 0; t < c->nnode_touch; t++) {
-        const double *x = s->node_x + 3 * c->touch[t];
-        const float *r = s->contact->x_ref + 3 * t;
-        double d0 = x[0] - r[0], d1 = x[1] - r[1], d2 = x[2] - r[2];
-        if (d0 * d0 + d1 * d1 + d2 * d2 > m2) return 1;
-    }
-    return 0;
-}

@@ -149,6 +149,15 @@ enum { FE_ACC_KE, FE_ACC_WB, FE_ACC_WF, FE_ACC_DB, FE_ACC_DF, FE_ACC_BAD, FE_NAC
 /* element steps of the part at positions x (no safety factor); *elem gets the smallest */
 double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem);
 
+/* the connectivity of element kind FE_KIND_* (fe_kind_nnode nodes per element) */
+static inline const int *fe_kind_conn(const fe_model *m, int kind)
+{
+    return kind == FE_KIND_HEX     ? m->hex_node
+           : kind == FE_KIND_SHELL ? m->shell_node
+           : kind == FE_KIND_TET10 ? m->tet10_node
+                                   : m->truss_node;
+}
+
 /* element step factor of mass scaling (fe_massscale.c; 1 without); kind FE_KIND_*, e the
  * element's index in its kind */
 static inline double fe_dt_factor(const fe_model *m, int kind, int e)

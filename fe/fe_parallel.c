@@ -5,6 +5,7 @@
  * nodes) and its own partial sums; the partial sums are then added in chunk order by one
  * thread. The chunks do not depend on the number of threads, so a run gives the same result
  * to the last bit with any OMP_NUM_THREADS (tests/test_fe_parallel.c). */
+#include "fe/fe_builder_impl.h" /* fe_kind_nnode */
 #include "fe/fe_elem.h"
 #include "fe/fe_parallel.h"
 
@@ -19,14 +20,7 @@ static int chunk_first_node(const fe_model *m, int k)
     const fe_part *p = m->part + m->chunk_part[k];
     const int e0 = m->chunk_elem[k];
     const int e1 = e0 + FE_CHUNK_ELEMS < p->elem_end ? e0 + FE_CHUNK_ELEMS : p->elem_end;
-    const int *conn = p->elem_kind == FE_KIND_HEX     ? m->hex_node
-                      : p->elem_kind == FE_KIND_SHELL ? m->shell_node
-                      : p->elem_kind == FE_KIND_TET10 ? m->tet10_node
-                                                      : m->truss_node;
-    const int nper = p->elem_kind == FE_KIND_HEX     ? 8
-                     : p->elem_kind == FE_KIND_SHELL ? 4
-                     : p->elem_kind == FE_KIND_TET10 ? 10
-                                                     : 2;
+    const int *conn = fe_kind_conn(m, p->elem_kind), nper = fe_kind_nnode(p->elem_kind);
     int lo = m->nnode;
     for (int i = nper * e0; i < nper * e1; i++)
         if (conn[i] < lo) lo = conn[i];
@@ -124,22 +118,27 @@ double fe_par_clock(void)
 #endif
 }
 
-/* node chunks nc0 .. nc1-1 that go with element chunks k0 .. k1-1 */
-static void chunk_nodes(const fe_model *m, int k0, int k1, int *nc0, int *nc1)
+/* the first node chunk that goes with element chunk k (k = nchunk: the end) */
+static int first_nc(const fe_model *m, int k)
 {
-    *nc0 = k0 < m->nchunk ? m->chunk_nc[k0] : m->nnode_chunk;
-    *nc1 = k1 < m->nchunk ? m->chunk_nc[k1] : m->nnode_chunk;
+    return k < m->nchunk ? m->chunk_nc[k] : m->nnode_chunk;
 }
 
 /* the cost of element chunk k since the last balance: its elements' time and the contact
  * time of the node chunks that go with it (a thread's contact work is that of its nodes) */
 static double chunk_load(const fe_model *m, const fe_state *s, int k)
 {
-    int nc0, nc1;
-    chunk_nodes(m, k, k + 1, &nc0, &nc1);
     double c = s->chunk_cost[k];
-    for (int j = nc0; j < nc1; j++) c += s->node_cost[j];
+    for (int j = first_nc(m, k); j < first_nc(m, k + 1); j++) c += s->node_cost[j];
     return c;
+}
+
+/* a new window: no time summed yet */
+static void clear_costs(const fe_model *m, fe_state *s)
+{
+    s->par_steps = 0;
+    for (int k = 0; k < m->nchunk; k++) s->chunk_cost[k] = 0;
+    for (int j = 0; j < m->nnode_chunk; j++) s->node_cost[j] = 0;
 }
 
 /* at the end of each window of steps, move the element cuts so that every thread's chunks,
@@ -159,18 +158,12 @@ static void rebalance(const fe_model *m, fe_state *s, int nt)
     double *c = s->chunk_cost; /* becomes the chunk loads, then zero for the next window */
     double tot = 0, worst = 0;
     for (int k = 0; k < nch; k++) tot += c[k] = chunk_load(m, s, k);
-    s->par_steps = 0;
-    for (int j = 0; j < m->nnode_chunk; j++) s->node_cost[j] = 0;
-    if (!(tot > 0)) {
-        for (int k = 0; k < nch; k++) c[k] = 0;
-        return;
-    }
     for (int t = 0; t < nt; t++) {
         double load = 0;
         for (int k = cut[t]; k < cut[t + 1]; k++) load += c[k];
         worst = fmax(worst, load);
     }
-    if (worst > 1.03 * tot / nt) {
+    if (tot > 0 && worst > 1.03 * tot / nt) {
         double cum = 0;
         int k = 0;
         for (int t = 1; t < nt; t++) {
@@ -180,7 +173,7 @@ static void rebalance(const fe_model *m, fe_state *s, int nt)
             cut[t] = k;
         }
     }
-    for (int k = 0; k < nch; k++) c[k] = 0;
+    clear_costs(m, s);
 }
 
 int fe_par_team(const fe_model *m, fe_state *s)
@@ -193,16 +186,14 @@ int fe_par_team(const fe_model *m, fe_state *s)
         /* a new team: equal numbers of chunks */
         for (int t = 0; t <= nt; t++) s->par_cut[t] = (int)((long)m->nchunk * t / nt);
         s->par_nt = nt;
-        s->par_steps = s->par_nbal = 0;
-        for (int k = 0; k < m->nchunk; k++) s->chunk_cost[k] = 0;
-        for (int j = 0; j < m->nnode_chunk; j++) s->node_cost[j] = 0;
+        s->par_nbal = 0;
+        clear_costs(m, s);
     } else if (nt > 1) {
         rebalance(m, s, nt);
     }
     /* node shares: the node chunks that go with each thread's first element chunk */
     s->par_ncut[0] = 0;
-    for (int t = 1; t < nt; t++)
-        s->par_ncut[t] = s->par_cut[t] < m->nchunk ? m->chunk_nc[s->par_cut[t]] : m->nnode_chunk;
+    for (int t = 1; t < nt; t++) s->par_ncut[t] = first_nc(m, s->par_cut[t]);
     s->par_ncut[nt] = m->nnode_chunk;
     return nt;
 }

@@ -19,6 +19,7 @@
  * 1/2 M V(n-1/2).V(n+1/2) + the mean of 1/2 L.w at n-1/2 and n+1/2; external work with the
  * trapezoidal weights of fe_integrate. Rigid parts feel penalty rigid walls (forces), not
  * kinematic ones (rejected at build). */
+#include "fe/fe_builder_impl.h" /* fe_kind_nnode */
 #include "fe/fe_elem.h"
 #include "fe/fe_solid.h"
 
@@ -43,19 +44,6 @@ static void inv3(const double a[3][3], double r[3][3])
         }
 }
 
-static const int *kind_conn(const fe_model *m, int k)
-{
-    return k == FE_KIND_HEX     ? m->hex_node
-           : k == FE_KIND_SHELL ? m->shell_node
-           : k == FE_KIND_TET10 ? m->tet10_node
-                                : m->truss_node;
-}
-
-static int kind_width(int k)
-{
-    return k == FE_KIND_HEX ? 8 : k == FE_KIND_SHELL ? 4 : k == FE_KIND_TET10 ? 10 : 2;
-}
-
 /* the nodes of each rigid part become one body */
 mcs_status fe_rigid_build(fe_model *m, mcs_error *err)
 {
@@ -66,7 +54,7 @@ mcs_status fe_rigid_build(fe_model *m, mcs_error *err)
     for (int ip = 0; ip < m->npart; ip++) {
         const fe_part *p = &m->part[ip];
         if (p->body < 0) continue;
-        const int *c = kind_conn(m, p->elem_kind), w = kind_width(p->elem_kind);
+        const int *c = fe_kind_conn(m, p->elem_kind), w = fe_kind_nnode(p->elem_kind);
         for (int e = p->elem_begin; e < p->elem_end; e++)
             for (int i = 0; i < w; i++) {
                 int n = c[w * e + i], *nb_ = &m->node_body[n];

@@ -32,9 +32,7 @@ static void elem_share(const fe_model *m, fe_state *s, int t, int timed)
         const int ip = m->chunk_part[k], e0 = m->chunk_elem[k];
         const int e1 = e0 + FE_CHUNK_ELEMS < m->part[ip].elem_end ? e0 + FE_CHUNK_ELEMS
                                                                  : m->part[ip].elem_end;
-        if (!chunked_part(m->part + ip)) {
-            continue;
-        }
+        if (!chunked_part(m->part + ip)) continue;
         const double t0 = timed ? fe_par_clock() : 0;
         switch (m->part[ip].elem_kind) {
         case FE_KIND_HEX: fe_hex_range(m, s, ip, e0, e1, s->chunk_acc + k); break;

@@ -1,8 +1,9 @@
-/* Shared set-up of the stage-3 tests (test_s3_run.c, test_s3_solid.c, test_s3_restraints.c):
+/* Shared set-up of the stage-3 tests (test_s3_run.c, test_s3_solid.c, test_s3_wall.c, ...):
  * write a scenario file, run one through the library, read a results dataset. */
 #ifndef S3_TEST_UTIL_H
 #define S3_TEST_UTIL_H
 
+#include <math.h>
 #include <stdio.h>
 
 #include "core/mcs_results.h"
@@ -39,6 +40,15 @@ static inline int rd(mcs_results *h, const char *path, mcs_array *a)
 {
     mcs_error err = {0};
     return mcs_results_read(h, path, a, &err) == MCS_OK;
+}
+
+/* the last value of a results dataset; NaN if it cannot be read or is empty */
+static inline double last_of(mcs_results *h, const char *path)
+{
+    mcs_array a = {0};
+    double v = rd(h, path, &a) && a.n > 0 ? a.v[a.n - 1] : NAN;
+    mcs_array_free(&a);
+    return v;
 }
 
 #endif

@@ -14,16 +14,6 @@
 
 static char tmpdir[64];
 
-static double last_of(mcs_results *h, const char *path)
-{
-    mcs_array a = {0};
-    mcs_error err = {0};
-    double v = NAN;
-    if (mcs_results_read(h, path, &a, &err) == MCS_OK && a.n > 0) v = a.v[a.n - 1];
-    mcs_array_free(&a);
-    return v;
-}
-
 /* a block with a 0.5 kg point mass falls under 1 g for 2 ms: the work of gravity is
  * M g^2 t^2 / 2 with M = rho V + 0.5 kg, all of it kinetic, the total constant; a spring
  * between two blocks at rest and with no gravity on them is not here (test_fe_discrete) */

@@ -10,16 +10,6 @@
 
 static char tmpdir[64];
 
-static double last_of(mcs_results *h, const char *path)
-{
-    mcs_array a = {0};
-    mcs_error err = {0};
-    double v = NAN;
-    if (mcs_results_read(h, path, &a, &err) == MCS_OK && a.n > 0) v = a.v[a.n - 1];
-    mcs_array_free(&a);
-    return v;
-}
-
 /* a floor under a block, lifted by a velocity curve (a 0.5 m/s triangle over 2 ms: 0.5 mm,
  * then held): its displacement history ends at the curve's integral, 0.5 mm, it pushed the block (normal force > 0), and the block's
  * bottom rose with it */

@@ -4,6 +4,7 @@
  * R - distance); beside the facet's footprint it falls freely (z0 - g t^2 / 2); an OBJ file gives
  * the same mesh as the inline form; bad meshes are refused at the key. */
 #include "harness.h"
+#include "figures.h"
 #include "stage1_mb/mb_model.h"
 
 #include <math.h>
@@ -85,7 +86,8 @@ static void test_facet_equals_plane(void)
         dmax = fmax(dmax, fabs(a[i] - b[i]));
         zmin = fmin(zmin, b[i]);
     }
-    CHECK(dmax < 1e-9);
+    CHECK(dmax < 3e-10); /* 3x the 1.0e-10 the README states */
+    FIG("contact_geometry.facet_vs_plane_height", "%.1e", dmax);
     CHECK(zmin < 0.1); /* it did touch (the sphere's bottom below the face) */
     CHECK(a && b && b[n2] > 0.1);
     printf("  facet vs plane: largest height difference %.2e m over %ld steps, lowest centre "

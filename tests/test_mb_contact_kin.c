@@ -4,6 +4,7 @@
 #include "stage1_mb/mb_contact_kin.h"
 #include "stage1_mb/mb_vec.h"
 #include "tests/harness.h"
+#include "tests/figures.h"
 
 static const double G[3] = {0, 0, -9.81}, ZERO[3] = {0, 0, 0};
 
@@ -180,6 +181,7 @@ static void test_ellipsoid_impact_momentum(void)
     for (int q = 0; q < 3; q++)
         CHECK_NEAR(4.5 * ka.vel[q] + 15 * kb.vel[q], q == 0 ? p0 : 0, 1e-9 * p0);
     CHECK(worst < 1e-3 * e0);
+    FIG("contact_geometry.ell_impact_energy_err", "%.0e", worst / e0);
     mb_world_destroy(&w);
 }
 

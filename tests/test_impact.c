@@ -442,21 +442,21 @@ static void print_car(const char *what, const car_figs *f)
 /* the figures docs/models.md's car-scenario table states, keys in this order */
 static const char *const s413_keys[] = {
     "models.s413_t_contact_ms", "models.s413_t_plastic_ms", "models.s413_t_stop_ms",
-    "models.s413_phi_max_rad", "models.s413_t_phi_max_ms", "models.s413_f_peak_kn",
-    "models.s413_t_f_peak_ms", "models.s413_vcar_max", "models.s413_t_vcar_max_ms",
-    "models.s413_common_v", "models.s413_vmoto_end", "models.s413_drift"};
+    "models.s413_phi_max_rad",  "models.s413_t_phi_max_ms", "models.s413_f_peak_kn",
+    "models.s413_t_f_peak_ms",  "models.s413_vcar_max",     "models.s413_t_vcar_max_ms",
+    "models.s413_common_v",     "models.s413_vmoto_end",    "models.s413_drift"};
 
 static const char *const smym_keys[] = {
     "models.smym_t_contact_ms", "models.smym_t_plastic_ms", "models.smym_t_stop_ms",
-    "models.smym_phi_max_rad", "models.smym_t_phi_max_ms", "models.smym_f_peak_kn",
-    "models.smym_t_f_peak_ms", "models.smym_vcar_max", "models.smym_t_vcar_max_ms",
-    "models.smym_common_v", "models.smym_vmoto_end", "models.smym_drift"};
+    "models.smym_phi_max_rad",  "models.smym_t_phi_max_ms", "models.smym_f_peak_kn",
+    "models.smym_t_f_peak_ms",  "models.smym_vcar_max",     "models.smym_t_vcar_max_ms",
+    "models.smym_common_v",     "models.smym_vmoto_end",    "models.smym_drift"};
 
 static const char *const smov_keys[] = {
     "models.smov_t_contact_ms", "models.smov_t_plastic_ms", "models.smov_t_stop_ms",
-    "models.smov_phi_max_rad", "models.smov_t_phi_max_ms", "models.smov_f_peak_kn",
-    "models.smov_t_f_peak_ms", "models.smov_vcar_max", "models.smov_t_vcar_max_ms",
-    "models.smov_common_v", "models.smov_vmoto_end", "models.smov_drift"};
+    "models.smov_phi_max_rad",  "models.smov_t_phi_max_ms", "models.smov_f_peak_kn",
+    "models.smov_t_f_peak_ms",  "models.smov_vcar_max",     "models.smov_t_vcar_max_ms",
+    "models.smov_common_v",     "models.smov_vmoto_end",    "models.smov_drift"};
 
 static void fig_car(const char *const key[12], const car_figs *f)
 {

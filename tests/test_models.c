@@ -62,7 +62,10 @@ static int replace_all(char *buf, const char *from, const char *to)
     return n;
 }
 
-static int find_body(const mb_model *m, const char *name) { return mb_model_body(m, name); }
+static int find_body(const mb_model *m, const char *name)
+{
+    return mb_model_body(m, name);
+}
 
 static int find_restraint(const mb_model *m, const char *name)
 {
@@ -80,7 +83,8 @@ static void test_mass_wheelbase_bodies(void)
     CHECK(m != NULL);
     if (!m) return;
     double mass = 0;
-    for (int b = 0; b < m->nbody; b++) mass += m->body[b].mass;
+    for (int b = 0; b < m->nbody; b++)
+        mass += m->body[b].mass;
     CHECK(m->nbody == 7);
     CHECK_NEAR(mass, 208, 1e-9); /* [M] Table 1.1 */
     int fw = find_body(m, "moto_front_wheel"), rw = find_body(m, "moto_rear_wheel");
@@ -134,7 +138,8 @@ static mb_model *load_moto_at_rest(double end_time)
 static int find_pair(const mb_model *m, int a, int b)
 {
     for (int p = 0; p < m->npair; p++)
-        if ((m->pair[p].ba == a && m->pair[p].bb == b) || (m->pair[p].ba == b && m->pair[p].bb == a))
+        if ((m->pair[p].ba == a && m->pair[p].bb == b) ||
+            (m->pair[p].ba == b && m->pair[p].bb == a))
             return p;
     return -1;
 }
@@ -163,7 +168,8 @@ static void test_static_equilibrium(void)
     int rw = find_body(m, "moto_rear_wheel"), lf = find_body(m, "moto_lower_fork");
     int sa = find_body(m, "moto_swing_arm");
     int fk = find_restraint(m, "moto_fork_deformation");
-    int sf = find_restraint(m, "moto_front_suspension"), sr = find_restraint(m, "moto_swing_arm_pivot");
+    int sf = find_restraint(m, "moto_front_suspension"),
+        sr = find_restraint(m, "moto_swing_arm_pivot");
     int pf = find_pair(m, fw, MB_GROUND), pr = find_pair(m, rw, MB_GROUND);
     CHECK(fr >= 0 && fw >= 0 && rw >= 0 && lf >= 0 && sa >= 0 && fk >= 0 && sf >= 0 && sr >= 0);
     CHECK(pf >= 0 && pr >= 0);
@@ -171,7 +177,8 @@ static void test_static_equilibrium(void)
     /* hand statics */
     const double g = 9.81;
     double mass = 0, mx = 0;
-    for (int b = 0; b < m->nbody; b++) mass += m->body[b].mass, mx += m->body[b].mass * m->body[b].pos[0];
+    for (int b = 0; b < m->nbody; b++)
+        mass += m->body[b].mass, mx += m->body[b].mass * m->body[b].pos[0];
     double L = m->body[fw].pos[0] - m->body[rw].pos[0], xg = mx / mass - m->body[rw].pos[0];
     double nf = mass * g * xg / L, nr = mass * g - nf;
     double c24 = cos(24 * M_PI / 180);
@@ -200,8 +207,8 @@ static void test_static_equilibrium(void)
     printf("  static: wheel loads %.1f / %.1f N (hand %.1f / %.1f); tyre depth %.2f / %.2f mm "
            "(hand %.2f / %.2f); front spring %.2f mm (hand %.2f), swing arm %.4f rad (hand "
            "%.4f)\n",
-           s->pair[pf].fn, s->pair[pr].fn, nf, nr, s->pair[pf].depth * 1e3,
-           s->pair[pr].depth * 1e3, nf / 180, nr / 200, xf * 1e3, travel_f * 1e3, xr, theta_r);
+           s->pair[pf].fn, s->pair[pr].fn, nf, nr, s->pair[pf].depth * 1e3, s->pair[pr].depth * 1e3,
+           nf / 180, nr / 200, xf * 1e3, travel_f * 1e3, xr, theta_r);
     CHECK_REL(s->pair[pf].fn, nf, 0.01);
     CHECK_REL(s->pair[pr].fn, nr, 0.01);
     CHECK_REL(s->pair[pf].depth, nf / 180e3, 0.01);
@@ -226,25 +233,25 @@ out:
 }
 
 typedef struct {
-    double f_peak, t_f_peak;  /* peak total barrier contact force [N] and its time [s] */
-    double t_first;           /* first barrier contact [s] */
-    double t_tyre60, t_tyre80; /* front tyre-barrier depth past 60 and 80 mm [s] */
-    double t_plastic;         /* fork beyond its elastic limit (the characteristic's) [s] */
-    double t_stop;            /* fork at the wheel-engine stop (0.2 rad) [s] */
-    double phi_max, phi_end;  /* largest fork angle and the angle at the end [rad] */
-    double phi_set;           /* permanent set of the loaded branch [rad] */
-    double phi_e;             /* the fork characteristic's elastic limit [rad] */
-    double vx_min, vx_end;    /* frame CG velocity along x: smallest and at the end [m/s] */
-    double t_vx0;             /* frame forward velocity first <= 0 [s] */
+    double f_peak, t_f_peak;     /* peak total barrier contact force [N] and its time [s] */
+    double t_first;              /* first barrier contact [s] */
+    double t_tyre60, t_tyre80;   /* front tyre-barrier depth past 60 and 80 mm [s] */
+    double t_plastic;            /* fork beyond its elastic limit (the characteristic's) [s] */
+    double t_stop;               /* fork at the wheel-engine stop (0.2 rad) [s] */
+    double phi_max, phi_end;     /* largest fork angle and the angle at the end [rad] */
+    double phi_set;              /* permanent set of the loaded branch [rad] */
+    double phi_e;                /* the fork characteristic's elastic limit [rad] */
+    double vx_min, vx_end;       /* frame CG velocity along x: smallest and at the end [m/s] */
+    double t_vx0;                /* frame forward velocity first <= 0 [s] */
     double pitch_max, pitch_min; /* frame pitch extremes (nose up > 0) [deg] */
-    double rear_lift;         /* largest rise of the rear wheel centre [m] */
-    double vn_min, vn_end;    /* frame velocity along -(barrier normal): smallest, end [m/s] */
-    double yaw_end;           /* frame yaw at the end [deg] */
-    double ax_peak, t_ax_peak; /* largest |x| frame acceleration, CFC 60 [m/s^2], when [s] */
-    double drift;             /* energy drift [-] */
-    double e_kin0, e_diss;    /* initial kinetic, dissipated at the end [J] */
+    double rear_lift;            /* largest rise of the rear wheel centre [m] */
+    double vn_min, vn_end;       /* frame velocity along -(barrier normal): smallest, end [m/s] */
+    double yaw_end;              /* frame yaw at the end [deg] */
+    double ax_peak, t_ax_peak;   /* largest |x| frame acceleration, CFC 60 [m/s^2], when [s] */
+    double drift;                /* energy drift [-] */
+    double e_kin0, e_diss;       /* initial kinetic, dissipated at the end [J] */
     long steps;
-    double *f_out;            /* barrier force at the output samples (nout), or NULL [N] */
+    double *f_out; /* barrier force at the output samples (nout), or NULL [N] */
     long nout;
 } impact_figs;
 
@@ -258,7 +265,8 @@ static void frame_acc_peak(const mb_model *m, const mb_state *s, impact_figs *f)
     CHECK(se >= 0 && m->sensor[se].cfc == 60);
     if (se < 0 || s->nrec < 2) return;
     double *a = malloc((size_t)s->nrec * sizeof *a);
-    for (long t = 0; t < s->nrec; t++) a[t] = s->rec_sensor[(t * m->nsensor + se) * 3 + 0];
+    for (long t = 0; t < s->nrec; t++)
+        a[t] = s->rec_sensor[(t * m->nsensor + se) * 3 + 0];
     mcs_error err = {0};
     CHECK(an_cfc_filter(a, (int)s->nrec, 1.0 / m->output_rate, 60, a, &err) == MCS_OK);
     for (long t = 0; t < s->nrec; t++)
@@ -344,29 +352,29 @@ static void print_figs(const char *what, const impact_figs *f)
            "%.2f m/s, vx <= 0 at %.1f ms; along -normal min %.2f m/s, end %.2f m/s; pitch "
            "%.1f..%.1f deg; rear wheel lift %.0f mm; yaw at end %.1f deg; frame |ax| CFC 60 "
            "%.1f g at %.1f ms; kinetic %.0f J, dissipated %.0f J; energy drift %.2e\n",
-           what, f->steps, f->t_first * 1e3, f->f_peak / 1e3, f->t_f_peak * 1e3,
-           f->t_tyre60 * 1e3, f->t_tyre80 * 1e3, f->phi_e, f->t_plastic * 1e3, f->t_stop * 1e3,
-           f->phi_max, f->phi_end, f->phi_set, f->vx_min, f->vx_end, f->t_vx0 * 1e3, f->vn_min,
-           f->vn_end, f->pitch_min, f->pitch_max, f->rear_lift * 1e3, f->yaw_end,
-           f->ax_peak / 9.80665, f->t_ax_peak * 1e3, f->e_kin0, f->e_diss, f->drift);
+           what, f->steps, f->t_first * 1e3, f->f_peak / 1e3, f->t_f_peak * 1e3, f->t_tyre60 * 1e3,
+           f->t_tyre80 * 1e3, f->phi_e, f->t_plastic * 1e3, f->t_stop * 1e3, f->phi_max, f->phi_end,
+           f->phi_set, f->vx_min, f->vx_end, f->t_vx0 * 1e3, f->vn_min, f->vn_end, f->pitch_min,
+           f->pitch_max, f->rear_lift * 1e3, f->yaw_end, f->ax_peak / 9.80665, f->t_ax_peak * 1e3,
+           f->e_kin0, f->e_diss, f->drift);
 }
 
 /* the figures both barrier cases state (docs/models.md, README.md), keys in this order */
 static const char *const fb_keys[] = {
-    "models.fb_t_first_ms", "models.fb_f_peak_kn", "models.fb_t_f_peak_ms",
-    "models.fb_t_plastic_ms", "models.fb_t_stop_ms", "models.fb_phi_max_rad",
-    "models.fb_phi_set_rad", "models.fb_t_vx0_ms", "models.fb_v_rebound", "models.fb_v_end",
-    "models.fb_pitch_min_deg", "models.fb_pitch_max_deg", "models.fb_rear_lift_mm",
-    "models.fb_yaw_end_deg", "models.fb_ax_peak_g", "models.fb_t_ax_peak_ms",
-    "models.fb_e_diss_j", "models.fb_drift"};
+    "models.fb_t_first_ms",   "models.fb_f_peak_kn",     "models.fb_t_f_peak_ms",
+    "models.fb_t_plastic_ms", "models.fb_t_stop_ms",     "models.fb_phi_max_rad",
+    "models.fb_phi_set_rad",  "models.fb_t_vx0_ms",      "models.fb_v_rebound",
+    "models.fb_v_end",        "models.fb_pitch_min_deg", "models.fb_pitch_max_deg",
+    "models.fb_rear_lift_mm", "models.fb_yaw_end_deg",   "models.fb_ax_peak_g",
+    "models.fb_t_ax_peak_ms", "models.fb_e_diss_j",      "models.fb_drift"};
 
 static const char *const ob_keys[] = {
-    "models.ob_t_first_ms", "models.ob_f_peak_kn", "models.ob_t_f_peak_ms",
-    "models.ob_t_plastic_ms", "models.ob_t_stop_ms", "models.ob_phi_max_rad",
-    "models.ob_phi_set_rad", "models.ob_t_vx0_ms", "models.ob_v_rebound", "models.ob_v_end",
-    "models.ob_pitch_min_deg", "models.ob_pitch_max_deg", "models.ob_rear_lift_mm",
-    "models.ob_yaw_end_deg", "models.ob_ax_peak_g", "models.ob_t_ax_peak_ms",
-    "models.ob_e_diss_j", "models.ob_drift"};
+    "models.ob_t_first_ms",   "models.ob_f_peak_kn",     "models.ob_t_f_peak_ms",
+    "models.ob_t_plastic_ms", "models.ob_t_stop_ms",     "models.ob_phi_max_rad",
+    "models.ob_phi_set_rad",  "models.ob_t_vx0_ms",      "models.ob_v_rebound",
+    "models.ob_v_end",        "models.ob_pitch_min_deg", "models.ob_pitch_max_deg",
+    "models.ob_rear_lift_mm", "models.ob_yaw_end_deg",   "models.ob_ax_peak_g",
+    "models.ob_t_ax_peak_ms", "models.ob_e_diss_j",      "models.ob_drift"};
 
 static void fig_barrier(const char *const key[18], const impact_figs *f)
 {
@@ -411,8 +419,8 @@ static void test_frontal_barrier(void)
     impact_figs *f = &frontal;
     print_figs("frontal 13.4 m/s", f);
     CHECK_NEAR(f->t_first, 0.005 / 13.4, 2e-5);
-    CHECK(!isnan(f->t_vx0));          /* stops or rebounds */
-    CHECK(!isnan(f->t_plastic));      /* beyond the elastic limit */
+    CHECK(!isnan(f->t_vx0));     /* stops or rebounds */
+    CHECK(!isnan(f->t_plastic)); /* beyond the elastic limit */
     /* the fork went into its stop (wheel against the engine, > 0.2 rad): unloading goes back
      * down the stop, then parallel to the elastic slope from where the stop begins
      * (docs/hysteresis.md), so the set is 0.2 - M(0.2) / k_e = 0.2 - 4700 / 60000 rad:
@@ -458,8 +466,8 @@ static void test_oblique_barrier(void)
  * (s->pair[p].fn; test_frontal_barrier) */
 static void barrier_force_channels(const char *h5)
 {
-    static const char *const names[] = {"front_tyre_barrier", "frame_barrier",
-                                        "handlebar_barrier", "fork_barrier", "rear_tyre_barrier"};
+    static const char *const names[] = {"front_tyre_barrier", "frame_barrier", "handlebar_barrier",
+                                        "fork_barrier", "rear_tyre_barrier"};
     mcs_results *r = NULL;
     mcs_error err = {0};
     CHECK(mcs_results_open(&r, h5, &err) == MCS_OK);
@@ -477,7 +485,8 @@ static void barrier_force_channels(const char *h5)
     long row = 1;
     for (; frontal.f_out && row < frontal.nout && row < (long)a[0].n; row++) {
         double fch = 0, fsum = frontal.f_out[row];
-        for (int c = 0; c < 5; c++) fch += a[c].n == a[0].n ? a[c].v[row] : NAN;
+        for (int c = 0; c < 5; c++)
+            fch += a[c].n == a[0].n ? a[c].v[row] : NAN;
         if (!(fabs(fch - fsum) <= 1e-9 * (1 + fsum))) bad++;
         peak = fmax(peak, fch);
     }
@@ -486,7 +495,8 @@ static void barrier_force_channels(const char *h5)
            row, peak / 1e3, bad);
     CHECK(bad == 0 && peak > 0);
     FIG("models.fb_channel_samples", "%.0f", (double)row);
-    for (int c = 0; c < 5; c++) mcs_array_free(&a[c]);
+    for (int c = 0; c < 5; c++)
+        mcs_array_free(&a[c]);
 }
 
 static void test_frontal_barrier_cli(void)
@@ -605,8 +615,8 @@ static void test_car_side_impact(void)
     FIG("models.side_t_plastic_ms", "%.1f", t_plastic * 1e3);
     FIG("models.side_phi_max_rad", "%.3f", phi_max);
     FIG("models.side_t_phi_max_ms", "%.1f", t_phi_max * 1e3);
-    FIG("models.side_early_yield", "%.1f", 0.020 / t_plastic);  /* MYMOSA ~20 ms */
-    FIG("models.side_early_max", "%.1f", 0.030 / t_phi_max);    /* MYMOSA ~30 ms */
+    FIG("models.side_early_yield", "%.1f", 0.020 / t_plastic); /* MYMOSA ~20 ms */
+    FIG("models.side_early_max", "%.1f", 0.030 / t_phi_max);   /* MYMOSA ~30 ms */
     FIG("models.side_drift", "%.1e", drift);
     mb_state_destroy(&s);
     mb_model_destroy(&m);

@@ -40,7 +40,7 @@ LIB      = $(BUILD)/libmcrash.a
 MCRASH   = $(BIN)/mcrash
 
 .SECONDARY:
-.PHONY: all deps test check-asan demo bench verify clean format
+.PHONY: all deps test check-asan demo bench verify figures clean format
 
 all: $(MCRASH)
 
@@ -88,6 +88,16 @@ check-asan: deps
 verify: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(TEST_BIN)
 	@MCRASH_VERIFY=1 MCRASH_BIN=$(MCRASH) MCRASH_BUILD=$(BUILD) sh tests/run_tests.sh $(TEST_BIN)
+
+# the figures README.md and docs/*.md state, rewritten in place from the tests' own runs (all of
+# them, the verification runs too; tests/figures.h); fails when a test fails or a doc's figure has
+# no test, and leaves the docs untouched then
+figures: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(TEST_BIN)
+	@rm -f $(BUILD)/figures.tsv
+	@MCRASH_FIGURES_OUT=$(CURDIR)/$(BUILD)/figures.tsv MCRASH_VERIFY=1 MCRASH_BIN=$(MCRASH) \
+	  MCRASH_BUILD=$(BUILD) sh tests/run_tests.sh $(TEST_BIN)
+	@perl scripts/figures.pl $(BUILD)/figures.tsv
 
 bench: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(BENCH_BIN)

@@ -71,4 +71,6 @@ static inline int th_verify(void)
     return v && *v && *v != '0';
 }
 
+#include "figures.h"
+
 #endif

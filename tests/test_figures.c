@@ -48,8 +48,10 @@ static void test_markers(void)
     char *src = tests_text();
     int nmark = 0;
     for (const char *p = strstr(docs, "<!--fig:"); p; p = strstr(p + 1, "<!--fig:")) {
+        if (p > docs && p[-1] == '`')
+            continue; /* the syntax quoted as code, not a marker */
         const char *k = p + 8, *ke = k;
-        while (key_char(*ke))
+        while (key_char(*ke) && strncmp(ke, "-->", 3))
             ke++;
         char key[160];
         snprintf(key, sizeof key, "%.*s", (int)(ke - k), k);

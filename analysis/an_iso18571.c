@@ -7,8 +7,11 @@
  *   (not floored): E_P = ((0.2 N - |n|)/(0.2 N))^k_p, 0 from |n| >= 0.2 N on.
  * - Magnitude and slope use the phase-shifted pair, which keeps only the overlapping N - |n|
  *   samples (no padding, no wrap-around): the part of each signal shifted out is dropped.
- * - DTW: steps (1,0), (0,1), (1,1), cost (c_i - r_j)^2, band |i - j| <= floor(0.1 M) on the
- *   shifted length M; ties prefer the diagonal, then (i-1, j), then (i, j-1).
+ * - DTW: steps (1,0), (0,1), (1,1), cost (c_i - r_j)^2, band |i - j| <= ceil(0.1 M) - 1 on
+ *   the shifted length M, as the TU Graz / OpenVT ISO18571 code (a Sakoe-Chiba window of
+ *   size ceil(0.1 M) - 1) and the yeonsoo-p/ISO18571 scorer (|i - j| < ceil(0.1 M)); it
+ *   differs from floor(0.1 M) when 0.1 M is whole (M = 1500: 149, not 150). Ties prefer the
+ *   diagonal, then (i-1, j), then (i, j-1) (only exact cost ties are affected).
  * - Slope: derivatives by central differences with one-sided differences at the two ends, a
  *   9-point centred moving average whose window shrinks symmetrically (1, 3, 5, 7 points) at
  *   the ends; E_S = (2 - e)/2 clipped to [0, 1].
@@ -335,8 +338,9 @@ mcs_status an_iso18571_arrays(const double *ref, const double *cmp, int n, doubl
     const double *rs = s >= 0 ? ref : ref - s;
     const double *cs = s >= 0 ? cmp + s : cmp;
 
-    /* magnitude: DTW of the shifted pair */
-    st = an_dtw_error(cs, rs, m, (int)floor(o->band * m), &r->mag_error, &r->n_warp, err);
+    /* magnitude: DTW of the shifted pair, |i - j| <= ceil(band m) - 1 */
+    int w = (int)ceil(o->band * m) - 1;
+    st = an_dtw_error(cs, rs, m, w < 0 ? 0 : w, &r->mag_error, &r->n_warp, err);
     if (st) return st;
     r->magnitude = score_of_error(r->mag_error, o->eps_m, o->k_m);
 

@@ -16,7 +16,7 @@ typedef struct {
     double k_p;         /* phase exponent [-] (1) */
     double eps_m;       /* magnitude error at which E_M reaches 0 [-] (0.5) */
     double k_m;         /* magnitude exponent [-] (1) */
-    double band;        /* Sakoe-Chiba band half-width, fraction of the shifted length [-] (0.1) */
+    double band;        /* DTW band: |i - j| <= ceil(band M) - 1, M the shifted length [-] (0.1) */
     double eps_s;       /* slope error at which E_S reaches 0 [-] (2) */
     int smooth;         /* moving-average length of the derivatives, odd [samples] (9) */
     double w_z, w_p, w_m, w_s; /* weights of Z, E_P, E_M, E_S [-] (0.4, 0.2, 0.2, 0.2) */

@@ -4,6 +4,7 @@
 #include "analysis/an_integrate.h"
 #include "analysis/an_spline.h"
 #include "tests/harness.h"
+#include "tests/figures.h"
 
 #include <stdlib.h>
 
@@ -63,6 +64,9 @@ static void test_spline_convergence(void)
         CHECK_NEAR(pv, 4.0, 0.3);
         CHECK_NEAR(pd, 3.0, 0.3);
     }
+    /* the orders of the last halving (41 -> 81 knots), as docs/signals.md states them */
+    FIG("signals.spline_order_value", "%.2f", log2(ev[2] / ev[3]));
+    FIG("signals.spline_order_slope", "%.2f", log2(ed[2] / ed[3]));
     CHECK(ev[3] < 1e-6);
 }
 
@@ -116,6 +120,8 @@ static void test_integration_order(void)
         CHECK_NEAR(log2(ev[k - 1] / ev[k]), 2.0, 0.1);
         CHECK_NEAR(log2(ex[k - 1] / ex[k]), 2.0, 0.1);
     }
+    FIG("signals.trapezoid_order_v", "%.3f", log2(ev[1] / ev[2]));
+    FIG("signals.trapezoid_order_x", "%.3f", log2(ex[1] / ex[2]));
     /* leading term: velocity error h^2 w / 12 * |cos - 1| <= h^2 w / 6 */
     CHECK(ev[0] <= 1e-6 * 100 / 6 * 1.05);
 }

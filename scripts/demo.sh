@@ -1,6 +1,6 @@
 #!/bin/sh
 # make demo: check every shipped scenario, run the ISO 13232 413-0/13.4 scenario with the seated
-# Hybrid III 50th-class rider (the 208 kg motorcycle at 48.5 km/h into the side of a stationary
+# Hybrid III 50th-class rider (the 208 kg motorcycle at 13.4 m/s into the side of a stationary
 # 1668 kg sedan at 90 deg) and print its injury table, then the thesis' frontal rigid-barrier
 # impact (motorcycle only); results and a short text report go to out/.
 set -u

@@ -73,6 +73,8 @@ static void test_elastic_bounce_returns_to_height(void)
     CHECK_NEAR(zmax_after, 0.5, 1e-4);
     /* energy balance: the elastic case keeps total energy to 0.2 % of the largest energy */
     CHECK(mb_energy_drift(m, s) < 2e-3);
+    FIG("stage1_engine.bounce_rebound_err_m", "%.0e", fabs(zmax_after - 0.5));
+    FIG("stage1_engine.bounce_drift", "%.1e", mb_energy_drift(m, s));
     CHECK(s->e.dissipated == 0);
     CHECK(s->nrec == m->nout);
     mb_state_destroy(&s);
@@ -119,6 +121,9 @@ static void test_damped_bounce_matches_exact_solution(void)
     printf("damped bounce: e = %.5f (exact, clamped %.5f; unclamped %.5f), x_max %.6g (exact "
            "%.6g), max |x - x_exact| %.3g m\n",
            vout / v0, e, e0, xmax, xm, err_x);
+    FIG("stage1_engine.damped_e", "%.4f", vout / v0);
+    FIG("stage1_engine.damped_xmax_err_pct", "%.1f", 100 * fabs(xmax - xm) / xm);
+    FIG("stage1_engine.damped_x_err_um", "%.0f", err_x * 1e6);
     CHECK(e > e0);
     CHECK_NEAR(vout / v0, e, 0.01 * e);
     CHECK_NEAR(xmax, xm, 0.005 * xm);
@@ -156,6 +161,9 @@ static void test_two_spheres_momentum_restitution_loop_area(void)
     printf("two spheres: e = %.5f (exact 0.5), momentum error %.3g kg m/s, dissipated %.5f J "
            "(loop area %.5f J)\n",
            e, dp, s->e.dissipated, diss);
+    FIG("stage1_engine.spheres_e", "%.5f", e);
+    FIG_TOL("stage1_engine.spheres_momentum_err", "%.0e", dp, 1e-13);
+    FIG("stage1_engine.spheres_dissipated_j", "%.5f", s->e.dissipated);
     CHECK(dp < 1e-12);
     CHECK_NEAR(e, 0.5, 0.005);
     CHECK_NEAR(s->e.dissipated, diss, 0.005 * diss);
@@ -192,6 +200,7 @@ static void test_pendulum_keeps_its_period(void)
     double Tm = nc >= 2 ? (cross[nc - 1] - cross[0]) / (nc - 1) : 0;
     printf("pendulum: period %.6f s (exact %.6f s), energy drift %.3g\n", Tm, T,
            mb_energy_drift(m, s));
+    FIG("stage1_engine.pendulum_period_s", "%.6f", Tm);
     CHECK_NEAR(Tm, T, 2e-4 * T);
     CHECK(mb_energy_drift(m, s) < 1e-3);
     mb_state_destroy(&s);
@@ -239,6 +248,8 @@ static void test_restraint_oscillator(void)
     /* stored energy at the amplitude: k amp^2 / 2 = I w0^2 / 2 = 5 mJ */
     printf("restraint oscillator: period %.6f s (exact %.6f s), peak stored %.6g J (exact %.6g J), "
            "drift %.3g\n", Tm, T, emax_int, 0.5 * 10 * amp * amp, mb_energy_drift(m, s));
+    FIG("stage1_engine.torsion_period_s", "%.6f", Tm);
+    FIG("stage1_engine.torsion_stored_mj", "%.0f", emax_int * 1e3);
     CHECK_NEAR(Tm, T, 1e-4 * T);
     CHECK_NEAR(emax_int, 0.5 * 10 * amp * amp, 2e-3 * 0.005);
     CHECK(mb_energy_drift(m, s) < 1e-3);
@@ -317,6 +328,10 @@ static void test_sliding_sphere_starts_rolling(void)
     printf("rolling: v %.6f m/s (exact %.6f), w r %.6f, slip ended %.4f s (Coulomb %.4f s), "
            "dissipated %.5f J (exact %.5f J)\n",
            v, ve, w * r, t_roll, t_exact, s->e.dissipated, 2.0 / 7.0 * 2);
+    FIG("stage1_engine.sphere_v_err", "%.0e", fabs(v - ve) / ve);
+    FIG("stage1_engine.sphere_slip_err_pct", "%.1f", 100 * fabs(t_roll - t_exact) / t_exact);
+    FIG("stage1_engine.sphere_diss_err_pct", "%.1f",
+        100 * fabs(s->e.dissipated - 4.0 / 7.0) / (4.0 / 7.0));
     CHECK_NEAR(v, ve, 1e-3 * ve);
     CHECK_NEAR(w * r, ve, 1e-3 * ve);
     CHECK_NEAR(t_roll, t_exact, 0.02 * t_exact);
@@ -385,6 +400,8 @@ static void test_sliding_wheel_starts_rolling(void)
     double t_exact = v0 / (0.5 * 9.81 * 3);
     printf("wheel: v %.6f m/s (exact 2), w R %.6f, slip ended %.4f s (Coulomb %.4f s), "
            "height %.7f m\n", v, w * R, t_roll, t_exact, s->kin[0].pos[2]);
+    FIG("stage1_engine.wheel_v_err", "%.1e", fabs(v - ve) / ve);
+    FIG("stage1_engine.wheel_slip_err_pct", "%.0f", 100 * fabs(t_roll - t_exact) / t_exact);
     CHECK_NEAR(v, ve, 1e-3 * ve);
     CHECK_NEAR(w * R, ve, 1e-3 * ve);
     CHECK_NEAR(t_roll, t_exact, 0.02 * t_exact);
@@ -450,6 +467,10 @@ static void test_deforming_hinge_keeps_permanent_set(void)
            "(exact %.5f), max %.5f rad (exact %.5f)\n",
            qmax, set, w_back, diss, 27.5 - 125.0 * 125.0 / 4000, qmin, 0.2375 - u1, qmax2,
            0.2375 - u1 / 2 + 0.0625);
+    FIG("stage1_engine.hinge_phi_max_rad", "%.5f", qmax);
+    FIG("stage1_engine.hinge_set_rad", "%.5f", set);
+    FIG("stage1_engine.hinge_w_back", "%.4f", w_back);
+    FIG("stage1_engine.hinge_dissipated_j", "%.4f", diss);
     CHECK_NEAR(qmax, 0.3, 2e-4);
     CHECK_NEAR(set, 0.3 - 125.0 / 2000, 3e-4);
     CHECK_NEAR(w_back, -sqrt(125.0 * 125.0 / 2000 / 0.01), 0.05);

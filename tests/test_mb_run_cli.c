@@ -138,10 +138,13 @@ static void test_injury_from_head_channels(void)
     mcs_array a = {0};
     CHECK(mcs_results_read(h, "/stage1/injury/hic15", &a, &err) == MCS_OK);
     printf("head drop: HIC15 %.2f (half sine %.2f), ", a.n ? a.v[0] : NAN, hic);
+    double hic15 = a.n ? a.v[0] : NAN;
     CHECK(a.n == 1 && fabs(a.v[0] - hic) < 0.01 * hic);
     mcs_array_free(&a);
     CHECK(mcs_results_read(h, "/stage1/injury/head_a3ms", &a, &err) == MCS_OK);
     printf("a3ms %.3f g (half sine %.3f g)\n", a.n ? a.v[0] : NAN, a3);
+    FIG("stage1_engine.head_drop_hic15", "%.2f", hic15);
+    FIG("stage1_engine.head_drop_a3ms_g", "%.3f", a.n ? a.v[0] : NAN);
     CHECK(a.n == 1 && fabs(a.v[0] - a3) < 0.01 * a3);
     mcs_array_free(&a);
     mcs_results_close(&h);

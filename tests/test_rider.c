@@ -2,8 +2,9 @@
  * mass and segments against the H3 50th (78.2 kg, NHTSA) and de Leva (1996); the
  * positioning step (hands on the grips, feet on the pegs, pelvis on the seat: residuals
  * against the closed-form two-link solution); the seated rider under gravity; the neck and
- * the joint ranges. Figures measured are printed (they go into docs/rider.md). */
+ * the joint ranges. The figures docs/rider.md states are asserted with FIG (tests/figures.h). */
 #include "harness.h"
+#include "tests/figures.h"
 #include "tests/mb_test_util.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
@@ -192,6 +193,10 @@ static void test_positioning(void)
                flex * 180 / M_PI, r->lo * 180 / M_PI, r->hi * 180 / M_PI);
         CHECK_NEAR(r->lo, -flex, 1e-9);
         CHECK_NEAR(r->hi, 145 * M_PI / 180 - flex, 1e-9);
+        if (side == 0) {
+            FIG("rider.elbow_flex_deg", "%.1f", flex * 180 / M_PI);
+            FIG("rider.elbow_hi_deg", "%.1f", r->hi * 180 / M_PI);
+        }
     }
     /* velocities: the motorcycle's (at rest in the model file) */
     for (int b = 0; b < m->nbody; b++) CHECK(mb_norm(m->body[b].vel) == 0);
@@ -205,6 +210,15 @@ static void test_positioning(void)
     CHECK_STR_CONTAINS(err.msg, "cannot reach");
     CHECK_STR_CONTAINS(err.msg, "arm");
     printf("  refused: %s\n", err.msg);
+    /* the distance and the chain's reach the message gives (docs/rider.md quotes it) */
+    const char *at = strstr(err.msg, "target: ");
+    double dist = 0, rmin = 0, rmax = 0;
+    CHECK(at && sscanf(at, "target: %lf m away, the chain reaches %lf to %lf m", &dist, &rmin,
+                       &rmax) == 3);
+    CHECK(dist > rmax); /* refused because it is beyond the stretched arm */
+    FIG("rider.reach_dist_m", "%.4f", dist);
+    FIG("rider.reach_min_m", "%.4f", rmin);
+    FIG("rider.reach_max_m", "%.4f", rmax);
     /* a missing mount point is named */
     err = (mcs_error){0};
     snprintf(txt, sizeof txt,
@@ -253,8 +267,11 @@ static void test_seated_settles(void)
            "reference, pelvis moved %.1f mm relative to the frame, %d attachments broken\n",
            mb_energy_drift(m, s), emax - e0, s->e_ref, 1e3 * mb_norm(d), broken);
     CHECK(mb_energy_drift(m, s) < 1e-2);
+    CHECK(emax == e0); /* no energy growth at any step */
     CHECK(broken == 0);
     CHECK(mb_norm(d) < 0.05);
+    FIG("rider.seated_drift", "%.1e", mb_energy_drift(m, s));
+    FIG("rider.seated_pelvis_mm", "%.1f", 1e3 * mb_norm(d));
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }
@@ -266,7 +283,8 @@ static mb_model *rider_fixed(const char *body, const char *file)
     snprintf(txt, sizeof txt,
              "mcrash: 1\ninclude: [%s]\nsimulation: {end_time: 1 s, time_step: 10 us}\n"
              "environment: {gravity: 0 m/s^2}\n"
-             "joints:\n  - {name: fix, type: fixed, parent: ground, child: %s, anchor: [0, 0, 0]}\n",
+             "joints:\n"
+             "  - {name: fix, type: fixed, parent: ground, child: %s, anchor: [0, 0, 0]}\n",
              file, body);
     mcs_error err = {0};
     mb_model *m = mt_model_text("scenarios/rider_fixed.yaml", txt, &err);
@@ -339,11 +357,15 @@ static void test_range_stops_limb(void)
             CHECK(lo - qmin < sqrt(2 * ke / kstop));    /* and the stop held it    */
             printf("  kick %.0f J; the stop alone would hold it within %.3f rad\n", ke,
                    sqrt(2 * ke / kstop));
+            FIG("rider.knee_kick_j", "%.0f", ke);
+            FIG("rider.knee_past_stop_rad", "%.2f", lo - qmin);
+            FIG("rider.knee_stop_bound_rad", "%.2f", sqrt(2 * ke / kstop));
         }
         mb_state_destroy(&s);
         mb_model_destroy(&m);
     }
     CHECK(over[0] > 2 * over[1]);
+    FIG("rider.knee_past_nostop_rad", "%.2f", over[0]);
 }
 
 /* neck flexion (the H3 neck-pendulum's direction and order of magnitude): the upper torso
@@ -352,7 +374,8 @@ static void test_range_stops_limb(void)
  * an upper bound). The upper-neck cell must read flexion (My > 0) and tension-free shear of
  * the right sign; the head's largest forward rotation and the moment are printed against the
  * H3 flexion response, whose corridors were not retrieved (REFERENCES.md): of the order of
- * 70 deg and 100 N m, so only the order of magnitude is asserted */
+ * 70 deg and 100 N m. Asserted: the direction (flexion dominates) and the figures docs/rider.md
+ * states, at the precision it shows (FIG); the comparison with the H3 stays in words */
 static void test_neck_flexion(void)
 {
     static const char *const hn[] = {"rider_neck", "rider_head"};
@@ -387,9 +410,12 @@ static void test_neck_flexion(void)
     printf("  neck flexion at 6.89 m/s: head turns forward %.1f deg at %.1f ms; upper-neck My "
            "%.1f ... %.1f N m (flexion > 0)\n",
            rot_max * 180 / M_PI, t_rot * 1e3, my_min, my_max);
-    CHECK(rot_max > 20 * M_PI / 180 && rot_max < 120 * M_PI / 180);
-    CHECK(my_max > 20 && my_max < 500);
-    CHECK(my_max > -my_min); /* flexion dominates */
+    CHECK(rot_max > 0 && my_max > 0); /* the head turns forward, the cell reads flexion */
+    CHECK(my_max > -my_min);          /* flexion dominates */
+    FIG("rider.neck_flex_deg", "%.1f", rot_max * 180 / M_PI);
+    FIG("rider.neck_flex_t_ms", "%.0f", t_rot * 1e3);
+    FIG("rider.neck_my_max", "%.1f", my_max);
+    FIG("rider.neck_my_min", "%.1f", my_min);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }
@@ -406,6 +432,7 @@ static void test_helmet(void)
     printf("  rider with the helmet: %d bodies, %.3f kg\n", n, mass);
     CHECK(n == 19);
     CHECK_NEAR(mass, 78.2 + 1.4, 1e-9);
+    FIG("rider.helmet_mass_kg", "%.1f", mass);
     int h0 = mb_model_body(m, "rider_head"), s0 = mb_model_body(m, "rider_helmet_shell");
     double d0[3];
     mb_sub(m->body[s0].pos, m->body[h0].pos, d0);
@@ -428,6 +455,7 @@ static void test_helmet(void)
         printf("  after 50 ms seated: largest helmet coupling force %.1f N (the helmet's weight "
                "%.1f N shared by three)\n", f, 1.4 * 9.81);
         CHECK(f < 1.4 * 9.81 * 2);
+        FIG("rider.helmet_coupling_n", "%.1f", f);
     }
     mb_state_destroy(&s);
     mb_model_destroy(&m);

@@ -5,6 +5,7 @@
  * positioning step (hands on the grips, feet on the pegs, pelvis on the seat), the helmet keeps
  * its pose on the head, and 50 ms seated under gravity break nothing. */
 #include "harness.h"
+#include "tests/figures.h"
 #include "tests/mb_test_util.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
@@ -31,6 +32,7 @@ static void test_builds_and_mass(void)
     CHECK(n == 25);
     /* the files print masses to 7 digits: 23 roundings of at most 5e-7 relative each */
     CHECK_NEAR(mass, 78.2 + 1.4, 1e-5);
+    FIG("rider.neck7_helmet_mass_kg", "%.7f", mass);
     CHECK(m->njoint == 22);
     CHECK(m->nattach == 6); /* the helmet's two three-point couplings */
     for (int k = 1; k <= 7; k++) {
@@ -69,6 +71,8 @@ static void test_seated(void)
         CHECK(m->nattach == 11); /* the five seat/grip/peg attachments and the six couplings */
         CHECK(f < 1.4 * 9.81 * 2);
         CHECK(mb_energy_drift(m, s) < 1e-2);
+        FIG("rider.neck7_coupling_n", "%.1f", f);
+        FIG("rider.neck7_drift", "%.1e", mb_energy_drift(m, s));
     }
     mb_state_destroy(&s);
     mb_model_destroy(&m);

@@ -345,6 +345,7 @@ typedef struct {
     double vmoto_end;          /* motorcycle frame speed along its heading at the end [m/s] */
     double f_peak, t_f_peak;   /* largest total motorcycle-opponent normal force [N] and when */
     double t_moto_stop;        /* motorcycle frame speed along its heading first <= 0 [s] */
+    double t_frame;            /* first contact of the frame (fairing, engine) with the car [s] */
     double drift;              /* energy drift [-] */
     double phi_e;              /* the fork characteristic's elastic limit [rad] */
     double m_moto, m_opp;      /* group masses [kg] */
@@ -362,7 +363,7 @@ static int prefixed(const char *name, const char *p)
 static mcs_status run_car(const char *path, const char *opp, car_figs *f, FILE *series)
 {
     memset(f, 0, sizeof *f);
-    f->t_contact = f->t_plastic = f->t_stop = f->t_moto_stop = NAN;
+    f->t_contact = f->t_plastic = f->t_stop = f->t_moto_stop = f->t_frame = NAN;
     mcs_scenario *scn = NULL;
     mcs_error err = {0};
     mb_model *m = NULL;
@@ -397,8 +398,11 @@ static mcs_status run_car(const char *path, const char *opp, car_figs *f, FILE *
         for (int p = 0; p < m->npair; p++) {
             int a = m->pair[p].ba, b = m->pair[p].bb;
             if (a < 0 || b < 0) continue;
-            if (prefixed(m->body_name[a], "moto_") != prefixed(m->body_name[b], "moto_"))
+            if (prefixed(m->body_name[a], "moto_") != prefixed(m->body_name[b], "moto_")) {
                 fsum += s->pair[p].fn;
+                if ((a == fr || b == fr) && s->pair[p].fn > 0 && isnan(f->t_frame))
+                    f->t_frame = s->t;
+            }
         }
         if (fsum > 0 && isnan(f->t_contact)) {
             f->t_contact = s->t;
@@ -475,6 +479,7 @@ static void fig_car(const char *const key[12], const car_figs *f)
 }
 
 #define S413 "scenarios/iso13232_413-0_13.4_sedan.yaml"
+static car_figs s413; /* the 413 run's figures, for the comparison in test_mymosa */
 #define SMYMOSA "scenarios/mymosa_lateral_car_1100kg.yaml"
 #define SMOVING "scenarios/moving_car_413-6.7_13.4_sedan.yaml"
 
@@ -501,6 +506,9 @@ static void test_413(void)
     CHECK(f.phi_max > f.phi_e && f.t_plastic < f.t_stop);
     CHECK(f.drift < 1e-2);
     fig_car(s413_keys, &f);
+    FIG("models.s413_t_moto_stop_ms", "%.1f", f.t_moto_stop * 1e3);
+    FIG("models.s413_t_frame_ms", "%.1f", f.t_frame * 1e3);
+    s413 = f;
 }
 
 /* MYMOSA's lateral impact (1100 kg car on a translational joint along the heading): momentum
@@ -520,6 +528,12 @@ static void test_mymosa(void)
     CHECK(f.drift < 1e-2);
     fig_car(smym_keys, &f);
     FIG("models.smym_t_moto_stop_ms", "%.1f", f.t_moto_stop * 1e3);
+    FIG("models.smym_t_frame_ms", "%.1f", f.t_frame * 1e3);
+    /* against MYMOSA Fig. 5.2 (fork deforming from ~20 ms, maximum ~30 ms) and the sedan */
+    FIG("models.smym_yield_vs_mymosa_pct", "%.0f", 100 * (f.t_plastic / 0.020 - 1));
+    FIG("models.smym_stop_vs_mymosa_pct", "%.0f", 100 * (f.t_stop / 0.030 - 1));
+    FIG("models.s413_yield_earlier", "%.1f", f.t_plastic / s413.t_plastic);
+    FIG("models.s413_stop_earlier", "%.1f", f.t_stop / s413.t_stop);
 }
 
 /* The moving sedan (6.7 m/s along its heading, wheels rolling) keeps its speed until the first

@@ -1,96 +1,145 @@
-/* test_calib.c: the stage-1 event timing against MYMOSA's lateral impact (seed 002, Fig. 5.2:
- * the fork starts to deform at ~20 ms, reaches its maximum at ~30 ms when the front wheel hits
- * the motorcycle's body, the rider's spring elements detach at ~60 ms). The shipped rider case
- * scenarios/mymosa_lateral_car_1100kg_rider.yaml is calibrated to it (scripts/calibrate_front.py,
- * docs/validation_stage1.md): each event within +-25 % of MYMOSA's time. Runs the first 80 ms. */
+/* test_calib.c: CALIBRATION CHECKS of the stage-1 MYMOSA case (docs/validation_stage1.md,
+ * "Calibration targets"). Nothing is fitted to a run (issue 11): each parameter below is set
+ * from a published figure or a hand calculation, and this test checks the shipped scenarios
+ * against those sources. The held-out results (event times against MYMOSA's Fig. 5.2) are
+ * validation: tests/test_validation_stage1.c.
+ *
+ * 1. MYMOSA's car side (car_door and car_sill of both mymosa_lateral_car_1100kg*.yaml): the
+ *    FMVSS 214 quasi-static door crush minimums (49 CFR 571.214, as quoted in docs/models.md:
+ *    average force >= 2250 lbf = 10.01 kN over the first 6 in = 152.4 mm, >= 3500 lbf =
+ *    15.57 kN over 12 in = 304.8 mm, peak >= min(2 x curb weight, 7000 lbf = 31.14 kN) within
+ *    18 in = 457.2 mm; 2 x 1100 x 9.81 = 21.58 kN). The averages are the law's own trapezoids.
+ * 2. MYMOSA's Eq. 4.1 [seed 002 Sec. 4] by hand: 1/2 m1 v^2 - 1/2 (m1 + m2) v_c^2 with
+ *    m1 = 208 kg, m2 = 1100 kg, v = 13.4 m/s, v_c = m1 v / (m1 + m2) = 2.1309 m/s:
+ *    18674.2 - 2969.7 = 15704.6 J; less the fork's 671 J (our run) and the tyre's 494 J (its
+ *    law to 64.8 mm, the deflection at the run's 23.4 kN): E_d = 14.54 kJ. The crush at which
+ *    the car law absorbs E_d in one zone, and in two equal zones, is found here by integrating
+ *    the law's points (trapezoids).
+ * 3. The rider's attachment failure forces of the three *_rider.yaml: grip 500 N (MYMOSA's
+ *    definition, the largest grip on a cylinder: men 20-39, Mathiowetz et al. 1985, 115 lb =
+ *    512 N), peg 500 N (assumed equal), seat 320 N (mu 0.5 x the seated weight, assumed). */
 #include "harness.h"
 #include "stage1_mb/mb_model.h"
 
 #include <math.h>
 #include <string.h>
 
-#define SMYMOSA_RIDER "scenarios/mymosa_lateral_car_1100kg_rider.yaml"
+#define SMYM "scenarios/mymosa_lateral_car_1100kg.yaml"
+#define SMYM_RIDER "scenarios/mymosa_lateral_car_1100kg_rider.yaml"
 
-typedef struct {
-    double t_yield;    /* fork hinge past its elastic limit [s] */
-    double t_stop;     /* fork hinge at its stop 0.2 rad (the wheel against the engine) [s] */
-    double phi_e;      /* the fork characteristic's elastic limit [rad] */
-    double t_break[8]; /* attachment failure times [s] (NAN: intact) */
-    int nattach;
-} events;
-
-static int find_restraint(const mb_model *m, const char *name)
+static mb_model *build(const char *path)
 {
-    for (int i = 0; i < m->nrestraint1; i++)
-        if (strcmp(m->restraint1_name[i], name) == 0) return i;
-    return -1;
-}
-
-/* run the scenario to t_end (or its own end) and collect the event times */
-static mcs_status run_events(const char *path, double t_end, events *e)
-{
-    memset(e, 0, sizeof *e);
-    e->t_yield = e->t_stop = NAN;
     mcs_scenario *scn = NULL;
     mcs_error err = {0};
     mb_model *m = NULL;
-    mb_state *s = NULL;
-    mcs_status st = mcs_scenario_load(path, &scn, &err);
-    if (!st) st = mb_model_build(scn, NULL, &m, &err);
-    mcs_scenario_destroy(&scn);
-    if (!st) st = mb_state_create(m, &s, &err);
-    int fk = m ? find_restraint(m, "moto_fork_deformation") : -1;
-    if (!st && fk < 0) st = MCS_ERR(&err, MCS_ERR_KEY, "no moto_fork_deformation restraint");
-    if (!st) e->phi_e = m->restraint1[fk].spring.pos.elastic_limit;
-    while (!st && s->step < m->nsteps && s->t < t_end && !(st = mb_step(m, s, &err))) {
-        double phi = fabs(s->r1[fk].x);
-        if (phi > e->phi_e && isnan(e->t_yield)) e->t_yield = s->t;
-        if (phi >= 0.2 && isnan(e->t_stop)) e->t_stop = s->t;
-    }
-    if (!st) {
-        e->nattach = m->nattach < 8 ? m->nattach : 8;
-        for (int i = 0; i < e->nattach; i++)
-            e->t_break[i] = s->att[i].t_break;
-        printf("  %s: fork past its elastic limit %.4f rad at %.1f ms (MYMOSA ~20), at the stop "
-               "0.2 rad at %.1f ms (MYMOSA ~30); attachments fail at",
-               path, e->phi_e, e->t_yield * 1e3, e->t_stop * 1e3);
-        for (int i = 0; i < e->nattach; i++)
-            printf(" %s %.1f ms", m->attach_name[i], e->t_break[i] * 1e3);
-        printf(" (MYMOSA ~60)\n");
-    } else {
+    if (mcs_scenario_load(path, &scn, &err) || mb_model_build(scn, NULL, &m, &err))
         fprintf(stderr, "%s: %s\n", path, err.msg);
+    mcs_scenario_destroy(&scn);
+    return m;
+}
+
+static const mb_char *find_char(const mb_model *m, const char *name)
+{
+    for (int i = 0; i < m->nchar; i++)
+        if (strcmp(m->chr[i].name, name) == 0) return &m->chr[i];
+    return NULL;
+}
+
+/* energy under the law from 0 to x [J] (trapezoids of 0.1 mm: exact on a piecewise-linear law
+ * whose points lie on the 0.1 mm grid) */
+static double energy_to(const mcs_curve *c, double x)
+{
+    double e = 0, dx = 1e-4;
+    for (double a = 0; a < x - 1e-12; a += dx) {
+        double b = fmin(a + dx, x);
+        e += 0.5 * (mcs_curve_eval(c, a) + mcs_curve_eval(c, b)) * (b - a);
     }
-    mb_state_destroy(&s);
-    mb_model_destroy(&m);
-    return st;
+    return e;
 }
 
-/* within +-25 % of MYMOSA's reading of its Fig. 5.2 */
-static int in_band(double t, double t_mymosa)
+/* the crush at which the law has absorbed e [m] (bisection) */
+static double crush_for(const mcs_curve *c, double e)
 {
-    return isfinite(t) && fabs(t / t_mymosa - 1) <= 0.25;
+    double lo = 0, hi = 0.55;
+    for (int k = 0; k < 40; k++) {
+        double mid = 0.5 * (lo + hi);
+        if (energy_to(c, mid) < e)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
 }
 
-/* MYMOSA's lateral impact with the rider: fork yield ~20 ms, wheel against the engine ~30 ms,
- * the five attachments (pelvis-seat, hands-grips, feet-pegs) failing at ~60 ms; the order of
- * events is MYMOSA's (the fork yields before it reaches the stop, the rider detaches after). */
-static void test_mymosa_rider_timing(void)
+static void test_car_side_law(void)
 {
-    events e;
-    CHECK(run_events(SMYMOSA_RIDER, 0.080, &e) == MCS_OK);
-    CHECK(e.phi_e > 0 && e.phi_e < 0.2);
-    CHECK(in_band(e.t_yield, 0.020));
-    CHECK(in_band(e.t_stop, 0.030));
-    CHECK(e.t_yield < e.t_stop);
-    CHECK(e.nattach == 5);
-    for (int i = 0; i < e.nattach; i++) {
-        CHECK(in_band(e.t_break[i], 0.060));
-        CHECK(e.t_break[i] > e.t_stop);
+    const char *paths[2] = {SMYM, SMYM_RIDER};
+    for (int k = 0; k < 2; k++) {
+        mb_model *m = build(paths[k]);
+        CHECK(m != NULL);
+        if (!m) continue;
+        const mb_char *door = find_char(m, "car_door"), *sill = find_char(m, "car_sill");
+        CHECK(door && sill);
+        if (!door || !sill) {
+            mb_model_destroy(&m);
+            continue;
+        }
+        const mcs_curve *c = door->loading;
+        double a152 = energy_to(c, 0.1524) / 0.1524, a305 = energy_to(c, 0.3048) / 0.3048;
+        double peak = 0;
+        for (double x = 0; x <= 0.4572 + 1e-12; x += 1e-4)
+            peak = fmax(peak, mcs_curve_eval(c, x));
+        double ed = 0.5 * 208 * 13.4 * 13.4 - 0.5 * 1308 * pow(208 * 13.4 / 1308, 2) - 671 - 494;
+        double x1 = crush_for(c, ed), x2 = crush_for(c, ed / 2);
+        printf("  %s: car side law averages %.2f kN (152 mm), %.2f kN (305 mm), peak %.1f kN "
+               "(457 mm); E_d %.0f J absorbed at %.0f mm in one zone, %.0f mm in two\n",
+               paths[k], a152 / 1e3, a305 / 1e3, peak / 1e3, ed, x1 * 1e3, x2 * 1e3);
+        /* FMVSS 214 minimums */
+        CHECK(a152 >= 10.01e3);
+        CHECK(a305 >= 15.57e3);
+        CHECK(peak >= fmin(2 * 1100 * 9.81, 31.14e3));
+        /* one law for the sill and the door (MYMOSA's one spring) */
+        for (double x = 0; x <= 0.55; x += 0.01)
+            CHECK_NEAR(mcs_curve_eval(sill->loading, x), mcs_curve_eval(c, x), 1e-6);
+        CHECK_NEAR(ed, 14539.6, 0.1); /* the hand value in the doc */
+        FIG("validation_stage1.law_avg152_kn", "%.1f", a152 / 1e3);
+        FIG("validation_stage1.law_avg305_kn", "%.1f", a305 / 1e3);
+        FIG("validation_stage1.law_peak457_kn", "%.0f", peak / 1e3);
+        FIG("validation_stage1.ed_crush_one_mm", "%.0f", x1 * 1e3);
+        FIG("validation_stage1.ed_crush_two_mm", "%.0f", x2 * 1e3);
+        mb_model_destroy(&m);
+    }
+}
+
+static void test_attachment_forces(void)
+{
+    const char *paths[3] = {SMYM_RIDER, "scenarios/iso13232_413-0_13.4_sedan_rider.yaml",
+                            "scenarios/moving_car_413-6.7_13.4_sedan_rider.yaml"};
+    for (int k = 0; k < 3; k++) {
+        mb_model *m = build(paths[k]);
+        CHECK(m != NULL);
+        if (!m) continue;
+        int n = 0;
+        for (int i = 0; i < m->nattach; i++) {
+            const char *nm = m->attach_name[i];
+            double ff = m->attach[i].fail_force;
+            double want = strstr(nm, "grip") || strstr(nm, "peg") ? 500
+                          : strstr(nm, "seat")                    ? 320
+                                                                  : -1;
+            if (want < 0) continue;
+            CHECK_NEAR(ff, want, 1e-9);
+            n++;
+        }
+        CHECK(n == 5);
+        /* the grip within 3 % of its source, 512 N (115 lb x 4.448 N/lb) */
+        CHECK(fabs(500 / (115 * 4.448) - 1) < 0.03);
+        mb_model_destroy(&m);
     }
 }
 
 int main(void)
 {
-    RUN(test_mymosa_rider_timing);
+    RUN(test_car_side_law);
+    RUN(test_attachment_forces);
     TEST_END();
 }

@@ -3,6 +3,7 @@
  * coupled gas bag. Each case gives its formula and source. */
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
+#include "tests/figures.h"
 
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_elem.h"
@@ -375,7 +376,8 @@ static void test_laplace_sphere(void)
     const double dr_fe = mean_radius(m, s) - r;
     printf("  laplace: p %.1f Pa, dr %.4e m (closed form %.4e, %+.2f %%), KE %.2e J\n", p,
            dr_fe, dr, 100 * (dr_fe - dr) / dr, s->energy[FE_E_kinetic]);
-    CHECK_REL(dr_fe, dr, 0.015);
+    FIG("fe.sphere_dr_err_pct", "%+.2f", 100 * (dr_fe / dr - 1));
+    CHECK_REL(dr_fe, dr, 0.012); /* -0.41 % stated */
     /* mean in-plane stress (S ~ Cauchy at 3e-3 strain): p r / (2 t) */
     double sm = 0;
     for (int e = 0; e < m->nshell; e++)
@@ -384,7 +386,8 @@ static void test_laplace_sphere(void)
     const double sig = p * (r + dr) / (2 * T_F);
     printf("  laplace: mean stress %.4e Pa (p r / 2t = %.4e, %+.2f %%)\n", sm, sig,
            100 * (sm - sig) / sig);
-    CHECK_REL(sm, sig, 0.02);
+    FIG("fe.sphere_stress_err_pct", "%+.2f", 100 * (sm / sig - 1));
+    CHECK_REL(sm, sig, 0.025); /* -0.87 % stated */
     CHECK(s->energy[FE_E_kinetic] < 1e-6 * s->energy[FE_E_internal]);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
@@ -443,6 +446,7 @@ static void test_strip_tension_compression(void)
         if (dir < 0) {
             printf("  strip: compressed by %.1f mm: |internal energy| <= %.2e J, edge force %.2e "
                    "N\n", 1e3 * v * s->time, emax, F);
+            FIG("fe.strip_compressed_energy", "%.0e", emax);
             CHECK(emax < 1e-15); /* rounding of undeformed elements only */
             CHECK(fabs(F) < 1e-9);
         } else {
@@ -450,7 +454,8 @@ static void test_strip_tension_compression(void)
             double Fx = lam * E_F * e11 * W * T_F;
             printf("  strip: eps %.4f, edge force %.3f N (closed form %.3f N, %+.3f %%)\n",
                    lam - 1, F, Fx, 100 * (F - Fx) / Fx);
-            CHECK_REL(F, Fx, 0.01);
+            FIG("fe.strip_force_err_pct", "%+.3f", 100 * (F / Fx - 1));
+            CHECK_REL(F, Fx, 3.5e-4); /* +0.011 % stated */
             CHECK_REL(F, E_F * (lam - 1) * W * T_F, 0.03); /* small strain: E eps W t */
         }
         fe_state_destroy(&s);
@@ -505,17 +510,18 @@ static void test_adiabatic_compression(void)
            "<= %.2e J\n",
            gs->volume / V0, gs->pressure, worst, emax);
     CHECK(gs->volume < 0.35 * V0);
-    CHECK(worst < 1e-9);
+    FIG("fe.bag_closed_pvg", "%.0e", worst);
+    CHECK(worst < 2e-14);
     CHECK(emax < 1e-12); /* all slack: only the round-off strain (1e-16) of the first step */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }
 
 /* Energy balance of an inflating closed bag (no vents, no leakage): the work the gas does on
- * the fabric, int (p - p_amb) dV = W_gas - p_amb (V - V0) with W_gas = int p dV from the gas
- * side (the isentropic part of each update, fe_gasbag.c), equals what the structure holds:
+ * the fabric, int (p - p_amb) dV, computed here by the trapezoid rule from the bag's pressure
+ * and volume histories (not the gas's own work counter), equals what the structure holds:
  * kinetic + strain energy of the fabric + fabric damping (first law for the structure; the
- * kernel measures its own side as the work of the nodal pressure forces). Within 1 %. */
+ * kernel measures its own side as the work of the nodal pressure forces). */
 static void test_inflation_energy(void)
 {
     fe_airbag_desc bag = fe_airbag_desc_default();
@@ -536,19 +542,25 @@ static void test_inflation_energy(void)
     fe_state *s;
     mcs_error err = {0};
     CHECK(fe_state_create(m, &s, &err) == MCS_OK);
-    CHECK(fe_run(m, s, 0.002) == MCS_OK);
     const fe_gasbag_state *gs = &s->restraint->bag[0];
     const fe_airbag *ab = &m->restraints->bag[0];
-    double wgas = gs->work - ab->gas->ambient_pressure * (gs->volume - ab->volume0);
+    const double pa = ab->gas->ambient_pressure;
+    double wgas = 0, p_prev = gs->pressure, v_prev = gs->volume;
+    while (s->time < 0.002 && fe_step(m, s) == MCS_OK) {
+        wgas += 0.5 * (p_prev + gs->pressure - 2 * pa) * (gs->volume - v_prev);
+        p_prev = gs->pressure, v_prev = gs->volume;
+    }
+    CHECK(s->err.status == MCS_OK);
     const double *en = s->energy;
     double held = en[FE_E_kinetic] + en[FE_E_internal] + en[FE_E_dissipated];
     printf("  inflation: gauge %.0f Pa, gas work on fabric %.4f J, KE %.4f + IE %.4f + damping "
-           "%.4f = %.4f J (%+.3f %%); kernel external work %.4f J\n",
-           gs->pressure - ab->gas->ambient_pressure, wgas, en[FE_E_kinetic], en[FE_E_internal],
-           en[FE_E_dissipated], held, 100 * (held - wgas) / wgas, en[FE_E_external_work]);
+           "%.4f = %.4f J (%+.1e); kernel external work %.4f J\n",
+           gs->pressure - pa, wgas, en[FE_E_kinetic], en[FE_E_internal],
+           en[FE_E_dissipated], held, (held - wgas) / wgas, en[FE_E_external_work]);
     CHECK(en[FE_E_dissipated] > 0.01 * held && en[FE_E_kinetic] > 0.01 * held); /* dynamic */
-    CHECK_REL(held, wgas, 0.01);
-    CHECK_REL(en[FE_E_external_work], wgas, 0.01);
+    FIG("fe.bag_inflation_balance", "%.0e", fabs(held / wgas - 1));
+    CHECK_REL(held, wgas, 1e-5);
+    CHECK_REL(en[FE_E_external_work], wgas, 1e-5);
     CHECK(fabs(fe_gasbag_energy_residual(gs)) < 1e-9 * gs->energy);
     fe_state_destroy(&s);
     fe_model_destroy(&m);

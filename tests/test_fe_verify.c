@@ -3,6 +3,7 @@
  * J2 plasticity (hex and shell), truss (tension-only), moving penalty wall, failure detection. */
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
+#include "tests/figures.h"
 
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_elem.h"
@@ -65,11 +66,19 @@ static void test_bar_impact(void)
     printf("bar impact: front %.4g s (L/2c %.4g), force %.5g N (rho c A v %.5g), contact %.4g s "
            "(2L/c %.4g), rebound %.4g m/s, energy error %.2e\n",
            t_front, L / (2 * c), fsum / wsum, F, t_last, tc, vmean, emax / s->energy0);
-    CHECK_REL(t_front, L / (2 * c), 0.02);
-    CHECK_REL(fsum / wsum, F, 0.02);
-    CHECK_REL(t_last, tc, 0.03);
-    CHECK_REL(vmean, v0, 0.03);
-    CHECK(emax < 0.01 * s->energy0);
+    /* the docs state these errors (docs/fe.md, Verification); tolerances ~3x of them */
+    const double e_front = 100 * (t_front / (L / (2 * c)) - 1);
+    const double e_force = 100 * (fsum / wsum / F - 1);
+    const double e_tc = 100 * (t_last / tc - 1), e_reb = 100 * (vmean / v0 - 1);
+    FIG("fe.bar_front_err_pct", "%+.1f", e_front);
+    FIG("fe.bar_force_err_pct", "%+.2f", e_force);
+    FIG("fe.bar_contact_err_pct", "%+.2f", e_tc);
+    FIG("fe.bar_rebound_err_pct", "%+.0f", e_reb);
+    CHECK_NEAR(e_front, 0, 3.0);   /* +0.9 %: half-step and dispersion */
+    CHECK_NEAR(e_force, 0, 0.1);   /* +0.03 % */
+    CHECK_NEAR(e_tc, 0, 0.1);      /* -0.03 % */
+    CHECK_NEAR(e_reb, 0, 6.0);     /* -2 %: bulk viscosity */
+    CHECK(emax < 1e-3 * s->energy0); /* 2.5e-4 */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
     fe_builder_destroy(&b);
@@ -134,7 +143,8 @@ static void test_energy_balance(void)
            s->nstep, e0, s->energy[FE_E_internal], s->energy[FE_E_hourglass], emax / e0);
     CHECK(s->err.status == MCS_OK);
     CHECK(s->energy[FE_E_internal] > 0.05 * e0); /* energy really moved */
-    CHECK(emax < 0.01 * e0);
+    FIG("fe.energy_balance_err", "%.0e", emax / e0);
+    CHECK(emax < 2e-6 * e0); /* 7e-7 stated */
     /* per-part energies add up to the global ones */
     double ki = 0;
     for (int ip = 0; ip < m->npart; ip++) ki += fe_part_energy(m, s, ip, FE_E_kinetic);
@@ -184,8 +194,9 @@ static void test_cantilever(void)
     printf("cantilever: tip deflection %.5g m (P L^3 / 3EI = %.5g m), %ld steps, energy error "
            "%.2e of the external work\n",
            -w, ref, s->nstep, emax / fabs(s->energy[FE_E_external_work]));
-    CHECK_REL(-w, ref, 0.02);
-    CHECK(emax < 0.01 * fabs(s->energy[FE_E_external_work]));
+    FIG("fe.cantilever_err_pct", "%+.2f", 100 * (-w / ref - 1));
+    CHECK_REL(-w, ref, 0.005); /* -0.15 % stated */
+    CHECK(emax < 1e-6 * fabs(s->energy[FE_E_external_work]));
     fe_state_destroy(&s);
     fe_model_destroy(&m);
     fe_builder_destroy(&b);
@@ -197,6 +208,22 @@ static void set_hardening(fe_material_desc *mt)
     mt->nhardening = 3;
     const double h[3][2] = {{0, 250e6}, {0.05, 300e6}, {0.2, 400e6}};
     memcpy(mt->hardening, h, sizeof h);
+}
+
+/* the hardening curve of set_hardening written out: linear between the points, the last
+ * slope beyond the last point (docs/fe.md, materials) */
+static double hardening(double epsp)
+{
+    if (epsp < 0.05) return 250e6 + epsp * (300e6 - 250e6) / 0.05;
+    return 300e6 + (epsp - 0.05) * (400e6 - 300e6) / 0.15;
+}
+
+/* Cowper-Symonds factor on the flow stress, R = 1 + (rate / C)^(1/p) (Cowper & Symonds 1957,
+ * Brown Univ. Tech. Rep. 28; Jones, Structural Impact, 1989, eq. 8.3; LS-DYNA MAT_024 C, P);
+ * C = 0: no rate effect */
+static double cowper_symonds(double rate, double C, double p)
+{
+    return C > 0 ? 1 + pow(rate / C, 1 / p) : 1;
 }
 
 /* Uniaxial tension of a J2 bar (Hill, The Mathematical Theory of Plasticity, 1950; LS-DYNA
@@ -261,34 +288,42 @@ static void uniaxial(fe_section_type type, double csc, double *sig_out, double *
             CHECK_REL(s->shell_sig[3 * g], sig, 1e-9);
         CHECK_NEAR(s->shell_sig[1], 0, 2e-3 * sig);
     }
-    double h, epsp = log(l / l0) - sig / E_ST;
-    fe_part pp = m->part[0];
+    double epsp = log(l / l0) - sig / E_ST;
     *sig_out = sig;
-    *ref_out = fe_rate_factor(&pp, v / l) * fe_flow_stress(&pp, epsp, &h);
+    *ref_out = cowper_symonds(v / l, csc, 5) * hardening(epsp);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
     fe_builder_destroy(&b);
 }
 
+/* the docs state the largest relative error without and with the rate factor; tolerances ~3x */
 static void test_plastic_uniaxial(void)
 {
-    double sig, ref;
+    double sig, ref, worst = 0, worst_cs = 0;
     uniaxial(FE_SECTION_SOLID, 0, &sig, &ref);
-    printf("J2 uniaxial hex: sigma %.5g MPa, hardening curve %.5g MPa\n", sig / 1e6, ref / 1e6);
-    CHECK_REL(sig, ref, 0.01);
+    printf("J2 uniaxial hex: sigma %.6g MPa, hardening curve %.6g MPa\n", sig / 1e6, ref / 1e6);
+    CHECK_REL(sig, ref, 3e-4);
     CHECK(sig > 250e6);
+    worst = fmax(worst, fabs(sig / ref - 1));
     uniaxial(FE_SECTION_SHELL, 0, &sig, &ref);
-    printf("J2 uniaxial shell: sigma %.5g MPa, hardening curve %.5g MPa\n", sig / 1e6, ref / 1e6);
-    CHECK_REL(sig, ref, 0.01);
+    printf("J2 uniaxial shell: sigma %.6g MPa, hardening curve %.6g MPa\n", sig / 1e6, ref / 1e6);
+    CHECK_REL(sig, ref, 3e-4);
+    worst = fmax(worst, fabs(sig / ref - 1));
     uniaxial(FE_SECTION_SOLID, 40.4, &sig, &ref);
-    printf("J2 uniaxial hex, Cowper-Symonds C 40.4 p 5: sigma %.5g MPa, R sigma_y %.5g MPa\n",
+    printf("J2 uniaxial hex, Cowper-Symonds C 40.4 p 5: sigma %.6g MPa, R sigma_y %.6g MPa\n",
            sig / 1e6, ref / 1e6);
-    CHECK_REL(sig, ref, 0.01);
+    CHECK_REL(sig, ref, 3e-4);
     CHECK(sig > 1.5 * 250e6);
+    worst_cs = fmax(worst_cs, fabs(sig / ref - 1));
     uniaxial(FE_SECTION_SHELL, 40.4, &sig, &ref);
-    printf("J2 uniaxial shell, Cowper-Symonds: sigma %.5g MPa, R sigma_y %.5g MPa\n", sig / 1e6,
+    printf("J2 uniaxial shell, Cowper-Symonds: sigma %.6g MPa, R sigma_y %.6g MPa\n", sig / 1e6,
            ref / 1e6);
-    CHECK_REL(sig, ref, 0.01);
+    CHECK_REL(sig, ref, 3e-4);
+    worst_cs = fmax(worst_cs, fabs(sig / ref - 1));
+    FIG("fe.j2_uniaxial_err", "%.0e", worst);
+    CHECK(worst < 2e-5);         /* 4e-6 */
+    FIG("fe.j2_cowper_symonds_err", "%.0e", worst_cs);
+    CHECK(worst_cs < 2.5e-4);    /* 8e-5 */
 }
 
 /* Truss: axial force N = E A ln(l / l0) (hypoelastic rate form integrates to the logarithmic
@@ -370,7 +405,8 @@ static void test_moving_wall(void)
     printf("moving wall: force %.4g N at %.3g mm, external work %.4g J, energy error %.2e\n",
            s->wall_normal[0], 1e3 * s->wall_disp[0], s->energy[FE_E_external_work],
            emax / s->energy[FE_E_external_work]);
-    CHECK(emax < 0.01 * s->energy[FE_E_external_work]);
+    FIG("fe.moving_wall_balance", "%.0e", emax / s->energy[FE_E_external_work]);
+    CHECK(emax < 3e-5 * s->energy[FE_E_external_work]); /* 1e-5 stated */
     CHECK(s->nhist >= 49 && s->nhist <= 52);
     CHECK_NEAR(s->hist_time[10] - s->hist_time[9], 1e-5, 0.3 * s->dt);
     CHECK(s->hist_wall_force[FE_WALL_MAX * (s->nhist - 1)] > 0);
@@ -417,6 +453,7 @@ static void test_instability_detected(void)
  * unstrained in both. */
 static void test_hourglass_mode(void)
 {
+    double bal = 0;
     for (int form = 0; form < 2; form++) {
         mcs_error err = {0};
         fe_builder *b;
@@ -453,11 +490,13 @@ static void test_hourglass_mode(void)
         CHECK(smax < 1e-3 * 2700 * c * v0);
         printf("hourglass form %d: energy error %.2e of the initial kinetic energy\n", form,
                emax / ek0);
-        CHECK(emax < 1e-3 * ek0);
+        CHECK(emax < 3e-15 * ek0);
+        bal = fmax(bal, emax / ek0);
         if (form == 0) {
             printf("hourglass (stiffness): kinetic energy minimum at %.5g s, pi/(2 omega) %.5g s\n",
                    tmin, M_PI / (2 * omega));
-            CHECK_REL(tmin, M_PI / (2 * omega), 0.01);
+            FIG("fe.hourglass_period_err_pct", "%+.2f", 100 * (tmin / (M_PI / (2 * omega)) - 1));
+            CHECK_REL(tmin, M_PI / (2 * omega), 1.5e-3); /* -0.05 % stated */
             CHECK(kmin < 1e-3 * ek0);
         } else {
             printf("hourglass (viscous): kinetic energy %.3g of the initial, hourglass energy %.3g J "
@@ -470,6 +509,7 @@ static void test_hourglass_mode(void)
         fe_model_destroy(&m);
         fe_builder_destroy(&b);
     }
+    FIG("fe.hourglass_balance", "%.0e", bal);
 }
 
 /* Determinism and independent states (STYLE.md §1): two states of one model, stepped in
@@ -538,6 +578,8 @@ static void test_wave_front_convergence(void)
         fe_model_destroy(&m);
         fe_builder_destroy(&b);
     }
+    FIG("fe.wave_front_100_err_pct", "%+.2f", 100 * errs[0]);
+    FIG("fe.wave_front_400_err_pct", "%+.2f", 100 * errs[1]);
     CHECK(fabs(errs[1]) < 0.5 * fabs(errs[0]));
     CHECK(fabs(errs[1]) < 0.005);
 }
@@ -593,8 +635,11 @@ static void test_rigid_rotation(void)
     printf("rigid rotation (quarter turn): max stress hex %.3g Pa, shell %.3g Pa; kinetic energy "
            "change %.2e; plate corner y %.4f z %.4f m\n",
            smax_h, smax_s, kdev / k0, s->node_x[3 * corner + 1], s->node_x[3 * corner + 2]);
-    CHECK(smax_h < 1e-6 * 210e9 && smax_s < 1e-6 * 210e9);
-    CHECK(kdev < 1e-3 * k0);
+    FIG("fe.rotation_stress_hex", "%.0e", smax_h);
+    FIG("fe.rotation_stress_shell", "%.0e", smax_s);
+    FIG("fe.rotation_kinetic", "%.0e", kdev / k0);
+    CHECK(smax_h < 1.5e5 && smax_s < 1.5e5); /* 2e4, 5e4 Pa stated */
+    CHECK(kdev < 1e-3 * k0);                 /* 3e-4 stated */
     CHECK_NEAR(fabs(s->node_x[3 * corner + 2]), 0.025, 1e-3);
     fe_state_destroy(&s);
     fe_model_destroy(&m);

@@ -273,6 +273,9 @@ static void test_attachment_breaks(void)
     CHECK_NEAR(s->kin[0].vel[0], cos(asin(0.5)), 2e-3);
     CHECK_NEAR(s->e.dissipated, 0.125, 0.125 * 0.01);
     CHECK_NEAR(s->e.total, s->e_total0, 1e-3 * 0.5);
+    FIG("stage1_engine.break_t_err_steps", "%.1f", fabs(s->att[0].t_break - tb) / m->h);
+    FIG("stage1_engine.break_v_err", "%.0e", fabs(s->kin[0].vel[0] - cos(asin(0.5))));
+    FIG("stage1_engine.break_diss_err_pct", "%.1f", 100 * fabs(s->e.dissipated - 0.125) / 0.125);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }
@@ -298,6 +301,9 @@ static void test_series_characteristics(void)
     printf("series springs: depth %.6g m (exact %.6g), contact %.6g s (exact %.6g)\n", dmax,
            v * sqrt(mu / k), t_out - t_in, M_PI * sqrt(mu / k));
     CHECK_NEAR(dmax, v * sqrt(mu / k), 2e-3 * v * sqrt(mu / k));
+    FIG("stage1_engine.series_depth_err", "%.0e", fabs(dmax / (v * sqrt(mu / k)) - 1));
+    FIG("stage1_engine.series_time_err_steps", "%.1f",
+        fabs(t_out - t_in - M_PI * sqrt(mu / k)) / m->h);
     CHECK_NEAR(t_out - t_in, M_PI * sqrt(mu / k), 2 * m->h);
     CHECK_NEAR(s->kin[0].vel[0], -1, 5e-3); /* elastic: the velocities swap */
     CHECK_NEAR(s->kin[1].vel[0], 1, 5e-3);
@@ -377,6 +383,9 @@ static void test_revolute_range_stop(void)
     CHECK_NEAR(t_out - t_in, M_PI * over, 2 * m->h);
     CHECK_NEAR(s->kin[0].angvel[1], -1, 2e-3);
     CHECK(mb_energy_drift(m, s) < 2e-3);
+    FIG("stage1_engine.stop_over_err", "%.0e", fabs(qmax - 0.1 - over) / over);
+    FIG("stage1_engine.stop_time_err_steps", "%.1f", fabs(t_out - t_in - M_PI * over) / m->h);
+    FIG("stage1_engine.stop_w_err", "%.0e", fabs(s->kin[0].angvel[1] + 1));
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }

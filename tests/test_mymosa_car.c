@@ -7,8 +7,9 @@
  *    deflection m g / (4 k) = 1100 * 9.81 / 120000 = 89.9 mm: the CG stays within 1 mm over
  *    0.3 s and each corner carries m g / 4 = 2698 N within 1 % (the upper body's weight passes
  *    through the fixed joint).
- * 2. MYMOSA's rider case, first 100 ms: MYMOSA's order of events [seed 002, Fig. 5.2] -- the
- *    rider's five spring elements detach before the head's first strike, and that strike is on
+ * 2. MYMOSA's rider case (its 73.25 kg rider with the helmet), first 100 ms: MYMOSA's order of
+ *    events [seed 002, Fig. 5.2] -- the rider's five spring elements detach before the helmet's
+ *    first strike, and that strike is on
  *    the car's upper body (a facet of car_upper), not on the crush zones; the energy balance
  *    holds (drift <= 5e-4). The strike's surface, time and force are printed for the document. */
 #include "harness.h"
@@ -88,7 +89,8 @@ static void test_head_strike_order(void)
         mb_model_destroy(&m);
         return;
     }
-    int head = mb_model_body(m, "rider_head"), up = mb_model_body(m, "car_upper");
+    /* MYMOSA's rider wears the helmet: its shell is what meets the car */
+    int head = mb_model_body(m, "rider_helmet_shell"), up = mb_model_body(m, "car_upper");
     CHECK(head >= 0 && up >= 0);
     int first = -1; /* the first pair of the head with anything but the motorcycle or road */
     double t_first = NAN, fpeak = 0, t_peak = NAN;
@@ -102,12 +104,15 @@ static void test_head_strike_order(void)
         }
     CHECK(st == MCS_OK);
     double t_detach = 0;
-    int broken = 0;
-    for (int i = 0; i < m->nattach; i++)
+    int broken = 0, nrider = 0;
+    for (int i = 0; i < m->nattach; i++) {
+        if (strstr(m->attach_name[i], "helmet")) continue; /* the helmet's couplings hold */
+        nrider++;
         if (isfinite(s->att[i].t_break) && s->att[i].t_break > 0) {
             broken++;
             t_detach = fmax(t_detach, s->att[i].t_break);
         }
+    }
     double drift = mb_energy_drift(m, s);
     CHECK(first >= 0);
     if (first >= 0) {
@@ -115,8 +120,8 @@ static void test_head_strike_order(void)
                "attachments failed by %.1f ms; drift %.2e\n",
                m->surf[m->pair[first].sb].name, m->body_name[m->pair[first].bb], t_first * 1e3,
                fpeak / 1e3, t_peak * 1e3, broken, t_detach * 1e3, drift);
-        CHECK(m->pair[first].bb == up);   /* the upper body (glass, pillar, windscreen, roof) */
-        CHECK(broken == m->nattach);      /* MYMOSA: detached before the head strike */
+        CHECK(m->pair[first].bb == up);    /* the upper body (glass, pillar, windscreen, roof) */
+        CHECK(nrider == 5 && broken == 5); /* MYMOSA: detached before the head strike */
         CHECK(t_first > t_detach);
     }
     CHECK(drift <= 5e-4);

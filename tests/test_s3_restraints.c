@@ -5,6 +5,7 @@
 #include "cli_util.h"
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "figures.h"
 #include "s3_test_util.h"
 
 #include <math.h>
@@ -48,8 +49,9 @@ static void test_airbag_scenario(void)
     printf("  airbag: m(t) = m0 + m_dot t within %.1e; p V = m R T within %.1e; end: %.0f Pa, "
            "V/V0 %.4f\n",
            worst, worst_gas, p.v[p.n - 1], V.v[V.n - 1] / V.v[0]);
-    CHECK(worst < 1e-9);
-    CHECK(worst_gas < 1e-12);
+    FIG("fe.s3_bag_mass_err", "%.0e", worst);
+    CHECK(worst < 1e-14); /* 3e-15 stated */
+    CHECK(worst_gas < 1e-14);
     CHECK(p.v[p.n - 1] > 101325 + 1e4 && V.v[V.n - 1] > V.v[0]);
     mcs_array_free(&t), mcs_array_free(&p), mcs_array_free(&V), mcs_array_free(&T);
     mcs_array_free(&m);
@@ -92,9 +94,11 @@ static void test_retractor_scenario(void)
     printf("  retractor: |payout - Eq. 3| <= %.1e m; force %.1f..%.1f N in 15-27 ms; limiter "
            "payout %.2f mm (closed form %.2f mm)\n",
            worst, fmin_p, fmax_p, 1e3 * lim, 1e3 * lim_x);
+    FIG("fe.s3_belt_limiter_payout_err_pct", "%+.1f", 100 * (lim / lim_x - 1));
+    FIG("fe.s3_belt_plateau_min_n", "%.0f", fmin_p);
     CHECK(worst < 1e-12);
     CHECK(fmin_p > 0.98 * 2000 && fmax_p <= 2000 * (1 + 1e-12));
-    CHECK_REL(lim, lim_x, 0.02);
+    CHECK_REL(lim, lim_x, 0.036); /* +1.2 % stated: the belt's own stretch beyond k_eff */
     mcs_array_free(&t), mcs_array_free(&pl), mcs_array_free(&f), mcs_array_free(&ll);
     mcs_results_close(&h);
     remove(out);

@@ -6,6 +6,7 @@
 #include "cli_util.h"
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "figures.h"
 #include "s3_test_util.h"
 #include "stage3_fe/s3_run.h"
 
@@ -63,9 +64,13 @@ static void test_bar_into_wall(void)
                "rebound %.4g m/s (%+.2f %%), drift %.2g, %ld steps\n",
                mean, F0, 100 * (mean / F0 - 1), 1e6 * dur, 1e6 * tc, 100 * (dur / tc - 1), vr,
                100 * (vr / v - 1), sum.energy_drift, sum.steps);
-        CHECK_REL(mean, F0, 0.02);
-        CHECK_REL(dur, tc, 0.03);
-        CHECK_REL(vr, v, 0.04);
+        /* README states these errors; tolerances ~3x of them */
+        FIG("readme.s3_bar_force_err_pct", "%+.2f", 100 * (mean / F0 - 1));
+        FIG("readme.s3_bar_contact_err_pct", "%+.2f", 100 * (dur / tc - 1));
+        FIG("readme.s3_bar_rebound_err_pct", "%+.0f", 100 * (vr / v - 1));
+        CHECK_REL(mean, F0, 1.5e-3); /* +0.04 % */
+        CHECK_REL(dur, tc, 3e-3);    /* -0.09 % */
+        CHECK_REL(vr, v, 0.09);      /* -3 % */
     }
     for (size_t i = 0; i < d.n; i++) CHECK(d.v[i] == 0); /* a fixed wall */
     CHECK(rd(h, "/stage3/energy/kinetic", &ek) && rd(h, "/stage3/energy/total", &tot));
@@ -101,10 +106,12 @@ static void test_bar_into_wall(void)
  * hourglass + dissipated = wall work), the wall's prescribed travel, and the mean force from
  * 5 mm (after the first peak) to the end against Abramowicz & Jones (1984, Int. J. Impact
  * Eng. 2(2), static, rigid-perfectly plastic): P_m = 13.06 sigma_0 h^(5/3) c^(1/3) = 8.86 kN.
- * Measured: 8.59 kN (-3 %). Tolerance 20 %: the theory is an approximate kinematic analysis,
- * the mesh has 3.6 elements per fold half-wavelength H = 0.983 h^(1/3) c^(2/3) = 7.2 mm (with
- * the earlier hardening material, halving the elements moved the mean force by 8 %), and the
- * wall's speed adds inertia the static formula has not. */
+ * The formula is an approximate kinematic analysis of an empirical kind (A-J report
+ * "reasonable agreement" with their 84 drop tests, no single scatter figure), the mesh has
+ * 3.6 elements per fold half-wavelength H = 0.983 h^(1/3) c^(2/3) = 7.2 mm, and the wall's
+ * speed adds inertia the static formula has not: the comparison with the formula is a band,
+ * +-20 % (docs/fe.md states it). The run's own mean force, steps and drift are figures
+ * asserted at the precision docs/fe.md shows (a regression of this model). */
 static void test_square_tube_crush(void)
 {
     char scn[128], out[128];
@@ -123,7 +130,9 @@ static void test_square_tube_crush(void)
     CHECK(run_file(scn, out, &sum, &err) == MCS_OK);
     if (err.status) printf("  %s\n", err.msg);
     CHECK(sum.elements == 800);
-    CHECK(sum.energy_drift < 0.01);
+    CHECK(sum.energy_drift < 6e-4); /* 2e-4 stated */
+    FIG("fe.tube_small_steps", "%.0f", (double)sum.steps);
+    FIG("fe.tube_small_drift", "%.0e", sum.energy_drift);
     mcs_results *h = NULL;
     CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
     if (!h) return;
@@ -151,7 +160,10 @@ static void test_square_tube_crush(void)
     for (size_t i = i0 + 1; i <= k; i++) w += 0.5 * (F.v[i] + F.v[i - 1]) * (d.v[i] - d.v[i - 1]);
     double mean = w / (d.v[k] - d.v[i0]);
     CHECK(d.v[k] > 14e-3);
-    CHECK_REL(mean, Pm, 0.20);
+    CHECK_REL(mean, Pm, 0.20); /* the band of the empirical formula */
+    FIG("fe.tube_small_mean_kn", "%.2f", 1e-3 * mean);
+    FIG("fe.tube_small_aj_kn", "%.2f", 1e-3 * Pm);
+    FIG("fe.tube_small_aj_err_pct", "%+.0f", 100 * (mean / Pm - 1));
     mcs_array ce = {0};
     CHECK(rd(h, "/stage3/contact/contact0/energy", &ce) && ce.n == t.n);
     if (ce.n == t.n) CHECK(ce.v[k] > 0); /* the folds did touch */
@@ -168,11 +180,13 @@ static void test_square_tube_crush(void)
 /* make verify: scenarios/verification/tube_crush.yaml from `mcrash run` (50 mm x 1.5 mm x
  * 200 mm, 6400 shells, J2 with hardening 250 -> 300 MPa at 5 % -> 400 MPa at 100 %, self
  * contact, 80 mm of crush at 10 m/s). Abramowicz & Jones (1984), static, at sigma_0 = the
- * initial yield 250 MPa: P_m = 13.06 sigma_0 h^(5/3) c^(1/3) = 23.6 kN. Measured from 15 mm
- * (one half-wavelength H = 0.983 h^(1/3) c^(2/3) = 15.3 mm) to the end: 32.7 kN, 1.39 times:
- * the curve's flow stress is 1.26 sigma_y at 20 % plastic strain, and the perfectly plastic
- * small tube above matches the formula to 3 %. Checked: 1.0 < P / P_m(sigma_y) < 1.6; force
- * peaks every ~21 mm of crush (A-J: 0.73 x 2H = 22.4 mm). Energy drift below 1 %. */
+ * initial yield 250 MPa: P_m = 13.06 sigma_0 h^(5/3) c^(1/3) = 23.6 kN. Mean force from 15 mm
+ * (one half-wavelength H = 0.983 h^(1/3) c^(2/3) = 15.3 mm) to the end. The material hardens
+ * (flow stress 1.26 sigma_y at 20 % plastic strain) and the formula is empirical, so the
+ * comparison is a band: 1.0 < P / P_m(sigma_y) < 1.6. The run's own figures (mean force,
+ * ratio, fold spacing, drift, steps) are asserted at the precision docs/fe.md shows. Fold
+ * spacing: the mean distance between the force's major peaks (maxima over +-5 mm of crush);
+ * A-J's effective crushing distance 0.73 x 2H = 22.4 mm. */
 static void test_tube_crush_full(void)
 {
     if (!th_verify()) return;
@@ -183,6 +197,10 @@ static void test_tube_crush_full(void)
     cli_result *r = cli_run(args);
     CHECK(r->status == 0);
     CHECK_STR_CONTAINS(r->out, "\"elements\": 6400");
+    long steps = -1;
+    const char *sj = strstr(r->out, "\"steps\": ");
+    if (sj) sscanf(sj + 9, "%ld", &steps);
+    FIG("fe.tube_full_steps", "%.0f", (double)steps);
     mcs_results *h = NULL;
     mcs_error err = {0};
     CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
@@ -201,9 +219,28 @@ static void test_tube_crush_full(void)
     printf("  tube_crush.yaml: crush %.3g mm, mean force %.4g kN (A-J at sigma_y %.4g kN, x %.3f), "
            "energy drift %.2g\n",
            1e3 * d.v[k], 1e-3 * mean, 1e-3 * Pm, mean / Pm, drift);
+    /* major force peaks: the largest force within +-5 mm of crush, past 15 mm */
+    double first = -1, last = -1;
+    int npk = 0;
+    for (size_t i = i0; i <= k; i++) {
+        int top = F.v[i] > mean;
+        for (size_t j = i0; j <= k && top; j++)
+            if (fabs(d.v[j] - d.v[i]) <= 5e-3 && F.v[j] > F.v[i]) top = 0;
+        if (top && d.v[i] - d.v[i0] > 5e-3 && d.v[k] - d.v[i] > 5e-3) {
+            if (first < 0) first = d.v[i];
+            last = d.v[i], npk++;
+        }
+    }
+    const double spacing = npk > 1 ? (last - first) / (npk - 1) : -1;
+    printf("  tube_crush.yaml: %d major peaks, mean spacing %.3g mm (A-J 0.73 x 2H = 22.4 mm)\n",
+           npk, 1e3 * spacing);
+    FIG("fe.tube_full_mean_kn", "%.1f", 1e-3 * mean);
+    FIG("fe.tube_full_aj_ratio", "%.2f", mean / Pm);
+    FIG("fe.tube_full_fold_mm", "%.0f", 1e3 * spacing);
+    FIG("fe.tube_full_drift_pct", "%.2f", 100 * drift);
     CHECK(d.v[k] > 0.075);
-    CHECK(mean > Pm && mean < 1.6 * Pm);
-    CHECK(drift >= 0 && drift < 0.01);
+    CHECK(mean > Pm && mean < 1.6 * Pm); /* the band of the empirical formula */
+    CHECK(drift >= 0 && drift < 0.008); /* 0.27 % stated */
     mcs_array_free(&F), mcs_array_free(&d);
     mcs_results_close(&h);
 }
@@ -255,7 +292,8 @@ static void test_line_mesh_step_load(void)
         }
         const double ref = 2 * 1000.0 * 1.0 / (210e9 * 1e-4);
         printf("  rod: u_max %.5g m (2FL/EA %.5g, %+.2f %%)\n", umax, ref, 100 * (umax / ref - 1));
-        CHECK_REL(umax, ref, 0.03);
+        FIG("readme.s3_rod_err_pct", "%+.0f", 100 * (umax / ref - 1));
+        CHECK_REL(umax, ref, 0.03); /* -1 % */
         CHECK(utube == 0); /* nothing acts on the tube */
     }
     mcs_array_free(&nodes), mcs_array_free(&disp), mcs_array_free(&el), mcs_array_free(&tn);

@@ -3,6 +3,7 @@
  * block sliding with Coulomb friction (mu g), nodes against a rigid ellipsoid (normal force,
  * energy), self contact of a folded sheet, and the point-ellipsoid distance. */
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "tests/fe_test_util.h"
 
 #include "fe/fe_contact.h"
@@ -90,10 +91,14 @@ static void test_equal_bars(void)
            fsum / wsum, F, 1e6 * (t_off - t_on), 1e6 * tc, va, vb, v, pmax / p0,
            emax / s->energy0, s->dt, m->dt_initial);
     CHECK(s->err.status == MCS_OK);
-    CHECK_REL(fsum / wsum, F, 0.03);
-    CHECK_REL(t_off - t_on, tc, 0.02);
-    CHECK(fabs(va) < 0.03 * v);
-    CHECK_REL(vb, v, 0.03);
+    FIG("fe.contact_bars_force_pct", "%+.1f", 100 * (fsum / wsum / F - 1));
+    FIG("fe.contact_bars_time_pct", "%+.1f", 100 * ((t_off - t_on) / tc - 1));
+    FIG("fe.contact_bars_exchange_pct", "%.1f", 100 * fmax(fabs(va) / v, fabs(vb / v - 1)));
+    FIG("fe.contact_bars_momentum", "%.0e", pmax / p0);
+    CHECK_REL(fsum / wsum, F, 0.03);        /* -2.3 % stated (half-force crossings) */
+    CHECK_REL(t_off - t_on, tc, 0.02);      /* +1.7 % stated */
+    CHECK(fabs(va) < 0.018 * v);            /* 0.6 % stated */
+    CHECK_REL(vb, v, 0.018);
     CHECK(pmax < 1e-9 * p0);
     CHECK(emax < 0.01 * s->energy0);
     fe_state_destroy(&s);
@@ -174,8 +179,10 @@ static void test_plate_drop(void)
     CHECK(s->err.status == MCS_OK);
     CHECK(cmax > 0.01 * s->energy0); /* the contact did carry the impact */
     CHECK(vz > 0);                   /* and it rebounds */
-    CHECK(s->contact->pen_max < 0.1 * t);
-    CHECK(emax < 0.01 * s->energy0);
+    FIG("fe.contact_drop_energy_pct", "%.1f", 100 * emax / s->energy0);
+    FIG("fe.contact_drop_pen_pct", "%.1f", 100 * s->contact->pen_max / t);
+    CHECK(s->contact->pen_max < 0.045 * t); /* 1.4 % stated */
+    CHECK(emax < 0.024 * s->energy0);       /* 0.8 % stated */
     CHECK_REL(s->dt, fe_stable_dt(m, s), 1e-3); /* the step is the elements' own */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
@@ -223,9 +230,12 @@ static void test_friction_block(void)
            1e3 * s->time, vx, ref, 100 * ((v0 - vx) / (v0 - ref) - 1), fric,
            emax / (0.5 * mb * v0 * v0), 0.5 * mb * v0 * v0);
     CHECK(s->err.status == MCS_OK);
-    CHECK_REL(v0 - vx, v0 - ref, 0.03);
+    FIG("fe.contact_fric_speed_pct", "%+.1f", 100 * ((v0 - vx) / (v0 - ref) - 1));
+    const double fric_err = fric / (0.5 * mb * (v0 * v0 - vx * vx)) - 1;
+    FIG("fe.contact_fric_energy_pct", "%.2f", fabs(100 * fric_err));
+    CHECK_REL(v0 - vx, v0 - ref, 0.01); /* -0.3 % stated */
     /* the kinetic energy lost went into friction (plus a little into the stick springs) */
-    CHECK_REL(fric, 0.5 * mb * (v0 * v0 - vx * vx), 0.05);
+    CHECK_REL(fric, 0.5 * mb * (v0 * v0 - vx * vx), 0.0015); /* 0.05 % stated */
     CHECK(emax < 0.01 * 0.5 * mb * v0 * v0);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
@@ -261,6 +271,8 @@ static void test_ellipsoid_nearest(void)
     }
     printf("  ellipsoid nearest point: |f(q) - 1| <= %.1e, sin(offset, normal) <= %.1e\n",
            worst_surf, worst_par);
+    FIG("fe.contact_ell_surface", "%.0e", worst_surf);
+    FIG("fe.contact_ell_normal", "%.0e", worst_par);
     CHECK(worst_surf < 1e-10);
     CHECK(worst_par < 1e-7);
 }
@@ -324,9 +336,11 @@ static void test_ellipsoid_impact(void)
            "energy error %.2e of %.4g J, block leaves at %.3g m/s (in 10)\n",
            nmeas, fmaxv, worst, emax / s->energy0, s->energy0, vz);
     CHECK(s->err.status == MCS_OK);
+    FIG("fe.contact_ell_force_normal", "%.0e", worst);
+    FIG("fe.contact_ell_energy_pct", "%.1f", 100 * emax / s->energy0);
     CHECK(nmeas > 100);
     CHECK(worst < 1e-6);
-    CHECK(emax < 0.01 * s->energy0);
+    CHECK(emax < 0.018 * s->energy0); /* 0.6 % stated */
     CHECK(vz > 0);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
@@ -398,9 +412,11 @@ static void test_self_contact_layers(void)
            1e3 * gmin, 1e3 * t, s->contact->pen_max / t, vz, emax / e0);
     CHECK(s->err.status == MCS_OK);
     CHECK(gmin > 0.5 * t);                 /* never through (bending included) */
-    CHECK(s->contact->pen_max < 0.1 * t);  /* little into the offset surfaces */
+    FIG("fe.contact_self_pen_pct", "%.0f", 100 * s->contact->pen_max / t);
+    FIG("fe.contact_self_energy_pct", "%.1f", 100 * emax / e0);
+    CHECK(s->contact->pen_max < 0.2 * t);  /* little into the offset surfaces: 8 % stated */
     CHECK(vz > 0); /* bounced back */
-    CHECK(emax < 0.02 * e0);
+    CHECK(emax < 0.033 * e0);              /* 1.1 % stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
     fe_builder_destroy(&b);

@@ -3,6 +3,7 @@
  * one-point hex with one element through the thickness is a mechanism without it), energy
  * conservation of a free elastic block, input checks. */
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "tests/fe_test_util.h"
 #include "tests/fe_test_build.h"
 
@@ -99,14 +100,16 @@ static void test_cantilever(void)
     printf("  cantilever, full hex 40x1x4, nu 0.3, no hourglass control: tip %.5g m, "
            "Timoshenko %.5g m (%+.2f %%)\n",
            full, ref, 100 * (full / ref - 1));
-    CHECK_REL(full, ref, 0.03);
+    FIG("fe.hexfull_cantilever4_pct", "%+.1f", 100 * (full / ref - 1));
+    CHECK_REL(full, ref, 0.021); /* -0.7 % stated */
     /* nu = 0: lambda = 0, the eight-point integration is exact in bending, one element
      * through the thickness suffices (parasitic shear (a/h)^2/2 = 0.8 %) */
     const double ref0 = P * L * L * L / (3 * E * I) + P * L / (5.0 / 6 * E / 2 * w * h);
     double full1 = cantilever(FE_HEX_FULL, 0, 1, 0, 9, &ok);
     CHECK(ok);
     printf("  cantilever, full hex 40x1x1, nu 0: tip/Timoshenko %+.2f %%\n", 100 * (full1 / ref0 - 1));
-    CHECK_REL(full1, ref0, 0.03);
+    FIG("fe.hexfull_cantilever1_pct", "%+.1f", 100 * (full1 / ref0 - 1));
+    CHECK_REL(full1, ref0, 0.03); /* -1.2 % stated */
     /* the one-point hex with one element through the thickness and (almost) no hourglass
      * control: the bending mode is an hourglass mode, nothing resists it (a mechanism) */
     double one = cantilever(FE_HEX_ONE_POINT, 1e-9, 1, 0, 2, &ok);
@@ -146,7 +149,8 @@ static void test_free_block_energy(void)
     emax = fabs(s->energy[FE_E_total] - e0);
     printf("  free block (full hex): |total - E0| / E0 = %.2e, internal/E0 %.3f\n", emax / e0,
            s->energy[FE_E_internal] / e0);
-    CHECK(emax <= 1e-2 * e0); /* the one-point hex drifts alike here (0.7 %) */
+    FIG("fe.hexfull_block_energy_pct", "%.1f", 100 * emax / e0);
+    CHECK(emax <= 2.7e-2 * e0); /* 0.9 % stated; the one-point hex drifts alike here */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }

@@ -8,6 +8,7 @@
 #include "fe/fe_keyword.h"
 #include "fe/fe_state.h"
 #include "harness.h"
+#include "figures.h"
 #include "stage3_fe/s3_build.h"
 #include "stage3_fe/s3_run.h"
 
@@ -404,8 +405,9 @@ static void test_spring_mass(void)
             zprev = z, tprev = st->time;
         }
         CHECK(nc == 2);
+        FIG("readme.kw_spring_period_err", "%.0e", fabs(cross[1] / T - 1));
         CHECK_REL(cross[0], T / 2, 1e-4);
-        CHECK_REL(cross[1], T, 1e-4);
+        CHECK_REL(cross[1], T, 6e-6); /* 2e-6 stated */
         printf("spring-mass from keyword springs: period %.7g s, analytic %.7g s (%+.2e)\n",
                cross[1], T, cross[1] / T - 1);
     }
@@ -487,8 +489,10 @@ static void test_bar_keyword_run(void)
         worst = fmax(worst, fabs(fa.v[i] - fb.v[i]));
     }
     CHECK(peak > 19e3 && peak < 22e3);
-    CHECK(worst <= 1e-12 * peak);
     printf("bar: keyword vs generated mesh: max |dF| = %.3g N of peak %.6g N\n", worst, peak);
+    FIG("readme.kw_bar_force_diff_n", "%.1e", worst);
+    FIG("readme.kw_bar_peak_kn", "%.1f", 1e-3 * peak);
+    CHECK(worst <= 5e-10); /* 1.5e-10 N stated: round-off of the node order */
     mcs_array_free(&fa);
     mcs_array_free(&fb);
 }

@@ -1,6 +1,7 @@
 /* test_fe_massscale: selective mass scaling (fe_massscale.c): a column of hexes with one thin
  * element runs at the target step, and the added mass is that element's rho V (f^2 - 1). */
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "tests/fe_test_util.h"
 #include "tests/fe_test_build.h"
 
@@ -75,8 +76,10 @@ static void test_thin_element(void)
     }
     printf("  mass scaling: added %.6g kg (%.1f %%), step %.6g..%.6g s, target %.6g s\n",
            m->mass_added, 100 * added / physical, dtmin, dtmax, target);
-    CHECK_REL(dtmin, target, 1e-3);
-    CHECK_REL(dtmax, target, 1e-3);
+    FIG("fe.massscale_step_err", "%.0e", fmax(fabs(dtmin / target - 1), fabs(dtmax / target - 1)));
+    FIG("fe.massscale_balance", "%.0e", fabs(s->energy[FE_E_total] / s->energy0 - 1));
+    CHECK_REL(dtmin, target, 3e-4); /* 1e-4 stated */
+    CHECK_REL(dtmax, target, 3e-4);
     CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-3 * s->energy0);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
@@ -142,9 +145,11 @@ static void test_crush_rescaled(void)
     printf("  crushed cube at z %.4g mm: added %.6g kg (rho h^3 ((zs/z)^2 - 1) = %.6g), step off the "
            "target by %.1e, energy balance %.1e of the internal energy\n",
            1e3 * z, s->mass_added_run, dM, dtdev, emax / eref);
+    FIG("fe.massscale_run_added_kg", "%.5f", s->mass_added_run);
+    FIG("fe.massscale_run_balance", "%.1e", emax / eref);
     CHECK_REL(s->mass_added_run, dM, 1e-9);
     CHECK(dtdev < 1e-12);
-    CHECK(emax < 1e-3 * eref);
+    CHECK(emax < 7e-5 * eref); /* 2.4e-5 stated */
     /* the mass went onto the element's 8 nodes */
     double sum = 0;
     for (int n = 0; n < m->nnode; n++) sum += s->node_dm[n];

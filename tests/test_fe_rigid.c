@@ -3,6 +3,7 @@
  * a penalty wall rebounds; a rigid mass on an elastic bar (shared nodes) oscillates with
  * T = 2 pi sqrt(M / k). */
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "tests/fe_test_util.h"
 
 #include "fe/fe_elem.h"
@@ -78,9 +79,11 @@ static void test_tumbling_plate(void)
     double lnorm = sqrt(fe_dot(L0, L0));
     printf("  tumbling plate: |dL|/|L| %.2e, distance %.2e m, kinetic energy %.2e\n",
            lerr / lnorm, derr, kerr);
+    FIG("fe.rigid_tumble_dist_m", "%.0e", derr);
+    FIG("fe.rigid_tumble_ke", "%.0e", kerr);
     CHECK(lerr <= 1e-12 * lnorm);
     CHECK(derr <= 1e-12);
-    CHECK(kerr <= 1e-3);
+    CHECK(kerr <= 1.2e-7); /* 4e-8 stated */
     /* the body really tumbles: w is not parallel to L (oblique, non-principal spin) */
     double wl = fe_dot(s->body_w, s->body_l) / (sqrt(fe_dot(s->body_w, s->body_w)) * lnorm);
     CHECK(wl < 0.999);
@@ -157,7 +160,8 @@ static void test_block_on_penalty_wall(void)
     double fmax_ = 0;
     while (s->time < 0.01 && fe_step(m, s) == MCS_OK) fmax_ = fmax(fmax_, s->wall_normal[0]);
     CHECK(fmax_ > 0);
-    CHECK_REL(s->body_v[2], 2.0, 0.01);
+    FIG("fe.rigid_wall_rebound_err", "%.0e", fabs(s->body_v[2] / 2.0 - 1));
+    CHECK_REL(s->body_v[2], 2.0, 1.5e-3); /* 5e-4 stated: penalty onset and release */
     CHECK(fabs(s->body_v[0]) + fabs(s->body_v[1]) < 1e-9);
     CHECK_NEAR(s->energy[FE_E_total], s->energy0, 0.01 * s->energy0);
     fe_state_destroy(&s);
@@ -221,7 +225,8 @@ static void test_rigid_on_elastic_column(void)
     if (nc >= 2) {
         printf("  rigid mass on a column: T %.6g s, 2 pi sqrt(M_eff/k) %.6g s (%+.3f %%)\n",
                tc[1] - tc[0], T, 100 * ((tc[1] - tc[0]) / T - 1));
-        CHECK_REL(tc[1] - tc[0], T, 0.01);
+        FIG("fe.rigid_column_period_err", "%.0e", fabs((tc[1] - tc[0]) / T - 1));
+        CHECK_REL(tc[1] - tc[0], T, 6e-6); /* 2e-6 stated */
     }
     double e0 = 0.5 * (M + mbar / ne / 2) * 0.01;
     CHECK_NEAR(s->energy[FE_E_total], s->energy0, 0.01 * e0);

@@ -9,6 +9,7 @@
 #include "fe/fe_keyword.h"
 #include "fe/fe_solid.h"
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "tests/fe_test_util.h"
 #include "tests/fe_test_build.h"
 
@@ -154,8 +155,10 @@ static void patch(int tets)
            "%.2e J\n",
            tets ? "tetrahedron" : "pentahedron", emax / fabs(ref[0]), fmid / fscale,
            s->part_energy[FE_E_hourglass]);
-    CHECK(emax < 1e-9 * fabs(ref[0]));
-    CHECK(fmid < 1e-10 * fscale);
+    FIG(tets ? "fe.tet_patch_stress" : "fe.penta_patch_stress", "%.0e", emax / fabs(ref[0]));
+    FIG(tets ? "fe.tet_patch_force" : "fe.penta_patch_force", "%.0e", fmid / fscale);
+    CHECK(emax < 1e-14 * fabs(ref[0])); /* round-off: 1e-15 stated */
+    CHECK(fmid < 1e-14 * fscale);
     CHECK(fabs(s->node_fint[0]) > 0.01 * fscale);
     CHECK_NEAR(s->part_energy[FE_E_hourglass], 0, 1e-12 * fscale);
     fe_state_destroy(&s);
@@ -260,8 +263,12 @@ static void bar(int tets)
            tets ? "tetrahedra" : "pentahedra", t_front, L / (2 * c),
            100 * (t_front / (L / (2 * c)) - 1), fsum / wsum, F, 100 * (fsum / wsum / F - 1),
            steps, s->dt, L / nx / c);
-    CHECK_REL(t_front, L / (2 * c), 0.03);
-    CHECK_REL(fsum / wsum, F, 0.03);
+    FIG(tets ? "fe.tet_bar_front_pct" : "fe.penta_bar_front_pct", "%+.1f",
+        100 * (t_front / (L / (2 * c)) - 1));
+    FIG(tets ? "fe.tet_bar_force_pct" : "fe.penta_bar_force_pct", "%+.2f",
+        100 * (fsum / wsum / F - 1));
+    CHECK_REL(t_front, L / (2 * c), 0.05);   /* +2.3 %, +2.8 % stated: coarse-mesh dispersion */
+    CHECK_REL(fsum / wsum, F, 1.5e-3);       /* +0.04 % stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }
@@ -423,9 +430,12 @@ static void test_tet_contact(void)
     printf("  tetrahedra dropped on a hex block: %d triangle segments, deepest %.3g mm past the "
            "top, rebound %.3g m/s, energy %.2e of E0\n",
            ntri, -1e3 * (zmin + 1e-4), vz, emax / s->energy0);
+    FIG("fe.tet_drop_depth_mm", "%.1f", -1e3 * (zmin + 1e-4));
+    FIG("fe.tet_drop_rebound", "%.2f", vz);
+    FIG("fe.tet_drop_energy", "%.0e", emax / s->energy0);
     CHECK(zmin > -1e-4 - 1e-3); /* less than 1 mm (a tenth of an element) into the base */
     CHECK_REL(vz, 2.0, 0.05); /* elastic: it leaves at about its impact speed */
-    CHECK(emax < 0.01 * s->energy0);
+    CHECK(emax < 1.2e-3 * s->energy0); /* 4e-4 stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }

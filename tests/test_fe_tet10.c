@@ -11,6 +11,7 @@
 #include "fe/fe_keyword.h"
 #include "fe/fe_tet10.h"
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "tests/fe_test_util.h"
 
 /* ---- meshes: a grid of cubes, each cut into 6 tetrahedra along its main diagonal (Kuhn's
@@ -184,6 +185,8 @@ static void test_quadratic_reproduction(void)
     printf("  quadratic field: interpolation error %.1e of |u|, gradient error at the Gauss "
            "points %.1e of |grad u|\n",
            eu / umax, eg / gmax);
+    FIG("fe.tet10_quad_interp", "%.0e", eu / umax);
+    FIG("fe.tet10_quad_grad", "%.0e", eg / gmax);
     CHECK(eu < 1e-13 * umax);
     CHECK(eg < 1e-12 * gmax);
     CHECK_REL(fe_tet10_volume(x), v6 / 6, 1e-13);
@@ -276,8 +279,10 @@ static void test_patch_linear(void)
            "nodes %.2e of sigma A\n",
            emax / fabs(ref[0]), nin, fmid / fscale);
     CHECK(nin > 20); /* the centre corner and the mid-edge nodes around it */
-    CHECK(emax < 1e-9 * fabs(ref[0]));
-    CHECK(fmid < 1e-10 * fscale);
+    FIG("fe.tet10_patch_stress", "%.0e", emax / fabs(ref[0]));
+    FIG("fe.tet10_patch_force", "%.0e", fmid / fscale);
+    CHECK(emax < 1e-13 * fabs(ref[0])); /* round-off */
+    CHECK(fmid < 1e-13 * fscale);
     /* the boundary carries the traction (on the mid-edge nodes: a 6-node triangle's corner
        share of a uniform traction, the integral of L (2L - 1), is zero) */
     double fb = 0;
@@ -330,7 +335,8 @@ static void test_patch_quadratic(void)
     }
     printf("  tet10 quadratic patch: Gauss-point stress error %.2e of the largest stress\n",
            emax / smax);
-    CHECK(emax < 1e-9 * smax);
+    FIG("fe.tet10_qpatch_stress", "%.0e", emax / smax);
+    CHECK(emax < 1e-13 * smax); /* round-off */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }
@@ -372,7 +378,8 @@ static void test_patch_plastic(void)
     printf("  tet10 J2 patch: |q - sigma_y| <= %.2e sigma_y, |epsp - (q_tr - sigma_y)/(3 mu)| "
            "<= %.2e\n",
            emax / sy, dpmax);
-    CHECK(emax < 1e-9 * sy);
+    FIG("fe.tet10_j2_patch", "%.0e", emax / sy);
+    CHECK(emax < 1e-13 * sy); /* round-off */
     CHECK(dpmax < 1e-12);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
@@ -521,7 +528,9 @@ static void test_cantilever(void)
            "of Euler-Bernoulli %.5g m, %ld steps), tet4 %.5g m (%+.1f %%)\n",
            t10, 100 * (t10 / eb - 1), eb, n10, t4, 100 * (t4 / eb - 1));
     CHECK(ok10 && ok4);
-    CHECK_REL(t10, eb, 0.04);
+    FIG("fe.tet10_cantilever_pct", "%+.1f", 100 * (t10 / eb - 1));
+    FIG("fe.tet4_cantilever_pct", "%+.0f", 100 * (t4 / eb - 1));
+    CHECK_REL(t10, eb, 0.04); /* -1.6 % stated (+0.8 % shear term) */
     CHECK(t4 < 0.5 * eb); /* the constant-strain tetrahedron locks in bending */
 }
 
@@ -570,9 +579,12 @@ static void test_bar_wave(void)
            "%+.2f %%), %ld steps, dt %.3g s (h/c %.3g), energy balance %.2e of E0\n",
            t_front, L / (2 * c), 100 * (t_front / (L / (2 * c)) - 1), fsum / wsum, F,
            100 * (fsum / wsum / F - 1), s->nstep, s->dt, L / nx / c, ebal / s->energy0);
-    CHECK_REL(t_front, L / (2 * c), 0.03);
-    CHECK_REL(fsum / wsum, F, 0.03);
-    CHECK(ebal < 0.01 * s->energy0);
+    FIG("fe.tet10_bar_front_pct", "%+.1f", 100 * (t_front / (L / (2 * c)) - 1));
+    FIG("fe.tet10_bar_force_pct", "%+.2f", 100 * (fsum / wsum / F - 1));
+    FIG("fe.tet10_bar_energy", "%.0e", ebal / s->energy0);
+    CHECK_REL(t_front, L / (2 * c), 0.045);  /* +1.5 % stated */
+    CHECK_REL(fsum / wsum, F, 1e-3);         /* +0.03 % stated */
+    CHECK(ebal < 3e-4 * s->energy0);         /* 1e-4 stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }
@@ -616,8 +628,9 @@ static void test_free_block_energy(void)
     const double e0 = s->energy0;
     printf("  free block (tet10): max |total - E0| / E0 = %.2e, largest internal/E0 %.3f\n",
            emax / e0, imax / e0);
+    FIG("fe.tet10_block_energy", "%.0e", emax / e0);
     CHECK(imax > 0.05 * e0);
-    CHECK(emax <= 1e-2 * e0);
+    CHECK(emax <= 6e-4 * e0); /* 2e-4 stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }

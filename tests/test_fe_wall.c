@@ -4,6 +4,7 @@
 
 #include "fe/fe_keyword.h"
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "tests/fe_test_util.h"
 #include "tests/fe_test_build.h"
 
@@ -62,9 +63,12 @@ static void test_wall_hits_point_mass(void)
            "(%.6f), momentum error %.2e, energy %.3e of E0\n",
            M, V, mpt, s->wall_v[0], (M - mpt) / (M + mpt) * V, s->node_v[3 * node],
            2 * M / (M + mpt) * V, pmax, (s->energy[FE_E_total] - s->energy0) / s->energy0);
+    FIG("fe.wallm_wall_err", "%+.0e", s->wall_v[0] / ((M - mpt) / (M + mpt) * V) - 1);
+    FIG("fe.wallm_mass_err", "%+.0e", s->node_v[3 * node] / (2 * M / (M + mpt) * V) - 1);
+    FIG("fe.wallm_momentum", "%.0e", pmax / (M * V));
     CHECK(pmax < 1e-12 * M * V);
-    CHECK_REL(s->wall_v[0], (M - mpt) / (M + mpt) * V, 5e-3);
-    CHECK_REL(s->node_v[3 * node], 2 * M / (M + mpt) * V, 5e-3);
+    CHECK_REL(s->wall_v[0], (M - mpt) / (M + mpt) * V, 3e-4); /* -9e-5 stated */
+    CHECK_REL(s->node_v[3 * node], 2 * M / (M + mpt) * V, 3e-4);
     CHECK(fabs(s->wall_v[1]) + fabs(s->wall_v[2]) == 0);
     /* after separation: kinetic energy = initial (elastic), total constant */
     CHECK_NEAR(s->energy[FE_E_total], s->energy0, 5e-3 * s->energy0);
@@ -113,9 +117,12 @@ static void test_wall_hits_bar(void)
     printf("  wall %g kg at %g m/s on a %g kg bar: momentum error %.2e of MV, peak force %.4g N "
            "(rho c A V %.4g), energy %.2e of E0\n",
            M, V, mbar, perr / (M * V), fmax_, F0, (s->energy[FE_E_total] - s->energy0) / s->energy0);
+    FIG("fe.wallm_bar_momentum", "%.0e", perr / (M * V));
+    FIG("fe.wallm_bar_energy", "%.0e", fabs(s->energy[FE_E_total] / s->energy0 - 1));
+    FIG("fe.wallm_bar_peak", "%.2f", fmax_ / F0);
     CHECK(perr < 1e-12 * M * V);
-    CHECK(fmax_ > 0.6 * F0 && fmax_ < 1.05 * F0);
-    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 0.01 * s->energy0);
+    CHECK(fmax_ > 0.6 * F0 && fmax_ < 1.05 * F0); /* the penalty spring rounds the rise */
+    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 3e-8 * s->energy0); /* 8e-9 stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "fe/fe_solid.h"
 #include "tests/fe_test_util.h"
 
@@ -196,9 +197,13 @@ static void test_bar_onto_free_wall(void)
            mb, v0, M, s->wall_v[0], Vx, 100 * (s->wall_v[0] / Vx - 1), 1e6 * (tsep - t0),
            2e6 * L / c, fmax_, rho * c * a * a * v0, perr / (mb * v0),
            (s->energy[FE_E_total] - s->energy0) / E0, s->energy[FE_E_dissipated] / E0);
+    FIG("fe.wallk_bar_v_pct", "%+.1f", 100 * (s->wall_v[0] / Vx - 1));
+    FIG("fe.wallk_bar_tc_pct", "%+.1f", 100 * ((tsep - t0) / (2 * L / c) - 1));
+    FIG("fe.wallk_bar_momentum", "%.0e", perr / (mb * v0));
+    FIG("fe.wallk_bar_total", "%.0e", fabs(s->energy[FE_E_total] - s->energy0) / E0);
     CHECK(perr < 1e-12 * mb * v0);
-    CHECK_REL(s->wall_v[0], Vx, 0.02);
-    CHECK_REL(tsep - t0, 2 * L / c, 0.03);
+    CHECK_REL(s->wall_v[0], Vx, 0.03);       /* -1.0 % stated */
+    CHECK_REL(tsep - t0, 2 * L / c, 0.03);   /* -1.0 % stated */
     CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-12 * E0);
     fe_state_destroy(&s);
     fe_model_destroy(&m);

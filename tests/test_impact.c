@@ -510,6 +510,7 @@ static void test_413(void)
     CHECK(f.phi_max > f.phi_e && f.t_plastic < f.t_stop);
     CHECK(f.drift < 1e-2);
     fig_car(s413_keys, &f);
+    FIG("models.sedan_mass", "%.0f", f.m_opp);
 }
 
 /* MYMOSA's lateral impact (1100 kg car on a translational joint along the heading): momentum

@@ -5,6 +5,7 @@
 #include "tests/harness.h"
 
 #include <dirent.h>
+#include <hdf5.h>
 #include <malloc.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -319,6 +320,71 @@ static void test_layout_roundtrip(void)
     snprintf(ref, sizeof ref, "%s:/stage1/channels/nope", out);
     CHECK(mcs_results_read_ref(ref, &a, &e2) == MCS_ERR_KEY);
     CHECK_STR_CONTAINS(e2.msg, "/stage1/channels/nope");
+}
+
+/* the layout file read with the HDF5 library itself, not our reader: the shapes, the
+ * row-major values and the unit attributes are what write_layout passed (a round trip through
+ * our writer and reader alone would pass with both transposing or dropping the unit) */
+static void h5_expect(hid_t f, const char *path, int rank, const hsize_t *dims, const double *v,
+                      const char *unit)
+{
+    hid_t d = H5Dopen2(f, path, H5P_DEFAULT);
+    CHECK(d >= 0);
+    if (d < 0) return;
+    hid_t sp = H5Dget_space(d);
+    hsize_t got[4] = {0};
+    CHECK(H5Sget_simple_extent_ndims(sp) == rank);
+    H5Sget_simple_extent_dims(sp, got, NULL);
+    hsize_t n = 1;
+    for (int i = 0; i < rank; i++) {
+        CHECK(got[i] == dims[i]);
+        n *= dims[i];
+    }
+    double buf[64] = {0};
+    if (n <= 64 && H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) >= 0)
+        for (hsize_t i = 0; i < n; i++)
+            CHECK(buf[i] == v[i]);
+    else
+        CHECK(!"H5Dread");
+    char text[32] = "";
+    hid_t a = H5Aopen(d, "unit", H5P_DEFAULT);
+    hid_t t = a >= 0 ? H5Aget_type(a) : -1;
+    CHECK(a >= 0 && t >= 0 && H5Tget_class(t) == H5T_STRING && H5Tget_size(t) < sizeof text);
+    if (t >= 0 && H5Tget_size(t) < sizeof text) H5Aread(a, t, text);
+    CHECK(strcmp(text, unit) == 0);
+    if (t >= 0) H5Tclose(t);
+    if (a >= 0) H5Aclose(a);
+    H5Sclose(sp);
+    H5Dclose(d);
+}
+
+static void test_layout_read_by_hdf5(void)
+{
+    hid_t f = H5Fopen(tpath("layout.h5"), H5F_ACC_RDONLY, H5P_DEFAULT);
+    CHECK(f >= 0);
+    if (f < 0) return;
+    double pos[12], q[16];
+    for (int i = 0; i < 12; i++) pos[i] = i * 0.25; /* row i: body position at output i */
+    for (int i = 0; i < 16; i++) q[i] = (i % 4 == 0) ? 1.0 : 0.0;
+    const double y[4] = {0, -9.81, -19.62, 3}, t[4] = {0, 0.001, 0.002, 0.003};
+    const double lo[6] = {0, 0, 0.01, 1000, 0.02, 3000}, hic = 512.0;
+    h5_expect(f, "/stage1/time", 1, (hsize_t[]){4}, t, "s");
+    h5_expect(f, "/stage1/channels/head_ax", 1, (hsize_t[]){4}, y, "m/s^2");
+    h5_expect(f, "/stage1/energy/kinetic", 1, (hsize_t[]){4}, y, "J");
+    h5_expect(f, "/stage1/bodies/head/position", 2, (hsize_t[]){4, 3}, pos, "m");
+    h5_expect(f, "/stage1/bodies/head/orientation", 2, (hsize_t[]){4, 4}, q, "-");
+    h5_expect(f, "/stage1/injury/HIC15", 0, NULL, &hic, "-");
+    h5_expect(f, "/curves/fork/loading", 2, (hsize_t[]){3, 2}, lo, "m,N");
+    /* connectivity is stored as integers */
+    hid_t d = H5Dopen2(f, "/stage3/mesh/plate/elements", H5P_DEFAULT);
+    hid_t t_el = d >= 0 ? H5Dget_type(d) : -1;
+    CHECK(t_el >= 0 && H5Tget_class(t_el) == H5T_INTEGER);
+    int el[4] = {-1, -1, -1, -1};
+    CHECK(d >= 0 && H5Dread(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, el) >= 0);
+    CHECK(el[0] == 0 && el[1] == 1 && el[2] == 2 && el[3] == 3);
+    if (t_el >= 0) H5Tclose(t_el);
+    if (d >= 0) H5Dclose(d);
+    H5Fclose(f);
 }
 
 /* walk every object below group; count datasets and those lacking a unit */
@@ -676,6 +742,7 @@ int main(void)
     RUN(test_arrays_roundtrip);
     RUN(test_list_order);
     RUN(test_layout_roundtrip);
+    RUN(test_layout_read_by_hdf5);
     RUN(test_unit_on_every_dataset);
     RUN(test_abort_keeps_earlier_file);
     RUN(test_series_10000);

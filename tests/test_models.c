@@ -430,7 +430,7 @@ static void test_frontal_barrier(void)
     /* symmetric model and barrier: no yaw */
     CHECK(fabs(f->yaw_end) < 1e-3);
     CHECK(f->drift < 0.02);
-    CHECK_REL(f->e_kin0, ke_13_4(), 1e-3);
+    CHECK_REL(f->e_kin0, ke_13_4(), 1e-9);
     fig_barrier(fb_keys, f);
     FIG("models.fb_t_tyre60_ms", "%.1f", f->t_tyre60 * 1e3);
     FIG("models.fb_t_tyre80_ms", "%.1f", f->t_tyre80 * 1e3);
@@ -456,7 +456,7 @@ static void test_oblique_barrier(void)
     CHECK(f.phi_max > 0.2);
     CHECK_NEAR(f.phi_set, 0.2 - 4700.0 / 60000.0, 1e-9);
     CHECK(f.drift < 0.02);
-    CHECK_REL(f.e_kin0, ke_13_4(), 1e-3);
+    CHECK_REL(f.e_kin0, ke_13_4(), 1e-9);
     fig_barrier(ob_keys, &f);
     FIG("models.ob_phi_end_rad", "%.3f", f.phi_end);
 }

@@ -350,6 +350,7 @@ typedef struct {
     double dp_err;             /* momentum change along h less the road's impulse [N s] */
     double phi_e;              /* the fork characteristic's elastic limit [rad] */
     double m_moto, m_opp;      /* group masses [kg] */
+    int nbody, npair;          /* the model's bodies and contact pairs */
     long steps;
 } car_figs;
 
@@ -402,6 +403,7 @@ static mcs_status run_car(const char *path, const char *opp, car_figs *f, FILE *
     for (int i = 0; i < m->nrestraint1; i++)
         if (strcmp(m->restraint1_name[i], "moto_fork_deformation") == 0) fk = i;
     f->phi_e = fk >= 0 ? m->restraint1[fk].spring.pos.elastic_limit : NAN;
+    f->nbody = m->nbody, f->npair = m->npair;
     for (int b = 0; b < m->nbody; b++)
         if (prefixed(m->body_name[b], "moto_"))
             f->m_moto += m->body[b].mass;
@@ -538,6 +540,8 @@ static void test_413(void)
     CHECK(f.dp_err < 1e-8 * 208 * 13.4); /* momentum: only the road acts along the heading */
     fig_car(s413_keys, &f);
     FIG("models.sedan_mass", "%.0f", f.m_opp);
+    FIG("models.s413_nbody", "%.0f", (double)f.nbody);
+    FIG("models.s413_npair", "%.0f", (double)f.npair);
 }
 
 /* MYMOSA's lateral impact (1100 kg car on a translational joint along the heading): momentum

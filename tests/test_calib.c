@@ -17,7 +17,10 @@
  *    the law's points (trapezoids).
  * 3. The rider's attachment failure forces of the three *_rider.yaml: grip 500 N (MYMOSA's
  *    definition, the largest grip on a cylinder: men 20-39, Mathiowetz et al. 1985, 115 lb =
- *    512 N), peg 500 N (assumed equal), seat 320 N (mu 0.5 x the seated weight, assumed). */
+ *    512 N), peg 500 N (assumed equal), seat 320 N (mu 0.5 x the seated weight, assumed).
+ * 4. MYMOSA's rider in its rider case: 73.25 kg with the helmet [seed 002 Table 1.1] (the
+ *    generated file prints masses to 7 digits: 25 roundings of at most 5e-7 relative each),
+ *    the 7-vertebra neck (rider_c1..c7) and the helmet's shell. */
 #include "harness.h"
 #include "stage1_mb/mb_model.h"
 
@@ -137,8 +140,26 @@ static void test_attachment_forces(void)
     }
 }
 
+static void test_mymosa_rider(void)
+{
+    mb_model *m = build(SMYM_RIDER);
+    CHECK(m != NULL);
+    if (!m) return;
+    double mass = 0;
+    int n = 0;
+    for (int b = 0; b < m->nbody; b++)
+        if (!strncmp(m->body_name[b], "rider_", 6)) mass += m->body[b].mass, n++;
+    printf("  MYMOSA rider: %d bodies, %.6f kg\n", n, mass);
+    CHECK_NEAR(mass, 73.25, 73.25 * 25 * 5e-7);
+    CHECK(n == 25);
+    CHECK(mb_model_body(m, "rider_c7") >= 0 && mb_model_body(m, "rider_c1") >= 0);
+    CHECK(mb_model_body(m, "rider_helmet_shell") >= 0);
+    mb_model_destroy(&m);
+}
+
 int main(void)
 {
+    RUN(test_mymosa_rider);
     RUN(test_car_side_law);
     RUN(test_attachment_forces);
     TEST_END();

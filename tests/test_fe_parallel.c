@@ -4,6 +4,7 @@
  * sigma = sigma_trial - C dgamma P sigma, q(sigma) = flow stress(epsp + dp),
  * dp = dgamma sqrt(2/3 sigma.P sigma)). */
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
 #include "tests/fe_test_util.h"
@@ -205,6 +206,16 @@ static double vm(const double s[3])
     return sqrt(s[0] * s[0] + s[1] * s[1] - s[0] * s[1] + 3 * s[2] * s[2]);
 }
 
+/* the flow stress of test_plane_stress_return's table written out: linear between the points
+ * (0, 250), (0.002, 300), (0.05, 500) MPa, the last slope beyond; times the Cowper-Symonds
+ * factor 1 + (rate / C)^(1/p) (Cowper & Symonds 1957; Jones, Structural Impact, eq. 8.3) */
+static double flow_ref(double epsp, double rate, double C, double pcs)
+{
+    double y = epsp < 0.002 ? 250e6 + epsp * 50e6 / 0.002
+                            : 300e6 + (epsp - 0.002) * 200e6 / 0.048;
+    return C > 0 ? y * (1 + pow(rate / C, 1 / pcs)) : y;
+}
+
 /* the return against the discrete equations, for many trial states, across three hardening
  * segments, with and without the rate factor */
 static void test_plane_stress_return(void)
@@ -239,9 +250,10 @@ static void test_plane_stress_return(void)
                            sig[2] + p.mu * de[2]};
         double out[3] = {sig[0], sig[1], sig[2]};
         double dp = fe_mat_plane_stress(&p, out, de, epsp, rate);
-        double h, sy = fe_rate_factor(&p, rate) * fe_flow_stress(&p, epsp + dp, &h);
+        const double C = p.material.cowper_symonds_c;
+        double sy = flow_ref(epsp + dp, rate, C, 5);
         if (dp == 0) {
-            CHECK(vm(trial) <= fe_rate_factor(&p, rate) * fe_flow_stress(&p, epsp, &h) * (1 + 1e-14));
+            CHECK(vm(trial) <= flow_ref(epsp, rate, C, 5) * (1 + 1e-14));
             continue;
         }
         nplastic++;
@@ -254,11 +266,13 @@ static void test_plane_stress_return(void)
         for (int i = 0; i < 3; i++)
             worst_n = fmax(worst_n, fabs(trial[i] - out[i] - dg * cps[i]) / vm(trial));
     }
-    CHECK(nplastic > 500);
-    CHECK(worst_y < 1e-11);
-    CHECK(worst_n < 1e-11);
     printf("plane-stress return: %d plastic of 2000; yield residual %.2e, normality %.2e\n",
            nplastic, worst_y, worst_n);
+    FIG("fe.ps_return_yield", "%.0e", worst_y);
+    FIG("fe.ps_return_normality", "%.0e", worst_n);
+    CHECK(nplastic > 500);
+    CHECK(worst_y < 1e-14); /* 3e-15 stated */
+    CHECK(worst_n < 6e-15); /* 2e-15 stated */
 }
 
 int main(void)

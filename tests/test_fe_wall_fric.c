@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "fe/fe_keyword.h"
 #include "fe/fe_solid.h"
 #include "tests/fe_test_util.h"
@@ -70,19 +71,26 @@ static void run_slide(fe_wall_method method, double mu, double vtol, double xtol
            method == FE_WALL_KINEMATIC ? "kinematic" : "penalty", mu, th, vh, v0 - mu * g * th,
            s->node_x[3 * node], xs, s->node_v[3 * node], diss, E0,
            (s->energy[FE_E_total] - s->energy0) / E0);
+    const int kin = method == FE_WALL_KINEMATIC;
+    FIG(kin ? "fe.fric_kin_v_err" : "fe.fric_pen_v_err", "%.1e", fabs(vh - (v0 - mu * g * th)));
+    FIG(kin ? "fe.fric_kin_x_err" : "fe.fric_pen_x_err", "%.0e", fabs(s->node_x[3 * node] - xs));
+    FIG(kin ? "fe.fric_kin_diss_err" : "fe.fric_pen_diss_err", "%.0e", fabs(diss / E0 - 1));
+    FIG(kin ? "fe.fric_kin_drift" : "fe.fric_pen_drift", "%.0e",
+        fabs(s->energy[FE_E_total] - s->energy0) / E0);
     CHECK_NEAR(vh, v0 - mu * g * th, vtol);
     CHECK_NEAR(s->node_x[3 * node], xs, xtol);
     CHECK(fabs(s->node_v[3 * node]) < 1e-12);
     CHECK_REL(diss, E0, etol);
-    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-6 * E0);
+    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-13 * E0); /* 4e-16, 2e-14 stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }
 
-static void test_kinematic_slide(void) { run_slide(FE_WALL_KINEMATIC, 0.3, 1e-9, 1e-5, 1e-4); }
+/* tolerances ~3x the figures docs/fe.md states for each method */
+static void test_kinematic_slide(void) { run_slide(FE_WALL_KINEMATIC, 0.3, 5e-12, 3e-10, 3e-5); }
 /* the penalty floor: the node rides the penalty spring, its mean normal force m g; the
  * regularised stick holds the stopped block */
-static void test_penalty_slide(void) { run_slide(FE_WALL_PENALTY, 0.3, 2e-3, 2e-3, 5e-3); }
+static void test_penalty_slide(void) { run_slide(FE_WALL_PENALTY, 0.3, 4e-5, 3e-10, 6e-14); }
 
 /* FRIC = 1: no sliding once in contact. The block, thrown along the floor (1.5, -0.5 m/s)
  * from 1 mm above it, stops dead in the step it lands and stays: the friction dissipates all
@@ -111,7 +119,8 @@ static void test_stick(void)
            "friction dissipated %.12f J (1/2 m vt^2 %.12f)\n",
            tl, sqrt(2e-3 / 9.81), xl, 1.5 * sqrt(2e-3 / 9.81), s->energy[FE_E_dissipated], Et);
     CHECK(!isnan(xl) && moved == 0);
-    CHECK_NEAR(tl, sqrt(2e-3 / 9.81), 2e-5);
+    FIG("fe.fric_stick_t_err", "%.0e", fabs(tl - sqrt(2e-3 / 9.81)));
+    CHECK_NEAR(tl, sqrt(2e-3 / 9.81), 6e-6); /* 2e-6 s stated, in steps of 1e-5 s */
     CHECK_REL(s->energy[FE_E_dissipated], Et, 1e-12);
     fe_state_destroy(&s);
     fe_model_destroy(&m);

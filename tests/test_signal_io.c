@@ -147,6 +147,27 @@ static void test_mme_roundtrip(void)
         CHECK_NEAR(r.t[i], t[i], 1e-12);
     }
     an_signal_free(&r);
+    /* the channel file itself, read as text (not by our reader): ISO/TS 13499's header
+     * fields, 28 columns then ':', and one sample a line after "Number of samples" */
+    char chn[200], line[256];
+    snprintf(chn, sizeof chn, "%s/Channel/T001.002", dir);
+    FILE *cf = fopen(chn, "r");
+    CHECK(cf != NULL);
+    int nhead = 0, nval = 0, bad = 0;
+    for (int in_data = 0; cf && fgets(line, sizeof line, cf);) {
+        if (in_data) {
+            bad += nval >= 100 || fabs(strtod(line, NULL) - y1[nval]) > 1e-9 * 2000;
+            nval++;
+            continue;
+        }
+        nhead += !strcmp(line, "Name of the channel         :11NECKUP00H3FOZB\n") ||
+                 !strcmp(line, "Unit                        :N\n") ||
+                 !strcmp(line, "Time of first sample        :-0.01\n") ||
+                 !strcmp(line, "Sampling interval           :0.0001\n");
+        in_data = !strcmp(line, "Number of samples           :100\n");
+    }
+    if (cf) fclose(cf);
+    CHECK(nhead == 4 && nval == 100 && bad == 0);
     char ref[256];
     snprintf(ref, sizeof ref, "%s:11head0000h3acxp", mme);
     CHECK(an_signal_read_ref(ref, &r, &e) == MCS_OK);

@@ -135,7 +135,7 @@ static void check_shift(int k, double ep)
     CHECK(an_cora_arrays(r, c, N, 0.0, DT, NULL, &res, &err) == MCS_OK);
     CHECK(res.shift == k);
     CHECK_NEAR(res.shift_time, k * DT, 1e-15);
-    CHECK_NEAR(res.phase, ep, 1e-9);
+    CHECK_NEAR(res.phase, ep, 1e-12);
     CHECK_NEAR(res.progression, 1.0, 1e-12);
     CHECK_NEAR(res.size, 1.0, 1e-12);
 }

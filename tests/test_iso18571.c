@@ -246,7 +246,7 @@ static void test_constant_offset(void)
     CHECK(an_iso18571_arrays(r, c, N, 1e-4, NULL, &res, &err) == MCS_OK);
     CHECK(res.shift == 0);
     CHECK_NEAR(res.phase, 1.0, 0);
-    CHECK_NEAR(res.slope, 1.0, 1e-9);
+    CHECK_NEAR(res.slope, 1.0, 1e-12);
     CHECK_NEAR(res.corridor, 64.0 / 81.0, 1e-12);
     CHECK(res.magnitude > 0 && res.magnitude < 1);
 }

@@ -280,9 +280,11 @@ static void test_attachment_break(void)
     CHECK_NEAR(s.t_break, tb, 2 * h);
     mb_body_kin kin;
     mb_body_get(w, b, &kin);
-    /* after the break: free acceleration F0/m from the velocity at break */
-    double vb = F0 / (mass * wn) * sin(wn * s.t_break);
-    CHECK_NEAR(kin.vel[0], vb + F0 / mass * (mb_world_time(w) - s.t_break), 0.02 * kin.vel[0]);
+    /* after the break: free acceleration F0/m from the exact velocity at the exact break time
+     * t_b; the break is found at the end of a step, up to h late, when the spring (at most
+     * Ff) has held it back that long: |dv| <= Ff h / m = 3.75e-3 m/s (measured 1.2e-3) */
+    double vx = F0 / (mass * wn) * sin(wn * tb) + F0 / mass * (mb_world_time(w) - tb);
+    CHECK_NEAR(kin.vel[0], vx, Ff * h / mass);
     CHECK(mb_attach_stored(&m, &s) == 0);
     mb_world_destroy(&w);
 }

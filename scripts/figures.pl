@@ -15,7 +15,8 @@ while (my $l = <$in>) {
     my ($k, $t) = split /\t/, $l, 2;
     next unless defined $t;
     if (exists $fig{$k} && $fig{$k} ne $t) {
-        print STDERR "figures.pl: $k produced as '$fig{$k}' and '$t'\n";
+        print STDERR "figures.pl: $k produced as '$fig{$k}' and '$t' (by make test's and "
+            . "make verify's runs? a figure that depends on the mode needs a key for each)\n";
         $bad = 1;
     }
     $fig{$k} = $t;

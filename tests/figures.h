@@ -9,7 +9,8 @@
  * hold the key's marker, it checks the value against each marker's number: within one unit of
  * the marker's last digit (FIG), or within tol (FIG_TOL). `make figures` runs the tests with
  * MCRASH_FIGURES_OUT set, which appends "key<TAB>text" lines to that file instead of checking,
- * and scripts/figures.pl rewrites the markers from them. Keys are literal strings in the test
+ * and scripts/figures.pl rewrites the markers from them; it runs the tests as `make test` and as
+ * `make verify` do, and a key stated in both must read the same (else give each mode a key). Keys are literal strings in the test
  * source ([a-z0-9_.-]): tests/test_figures.c checks that every marker has one. */
 #ifndef MCS_FIGURES_H
 #define MCS_FIGURES_H

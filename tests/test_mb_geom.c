@@ -256,7 +256,7 @@ static void test_ee_aligned(void)
 static void test_ee_rotated_brute(void)
 {
     int ncase = th_verify() ? 12 : 4;
-    double worst = 0;
+    double worst = 0, worst4 = 0; /* over all cases, over make test's first 4 */
     for (int trial = 0; trial < ncase; trial++) {
         mb_ellipsoid a =
             ell(0, 0, 0, 0.06 + 0.1 * urand(), 0.06 + 0.1 * urand(), 0.06 + 0.1 * urand());
@@ -288,9 +288,13 @@ static void test_ee_rotated_brute(void)
         CHECK(bd >= c.depth - 2 * smax * 3.5e-4);
         CHECK(fabs(mb_dot(nb, c.normal)) > 0.99);
         worst = fmax(worst, c.depth - bd);
+        if (trial < 4)
+            worst4 = worst;
     }
     printf("  ellipsoid-ellipsoid vs brute force: worst depth difference %.3g m\n", worst);
-    FIG("contact_geometry.ee_brute_worst", "%.0e", worst);
+    FIG("contact_geometry.ee_brute_worst", "%.0e", worst4);
+    if (ncase > 4)
+        FIG("contact_geometry.ee_brute_worst_verify", "%.0e", worst);
 }
 
 /* concentric (deep, degenerate): the depth is the smallest h_A + h_B over the axes */

@@ -105,7 +105,7 @@ static void detect_pair(const mb_model *m, mb_state *s, int i)
     }
     const mb_ellipsoid ea = s->surf_ell[p->sa]; /* placed once per step (mb_contact_detect) */
     if (sb->type == MB_SURF_FACET) {
-        mb_facet_detect(&ea, sb, kin_of(s, p->bb), s->pair[i].depth, c);
+        mb_facet_detect(&ea, sb, kin_of(s, p->bb), s->pair[i].depth, &s->pair[i].latch, c);
         return;
     }
     if (sb->type == MB_SURF_PLANE) {

@@ -5,7 +5,7 @@
 #include <string.h>
 
 void mb_facet_detect(const mb_ellipsoid *ea, const mb_surface *sf, const mb_body_kin *k,
-                     double prev_depth, mb_contact *c)
+                     double prev_depth, mb_mesh_latch *latch, mb_contact *c)
 {
     mb_pose pose = {.pos = {0, 0, 0}, .rot = {1, 0, 0, 0, 1, 0, 0, 0, 1}};
     if (k) {
@@ -13,5 +13,5 @@ void mb_facet_detect(const mb_ellipsoid *ea, const mb_surface *sf, const mb_body
         memcpy(pose.rot, k->rot, sizeof pose.rot);
     }
     double smin = fmin(ea->semi[0], fmin(ea->semi[1], ea->semi[2]));
-    mb_geom_ellipsoid_mesh_deepest_capped(ea, sf->mesh, &pose, prev_depth + 0.25 * smin, c);
+    mb_geom_ellipsoid_mesh_deepest_latched(ea, sf->mesh, &pose, prev_depth + 0.25 * smin, latch, c);
 }

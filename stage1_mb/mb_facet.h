@@ -23,15 +23,20 @@
  * step plus a quarter of the ellipsoid's smallest semi-axis is ignored. Such a contact cannot
  * come from motion over one step (10 um at 10 m/s); it appears when the centre of an ellipsoid
  * that has come through a panel from behind (a head through the side glass, under the roof)
- * crosses the panel's plane, and it would add the energy of a sudden deep penetration. */
+ * crosses the panel's plane, and it would add the energy of a sudden deep penetration. The
+ * pair's latch keeps such a triangle ignored until its contact ends (else it would begin at the
+ * cap's depth once it shrinks below it). The same one-sidedness ends a contact at depth when
+ * the centre passes a panel's plane beside its open edge: that contact's stored energy is lost
+ * (docs/contact_geometry.md, known limit). */
 #ifndef MB_FACET_H
 #define MB_FACET_H
 
 #include "stage1_mb/mb_model.h"
 
 /* contact of an ellipsoid (placed in the world) with facet surface sf of a body at pose k
- * (NULL: the world); c->depth = 0 when apart */
+ * (NULL: the world); prev_depth: the pair's depth at the last step [m]; latch: the pair's
+ * latched triangles (updated); c->depth = 0 when apart */
 void mb_facet_detect(const mb_ellipsoid *ea, const mb_surface *sf, const mb_body_kin *k,
-                     double prev_depth, mb_contact *c);
+                     double prev_depth, mb_mesh_latch *latch, mb_contact *c);
 
 #endif

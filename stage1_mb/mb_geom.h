@@ -124,4 +124,18 @@ int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *
                                           const mb_pose *pose, double max_depth,
                                           mb_contact *deepest);
 
+/* triangles whose contact began deeper than the cap: ignored for as long as that contact lasts
+ * (a contact that shrinks below the cap would otherwise begin at the cap's depth at once) */
+enum { MB_LATCH_MAX = 4 };
+typedef struct {
+    int n;                 /* latched triangles                                       */
+    int tri[MB_LATCH_MAX]; /* their indices into the mesh                             */
+} mb_mesh_latch;
+/* the capped query with a latch (state of the caller, zero at first): a latched triangle is
+ * skipped until it is out of contact, a triangle over the cap joins the latch (while there is
+ * room; otherwise it is skipped for this call only) */
+int mb_geom_ellipsoid_mesh_deepest_latched(const mb_ellipsoid *a, const mb_mesh *m,
+                                           const mb_pose *pose, double max_depth,
+                                           mb_mesh_latch *latch, mb_contact *deepest);
+
 #endif

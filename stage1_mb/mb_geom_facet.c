@@ -496,12 +496,47 @@ int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *
                                           const mb_pose *pose, double max_depth,
                                           mb_contact *deepest)
 {
+    return mb_geom_ellipsoid_mesh_deepest_latched(a, m, pose, max_depth, NULL, deepest);
+}
+
+static int latched(const mb_mesh_latch *l, int t)
+{
+    for (int i = 0; l && i < l->n; i++)
+        if (l->tri[i] == t) return 1;
+    return 0;
+}
+
+/* a contact over the cap: skipped now, and latched while there is room */
+static void latch_add(mb_mesh_latch *l, int t)
+{
+    if (l && l->n < MB_LATCH_MAX && !latched(l, t)) l->tri[l->n++] = t;
+}
+
+/* release the latched triangles that are out of contact (their whole contact, uncapped) */
+static void latch_release(const ell_frame *e, const mb_mesh *m, mb_mesh_latch *l)
+{
+    int k = 0;
+    for (int i = 0; l && i < l->n; i++) {
+        int t = l->tri[i];
+        const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
+        mb_contact c;
+        mb_contact_clear(&c);
+        if (tri_contact(e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, 0, &c)) l->tri[k++] = t;
+    }
+    if (l) l->n = k;
+}
+
+int mb_geom_ellipsoid_mesh_deepest_latched(const mb_ellipsoid *a, const mb_mesh *m,
+                                           const mb_pose *pose, double max_depth,
+                                           mb_mesh_latch *latch, mb_contact *deepest)
+{
     enum { NCAND = 512 };
     mb_contact_clear(deepest);
     ell_frame e;
     double lo[3], hi[3], dp[NCAND], qnn[NCAND], out[NCAND][3];
     int cand[NCAND], nc = 0;
     ell_in_mesh(a, pose, &e, lo, hi);
+    latch_release(&e, m, latch);
     int stack[BVH_STACK], sp = 1;
     stack[0] = 0;
     const bvh_node *nd;
@@ -510,6 +545,7 @@ int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *
     while ((nd = next_leaf(m, stack, &sp, lo, hi))) {
         for (int i = nd->first; i < nd->first + nd->count; i++) {
             int t = m->tri_order[i];
+            if (latched(latch, t)) continue;
             const double *v[3] = {mesh_v(m, t, 0), mesh_v(m, t, 1), mesh_v(m, t, 2)};
             mb_contact c;
             mb_contact_clear(&c);
@@ -520,6 +556,7 @@ int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *
                     return mb_geom_ellipsoid_mesh(a, m, pose, deepest, NULL, 0) > 0;
                 cand[nc] = t, dp[nc++] = d;
             }
+            if (f > 0 && c.depth > max_depth) latch_add(latch, t);
             if (f <= 0 || !(c.depth > deepest->depth) || c.depth > max_depth) continue;
             c.tri = t;
             finish(&c);
@@ -536,8 +573,12 @@ int mb_geom_ellipsoid_mesh_deepest_capped(const mb_ellipsoid *a, const mb_mesh *
         mb_contact_clear(&c);
         if (!tri_edges(&e, v, m->tri_n + 3 * t, m->tri_m + 9 * t, qnn[i], out[i], deepest->depth,
                        &c) ||
-            !(c.depth > deepest->depth) || c.depth > max_depth)
+            !(c.depth > deepest->depth))
             continue;
+        if (c.depth > max_depth) {
+            latch_add(latch, t);
+            continue;
+        }
         c.tri = t;
         finish(&c);
         *deepest = c;

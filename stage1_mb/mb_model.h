@@ -196,6 +196,7 @@ typedef struct {
     double fn;         /* normal force at the last step [N]                                 */
     double depth;      /* penetration at the last step [m]                                  */
     double ft[3];      /* friction force on a at the last step, world [N]                    */
+    mb_mesh_latch latch; /* facets: triangles whose contact began over the cap (mb_facet.h)  */
 } mb_pair_state;
 
 typedef struct mb_state mb_state;

@@ -59,6 +59,7 @@ static int record(const fe_model *m, fe_state *s, int node, int nsteps, double *
  * period by (w dt)^2/24 (Belytschko, Liu & Moran 2000, Sec. 6.3): dt = T/2000 -> 4e-7 */
 static void test_spring_mass_period(void)
 {
+    double perr = 0, eerr = 0; /* worst over both: period (relative), energy (of e0) */
     for (int two = 0; two < 2; two++) {
         fe_builder *b;
         mcs_error err = {0};
@@ -105,18 +106,22 @@ static void test_spring_mass_period(void)
         /* the stretch starts at 0 going up: crossings at T, 2T, 3T */
         int nc = up_crossings(t, x, n, tc, 8);
         CHECK(nc >= 3);
-        if (nc >= 3) {
-            CHECK_REL(tc[2] - tc[0], 2 * T, 1e-5);
-            CHECK_REL(tc[0], T, 1e-4);
-        }
+        if (nc >= 3)
+            perr = fmax(perr, fmax(fabs((tc[2] - tc[0]) / (2 * T) - 1), fabs(tc[0] / T - 1)));
         /* energy: total constant; kinetic + spring energy = 1/2 m v0^2 (two masses: the
          * second is at rest at t = 0) */
         double e0 = 0.5 * mass * 0.25;
-        CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-6 * e0);
-        CHECK_REL(s->energy[FE_E_kinetic] + s->energy[FE_E_internal], e0, 1e-5);
+        eerr = fmax(eerr, fabs(s->energy[FE_E_total] - s->energy0) / e0);
+        eerr = fmax(eerr, fabs(s->energy[FE_E_kinetic] + s->energy[FE_E_internal] - e0) / e0);
         fe_state_destroy(&s);
         fe_model_destroy(&m);
     }
+    printf("  spring-mass: period to %.2e (central differences: (w dt)^2/24 = %.2e), energy to "
+           "%.1e of e0\n", perr, pow(2 * M_PI / 2000, 2) / 24, eerr);
+    FIG("fe.spring_period_err", "%.0e", perr);
+    FIG("fe.spring_energy_err", "%.0e", eerr);
+    CHECK(perr < 1.2e-6); /* 4e-7 stated, the central-difference error */
+    CHECK(eerr < 3e-13); /* 1e-13 stated */
 }
 
 /* viscous damping c: x = A exp(-z w t) sin(w_d t), z = c / (2 sqrt(k m)), w_d = w sqrt(1 - z^2):
@@ -163,14 +168,20 @@ static void test_spring_damper_decay(void)
             xp[np++] = x[i] - 0.125 * d1 * d1 / d2;
         }
     CHECK(np >= 3);
+    double terr = 1, rerr = 1;
     if (np >= 3) {
-        CHECK_REL(tp[2] - tp[1], Td, 1e-3);
-        CHECK_REL(xp[2] / xp[1], exp(-z * w * Td), 1e-3);
-        CHECK_REL(log(xp[1] / xp[0]), -z * w * Td, 1e-2);
+        terr = fabs((tp[2] - tp[1]) / Td - 1);
+        rerr = fabs(xp[2] / xp[1] / exp(-z * w * Td) - 1);
+        CHECK_REL(log(xp[1] / xp[0]), -z * w * Td, 1e-2); /* the first peak: phase shifted */
     }
-    double e0 = 0.5 * mass * 1.0;
+    double e0 = 0.5 * mass * 1.0, berr = fabs(s->energy[FE_E_total] - s->energy0) / e0;
+    printf("  spring-damper: T_d to %.1e, peak ratio to %.1e, balance %.1e of e0\n", terr, rerr,
+           berr);
+    FIG("fe.damper_period_err", "%.0e", terr);
+    FIG("fe.damper_ratio_err", "%.0e", rerr);
+    FIG("fe.damper_balance", "%.0e", berr);
     CHECK(s->energy[FE_E_dissipated] > 0.5 * e0);
-    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-3 * e0);
+    CHECK(terr < 1.2e-4 && rerr < 4e-5 && berr < 2.4e-4); /* 4e-05, 1e-05, 8e-05 stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }
@@ -207,13 +218,19 @@ static void test_spring_curve(void)
         double f = d <= 0.01 ? 1e4 * d : 100 + 3e4 * (d - 0.01);
         maxerr = fmax(maxerr, fabs(s->spring_f[0] - f));
     }
-    CHECK(maxerr < 1e-9 * 100);
+    printf("  tabulated spring: force to %.1e N of 100\n", maxerr);
+    FIG("fe.tabspring_force_err", "%.0e", maxerr / 100);
+    CHECK(maxerr < 6e-13 * 100); /* 2e-13 stated */
     /* energy stored = integral of the curve, supplied as external (constraint) work */
     double d = 0.2 * s->energy_time;
     CHECK(d > 0.015);
     double w = 0.5 * 1e4 * 0.01 * 0.01 + 100 * (d - 0.01) + 0.5 * 3e4 * (d - 0.01) * (d - 0.01);
-    CHECK_REL(s->energy[FE_E_internal], w, 1e-5); /* trapezoid across the kink */
-    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-5 * w);
+    double werr = fabs(s->energy[FE_E_internal] / w - 1); /* trapezoid across the kink */
+    double berr = fabs(s->energy[FE_E_total] - s->energy0) / w;
+    printf("  tabulated spring: energy to %.1e of the integral, balance %.1e\n", werr, berr);
+    FIG("fe.tabspring_energy_err", "%.0e", werr);
+    FIG("fe.tabspring_balance", "%.0e", berr);
+    CHECK(werr < 2.2e-6 && berr < 3e-13); /* 7e-07, 9e-14 stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }
@@ -250,13 +267,20 @@ static void test_gravity_free_fall(void)
     }
     /* the part's acceleration (the internal forces cancel) is g to round-off; single nodes
      * see round-off stresses of the moving mesh (~1e-11 Pa) */
-    CHECK_REL(abar, -g, 1e-12);
-    CHECK(amax <= 1e-11 * g);
-    CHECK(xerr <= 1e-12);
+    printf("  free fall: part acceleration to %.1e of g, nodes %.1e of g, positions %.1e m\n",
+           fabs(abar / g + 1), amax / g, xerr);
+    FIG("fe.fall_accel_err", "%.0e", fabs(abar / g + 1));
+    FIG("fe.fall_x_err_m", "%.0e", xerr);
+    CHECK(fabs(abar / g + 1) < 7e-16); /* 2e-16 stated */
+    CHECK(amax <= 5e-12 * g); /* 1.4e-12 measured */
+    CHECK(xerr <= 6e-15); /* 2e-15 stated */
     /* KE(t_n) = 1/2 M (v0^2 + (g t_n)^2) up to the half-step product; total constant */
     double tn = s->energy_time, M = m->mass_total;
     CHECK_REL(s->energy[FE_E_external_work], 0.5 * M * g * g * tn * tn, 1e-4);
-    CHECK_NEAR(s->energy[FE_E_total], s->energy0, 1e-9 * s->energy[FE_E_kinetic]);
+    double fb = fabs(s->energy[FE_E_total] - s->energy0) / s->energy[FE_E_kinetic];
+    printf("  free fall: balance %.1e of KE\n", fb);
+    FIG("fe.fall_balance", "%.0e", fb);
+    CHECK(fb < 3e-15); /* 9e-16 stated */
     CHECK_NEAR(s->energy[FE_E_internal], 0, 1e-12);
     fe_state_destroy(&s);
     fe_model_destroy(&m);

@@ -84,6 +84,7 @@ static void test_triangle_states(void)
     double R[3][3], I3[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     rotation(ax, 2.1, R);
     const double *f = s->slot_f + 3 * m->slot_base[FE_KIND_SHELL];
+    double uerr = 0, werr = 0; /* worst relative errors, uniaxial and wrinkled, both rotations */
     for (int rot = 0; rot < 2; rot++) {
         const double(*Q)[3] = rot ? (const double(*)[3])R : (const double(*)[3])I3;
         /* uniaxial: E11 = (l^2 - 1)/2 = 0.01, E22 = -nu E11 */
@@ -91,17 +92,18 @@ static void test_triangle_states(void)
         double U[2][2] = {{l1, 0}, {0, l2}};
         deform_triangle(m, s, U, Q);
         fe_internal_forces(m, s);
-        CHECK_REL(s->shell_sig[0], E_F * e11, 1e-12);
-        CHECK_NEAR(s->shell_sig[1], 0, 1e-9 * E_F * e11);
-        CHECK_NEAR(s->shell_sig[2], 0, 1e-9 * E_F * e11);
+        uerr = fmax(uerr, fabs(s->shell_sig[0] / (E_F * e11) - 1));
+        uerr = fmax(uerr, fmax(fabs(s->shell_sig[1]), fabs(s->shell_sig[2])) / (E_F * e11));
         double fs[3] = {0};
         for (int k = 0; k < 3; k++)
             for (int i = 0; i < 3; i++) fs[i] += f[3 * k + i];
-        CHECK(fabs(fs[0]) + fabs(fs[1]) + fabs(fs[2]) < 1e-9 * fabs(f[0] + f[1] + f[2] + 1));
+        /* the forces balance (relative to the pulled node's) */
+        uerr = fmax(uerr, (fabs(fs[0]) + fabs(fs[1]) + fabs(fs[2])) /
+                              sqrt(f[3] * f[3] + f[4] * f[4] + f[5] * f[5]));
         /* the pulled edge (nodes 1 at x = a) carries S11 A t along x: the force on node 1 is
          * P N = F S grad N, here lambda1 S11 b_1 A0 t with b_1 = 1/a, A0 = a^2/2 */
         double fx = Q[0][0] * f[3] + Q[1][0] * f[4] + Q[2][0] * f[5]; /* along R e_x */
-        CHECK_REL(fx, l1 * E_F * e11 * 0.05 * T_F, 1e-12);
+        uerr = fmax(uerr, fabs(fx / (l1 * E_F * e11 * 0.05 * T_F) - 1));
         /* biaxial compression: nothing */
         double Uc[2][2] = {{0.95, 0.01}, {0, 0.97}};
         deform_triangle(m, s, Uc, Q);
@@ -114,10 +116,15 @@ static void test_triangle_states(void)
         double Uw[2][2] = {{l1, 0}, {0, sqrt(1 - 0.04)}};
         deform_triangle(m, s, Uw, Q);
         fe_internal_forces(m, s);
-        CHECK_REL(s->shell_sig[0], E_F * e11, 1e-12);
-        CHECK_NEAR(s->shell_sig[1], 0, 1e-12 * E_F);
-        CHECK_NEAR(s->shell_sig[2], 0, 1e-12 * E_F);
+        werr = fmax(werr, fabs(s->shell_sig[0] / (E_F * e11) - 1));
+        werr = fmax(werr, fmax(fabs(s->shell_sig[1]), fabs(s->shell_sig[2])) / (E_F * e11));
     }
+    printf("  triangle: uniaxial stress and forces to %.1e, wrinkled to %.1e (relative)\n", uerr,
+           werr);
+    FIG("fe.memb_uniaxial_err", "%.0e", uerr);
+    FIG("fe.memb_wrinkled_err", "%.0e", werr);
+    CHECK(uerr < 6e-14); /* 2e-14 stated: round-off */
+    CHECK(werr < 6e-14); /* 2e-14 stated */
     /* taut general state: forces are the energy gradient */
     double U[2][2] = {{1.02, 0.005}, {-0.003, 1.01}};
     deform_triangle(m, s, U, R);
@@ -127,6 +134,8 @@ static void test_triangle_states(void)
     fe_fabric_c fc;
     fe_fabric_constants(&m->part[0].material, &fc);
     const double h = 1e-7;
+    double fscale = 0, fderr = 0;
+    for (int i = 0; i < 9; i++) fscale = fmax(fscale, fabs(f0[i]));
     for (int k = 0; k < 3; k++)
         for (int i = 0; i < 3; i++) {
             double w[2];
@@ -144,8 +153,12 @@ static void test_triangle_states(void)
                 CHECK(fe_fabric_stress(&fc, e, S) == FE_FABRIC_TAUT);
                 w[sg] = 0.5 * (S[0] * e[0] + S[1] * e[1] + 2 * S[2] * e[2]) * r.area * T_F;
             }
-            CHECK_NEAR(f0[3 * k + i], (w[1] - w[0]) / (2 * h), 1e-6 * fabs(f0[0]) + 1e-6);
+            fderr = fmax(fderr, fabs(f0[3 * k + i] - (w[1] - w[0]) / (2 * h)) / fscale);
         }
+    /* central differences of h = 1e-7: truncation O(h^2) and round-off eps W / h */
+    printf("  triangle: forces against central differences of W to %.1e of the largest\n", fderr);
+    FIG("fe.memb_grad_err", "%.0e", fderr);
+    CHECK(fderr < 3e-10 && fscale > 0); /* 9e-11 stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }
@@ -175,9 +188,9 @@ static void test_orthotropic(void)
     deform_triangle(m, s, U, I3);
     fe_internal_forces(m, s);
     const double nu21 = NU_F * E2 / E_F, dd = 1 - NU_F * nu21;
-    CHECK_REL(s->shell_sig[0], E_F / dd * ea, 1e-9);
-    CHECK_REL(s->shell_sig[1], NU_F * E2 / dd * ea, 1e-9);
-    CHECK_NEAR(s->shell_sig[2], 0, 1e-9 * E_F * ea);
+    double terr = fmax(fabs(s->shell_sig[0] / (E_F / dd * ea) - 1),
+                       fabs(s->shell_sig[1] / (NU_F * E2 / dd * ea) - 1));
+    terr = fmax(terr, fabs(s->shell_sig[2]) / (E_F * ea));
     /* shortening along b = (-s, c): no stress */
     const double lb = sqrt(1 - 2 * 0.01);
     double Ub[2][2] = {{1 + (lb - 1) * sn * sn, -(lb - 1) * c * sn}, {-(lb - 1) * c * sn, 1 + (lb - 1) * c * c}};
@@ -191,9 +204,13 @@ static void test_orthotropic(void)
                        {c * sn * (la - lw), sn * sn * la + c * c * lw}};
     deform_triangle(m, s, Uw, I3);
     fe_internal_forces(m, s);
-    CHECK_REL(s->shell_sig[0], E_F * ea, 1e-8);
-    CHECK_NEAR(s->shell_sig[1], 0, 1e-8 * E_F * ea);
-    CHECK_NEAR(s->shell_sig[2], 0, 1e-8 * E_F * ea);
+    double werr = fabs(s->shell_sig[0] / (E_F * ea) - 1);
+    werr = fmax(werr, fmax(fabs(s->shell_sig[1]), fabs(s->shell_sig[2])) / (E_F * ea));
+    printf("  orthotropic at 30 deg: taut to %.1e, wrinkled to %.1e (relative)\n", terr, werr);
+    FIG("fe.ortho_taut_err", "%.0e", terr);
+    FIG("fe.ortho_wrinkled_err", "%.0e", werr);
+    CHECK(terr < 3e-13); /* 1e-13 stated: round-off */
+    CHECK(werr < 2e-8);  /* 7e-09 stated */
     fe_state_destroy(&s);
     fe_model_destroy(&m);
 }
@@ -216,12 +233,13 @@ static void test_tension_field(void)
                                  {-0.004, 0.01, -0.003}}; /* wrinkled, b stretched */
     const int want[5] = {FE_FABRIC_WRINKLED, FE_FABRIC_WRINKLED, FE_FABRIC_TAUT, FE_FABRIC_SLACK,
                          FE_FABRIC_WRINKLED};
+    double uerr = 0, fderr = 0; /* relative to E 0.01 */
     for (int k = 0; k < 5; k++) {
         double S[3];
         int st = fe_fabric_stress(&c, states[k], S);
         CHECK(st == want[k]);
         double m = 0.5 * (S[0] + S[1]), r = sqrt(0.25 * (S[0] - S[1]) * (S[0] - S[1]) + S[2] * S[2]);
-        if (st != FE_FABRIC_TAUT) CHECK_NEAR(m - r, 0, 1e-9 * E_F * 0.01);
+        if (st != FE_FABRIC_TAUT) uerr = fmax(uerr, fabs(m - r) / (E_F * 0.01));
         CHECK(m + r >= 0);
         const double h = 1e-7;
         for (int i = 0; i < 3; i++) {
@@ -231,9 +249,15 @@ static void test_tension_field(void)
             /* the shear stress pairs with 2 E12: dW/dE12 = 2 S12 */
             ep[i] += h, em[i] -= h;
             double d = (fe_fabric_energy(&c, ep) - fe_fabric_energy(&c, em)) / (2 * h);
-            CHECK_NEAR(i == 2 ? 0.5 * d : d, S[i], 1e-6 * E_F * 0.01);
+            fderr = fmax(fderr, fabs((i == 2 ? 0.5 * d : d) - S[i]) / (E_F * 0.01));
         }
     }
+    printf("  tension field: minor principal stress %.1e, S against dW/dE %.1e (of E 0.01)\n",
+           uerr, fderr);
+    FIG("fe.tfield_uniaxial_err", "%.0e", uerr);
+    FIG("fe.tfield_grad_err", "%.0e", fderr);
+    CHECK(uerr < 3e-16);   /* 9e-17 stated: round-off */
+    CHECK(fderr < 1.5e-8); /* 5e-09 stated (differences of h = 1e-7) */
     /* isotropic: the mixed criterion's closed form */
     fe_material_desc iso = fabric_part("y").material;
     fe_fabric_constants(&iso, &c);

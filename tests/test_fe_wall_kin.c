@@ -7,7 +7,7 @@
 #include "tests/harness.h"
 #include "tests/figures.h"
 #include "fe/fe_solid.h"
-#include "tests/fe_test_util.h"
+#include "tests/fe_test_build.h"
 
 /* a dummy part far behind the wall (not a slave) and n point masses at x[i] with velocity
  * v[i] along x; a free kinematic wall of mass M at x = 0, normal +x, at rest */
@@ -266,8 +266,91 @@ static void test_threads_bitwise(void)
     fe_model_destroy(&m);
 }
 
+/* the known limit of docs/fe.md: a soft elastic block (50 mm, 5^3 hexes, E 1 MPa, nu 0.3,
+ * rho 100 kg/m^3, c = sqrt(E/rho) = 100 m/s) at v onto a rigid wall at x = 0. Elastic, so the
+ * reference is conservation: the total energy stays E0 = 1/2 m v^2. The energy check is off;
+ * *growth is the largest (total - E0) / E0 until 1 ms (the contact lasts about 2L/c = 1 ms) and
+ * *t5 the time it first exceeds 5 % (where the default check stops a run; -1: never). moving: the
+ * wall moves at v into the block at rest. penalty > 0: a penalty wall of that scale. */
+typedef struct {
+    double growth, t5, dv; /* dv: final mean velocity of the block (moving wall: relative) */
+    double dt;             /* the first step [s] */
+    mcs_status st;
+} soft_run;
+
+static soft_run soft_block(double v, int moving, double penalty, double dt_scale)
+{
+    soft_run r = {.t5 = -1, .st = MCS_ERR_RANGE};
+    fe_part_desc d = ft_part("block", FE_SECTION_SOLID, 1e6, 0.3, 100);
+    ft_box(&d, 0.05, 0.05, 0.05, 5, 5, 5);
+    d.mesh.origin[0] = 1e-6;
+    if (!moving) d.initial_velocity[0] = -v;
+    fe_builder *b;
+    mcs_error err = {0};
+    CHECK(ft_builder(&b, &d, NULL, &err) == MCS_OK);
+    fe_wall_desc w = {.normal = {1, 0, 0}, .penalty_scale = penalty,
+                      .method = penalty > 0 ? FE_WALL_PENALTY : FE_WALL_KINEMATIC};
+    if (moving) w.velocity[0] = v;
+    snprintf(w.name, sizeof w.name, "wall");
+    CHECK(fe_builder_add_wall(b, &w, &err) == MCS_OK);
+    fe_opts o = fe_opts_default();
+    o.energy_growth_limit = 0;
+    o.dt_scale = dt_scale;
+    fe_model *m = NULL;
+    fe_state *s = NULL;
+    if (ft_model_state(&b, &o, &m, &s, &err) != MCS_OK) return r;
+    const double E0 = 0.5 * 100 * 0.05 * 0.05 * 0.05 * v * v;
+    r.dt = s->dt;
+    while (s->time < 1e-3 && fe_step(m, s) == MCS_OK) {
+        double g = (s->energy[FE_E_total] - s->energy0) / E0;
+        r.growth = fmax(r.growth, g);
+        if (r.t5 < 0 && g > 0.05) r.t5 = s->time;
+    }
+    r.st = s->err.status;
+    double p = 0, mt = 0;
+    for (int n = 0; n < m->nnode; n++)
+        p += m->node_mass[n] * s->node_v[3 * n], mt += m->node_mass[n];
+    r.dv = p / mt - (moving ? s->wall_v[0] : 0);
+    printf("  soft block %g m/s, %s %s wall (scale %g), dt_scale %g: largest energy growth "
+           "%.3g %% of E0, over 5 %% at %.3g ms, %s\n", v, moving ? "moving" : "fixed",
+           penalty > 0 ? "penalty" : "kinematic", penalty, dt_scale, 100 * r.growth,
+           1e3 * r.t5, r.st == MCS_OK ? "ran" : s->err.msg);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+    return r;
+}
+
+/* the figures of docs/fe.md's known limit: at 0.3 c the kinematic wall gains energy, the moving
+ * wall the same (the same relative motion, Galilean invariance), a penalty wall (scale 0.1)
+ * conserves it, a stiffer penalty wall (scale 1) fails, and a smaller step cures the kinematic
+ * wall: the error is the step's */
+static void test_soft_block_limit(void)
+{
+    soft_run k30 = soft_block(30, 0, 0, 0.9), mv30 = soft_block(30, 1, 0, 0.9);
+    soft_run p30 = soft_block(30, 0, 0.1, 0.9), p1 = soft_block(30, 0, 1, 0.9);
+    soft_run k10 = soft_block(10, 0, 0, 0.9);
+    soft_run s3 = soft_block(30, 0, 0, 0.3), s1 = soft_block(30, 0, 0, 0.1);
+    FIG("fe.softblock_kin30_pct", "%.0f", 100 * k30.growth);
+    FIG("fe.softblock_kin30_t5_ms", "%.2f", 1e3 * k30.t5);
+    FIG("fe.softblock_pen_pct", "%.2f", 100 * p30.growth);
+    FIG("fe.softblock_pen1_t5_ms", "%.2f", 1e3 * p1.t5);
+    /* the landing row (10 mm) stopped in one step: its strain v dt / h */
+    FIG("fe.softblock_strain_pct", "%.0f", 100 * 30 * k30.dt / 0.01);
+    FIG("fe.softblock_kin10_pct", "%.1f", 100 * k10.growth);
+    FIG("fe.softblock_dts03_pct", "%.1f", 100 * s3.growth);
+    FIG("fe.softblock_dts01_pct", "%.2f", 100 * s1.growth);
+    printf("  moving minus fixed wall: growth %.2e, rebound %.2e m/s\n",
+           mv30.growth - k30.growth, mv30.dv - k30.dv);
+    CHECK(k30.st == MCS_OK && mv30.st == MCS_OK && p30.st == MCS_OK && k10.st == MCS_OK);
+    CHECK(k30.growth > 0.05 && k30.t5 > 0);      /* the limit is still there */
+    CHECK_NEAR(mv30.growth, k30.growth, 1e-12); /* the same relative motion */
+    CHECK(p1.t5 > 0);
+    CHECK(p30.growth < 0.01 && s1.growth < 0.01 && s3.growth < 0.02);
+}
+
 int main(void)
 {
+    RUN(test_soft_block_limit);
     RUN(test_plastic_collision);
     RUN(test_active_set);
     RUN(test_bar_onto_free_wall);

@@ -538,6 +538,7 @@ static void test_413(void)
     CHECK(f.phi_max > f.phi_e && f.t_plastic < f.t_stop);
     CHECK(f.drift < 1e-2);
     CHECK(f.dp_err < 1e-8 * 208 * 13.4); /* momentum: only the road acts along the heading */
+    FIG_TOL("models.s413_dp_err", "%.0e", f.dp_err, 1e-8 * 208 * 13.4); /* round-off: the tolerance */
     fig_car(s413_keys, &f);
     FIG("models.sedan_mass", "%.0f", f.m_opp);
     FIG("models.s413_nbody", "%.0f", (double)f.nbody);
@@ -560,6 +561,7 @@ static void test_mymosa(void)
     CHECK(f.phi_max > f.phi_e && f.t_plastic < f.t_stop);
     CHECK(f.drift < 1e-2);
     CHECK(f.dp_err < 1e-8 * 208 * 13.4); /* momentum: only the road acts along the heading */
+    FIG_TOL("models.smym_dp_err", "%.0e", f.dp_err, 1e-8 * 208 * 13.4); /* round-off: the tolerance */
     fig_car(smym_keys, &f);
 }
 
@@ -577,6 +579,7 @@ static void test_moving(void)
     CHECK(f.phi_max > f.phi_e && f.t_plastic < f.t_stop);
     CHECK(f.drift < 1e-2);
     CHECK(f.dp_err < 1e-8 * 208 * 13.4); /* momentum: only the road acts along the heading */
+    FIG_TOL("models.smov_dp_err", "%.0e", f.dp_err, 1e-8 * 208 * 13.4); /* round-off: the tolerance */
     fig_car(smov_keys, &f);
 }
 

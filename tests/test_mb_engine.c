@@ -48,7 +48,8 @@ static mb_model *load_text(const char *text, mcs_error *err)
 /* Elastic bounce: energy is conserved, so the ball climbs back to its drop height 0.5 m.
  * Errors: the free fall of semi-implicit Euler lowers the height by g h t / 2 per leg
  * (1.4e-5 m) and the contact's w h = 3.2e-3 error stays in the contact energy, which is zero
- * after separation up to O((w h)^2); 1e-4 m (2e-4 relative) bounds both. */
+ * after separation up to O((w h)^2); 1e-4 m (2e-4 relative) bounds both. The legs' errors
+ * cancel (the integrator is symplectic): 3e-07 m measured, asserted to 1e-6 m. */
 static void test_elastic_bounce_returns_to_height(void)
 {
     mb_state *s = NULL;
@@ -68,9 +69,9 @@ static void test_elastic_bounce_returns_to_height(void)
     /* deepest point: m g (0.4 + d) = k d^2 / 2 -> d = (m g + sqrt((m g)^2 + 0.8 k m g)) / k */
     double mg = 9.81, k = 1e5;
     double d = (mg + sqrt(mg * mg + 0.8 * k * mg)) / k;
-    CHECK_NEAR(0.1 - zmin, d, 1e-4 * d * 10);
-    CHECK_NEAR(fmax, k * d, 0.01 * k * d);
-    CHECK_NEAR(zmax_after, 0.5, 1e-4);
+    CHECK_NEAR(0.1 - zmin, d, 2e-6 * d); /* 7e-7 measured */
+    CHECK_NEAR(fmax, k * d, 2e-6 * k * d);
+    CHECK_NEAR(zmax_after, 0.5, 1e-6);
     /* energy balance: the elastic case keeps total energy to 0.2 % of the largest energy */
     CHECK(mb_energy_drift(m, s) < 2e-3);
     FIG("stage1_engine.bounce_rebound_err_m", "%.0e", fabs(zmax_after - 0.5));
@@ -125,11 +126,11 @@ static void test_damped_bounce_matches_exact_solution(void)
     FIG("stage1_engine.damped_xmax_err_pct", "%.1f", 100 * fabs(xmax - xm) / xm);
     FIG("stage1_engine.damped_x_err_um", "%.0f", err_x * 1e6);
     CHECK(e > e0);
-    CHECK_NEAR(vout / v0, e, 0.01 * e);
-    CHECK_NEAR(xmax, xm, 0.005 * xm);
-    CHECK(err_x < 0.01 * xm);
-    /* balance: kinetic energy lost = dissipated by the damper (no hysteresis) */
-    CHECK_NEAR(s->e.dissipated, 0.5 * mass * (v0 * v0 - vout * vout), 0.01 * s->e.dissipated);
+    CHECK_NEAR(vout / v0, e, 0.0025 * e); /* 8e-4 measured */
+    CHECK_NEAR(xmax, xm, 0.003 * xm);     /* 0.1 % stated */
+    CHECK(err_x < 1.8e-5);                /* 6 um stated */
+    /* balance: kinetic energy lost = dissipated by the damper (no hysteresis; 6.4e-4 measured) */
+    CHECK_NEAR(s->e.dissipated, 0.5 * mass * (v0 * v0 - vout * vout), 2e-3 * s->e.dissipated);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }
@@ -164,12 +165,12 @@ static void test_two_spheres_momentum_restitution_loop_area(void)
     FIG("stage1_engine.spheres_e", "%.5f", e);
     FIG_TOL("stage1_engine.spheres_momentum_err", "%.0e", dp, 1e-13);
     FIG("stage1_engine.spheres_dissipated_j", "%.5f", s->e.dissipated);
-    CHECK(dp < 1e-12);
-    CHECK_NEAR(e, 0.5, 0.005);
-    CHECK_NEAR(s->e.dissipated, diss, 0.005 * diss);
+    CHECK(dp < 3e-14); /* 8e-15 stated */
+    CHECK_NEAR(e, 0.5, 1.5e-6); /* 5e-7 measured */
+    CHECK_NEAR(s->e.dissipated, diss, 1e-5 * diss);
     /* the balance closes: kinetic energy lost = dissipated */
     double ke = 0.5 * (m1 * u1 * u1 + m2 * u2 * u2), ke0 = 0.5 * (m1 * v1 * v1 + m2 * v2 * v2);
-    CHECK_NEAR(ke0 - ke, s->e.dissipated, 1e-3 * diss);
+    CHECK_NEAR(ke0 - ke, s->e.dissipated, 1e-5 * diss); /* 3.5e-6 measured */
     CHECK(mb_energy_drift(m, s) < 5e-3);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
@@ -201,8 +202,8 @@ static void test_pendulum_keeps_its_period(void)
     printf("pendulum: period %.6f s (exact %.6f s), energy drift %.3g\n", Tm, T,
            mb_energy_drift(m, s));
     FIG("stage1_engine.pendulum_period_s", "%.6f", Tm);
-    CHECK_NEAR(Tm, T, 2e-4 * T);
-    CHECK(mb_energy_drift(m, s) < 1e-3);
+    CHECK_NEAR(Tm, T, 7e-6 * T); /* 4e-6 s of 1.447 s stated */
+    CHECK(mb_energy_drift(m, s) < 7e-4);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }
@@ -250,9 +251,9 @@ static void test_restraint_oscillator(void)
            "drift %.3g\n", Tm, T, emax_int, 0.5 * 10 * amp * amp, mb_energy_drift(m, s));
     FIG("stage1_engine.torsion_period_s", "%.6f", Tm);
     FIG("stage1_engine.torsion_stored_mj", "%.0f", emax_int * 1e3);
-    CHECK_NEAR(Tm, T, 1e-4 * T);
-    CHECK_NEAR(emax_int, 0.5 * 10 * amp * amp, 2e-3 * 0.005);
-    CHECK(mb_energy_drift(m, s) < 1e-3);
+    CHECK_NEAR(Tm, T, 1.2e-8 * T);                           /* 4e-9 measured */
+    CHECK_NEAR(emax_int, 0.5 * 10 * amp * amp, 3e-7 * 0.005); /* 9e-8 measured */
+    CHECK(mb_energy_drift(m, s) < 5e-4);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }
@@ -260,7 +261,7 @@ static void test_restraint_oscillator(void)
 /* Breakable attachment: x = (v0 / w) sin(w t) until k x = F_fail: t_b = asin(F_fail / (v0
  * sqrt(k m))) / w = asin(0.5) / 100 s, then free flight at v0 cos(w t_b); the spring energy
  * F_fail^2 / (2 k) = 0.125 J is lost with the break (dissipated). The break is detected at the
- * first step past t_b, so times agree to one step. */
+ * first step past t_b, so the time is late by less than one step (asserted: one step). */
 static void test_attachment_breaks(void)
 {
     mb_model *m = NULL;
@@ -269,9 +270,9 @@ static void test_attachment_breaks(void)
     if (!s) return;
     double tb = asin(0.5) / 100;
     CHECK(s->att[0].broken == 1);
-    CHECK_NEAR(s->att[0].t_break, tb, 1.5 * m->h);
-    CHECK_NEAR(s->kin[0].vel[0], cos(asin(0.5)), 2e-3);
-    CHECK_NEAR(s->e.dissipated, 0.125, 0.125 * 0.01);
+    CHECK(s->att[0].t_break >= tb && s->att[0].t_break < tb + m->h);
+    CHECK_NEAR(s->kin[0].vel[0], cos(asin(0.5)), 1.5e-4); /* 5e-05 stated */
+    CHECK_NEAR(s->e.dissipated, 0.125, 0.125 * 0.004);    /* 0.1 % stated */
     CHECK_NEAR(s->e.total, s->e_total0, 1e-3 * 0.5);
     FIG("stage1_engine.break_t_err_steps", "%.1f", fabs(s->att[0].t_break - tb) / m->h);
     FIG("stage1_engine.break_v_err", "%.0e", fabs(s->kin[0].vel[0] - cos(asin(0.5))));
@@ -282,7 +283,9 @@ static void test_attachment_breaks(void)
 
 /* Two deformable surfaces in series (thesis §3.2): the same force, deflections added, so the
  * pair stiffness is k_a k_b / (k_a + k_b) = 7.5e4 N/m; head-on elastic impact of a
- * mass-spring: deepest approach v sqrt(mu / k), contact time pi sqrt(mu / k), e = 1. */
+ * mass-spring: deepest approach v sqrt(mu / k), contact time pi sqrt(mu / k), e = 1. Contact is
+ * seen at the first step in it and the first step out of it, both late by less than one step,
+ * so the measured duration is within one step of the true one (asserted: one step). */
 static void test_series_characteristics(void)
 {
     mb_state *s = NULL;
@@ -300,13 +303,13 @@ static void test_series_characteristics(void)
     double k = 7.5e4, mu = 0.5, v = 2;
     printf("series springs: depth %.6g m (exact %.6g), contact %.6g s (exact %.6g)\n", dmax,
            v * sqrt(mu / k), t_out - t_in, M_PI * sqrt(mu / k));
-    CHECK_NEAR(dmax, v * sqrt(mu / k), 2e-3 * v * sqrt(mu / k));
+    CHECK_NEAR(dmax, v * sqrt(mu / k), 1.5e-6 * v * sqrt(mu / k)); /* 5e-07 stated */
     FIG("stage1_engine.series_depth_err", "%.0e", fabs(dmax / (v * sqrt(mu / k)) - 1));
     FIG("stage1_engine.series_time_err_steps", "%.1f",
         fabs(t_out - t_in - M_PI * sqrt(mu / k)) / m->h);
-    CHECK_NEAR(t_out - t_in, M_PI * sqrt(mu / k), 2 * m->h);
-    CHECK_NEAR(s->kin[0].vel[0], -1, 5e-3); /* elastic: the velocities swap */
-    CHECK_NEAR(s->kin[1].vel[0], 1, 5e-3);
+    CHECK_NEAR(t_out - t_in, M_PI * sqrt(mu / k), m->h);
+    CHECK_NEAR(s->kin[0].vel[0], -1, 3e-6); /* elastic: the velocities swap (1e-6 measured) */
+    CHECK_NEAR(s->kin[1].vel[0], 1, 3e-6);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }
@@ -338,10 +341,10 @@ static void test_sliding_sphere_starts_rolling(void)
     FIG("stage1_engine.sphere_slip_err_pct", "%.1f", 100 * fabs(t_roll - t_exact) / t_exact);
     FIG("stage1_engine.sphere_diss_err_pct", "%.1f",
         100 * fabs(s->e.dissipated - 4.0 / 7.0) / (4.0 / 7.0));
-    CHECK_NEAR(v, ve, 1e-3 * ve);
-    CHECK_NEAR(w * r, ve, 1e-3 * ve);
-    CHECK_NEAR(t_roll, t_exact, 0.02 * t_exact);
-    CHECK_NEAR(s->e.dissipated, 2.0 / 7.0 * 2, 0.01 * 2.0 / 7.0 * 2);
+    CHECK_NEAR(v, ve, 8.5e-4 * ve); /* 3e-04 stated */
+    CHECK_NEAR(w * r, ve, 8.5e-4 * ve);
+    CHECK_NEAR(t_roll, t_exact, 0.018 * t_exact);                  /* 0.6 % stated */
+    CHECK_NEAR(s->e.dissipated, 2.0 / 7.0 * 2, 0.0023 * 2.0 / 7.0 * 2); /* 0.1 % stated */
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }
@@ -379,9 +382,10 @@ static void test_revolute_range_stop(void)
         if (q <= 0.1 && t_in > 0 && t_out < 0) t_out = s->t;
     }
     double over = sqrt(0.01 / 1e3);
-    CHECK_NEAR(qmax, 0.1 + over, 0.01 * over);
-    CHECK_NEAR(t_out - t_in, M_PI * over, 2 * m->h);
-    CHECK_NEAR(s->kin[0].angvel[1], -1, 2e-3);
+    CHECK_NEAR(qmax, 0.1 + over, 2.7e-6 * over); /* 9e-07 stated */
+    /* entry and exit seen at the first step past each: within one step */
+    CHECK_NEAR(t_out - t_in, M_PI * over, m->h);
+    CHECK_NEAR(s->kin[0].angvel[1], -1, 3.5e-6); /* 1e-06 stated */
     CHECK(mb_energy_drift(m, s) < 2e-3);
     FIG("stage1_engine.stop_over_err", "%.0e", fabs(qmax - 0.1 - over) / over);
     FIG("stage1_engine.stop_time_err_steps", "%.1f", fabs(t_out - t_in - M_PI * over) / m->h);
@@ -411,8 +415,8 @@ static void test_sliding_wheel_starts_rolling(void)
            "height %.7f m\n", v, w * R, t_roll, t_exact, s->kin[0].pos[2]);
     FIG("stage1_engine.wheel_v_err", "%.1e", fabs(v - ve) / ve);
     FIG("stage1_engine.wheel_slip_err_pct", "%.0f", 100 * fabs(t_roll - t_exact) / t_exact);
-    CHECK_NEAR(v, ve, 1e-3 * ve);
-    CHECK_NEAR(w * R, ve, 1e-3 * ve);
+    CHECK_NEAR(v, ve, 3.3e-4 * ve); /* 1.1e-04 stated */
+    CHECK_NEAR(w * R, ve, 3.3e-4 * ve);
     CHECK_NEAR(t_roll, t_exact, 0.02 * t_exact);
     CHECK_NEAR(s->kin[0].pos[2], 0.3 - 98.1 / 1e6, 1e-6); /* resting on the tyre */
     mb_state_destroy(&s);
@@ -480,12 +484,13 @@ static void test_deforming_hinge_keeps_permanent_set(void)
     FIG("stage1_engine.hinge_set_rad", "%.5f", set);
     FIG("stage1_engine.hinge_w_back", "%.4f", w_back);
     FIG("stage1_engine.hinge_dissipated_j", "%.4f", diss);
-    CHECK_NEAR(qmax, 0.3, 2e-4);
-    CHECK_NEAR(set, 0.3 - 125.0 / 2000, 3e-4);
-    CHECK_NEAR(w_back, -sqrt(125.0 * 125.0 / 2000 / 0.01), 0.05);
-    CHECK_NEAR(diss, 27.5 - 125.0 * 125.0 / 4000, 0.01 * 23.6);
-    CHECK_NEAR(qmin, 0.2375 - u1, 1e-4);
-    CHECK_NEAR(qmax2, 0.2375 - u1 / 2 + 0.0625, 1e-4);
+    /* measured 5e-7, 4e-7, 2.5e-5, 5.5e-5, 5e-7, 4e-7 off; asserted to about 3x */
+    CHECK_NEAR(qmax, 0.3, 1.5e-6);
+    CHECK_NEAR(set, 0.3 - 125.0 / 2000, 1.5e-6);
+    CHECK_NEAR(w_back, -sqrt(125.0 * 125.0 / 2000 / 0.01), 7.5e-5);
+    CHECK_NEAR(diss, 27.5 - 125.0 * 125.0 / 4000, 1.7e-4);
+    CHECK_NEAR(qmin, 0.2375 - u1, 1.5e-6);
+    CHECK_NEAR(qmax2, 0.2375 - u1 / 2 + 0.0625, 1.2e-6);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }

@@ -55,7 +55,7 @@ static void test_run_writes_results_and_json(void)
     CHECK(mcs_results_read(h, "/stage1/bodies/a/velocity", &a, &err) == MCS_OK);
     CHECK_NEAR(a.v[0], 2, 1e-12);
     /* after impact: v_cm - e (m2 / M) (v1 - v2) = -0.25 - 0.5 * 0.75 * 3 = -1.375 m/s */
-    CHECK_NEAR(a.v[400 * 3], -1.375, 0.01);
+    CHECK_NEAR(a.v[400 * 3], -1.375, 3e-6); /* 1e-6 measured */
     mcs_array_free(&a);
     const char *kinds[] = {"kinetic", "potential", "internal", "contact", "dissipated",
                            "external_work", "total"};
@@ -67,7 +67,7 @@ static void test_run_writes_results_and_json(void)
         mcs_array_free(&a);
     }
     CHECK(mcs_results_read(h, "/stage1/energy/total", &a, &err) == MCS_OK);
-    CHECK_NEAR(a.v[400], a.v[0], 5e-3 * a.v[0]);
+    CHECK_NEAR(a.v[400], a.v[0], 7.5e-6 * a.v[0]); /* 2.5e-6 measured */
     mcs_array_free(&a);
     char *s = NULL;
     CHECK(mcs_results_attr_str(h, "/meta", "scenario", &s, &err) == MCS_OK);
@@ -93,11 +93,15 @@ static void test_sensor_channels(void)
     mcs_array a = {0};
     CHECK(mcs_results_read(h, "/stage1/channels/ball_az", &a, &err) == MCS_OK);
     CHECK(strcmp(a.unit, "m/s^2") == 0);
-    CHECK_NEAR(a.v[1000], 9.81, 1e-6); /* t = 0.1 s, free fall */
+    CHECK_NEAR(a.v[1000], 9.81, 3e-12); /* t = 0.1 s, free fall (1e-12 measured) */
     double amin = 0;
     for (size_t i = 0; i < a.n; i++)
         if (a.v[i] < amin) amin = a.v[i];
-    CHECK(amin < -500); /* the contact pushes up: about -(k d / m - g) = -880 m/s^2 */
+    /* the contact pushes up: at the deepest point -(k d / m - g), d from m g (0.4 + d) = k d^2 / 2
+     * (test_mb_engine) */
+    const double mg = 9.81, k = 1e5, d = (mg + sqrt(mg * mg + 0.8 * k * mg)) / k;
+    printf("elastic bounce: J211 az min %.6g m/s^2 (k d / m - g %.6g)\n", amin, -(k * d - mg));
+    CHECK_NEAR(amin, -(k * d - mg), 9e-5 * (k * d - mg)); /* 3e-5 measured */
     mcs_array_free(&a);
     char *s = NULL;
     CHECK(mcs_results_attr_str(h, "/stage1/channels/ball_ax", "frame", &s, &err) == MCS_OK);
@@ -114,7 +118,7 @@ static void test_sensor_channels(void)
  * w A^2.5 (sin(u) / u)^2.5 with u = pi w / (2 T), i.e. (2 T / pi) A^2.5 sin(u)^2.5 / u^1.5,
  * largest where tan(u) = 5 u / 3 (u = 1.0510); the pulse is 9.9 ms long, so HIC15 = HIC36.
  * a3ms: the level exceeded for 3 ms, A sin((pi / 2)(1 - 3 ms / T)). Filtering at CFC 1000
- * changes both by well under 1 %. */
+ * changes HIC15 by 1e-4 and a3ms by 1e-5 (measured; asserted to 3e-4 and 3.5e-5). */
 static void test_injury_from_head_channels(void)
 {
     char args[512], out[256];
@@ -139,13 +143,13 @@ static void test_injury_from_head_channels(void)
     CHECK(mcs_results_read(h, "/stage1/injury/hic15", &a, &err) == MCS_OK);
     printf("head drop: HIC15 %.2f (half sine %.2f), ", a.n ? a.v[0] : NAN, hic);
     double hic15 = a.n ? a.v[0] : NAN;
-    CHECK(a.n == 1 && fabs(a.v[0] - hic) < 0.01 * hic);
+    CHECK(a.n == 1 && fabs(a.v[0] - hic) < 3e-4 * hic);
     mcs_array_free(&a);
     CHECK(mcs_results_read(h, "/stage1/injury/head_a3ms", &a, &err) == MCS_OK);
     printf("a3ms %.3f g (half sine %.3f g)\n", a.n ? a.v[0] : NAN, a3);
     FIG("stage1_engine.head_drop_hic15", "%.2f", hic15);
     FIG("stage1_engine.head_drop_a3ms_g", "%.3f", a.n ? a.v[0] : NAN);
-    CHECK(a.n == 1 && fabs(a.v[0] - a3) < 0.01 * a3);
+    CHECK(a.n == 1 && fabs(a.v[0] - a3) < 3.5e-5 * a3);
     mcs_array_free(&a);
     mcs_results_close(&h);
 }

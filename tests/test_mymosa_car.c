@@ -56,7 +56,8 @@ static void test_car_at_rest(void)
     while (s->step < m->nsteps && mb_step(m, s, &err) == MCS_OK)
         dz = fmax(dz, fabs(s->kin[car].pos[2] - z0));
     CHECK(s->step == m->nsteps);
-    CHECK(dz < 1e-3);
+    FIG("models.mymosa_car_static_dz_mm", "%.2f", dz * 1e3);
+    CHECK(dz < 0.75e-3); /* 0.24 mm stated */
     int loaded = 0;
     for (int p = 0; p < m->npair; p++)
         if (s->pair[p].fn > 0) {

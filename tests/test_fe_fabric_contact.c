@@ -435,6 +435,8 @@ static void test_folded_bag(void)
             FIG("fe.fabric_bag_gap_mm", "%.2f", 1e3 * gmin);
             FIG("fe.fabric_bag_volume_ratio", "%.1f", gs->volume / V0);
             FIG("fe.fabric_bag_energy", "%.0e", emax / s->energy[FE_E_external_work]);
+            FIG("fe.fabric_bag_gauge_kpa", "%.0f",
+                1e-3 * (gs->pressure - m->restraints->bag[0].gas->ambient_pressure));
             CHECK(gmin > 0.5e-3);               /* never crossed: about t_c apart */
             CHECK(gs->volume > 3 * V0);         /* inflating */
             CHECK(emax < 1e-3 * s->energy[FE_E_external_work]); /* 3e-4 stated */

@@ -82,26 +82,38 @@ static void test_latch(void)
  * so it never touches: free flight, v = 1 m/s and the energy unchanged (Newton's first law).
  * Before the latch the contact began at the cap's depth (~0.025 m, k d^2 / 2 = 31 J from a
  * 0.5 J ball) at z = 0.0559 m and the run stopped on energy growth. */
-#define RISE                                                                                       \
-    "mcrash: 1\n"                                                                                  \
-    "simulation: {end_time: 0.15 s, time_step: 10 us, output_rate: 1 kHz}\n"                       \
-    "characteristics: {law: {loading: [[0, 0], [0.1, 10000]]}}\n"                                  \
-    "environment: {gravity: 0 m/s^2}\n"                                                            \
-    "bodies:\n"                                                                                    \
-    "  - {name: ball, mass: 1 kg, inertia: [0.004, 0.004, 0.004], position: [-0.05, 0, -0.03],\n"  \
-    "     velocity: [0, 0, 1], surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"                  \
-    "     semi_axes: [0.1, 0.1, 0.1]}]}\n"                                                         \
-    "  - {name: floor, mass: 1000 kg, inertia: [100, 100, 100], position: [0, 0, -1],\n"           \
-    "     velocity: [0, 0, 0], surfaces: [{type: facet,\n"                                         \
-    "     vertices: [[0, -1, 1], [2, -1, 1], [2, 1, 1], [0, 1, 1]],\n"                             \
-    "     triangles: [[0, 1, 2], [0, 2, 3]]}]}\n"                                                  \
-    "joints: [{type: fixed, parent: ground, child: floor, anchor: [0, 0, -1]}]\n"                  \
-    "contacts: [{a: ball, b: floor, characteristic: law}]\n"
+/* a 1 kg ball (R 0.1 m) beside the edge x = 0 of a one-sided facet floor (the plane z = 0,
+ * normal up), starting at height z0 with vertical speed vz, against an elastic law reaching
+ * f100 at 0.1 m; no gravity */
+static const char *ball_edge_yaml(char *buf, size_t n, const char *end_time, const char *rate,
+                                  double f100, double z0, double vz)
+{
+    snprintf(
+        buf, n,
+        "mcrash: 1\n"
+        "simulation: {end_time: %s, time_step: 10 us, output_rate: %s}\n"
+        "characteristics: {law: {loading: [[0, 0], [0.1, %g]]}}\n"
+        "environment: {gravity: 0 m/s^2}\n"
+        "bodies:\n"
+        "  - {name: ball, mass: 1 kg, inertia: [0.004, 0.004, 0.004], position: [-0.05, 0, %g],\n"
+        "     velocity: [0, 0, %g], surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"
+        "     semi_axes: [0.1, 0.1, 0.1]}]}\n"
+        "  - {name: floor, mass: 1000 kg, inertia: [100, 100, 100], position: [0, 0, -1],\n"
+        "     velocity: [0, 0, 0], surfaces: [{type: facet,\n"
+        "     vertices: [[0, -1, 1], [2, -1, 1], [2, 1, 1], [0, 1, 1]],\n"
+        "     triangles: [[0, 1, 2], [0, 2, 3]]}]}\n"
+        "joints: [{type: fixed, parent: ground, child: floor, anchor: [0, 0, -1]}]\n"
+        "contacts: [{a: ball, b: floor, characteristic: law}]\n",
+        end_time, rate, f100, z0, vz);
+    return buf;
+}
 
 static void test_latch_run(void)
 {
     mcs_error err = {0};
-    mb_model *m = mt_model_text("rise.yaml", RISE, &err);
+    char yaml[1024];
+    mb_model *m = mt_model_text(
+        "rise.yaml", ball_edge_yaml(yaml, sizeof yaml, "0.15 s", "1 kHz", 1e4, -0.03, 1), &err);
     CHECK(m != NULL);
     if (!m) return;
     mb_state *s = NULL;
@@ -129,26 +141,12 @@ static void test_latch_run(void)
  * when its centre passes the plane, the one-sided facet stops counting at a depth near
  * R - 0.05 m = 0.05 m (less the ball's sideways push): the stored k d^2 / 2 leaves the total in
  * one step (hand reference: the elastic law's energy at the last depth) */
-#define FALL                                                                                       \
-    "mcrash: 1\n"                                                                                  \
-    "simulation: {end_time: 0.14 s, time_step: 10 us, output_rate: 100 kHz}\n"                     \
-    "characteristics: {law: {loading: [[0, 0], [0.1, 10]]}}\n"                                     \
-    "environment: {gravity: 0 m/s^2}\n"                                                            \
-    "bodies:\n"                                                                                    \
-    "  - {name: ball, mass: 1 kg, inertia: [0.004, 0.004, 0.004], position: [-0.05, 0, 0.1],\n"    \
-    "     velocity: [0, 0, -1], surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"                 \
-    "     semi_axes: [0.1, 0.1, 0.1]}]}\n"                                                         \
-    "  - {name: floor, mass: 1000 kg, inertia: [100, 100, 100], position: [0, 0, -1],\n"           \
-    "     velocity: [0, 0, 0], surfaces: [{type: facet,\n"                                         \
-    "     vertices: [[0, -1, 1], [2, -1, 1], [2, 1, 1], [0, 1, 1]],\n"                             \
-    "     triangles: [[0, 1, 2], [0, 2, 3]]}]}\n"                                                  \
-    "joints: [{type: fixed, parent: ground, child: floor, anchor: [0, 0, -1]}]\n"                  \
-    "contacts: [{a: ball, b: floor, characteristic: law}]\n"
-
 static void test_edge_loss(void)
 {
     mcs_error err = {0};
-    mb_model *m = mt_model_text("fall.yaml", FALL, &err);
+    char yaml[1024];
+    mb_model *m = mt_model_text(
+        "fall.yaml", ball_edge_yaml(yaml, sizeof yaml, "0.14 s", "100 kHz", 10, 0.1, -1), &err);
     CHECK(m != NULL);
     if (!m) return;
     mb_state *s = NULL;

@@ -600,6 +600,14 @@ static const mcs_smap material_map = {
 
 /* ---- fe: parts, boundary, rigid walls, contacts ---- */
 
+static const mcs_skey attach_keys[] = {
+    R("body", BODY, REQ, "stage-1 body carrying the nodes"),
+    E("where", "x_min|x_max|y_min|y_max|z_min|z_max|all", REQ,
+      "which nodes of the part (as boundary): they move rigidly with the body"),
+    END,
+};
+static const mcs_smap attach_map = {.what = "FE part attachment", .keys = attach_keys};
+
 static const mcs_skey part_keys[] = {
     S("name", REQ | UNIQ | NE, "part name"),
     M("mesh", mesh_map, REQ, "mesh (generate: or keyword:)"),
@@ -607,6 +615,7 @@ static const mcs_skey part_keys[] = {
     M("section", section_map, 0, "section"),
     M("material", material_map, 0, "material"),
     V("initial_velocity", VEL, 3, 3, 0, 0, "initial velocity [m/s]"),
+    M("attach", attach_map, 0, "nodes carried by a stage-1 body (stage1_mb/mb_couple.c)"),
     END,
 };
 static const mcs_smap part_map = {.what = "FE part", .keys = part_keys, .check = mcs_rule_fe_part};

@@ -167,6 +167,9 @@ typedef struct fe_state {
     double dt_ms;                 /* smallest scaled step of the scaled parts at the last check,
                                      no safety factor [s]                                    */
     struct fe_slipring_state *slipring; /* slip rings (fe_slipring.h); NULL none            */
+    const double *node_vkin;      /* prescribed velocities of the fixed translations this step,
+                                     (nnode x 3), set by a coupling (stage1_mb/mb_couple.c);
+                                     NULL: the model's node_vfix [m/s]                       */
 } fe_state;
 
 /* allocate every array once (and the scratch arena), then fe_state_reset */

@@ -3,6 +3,7 @@
  * scenario is silent: time_step 10 us, output_rate 10 kHz (at most one sample per step),
  * gravity 9.81 m/s^2 along -z. */
 #include "stage1_mb/mb_build_internal.h"
+#include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_impact.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_position.h"
@@ -221,6 +222,7 @@ mcs_status mb_model_build(const mcs_scenario *scn, const mb_opts *opts, mb_model
     if (!st) st = mb_position_attach(root, m, err);
     if (!st) st = build_sensors(root, m, err);
     if (!st) st = mb_build_loadcells(root, m, err);
+    if (!st) st = mb_couple_build(scn, m, err); /* attached points at the t = 0 poses */
     if (!st) st = mb_impact_apply(root, m, err); /* last: places the built motorcycle group */
     if (st) {
         mb_model_destroy(&m);
@@ -246,6 +248,7 @@ void mb_model_destroy(mb_model **pm)
     free(m->restraint3), free(m->restraint3_name), free(m->attach), free(m->attach_name);
     free(m->sensor);
     free(m->loadcell);
+    mb_couple_destroy(&m->couple);
     free(m);
     *pm = NULL;
 }

@@ -6,6 +6,7 @@
  * restraints and attachments report the deflection of their last apply (half a step behind:
  * an O(h) term of the balance). The growth check stops a run whose total energy rises by more
  * than opts.energy_tol of the reference energy (largest kinetic + stored so far). */
+#include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -80,7 +81,13 @@ void mb_energy_update(const mb_model *m, mb_state *s)
     e->contact = e->internal = e->dissipated = 0;
     contact_energy(m, s, &e->contact, &e->dissipated);
     restraint_energy(m, s, &e->internal, &e->dissipated);
-    e->external_work = 0; /* no prescribed loads or motions in stage 1 yet */
+    e->external_work = 0; /* no prescribed loads or motions on the bodies */
+    if (m->couple) { /* the coupled FE parts (mb_couple.h) */
+        double f[MB_NENERGY];
+        mb_couple_energy(m, s, f);
+        e->kinetic += f[0], e->potential += f[1], e->internal += f[2], e->contact += f[3];
+        e->dissipated += f[4], e->external_work += f[5];
+    }
     e->total = e->kinetic + e->potential + e->internal + e->contact + e->dissipated -
                e->external_work;
     double live = e->kinetic + e->internal + e->contact;
@@ -158,6 +165,10 @@ static double running_total(const mb_model *m, const mb_state *s, double *kin)
     }
     for (int i = 0; i < m->nattach; i++)
         e += mb_attach_stored(&m->attach[i], &s->att[i]) + s->att[i].e_damp + s->att[i].e_lost;
+    if (m->couple) { /* the coupled FE parts (mb_couple.h) */
+        double f[MB_NENERGY];
+        e += mb_couple_energy(m, s, f);
+    }
     return e + *kin + potential(m, s);
 }
 

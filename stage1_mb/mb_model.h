@@ -151,6 +151,7 @@ typedef struct {
                               seating the rider (mb_position.c) [m]; -1 without a rider: block */
     int nloadcell;          /* load-cell sensors (mb_loadcell.h)                              */
     struct mb_loadcell *loadcell; /* (nloadcell)                                              */
+    struct mb_couple *couple;     /* FE parts coupled to the bodies (mb_couple.h), NULL none */
 } mb_model;
 
 /* build from a loaded scenario; every error names FILE:LINE:COL and the key */
@@ -250,6 +251,7 @@ struct mb_state {
     double *rec_chan;         /* contact and joint channels (nout x mb_channels_count) SI    */
     double *rec_loadcell;     /* (nout x nloadcell x 6), SAE J211, N and N m (mb_loadcell.h) */
     mb_ellipsoid *surf_ell;   /* ellipsoid surfaces placed in the world this step (nsurf)    */
+    struct mb_couple_state *couple; /* FE state of m->couple (mb_couple.h), NULL none         */
 };
 
 #define MB_NENERGY 7

@@ -1,5 +1,6 @@
 /* mb_state.c: a state of a stage-1 model: the ODE world built from the model, the histories,
  * the scratch and the output records, all allocated here once (none in the time loop). */
+#include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -74,6 +75,7 @@ mcs_status mb_state_create(const mb_model *m, mb_state **out, mcs_error *err)
     }
     for (int i = 0; i < m->npair; i++) mcs_hyst_reset(&m->pair[i].hyst, &s->pair[i].h);
     mcs_status st = build_world(m, s, err);
+    if (!st && m->couple) st = mb_couple_state_create(m, &s->couple, err);
     if (st) {
         mb_state_destroy(&s);
         return st;
@@ -100,6 +102,7 @@ void mb_state_destroy(mb_state **ps)
     mb_state *s = ps ? *ps : NULL;
     if (!s) return;
     mb_world_destroy(&s->world);
+    mb_couple_state_destroy(&s->couple);
     free(s->pair), free(s->r1), free(s->r3), free(s->att);
     free(s->kin), free(s->pc), free(s->vel_prev), free(s->angvel_prev), free(s->acc), free(s->angacc);
     free(s->pos0), free(s->rot0);

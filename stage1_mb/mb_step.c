@@ -1,6 +1,7 @@
 /* mb_step.c: one fixed step of stage 1. The contact geometry is detected right after the ODE
  * step, at the new poses, so that the energy of this step and the forces of the next one use
  * the same geometry (mb_state_create detects once before the first step). */
+#include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_model.h"
 
 #include <time.h>
@@ -31,7 +32,9 @@ mcs_status mb_step(const mb_model *m, mb_state *s, mcs_error *err)
     /* restraint: joint positions and rates -> restraint and attachment loads, histories */
     mb_restraints_apply(m, s);
     lap(s, MB_T_restraint, &t0);
-    /* external: gravity is ODE's world gravity (model gravity); no other external loads yet */
+    /* external: gravity is ODE's world gravity (model gravity); the mean reactions of the
+     * coupled FE parts' last subcycle (mb_couple.c) */
+    if (m->couple) mb_couple_apply(m, s);
     lap(s, MB_T_external, &t0);
     /* energy check: the committed works and s->kin -> growth or NaN stops the run (each step) */
     mcs_status st = mb_energy_check_step(m, s, err);
@@ -42,6 +45,8 @@ mcs_status mb_step(const mb_model *m, mb_state *s, mcs_error *err)
     if (st) return st;
     s->step++;
     s->t = (double)s->step * m->h;
+    /* FE parts: subcycle to the new time with the attached nodes on the bodies' motion */
+    if (m->couple && (st = mb_couple_advance(m, s, err))) return st;
     lap(s, MB_T_integrate, &t0);
     /* detect: new poses -> body kinematics (s->kin) and pair geometry (s->pc) */
     mb_contact_detect(m, s);

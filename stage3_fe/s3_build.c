@@ -12,6 +12,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define S3_OUTPUT_RATE_DEFAULT 10e3 /* [Hz], as stage 1 */
@@ -243,6 +244,43 @@ static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error 
     return MCS_OK;
 }
 
+/* fe.parts[].attach: the selected nodes get their translations fixed (stage 1 prescribes
+ * their velocity, mb_couple.c) and are recorded in out->att */
+static mcs_status add_attach(fe_builder *b, const mcs_node *parts, s3_problem *out,
+                             mcs_error *err)
+{
+    for (int i = 0; i < mcs_node_len(parts); i++) {
+        const mcs_node *p = mcs_node_at(parts, i), *a = s3_get(p, "attach");
+        if (!s3_given(p, "attach")) continue;
+        int part = fe_builder_find_part(b, mcs_node_str(s3_get(p, "name")));
+        fe_where w = where_of(mcs_node_str(s3_get(a, "where")));
+        int n = part < 0 ? 0 : fe_builder_select(b, part, w, NULL, 0);
+        if (n <= 0)
+            return mcs_node_error(s3_get(a, "where"), err, MCS_ERR_KEY,
+                                  "selects no node of part '%s'", mcs_node_str(s3_get(p, "name")));
+        s3_attach *na = realloc(out->att, (size_t)(out->natt + n) * sizeof *na);
+        int *idx = malloc((size_t)n * sizeof *idx);
+        if (na) out->att = na;
+        if (!na || !idx) {
+            free(idx);
+            return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
+        }
+        fe_builder_select(b, part, w, idx, n);
+        const double v0[3] = {0, 0, 0};
+        for (int k = 0; k < n; k++) {
+            mcs_error kerr = {0};
+            mcs_status st = fe_builder_fix_node(b, idx[k], FE_DOF_TRANS, v0, &kerr);
+            if (st) {
+                free(idx);
+                return s3_relocate(st, a, &kerr, err);
+            }
+            out->att[out->natt++] = (s3_attach){.node = idx[k], .attach = a};
+        }
+        free(idx);
+    }
+    return MCS_OK;
+}
+
 static mcs_status wall_motion(const mcs_node *mo, fe_wall_desc *d, mcs_error *err)
 {
     const char *type = mcs_node_str(s3_get(mo, "type"));
@@ -353,6 +391,7 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     st = fe_builder_create(&b, &kerr);
     if (st) return s3_relocate(st, fe, &kerr, err);
     st = add_parts(b, s3_get(fe, "parts"), err);
+    if (!st) st = add_attach(b, s3_get(fe, "parts"), out, err);
     if (!st) st = add_boundaries(b, s3_get(fe, "boundary"), err);
     if (!st) st = add_loads(b, s3_get(fe, "loads"), err);
     if (!st) st = add_walls(b, s3_get(fe, "rigid_walls"), err);
@@ -372,5 +411,9 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
 
 void s3_problem_free(s3_problem *p)
 {
-    if (p) fe_model_destroy(&p->model);
+    if (!p) return;
+    fe_model_destroy(&p->model);
+    free(p->att);
+    p->att = NULL;
+    p->natt = 0;
 }

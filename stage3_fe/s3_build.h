@@ -21,8 +21,16 @@
 #include "core/mcs_scenario.h"
 #include "fe/fe_model.h"
 
+/* one FE node carried by a stage-1 body (fe.parts[].attach; stage1_mb/mb_couple.c) */
+typedef struct {
+    int node;              /* FE node index [-]                                      */
+    const mcs_node *attach; /* the part's attach: map (scenario-owned)               */
+} s3_attach;
+
 typedef struct {
     fe_model *model;      /* owned                                                  */
+    int natt;             /* nodes attached to bodies [-]                           */
+    s3_attach *att;       /* (natt), owned; their translations are fixed in the model */
     double end_time;      /* simulated duration [s]                                 */
     double output_rate;   /* sampling rate of the results [Hz]                      */
 } s3_problem;

@@ -1,0 +1,209 @@
+/* mb_couple.c: FE parts coupled to stage-1 bodies (mb_couple.h). Scheme (docs/stage1_engine.md
+ * "Coupling to FE parts"): the ODE step t -> t + h takes, at each attached node, minus the
+ * constraint force of the FE subcycle before it (its mean, centred at t - h/2, extrapolated
+ * linearly to t from the subcycle before; the impulses telescope); then the FE
+ * subcycles from t to t + h in k = ceil(h / dt_stable) equal steps, the attached nodes moving
+ * on the straight line between their body points at t and t + h (velocity prescribed through
+ * fe_state.node_vkin), and the constraint impulse r dth of every step is summed. */
+#include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_vec.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
+{
+    const mcs_node *root = mcs_scenario_root(scn), *fe = mcs_node_get(root, "fe");
+    if (mcs_node_kind(fe) != MCS_NODE_MAP) return MCS_OK;
+    mb_couple *c = calloc(1, sizeof *c);
+    if (!c) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
+    m->couple = c;
+    mcs_status st = s3_build(scn, &c->fe, err);
+    if (st) return st;
+    if (mcs_node_kind(mcs_node_get(root, "impact")) == MCS_NODE_MAP && c->fe.natt > 0)
+        return mcs_node_error(mcs_node_get(root, "impact"), err, MCS_ERR_UNSUPPORTED,
+                              "impact: with fe.parts[].attach not supported yet");
+    int n = c->natt = c->fe.natt;
+    c->node = calloc((size_t)(n ? n : 1), sizeof *c->node);
+    c->body = calloc((size_t)(n ? n : 1), sizeof *c->body);
+    c->local = calloc((size_t)(n ? n : 1) * 3, sizeof *c->local);
+    if (!c->node || !c->body || !c->local)
+        return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
+    const fe_model *fm = c->fe.model;
+    for (int a = 0; a < n; a++) {
+        const mcs_node *bn = mcs_node_get(c->fe.att[a].attach, "body");
+        int b = mb_model_body(m, mcs_node_str(bn));
+        if (b < 0) return mcs_node_error(bn, err, MCS_ERR_KEY, "no body of that name");
+        const mb_body_desc *d = &m->body[b];
+        double R[9], q[4] = {d->quat[0], d->quat[1], d->quat[2], d->quat[3]};
+        if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) q[0] = 1;
+        double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        for (int i = 0; i < 4; i++) q[i] /= nq;
+        mb_quat_to_rot(q, R);
+        const double *x = fm->node_x0 + 3 * c->fe.att[a].node;
+        double r[3] = {x[0] - d->pos[0], x[1] - d->pos[1], x[2] - d->pos[2]};
+        for (int i = 0; i < 3; i++) /* R^T r */
+            c->local[3 * a + i] = R[i] * r[0] + R[3 + i] * r[1] + R[6 + i] * r[2];
+        c->node[a] = c->fe.att[a].node;
+        c->body[a] = b;
+    }
+    return MCS_OK;
+}
+
+void mb_couple_destroy(mb_couple **pc)
+{
+    mb_couple *c = pc ? *pc : NULL;
+    if (!c) return;
+    s3_problem_free(&c->fe);
+    free(c->node), free(c->body), free(c->local);
+    free(c);
+    *pc = NULL;
+}
+
+/* world position of attached node a on its body now */
+static void point_now(const mb_model *m, const mb_state *s, int a, double x[3])
+{
+    const mb_couple *c = m->couple;
+    mb_body_kin k;
+    mb_body_get(s->world, c->body[a], &k);
+    const double *l = c->local + 3 * a;
+    for (int i = 0; i < 3; i++)
+        x[i] = k.pos[i] + k.rot[3 * i] * l[0] + k.rot[3 * i + 1] * l[1] + k.rot[3 * i + 2] * l[2];
+}
+
+mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_error *err)
+{
+    *out = NULL;
+    const mb_couple *c = m->couple;
+    mb_couple_state *cs = calloc(1, sizeof *cs);
+    if (!cs) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
+    size_t na = (size_t)(c->natt ? c->natt : 1), nn = (size_t)c->fe.model->nnode;
+    cs->vkin = calloc(3 * (nn ? nn : 1), sizeof *cs->vkin);
+    cs->imp = calloc(3 * na, sizeof *cs->imp);
+    cs->force = calloc(3 * na, sizeof *cs->force);
+    cs->xa = calloc(3 * na, sizeof *cs->xa);
+    cs->vold = calloc(3 * na, sizeof *cs->vold);
+    cs->fmean = calloc(3 * na, sizeof *cs->fmean);
+    mcs_status st = MCS_OK;
+    if (!cs->vkin || !cs->imp || !cs->force || !cs->xa || !cs->vold || !cs->fmean)
+        st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
+    if (!st) st = fe_state_create(c->fe.model, &cs->fe, err);
+    if (st) {
+        mb_couple_state_destroy(&cs);
+        return st;
+    }
+    memcpy(cs->vkin, c->fe.model->node_vfix, 3 * nn * sizeof *cs->vkin);
+    cs->fe->node_vkin = cs->vkin;
+    *out = cs;
+    return MCS_OK;
+}
+
+void mb_couple_state_destroy(mb_couple_state **p)
+{
+    mb_couple_state *cs = p ? *p : NULL;
+    if (!cs) return;
+    fe_state_destroy(&cs->fe);
+    free(cs->vkin), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold),
+        free(cs->fmean);
+    free(cs);
+    *p = NULL;
+}
+
+void mb_couple_apply(const mb_model *m, mb_state *s)
+{
+    const mb_couple *c = m->couple;
+    mb_couple_state *cs = s->couple;
+    for (int a = 0; a < c->natt; a++) {
+        point_now(m, s, a, cs->xa + 3 * a);
+        mb_body_add_force_at_pos(s->world, c->body[a], cs->force + 3 * a, cs->xa + 3 * a);
+    }
+}
+
+mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
+{
+    const mb_couple *c = m->couple;
+    mb_couple_state *cs = s->couple;
+    fe_state *f = cs->fe;
+    const fe_model *fm = c->fe.model;
+    const double t0 = f->time, t1 = s->t, h = t1 - t0;
+    double *x1 = cs->force; /* scratch: body points at t + h, then the forces */
+    for (int a = 0; a < c->natt; a++) {
+        double x[3];
+        point_now(m, s, a, x);
+        /* the body's work of the last forces over this step's displacement */
+        for (int i = 0; i < 3; i++) cs->w_body += cs->force[3 * a + i] * (x[i] - cs->xa[3 * a + i]);
+        mb_copy(x, x1 + 3 * a);
+    }
+    memset(cs->imp, 0, 3 * (size_t)c->natt * sizeof *cs->imp);
+    /* the impulses r dth of the FE steps at t_j span [t_j - dt_prev/2, t_j + dt/2] */
+    const double i0 = f->time - 0.5 * f->dt_prev;
+    const double cdamp = fm->opts.damping;
+    while (f->time < t1 - 1e-12 * h) {
+        double rem = t1 - f->time;
+        long k = (long)ceil(rem / f->dt - 1e-9);
+        double dt = rem / (double)(k > 0 ? k : 1), tau = (f->time + dt - t0) / h;
+        f->dt = dt;
+        for (int a = 0; a < c->natt; a++) { /* straight line from xa to x1 over the step */
+            const int n = c->node[a];
+            for (int i = 0; i < 3; i++) {
+                double xt = cs->xa[3 * a + i] + tau * (x1[3 * a + i] - cs->xa[3 * a + i]);
+                cs->vkin[3 * n + i] = (xt - f->node_x[3 * n + i]) / dt;
+            }
+        }
+        const double dth = 0.5 * (dt + f->dt_prev);
+        const double d0 = 1 - 0.5 * cdamp * dth, d1 = 1 / (1 + 0.5 * cdamp * dth);
+        double *vold = cs->vold;
+        for (int a = 0; a < c->natt; a++)
+            for (int i = 0; i < 3; i++) vold[3 * a + i] = f->node_v[3 * c->node[a] + i];
+        mcs_status st = fe_step(fm, f);
+        if (st) {
+            *err = f->err;
+            return st;
+        }
+        cs->substeps++;
+        for (int a = 0; a < c->natt; a++) {
+            const int n = c->node[a];
+            const double mass = fm->node_mass[n];
+            for (int i = 0; i < 3; i++) {
+                double v0 = vold[3 * a + i], vn = f->node_v[3 * n + i];
+                double vfree = (d0 * v0 + dth * f->node_a[3 * n + i]) * d1;
+                double r = mass * (vn - vfree) / dth; /* constraint force on the node */
+                cs->imp[3 * a + i] += r * dth;
+                cs->w_fe += r * dth * 0.5 * (v0 + vn);
+            }
+        }
+    }
+    /* the mean force is centred at tc (the impulses' interval, a half FE step before t + h/2):
+     * extrapolated linearly to t + h from the subcycle before (second order in time; for
+     * equal steps the impulses telescope) */
+    const double tc = 0.5 * (i0 + f->time - 0.5 * f->dt_prev);
+    const double alpha = cs->started ? (t1 - tc) / (tc - cs->tc) : 0;
+    cs->tc = tc;
+    for (int a = 0; a < c->natt; a++) {
+        mb_copy(x1 + 3 * a, cs->xa + 3 * a);
+        for (int i = 0; i < 3; i++) {
+            double fm = -cs->imp[3 * a + i] / h, fp = cs->started ? cs->fmean[3 * a + i] : fm;
+            cs->force[3 * a + i] = fm + alpha * (fm - fp);
+            cs->fmean[3 * a + i] = fm;
+        }
+    }
+    cs->started = 1;
+    return MCS_OK;
+}
+
+double mb_couple_energy(const mb_model *m, const mb_state *s, double e[7])
+{
+    (void)m;
+    const mb_couple_state *cs = s->couple;
+    const double *E = cs->fe->energy;
+    e[0] = E[FE_E_kinetic];
+    e[1] = E[FE_E_potential];
+    e[2] = E[FE_E_internal] + E[FE_E_hourglass];
+    e[3] = E[FE_E_contact];
+    e[4] = E[FE_E_dissipated];
+    e[5] = E[FE_E_external_work] - cs->w_fe; /* loads other than the bodies' */
+    e[6] = e[0] + e[1] + e[2] + e[3] + e[4] - e[5];
+    return e[6];
+}

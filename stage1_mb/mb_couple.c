@@ -22,6 +22,9 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
     m->couple = c;
     mcs_status st = s3_build(scn, &c->fe, err);
     if (st) return st;
+    /* one gravity for the bodies and the FE parts: stage 1's (environment.gravity, 9.81 m/s^2
+     * by default, where stage 3 defaults to none) */
+    for (int i = 0; i < 3; i++) c->fe.model->opts.gravity[i] = m->gravity[i];
     if (mcs_node_kind(mcs_node_get(root, "impact")) == MCS_NODE_MAP && c->fe.natt > 0)
         return mcs_node_error(mcs_node_get(root, "impact"), err, MCS_ERR_UNSUPPORTED,
                               "impact: with fe.parts[].attach not supported yet");

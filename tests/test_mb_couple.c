@@ -11,7 +11,8 @@
  *   (longitudinal bar fixed at one end with an end mass: Rao, Mechanical Vibrations, 5th ed.,
  *   Sec. 8.4); Rayleigh's estimate 2 pi sqrt((M + m/3) / k), k = E A / L, is within 1e-4 of it
  *   here;
- * - one energy balance of the body and the bar (docs/stage1_engine.md "Coupling to FE parts").
+ * - one energy balance of the body and the bar (docs/stage1_engine.md "Coupling to FE parts");
+ * - the moment on the body: test_moment_on_a_hinged_body.
  * The FE stable step (3.5 us) is below the ODE step (10 us): the FE subcycles 3 times. */
 #include "stage1_mb/mb_couple.h"
 #include "tests/harness.h"
@@ -144,6 +145,72 @@ static void test_free_oscillation_energy(void)
     mb_model_destroy(&m);
 }
 
+/* the moment: a body of inertia I on a revolute hinge (z axis at its CG), the bar's end attached
+ * at the lever r = 0.1 m along y, the bar along x (its far end fixed), no gravity, set turning
+ * at 0.1 rad/s. Torsional spring k r^2 against I: the same end-mass root with the mass ratio
+ * m / (I / r^2) (Rao, Sec. 8.4, with the body's mass replaced by I / r^2), period 2 pi / omega;
+ * Rayleigh: 2 pi sqrt((I + m r^2 / 3) / (k r^2)). */
+static void test_moment_on_a_hinged_body(void)
+{
+    const char *y =
+        "mcrash: 1\nname: lever\n"
+        "simulation: {end_time: 22 ms, time_step: 10 us, output_rate: 10 kHz}\n"
+        "environment: {gravity: 0}\n"
+        "bodies:\n"
+        "  - {name: lever, mass: 10, inertia: [0.1, 0.1, 0.1], position: [0, 0, 0],\n"
+        "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0.1]}\n"
+        "joints:\n"
+        "  - {type: revolute, parent: ground, child: lever, anchor: [0, 0, 0], axis: [0, 0, 1]}\n"
+        "fe:\n  parts:\n    - name: bar\n"
+        "      mesh: {generate: line, origin: [0, 0.1, 0], end: [1, 0.1, 0], divisions: 50}\n"
+        "      section: {type: truss, area: 1e-4}\n"
+        "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, poisson: 0.3}\n"
+        "      attach: {body: lever, where: x_min}\n"
+        "  boundary: [{part: bar, where: x_max, fix: all}]\n";
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("lever.yaml", y, &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    double prev = 0, t_first = -1, t_last = -1, amax = 0;
+    int ncross = 0;
+    while (!st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        mb_body_kin k;
+        mb_body_get(s->world, 0, &k);
+        double a = 2 * atan2(k.quat[3], k.quat[0]);
+        amax = fmax(amax, fabs(a));
+        if (prev < 0 && a >= 0) { /* upward crossings of zero */
+            double t = ((double)(s->step - 1) + prev / (prev - a)) * m->h;
+            if (t_first < 0) t_first = t;
+            t_last = t;
+            ncross++;
+        }
+        prev = a;
+    }
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    const double r = 0.1, I = 0.1, mb = RHO * A_BAR * L_BAR, c = sqrt(E_BAR / RHO);
+    const double kt = E_BAR * A_BAR / L_BAR * r * r;
+    const double T = 2 * M_PI / (end_mass_root(mb * r * r / I) * c / L_BAR);
+    const double T_rayleigh = 2 * M_PI * sqrt((I + mb * r * r / 3) / kt);
+    double Tmeas = ncross > 1 ? (t_last - t_first) / (ncross - 1) : 0;
+    double terr = 100 * (Tmeas / T - 1);
+    double drift = s ? mb_energy_drift(m, s) : 1;
+    printf("lever: period %.5g ms (closed form %.5g ms, Rayleigh %.5g ms, %+.3f %%), amplitude "
+           "%.4g rad, drift %.3g\n",
+           1e3 * Tmeas, 1e3 * T, 1e3 * T_rayleigh, terr, amax, drift);
+    CHECK(ncross >= 4);
+    FIG("stage1_engine.couple_lever_period_err_pct", "%.3f", fabs(terr));
+    CHECK_NEAR(terr, 0, 0.05);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 static void test_attach_errors_are_located(void)
 {
     char *y = malloc(2048);
@@ -164,6 +231,7 @@ int main(void)
 {
     RUN(test_body_hanging_on_a_bar);
     RUN(test_free_oscillation_energy);
+    RUN(test_moment_on_a_hinged_body);
     RUN(test_attach_errors_are_located);
     TEST_END();
 }

@@ -227,7 +227,7 @@ static void integrate_chunk(const fe_model *m, fe_state *s, int k, const integ_p
         const unsigned fix = m->node_fix[n];
         double vo[3] = {v[0], v[1], v[2]}, vn[3], vfree[3];
         for (int i = 0; i < 3; i++) vn[i] = vfree[i] = (d0 * vo[i] + dth * a[i]) * d1;
-        const double *vfix = (s->node_vkin ? s->node_vkin : m->node_vfix) + 3 * n;
+        const double *vfix = fe_node_vfix(m, s) + 3 * n;
         for (int i = 0; i < 3; i++)
             if (fix & (1u << i)) vn[i] = vfix[i];
         unsigned mask = m->node_walls[n] & kin;

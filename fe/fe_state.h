@@ -172,6 +172,13 @@ typedef struct fe_state {
                                      NULL: the model's node_vfix [m/s]                       */
 } fe_state;
 
+/* the velocities of the fixed translations this step: a coupling's (node_vkin) or the
+ * model's (node_vfix) (nnode x 3) [m/s] */
+static inline const double *fe_node_vfix(const fe_model *m, const fe_state *s)
+{
+    return s->node_vkin ? s->node_vkin : m->node_vfix;
+}
+
 /* allocate every array once (and the scratch arena), then fe_state_reset */
 mcs_status fe_state_create(const fe_model *m, fe_state **out, mcs_error *err);
 void fe_state_destroy(fe_state **p);

@@ -45,8 +45,7 @@ static double free_normal(const fe_model *m, const fe_state *s, int n, const dou
     double u = 0;
     for (int i = 0; i < 3; i++) {
         double v = (P->d0 * vo[i] + P->dth * a[i]) * P->d1;
-        if (m->node_fix[n] & (1u << i))
-            v = (s->node_vkin ? s->node_vkin : m->node_vfix)[3 * n + i];
+        if (m->node_fix[n] & (1u << i)) v = fe_node_vfix(m, s)[3 * n + i];
         u += v * nrm[i];
     }
     return u;

@@ -24,7 +24,8 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
     if (st) return st;
     /* one gravity for the bodies and the FE parts: stage 1's (environment.gravity, 9.81 m/s^2
      * by default, where stage 3 defaults to none) */
-    for (int i = 0; i < 3; i++) c->fe.model->opts.gravity[i] = m->gravity[i];
+    for (int i = 0; i < 3; i++)
+        c->fe.model->opts.gravity[i] = m->gravity[i];
     if (mcs_node_kind(mcs_node_get(root, "impact")) == MCS_NODE_MAP && c->fe.natt > 0)
         return mcs_node_error(mcs_node_get(root, "impact"), err, MCS_ERR_UNSUPPORTED,
                               "impact: with fe.parts[].attach not supported yet");
@@ -40,10 +41,8 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
         int b = mb_model_body(m, mcs_node_str(bn));
         if (b < 0) return mcs_node_error(bn, err, MCS_ERR_KEY, "no body of that name");
         const mb_body_desc *d = &m->body[b];
-        double R[9], q[4] = {d->quat[0], d->quat[1], d->quat[2], d->quat[3]};
-        if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) q[0] = 1;
-        double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        for (int i = 0; i < 4; i++) q[i] /= nq;
+        double R[9], q[4];
+        mb_quat_unit(d->quat, q);
         mb_quat_to_rot(q, R);
         const double *x = fm->node_x0 + 3 * c->fe.att[a].node;
         double r[3] = {x[0] - d->pos[0], x[1] - d->pos[1], x[2] - d->pos[2]};
@@ -108,8 +107,7 @@ void mb_couple_state_destroy(mb_couple_state **p)
     mb_couple_state *cs = p ? *p : NULL;
     if (!cs) return;
     fe_state_destroy(&cs->fe);
-    free(cs->vkin), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold),
-        free(cs->fmean);
+    free(cs->vkin), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold), free(cs->fmean);
     free(cs);
     *p = NULL;
 }
@@ -136,7 +134,8 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         double x[3];
         point_now(m, s, a, x);
         /* the body's work of the last forces over this step's displacement */
-        for (int i = 0; i < 3; i++) cs->w_body += cs->force[3 * a + i] * (x[i] - cs->xa[3 * a + i]);
+        for (int i = 0; i < 3; i++)
+            cs->w_body += cs->force[3 * a + i] * (x[i] - cs->xa[3 * a + i]);
         mb_copy(x, x1 + 3 * a);
     }
     memset(cs->imp, 0, 3 * (size_t)c->natt * sizeof *cs->imp);
@@ -159,7 +158,8 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         const double d0 = 1 - 0.5 * cdamp * dth, d1 = 1 / (1 + 0.5 * cdamp * dth);
         double *vold = cs->vold;
         for (int a = 0; a < c->natt; a++)
-            for (int i = 0; i < 3; i++) vold[3 * a + i] = f->node_v[3 * c->node[a] + i];
+            for (int i = 0; i < 3; i++)
+                vold[3 * a + i] = f->node_v[3 * c->node[a] + i];
         mcs_status st = fe_step(fm, f);
         if (st) {
             *err = f->err;

@@ -1,5 +1,6 @@
 /* mb_ode: the checked ODE wrapper of stage 1 (see mb_ode.h). */
 #include "stage1_mb/mb_ode.h"
+#include "stage1_mb/mb_vec.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -224,9 +225,8 @@ int mb_world_add_body(mb_world *w, const mb_body_desc *d, mcs_error *err)
         MCS_ERR(err, MCS_ERR_RANGE, "body %s: non-finite initial state", name);
         return -1;
     }
-    double q[4] = {d->quat[0], d->quat[1], d->quat[2], d->quat[3]};
-    double ql = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    if (ql == 0) q[0] = 1, ql = 1;
+    double q[4];
+    mb_quat_unit(d->quat, q);
     dBodyID b = dBodyCreate(w->world);
     dMass m;
     dMassSetZero(&m);
@@ -235,7 +235,7 @@ int mb_world_add_body(mb_world *w, const mb_body_desc *d, mcs_error *err)
                        d->inertia[3], d->inertia[4], d->inertia[5]);
     dBodySetMass(b, &m);
     dBodySetPosition(b, d->pos[0], d->pos[1], d->pos[2]);
-    dQuaternion dq = {q[0] / ql, q[1] / ql, q[2] / ql, q[3] / ql};
+    dQuaternion dq = {q[0], q[1], q[2], q[3]};
     dBodySetQuaternion(b, dq);
     dBodySetLinearVel(b, d->vel[0], d->vel[1], d->vel[2]);
     dBodySetAngularVel(b, d->angvel[0], d->angvel[1], d->angvel[2]);

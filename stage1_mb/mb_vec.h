@@ -90,6 +90,18 @@ static inline void mb_mat_mul(const double A[9], const double B[9], double out[9
             out[3 * i + j] = A[3 * i] * B[j] + A[3 * i + 1] * B[3 + j] + A[3 * i + 2] * B[6 + j];
 }
 
+/* a scenario's quaternion w, x, y, z made unit; all zero: the identity */
+static inline void mb_quat_unit(const double in[4], double q[4])
+{
+    double l = sqrt(in[0] * in[0] + in[1] * in[1] + in[2] * in[2] + in[3] * in[3]);
+    if (l == 0) {
+        q[0] = 1, q[1] = q[2] = q[3] = 0;
+        return;
+    }
+    for (int i = 0; i < 4; i++)
+        q[i] = in[i] / l;
+}
+
 /* rotation matrix (row-major, body->world) from a unit quaternion w, x, y, z */
 static inline void mb_quat_to_rot(const double q[4], double R[9])
 {

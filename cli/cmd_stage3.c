@@ -13,14 +13,14 @@
 int cli_stage3_scenario(const mcs_scenario *scn, const char *out, int quiet, int json)
 {
     mcs_error err = {0};
-    s3_problem p = {0};
+    fe_problem p = {0};
     s3_summary sum = {0};
-    mcs_status st = s3_build(scn, &p, &err);
+    mcs_status st = fe_scn_build(scn, &p, &err);
     if (!st) {
         s3_run_opts o = {.out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = quiet};
         st = s3_run(&p, &o, &sum, &err);
     }
-    s3_problem_free(&p);
+    fe_problem_free(&p);
     if (st) {
         fprintf(stderr, "%s\n", err.msg);
         return mcs_status_exit_code(st);

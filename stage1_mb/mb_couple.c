@@ -20,7 +20,7 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
     mb_couple *c = calloc(1, sizeof *c);
     if (!c) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     m->couple = c;
-    mcs_status st = s3_build(scn, &c->fe, err);
+    mcs_status st = fe_scn_build(scn, &c->fe, err);
     if (st) return st;
     /* one gravity for the bodies and the FE parts: stage 1's (environment.gravity, 9.81 m/s^2
      * by default, where stage 3 defaults to none) */
@@ -58,7 +58,7 @@ void mb_couple_destroy(mb_couple **pc)
 {
     mb_couple *c = pc ? *pc : NULL;
     if (!c) return;
-    s3_problem_free(&c->fe);
+    fe_problem_free(&c->fe);
     free(c->node), free(c->body), free(c->local);
     free(c);
     *pc = NULL;

@@ -1,5 +1,5 @@
 /* mb_couple.h: stage-1 bodies coupled to the FE kernel (issue 12, DESIGN.md "Coupling bodies
- * and FE parts"): the scenario's fe: block is built as in stage 3 (stage3_fe/s3_build.h) and
+ * and FE parts"): the scenario's fe: block is built by the shared FE builder (fe/fe_scn_build.h) and
  * stepped inside the ODE step; the nodes of fe.parts[].attach move rigidly with their body
  * and their constraint reactions load it. The step scheme is in docs/stage1_engine.md
  * ("Coupling to FE parts"). */
@@ -9,10 +9,10 @@
 #include "core/mcs_scenario.h"
 #include "fe/fe_state.h"
 #include "stage1_mb/mb_model.h"
-#include "stage3_fe/s3_build.h"
+#include "fe/fe_scn_build.h"
 
 typedef struct mb_couple {
-    s3_problem fe;      /* the FE model (owned)                                          */
+    fe_problem fe;      /* the FE model (owned)                                          */
     int natt;           /* attached nodes [-]                                            */
     int *node;          /* FE node of each (natt)                                        */
     int *body;          /* carrying body (natt)                                          */

@@ -2,10 +2,10 @@
  * allocated before the loop; the loop calls fe_step and appends rows to results series at
  * the output rate. */
 #include "stage3_fe/s3_run.h"
-#include "stage3_fe/s3_mesh.h"
-#include "stage3_fe/s3_parts.h"
-#include "stage3_fe/s3_restraints.h"
-#include "stage3_fe/s3_slipring.h"
+#include "fe/fe_out_mesh.h"
+#include "fe/fe_out_parts.h"
+#include "fe/fe_scn_restraints.h"
+#include "fe/fe_scn_slipring.h"
 
 #include "core/mcs_progress.h"
 #include "core/mcs_results.h"
@@ -30,9 +30,9 @@ typedef struct {
     mcs_results_series *ftime, *fdisp;
     mcs_results_series *con_f[FE_CONTACT_MAX], *con_e[FE_CONTACT_MAX], *ell_f[FE_ELLIPSOID_MAX];
     double *disp; /* [nnode, 3] */
-    s3_restraint_out rest; /* airbags and retractors (s3_restraints.c) */
-    s3_slipring_out rings; /* slip rings (s3_slipring.c) */
-    s3_part_out parts;     /* per-part energies (s3_parts.c) */
+    fe_out_restraint rest; /* airbags and retractors (fe_scn_restraints.c) */
+    fe_out_slipring rings; /* slip rings (fe_scn_slipring.c) */
+    fe_out_parts parts;     /* per-part energies (fe_out_parts.c) */
 } s3_out;
 
 /* /stage3/contact/<name>/{force [nt,3] N, energy [nt] J}, /stage3/ellipsoid/<name>/force */
@@ -85,9 +85,9 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
     }
     if (!st) st = open_contact_series(r, m, o, err);
     if (!st) st = mcs_results_field_series(r, 3, (size_t)m->nnode, &o->ftime, &o->fdisp, err);
-    if (!st) st = s3_restraint_open(r, m, &o->rest, err);
-    if (!st) st = s3_slipring_open(r, m, &o->rings, err);
-    if (!st) st = s3_parts_open(r, m, &o->parts, err);
+    if (!st) st = fe_out_restraint_open(r, 3, m, &o->rest, err);
+    if (!st) st = fe_out_slipring_open(r, 3, m, &o->rings, err);
+    if (!st) st = fe_out_parts_open(r, 3, m, &o->parts, err);
     return st;
 }
 
@@ -100,10 +100,10 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
         st = mcs_results_series_append(o->wall_f[w], &s->wall_normal[w], err);
         if (!st) st = mcs_results_series_append(o->wall_d[w], &s->wall_disp[w], err);
     }
-    if (!st) st = s3_restraint_sample(s, &o->rest, err);
-    if (!st) st = s3_slipring_sample(s, &o->rings, err);
+    if (!st) st = fe_out_restraint_sample(s, &o->rest, err);
+    if (!st) st = fe_out_slipring_sample(s, &o->rings, err);
     if (!st) st = sample_contact(m, s, o, err);
-    if (!st) st = s3_parts_sample(m, s, &o->parts, err);
+    if (!st) st = fe_out_parts_sample(m, s, &o->parts, err);
     return st;
 }
 
@@ -116,7 +116,7 @@ static mcs_status sample_field(const fe_model *m, const fe_state *s, s3_out *o, 
 }
 
 /* the time loop: fe_step until end_time, sampling energies (at t_n) and fields (at t_n+1) */
-static mcs_status loop(const s3_problem *p, const s3_run_opts *ro, fe_state *s, s3_out *o,
+static mcs_status loop(const fe_problem *p, const s3_run_opts *ro, fe_state *s, s3_out *o,
                        mcs_error *err)
 {
     const fe_model *m = p->model;
@@ -149,7 +149,7 @@ static mcs_status loop(const s3_problem *p, const s3_run_opts *ro, fe_state *s, 
     return st;
 }
 
-mcs_status s3_run(const s3_problem *p, const s3_run_opts *ro, s3_summary *sum, mcs_error *err)
+mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, mcs_error *err)
 {
     const fe_model *m = p->model;
     memset(sum, 0, sizeof *sum);
@@ -165,7 +165,7 @@ mcs_status s3_run(const s3_problem *p, const s3_run_opts *ro, s3_summary *sum, m
         o.disp = malloc(sizeof(double) * 3 * (size_t)(m->nnode > 0 ? m->nnode : 1));
         if (!o.disp) st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
     }
-    for (int i = 0; i < m->npart && !st; i++) st = s3_put_part_mesh(r, m, &m->part[i], err);
+    for (int i = 0; i < m->npart && !st; i++) st = fe_out_part_mesh(r, 3, m, &m->part[i], err);
     if (!st) st = open_series(r, m, &o, err);
     if (!st) st = loop(p, ro, s, &o, err);
     if (!st) {
@@ -192,9 +192,9 @@ mcs_status s3_run(const s3_problem *p, const s3_run_opts *ro, s3_summary *sum, m
     }
     mcs_results_abort(&r);
     free(o.disp);
-    s3_restraint_out_free(&o.rest);
-    s3_slipring_out_free(&o.rings);
-    s3_parts_free(&o.parts);
+    fe_out_restraint_free(&o.rest);
+    fe_out_slipring_free(&o.rings);
+    fe_out_parts_free(&o.parts);
     fe_state_destroy(&s);
     sum->wall_time_s = now_s() - wall0;
     return st;

@@ -1,4 +1,4 @@
-/* s3_run: a stage-3 (FE-only) run of an s3_problem to its end time, written to /stage3 of a
+/* s3_run: a stage-3 (FE-only) run of an fe_problem to its end time, written to /stage3 of a
  * results file (DESIGN.md "The results file"):
  *   /stage3/time [nt] s and /stage3/energy/<kind> [nt] J at the output rate (kind: the fe
  *     kernel's energies, DESIGN.md names; sampled at the kernel's energy time t_n);
@@ -15,7 +15,7 @@
 #define S3_RUN_H
 
 #include "fe/fe_state.h"
-#include "stage3_fe/s3_build.h"
+#include "fe/fe_scn_build.h"
 
 typedef struct {
     const char *out_path;      /* results file                                      */
@@ -35,6 +35,6 @@ typedef struct {
     double timer[FE_NSTAGE];   /* wall time per fe_step sub-stage [s]                */
 } s3_summary;
 
-mcs_status s3_run(const s3_problem *p, const s3_run_opts *o, s3_summary *sum, mcs_error *err);
+mcs_status s3_run(const fe_problem *p, const s3_run_opts *o, s3_summary *sum, mcs_error *err);
 
 #endif

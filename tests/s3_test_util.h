@@ -24,13 +24,13 @@ static inline mcs_status run_file(const char *scenario, const char *out, s3_summ
 {
     mcs_scenario *scn = NULL;
     mcs_status st = mcs_scenario_load(scenario, &scn, err);
-    s3_problem p = {0};
-    if (!st) st = s3_build(scn, &p, err);
+    fe_problem p = {0};
+    if (!st) st = fe_scn_build(scn, &p, err);
     if (!st) {
         s3_run_opts o = {.out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = 1};
         st = s3_run(&p, &o, sum, err);
     }
-    s3_problem_free(&p);
+    fe_problem_free(&p);
     mcs_scenario_destroy(&scn);
     return st;
 }

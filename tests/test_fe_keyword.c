@@ -9,7 +9,7 @@
 #include "fe/fe_state.h"
 #include "harness.h"
 #include "figures.h"
-#include "stage3_fe/s3_build.h"
+#include "fe/fe_scn_build.h"
 #include "stage3_fe/s3_run.h"
 
 #include <math.h>

@@ -1,4 +1,4 @@
-/* test_s3_mesh: /stage3/mesh with each element's own cell type (stage3_fe/s3_mesh.c) and the
+/* test_s3_mesh: /stage3/mesh with each element's own cell type (stage3_fe/fe_out_mesh.c) and the
  * XDMF and keyword exports of it: a solid part holding a hexahedron, two pentahedra and six
  * tetrahedra (the kernel's degenerate hexes) and a tet10 part are written as hex8 + wedge6 +
  * tet4 blocks and tet10, the .xmf has the topologies Hexahedron (1), Wedge (2),
@@ -12,7 +12,7 @@
 #include "core/mcs_results_export.h"
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_elem.h"
-#include "stage3_fe/s3_mesh.h"
+#include "fe/fe_out_mesh.h"
 #include "tests/harness.h"
 #include "tests/fe_test_util.h"
 #include "translators/tr_keyword.h"
@@ -128,7 +128,7 @@ static void test_mesh_types(void)
     snprintf(xmf, sizeof xmf, "%s/m.xmf", dir);
     mcs_results *r = NULL;
     CHECK(mcs_results_create(&r, h5, "", &err) == MCS_OK);
-    for (int i = 0; r && i < m->npart; i++) CHECK(s3_put_part_mesh(r, m, &m->part[i], &err) == MCS_OK);
+    for (int i = 0; r && i < m->npart; i++) CHECK(fe_out_part_mesh(r, 3, m, &m->part[i], &err) == MCS_OK);
     CHECK(mcs_results_commit(&r, &err) == MCS_OK);
     fe_model_destroy(&m);
     CHECK(mcs_results_open(&r, h5, &err) == MCS_OK);

@@ -121,7 +121,7 @@ static int map_elem(const char *type, int k, const int *in, int base, int *out, 
         for (int j = 0; j < 8; j++) out[j] = in[j < 4 ? j : 3] + base;
         *t = FE_KW_SOLID;
     } else if (strcmp(type, "wedge6") == 0 && k == 6) {
-        /* VTK wedge (a b c | d e f) -> LS-DYNA's n1 n2 n3 n4 n5 n5 n6 n6 (s3_mesh.c) */
+        /* VTK wedge (a b c | d e f) -> LS-DYNA's n1 n2 n3 n4 n5 n5 n6 n6 (fe_out_mesh.c) */
         static const int w[8] = {0, 1, 4, 3, 2, 2, 5, 5};
         for (int j = 0; j < 8; j++) out[j] = in[w[j]] + base;
         *t = FE_KW_SOLID;

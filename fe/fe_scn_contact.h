@@ -1,14 +1,14 @@
-/* s3_build_contact: the `fe.contacts` and `fe.rigid_ellipsoids` keys of a scenario into the
+/* fe_scn_contact: the `fe.contacts` and `fe.rigid_ellipsoids` keys of a scenario into the
  * kernel's contact descriptors (fe/fe_contact.h). Types: single_surface {parts},
  * two_surface {slave, master} and surface_to_surface {a, b} (symmetric, two passes),
  * node_to_surface {a: slave nodes, b: master segments}; friction, friction_dynamic,
  * friction_decay, penalty_scale, thickness_scale, name. Errors name FILE:LINE:COL and key. */
-#ifndef S3_BUILD_CONTACT_H
-#define S3_BUILD_CONTACT_H
+#ifndef FE_SCN_CONTACT_H
+#define FE_SCN_CONTACT_H
 
 #include "core/mcs_scenario.h"
 #include "fe/fe_model.h"
 
-mcs_status s3_contact_add(fe_builder *b, const mcs_node *fe, mcs_error *err);
+mcs_status fe_scn_contact_add(fe_builder *b, const mcs_node *fe, mcs_error *err);
 
 #endif

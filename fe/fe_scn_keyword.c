@@ -1,5 +1,5 @@
-/* s3_keyword.c: keyword meshes of fe: parts (see s3_keyword.h). */
-#include "stage3_fe/s3_keyword.h"
+/* fe_scn_keyword.c: keyword meshes of fe: parts (see fe_scn_keyword.h). */
+#include "fe/fe_scn_keyword.h"
 
 #include "fe/fe_keyword.h"
 
@@ -12,14 +12,14 @@ typedef struct {
     char units[32];
     fe_kw_deck *deck;
     int *node_map; /* deck node -> builder node (-1: not added yet) */
-} s3_kw_entry;
+} fe_scn_kw_entry;
 
-struct s3_kw_cache {
+struct fe_scn_kw_cache {
     int n;
-    s3_kw_entry e[16];
+    fe_scn_kw_entry e[16];
 };
 
-void s3_kw_cache_free(s3_kw_cache **cache)
+void fe_scn_kw_cache_free(fe_scn_kw_cache **cache)
 {
     if (!cache || !*cache) return;
     for (int i = 0; i < (*cache)->n; i++) {
@@ -31,7 +31,7 @@ void s3_kw_cache_free(s3_kw_cache **cache)
 }
 
 /* the deck of `name` relative to the YAML file of node `at`, read once */
-static mcs_status deck_of(s3_kw_cache **cache, const mcs_node *mesh, s3_kw_entry **out,
+static mcs_status deck_of(fe_scn_kw_cache **cache, const mcs_node *mesh, fe_scn_kw_entry **out,
                           mcs_error *err)
 {
     const mcs_node *kn = mcs_node_get(mesh, "keyword");
@@ -48,7 +48,7 @@ static mcs_status deck_of(s3_kw_cache **cache, const mcs_node *mesh, s3_kw_entry
     if (!units) units = "m-s-kg";
     if (!*cache && !(*cache = calloc(1, sizeof **cache)))
         return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
-    s3_kw_cache *c = *cache;
+    fe_scn_kw_cache *c = *cache;
     for (int i = 0; i < c->n; i++)
         if (strcmp(c->e[i].path, path) == 0 && strcmp(c->e[i].units, units) == 0) {
             *out = &c->e[i];
@@ -64,7 +64,7 @@ static mcs_status deck_of(s3_kw_cache **cache, const mcs_node *mesh, s3_kw_entry
     fe_kw_deck *d = NULL;
     mcs_status st = fe_kw_read(path, &o, &d, &kerr);
     if (st) return mcs_node_error(kn, err, st, "%s", kerr.msg);
-    s3_kw_entry *e = &c->e[c->n];
+    fe_scn_kw_entry *e = &c->e[c->n];
     e->node_map = malloc(sizeof(int) * (size_t)(d->nnode ? d->nnode : 1));
     if (!e->node_map) {
         fe_kw_deck_destroy(&d);
@@ -79,11 +79,11 @@ static mcs_status deck_of(s3_kw_cache **cache, const mcs_node *mesh, s3_kw_entry
     return MCS_OK;
 }
 
-mcs_status s3_kw_add_part(s3_kw_cache **cache, fe_builder *b, const mcs_node *part,
+mcs_status fe_scn_kw_add_part(fe_scn_kw_cache **cache, fe_builder *b, const mcs_node *part,
                           const fe_part_desc *d, mcs_error *err)
 {
     const mcs_node *mesh = mcs_node_get(part, "mesh"), *pn = mcs_node_get(mesh, "part");
-    s3_kw_entry *e = NULL;
+    fe_scn_kw_entry *e = NULL;
     mcs_status st = deck_of(cache, mesh, &e, err);
     if (st) return st;
     int pid = (int)mcs_node_num(pn);

@@ -1,22 +1,23 @@
-/* s3_build: the `fe:` block of a scenario (DESIGN.md "The scenario (YAML)") compiled into an
- * fe_model for a stage-3 (FE-only) run.
+/* fe_scn_build: the `fe:` block of a scenario (DESIGN.md "The scenario (YAML)") compiled into an
+ * fe_model: for a stage-3 (FE-only) run, and for the FE parts coupled to stage-1 bodies
+ * (stage1_mb/mb_couple.c; every stage shares it).
  *
  * What it reads: simulation.{end_time, time_step (upper bound on the stable step),
  * time_step_scale (safety factor, default 0.9), output_rate (default 10 kHz)}; fe.parts with
  * generated meshes (box, plate, square_tube, circular_tube, cylinder_shell, sphere_shell, line),
- * keyword meshes (s3_keyword.h: section and material may then come from the deck),
+ * keyword meshes (fe_scn_keyword.h: section and material may then come from the deck),
  * shell/solid/membrane/truss sections (hourglass form and coefficient, shear_factor,
  * tension_only), elastic, elastic_plastic (hardening curve or tangent_modulus, Cowper-Symonds)
  * and fabric materials, initial_velocity; fe.boundary (where, fix, velocity); fe.loads (where,
  * force, curve); fe.rigid_walls (point, normal, velocity, method, penalty_scale, parts);
- * fe.airbags and fe.retractors (s3_restraints.c); fe.contacts and fe.rigid_ellipsoids
- * (s3_build_contact.h); foam and rigid materials, solid formulation full, fe.springs,
- * fe.masses, fe.mass_scaling and environment.gravity (s3_build_solid.h).
+ * fe.airbags and fe.retractors (fe_scn_restraints.c); fe.contacts and fe.rigid_ellipsoids
+ * (fe_scn_contact.h); foam and rigid materials, solid formulation full, fe.springs,
+ * fe.masses, fe.mass_scaling and environment.gravity (fe_scn_solid.h).
  * What the kernel cannot do yet is refused with MCS_ERR_UNSUPPORTED at the key's
  * FILE:LINE:COL (wall friction and size, boundary tolerance, failure strain, foam damping);
  * nothing is silently dropped. */
-#ifndef S3_BUILD_H
-#define S3_BUILD_H
+#ifndef FE_SCN_BUILD_H
+#define FE_SCN_BUILD_H
 
 #include "core/mcs_scenario.h"
 #include "fe/fe_model.h"
@@ -25,18 +26,18 @@
 typedef struct {
     int node;              /* FE node index [-]                                      */
     const mcs_node *attach; /* the part's attach: map (scenario-owned)               */
-} s3_attach;
+} fe_attach;
 
 typedef struct {
     fe_model *model;      /* owned                                                  */
     int natt;             /* nodes attached to bodies [-]                           */
-    s3_attach *att;       /* (natt), owned; their translations are fixed in the model */
+    fe_attach *att;       /* (natt), owned; their translations are fixed in the model */
     double end_time;      /* simulated duration [s]                                 */
     double output_rate;   /* sampling rate of the results [Hz]                      */
-} s3_problem;
+} fe_problem;
 
 /* build the model of a validated scenario; errors name FILE:LINE:COL and the key */
-mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err);
-void s3_problem_free(s3_problem *p);
+mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err);
+void fe_problem_free(fe_problem *p);
 
 #endif

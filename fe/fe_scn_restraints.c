@@ -1,44 +1,44 @@
-/* s3_restraints.c: scenario keys -> membrane meshes, fabric, gas bags and retractors, and
- * their /stage3 results (see s3_restraints.h). The kernel's descriptors carry the key names
+/* fe_scn_restraints.c: scenario keys -> membrane meshes, fabric, gas bags and retractors, and
+ * their /stage3 results (see fe_scn_restraints.h). The kernel's descriptors carry the key names
  * (docs/fe.md, docs/gasbag.md); kernel errors are relocated to the scenario node. */
-#include "stage3_fe/s3_restraints.h"
-#include "stage3_fe/s3_node.h"
+#include "fe/fe_scn_restraints.h"
+#include "fe/fe_scn_node.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-mcs_status s3_read_shell_mesh(const mcs_node *mesh, const char *gen, fe_mesh_desc *d,
+mcs_status fe_scn_read_shell_mesh(const mcs_node *mesh, const char *gen, fe_mesh_desc *d,
                               mcs_error *err)
 {
     mcs_status st = MCS_OK;
-    d->element_size = mcs_node_num(s3_get(mesh, "element_size"));
-    if (s3_given(mesh, "origin")) st = mcs_node_vec3(s3_get(mesh, "origin"), d->origin, err);
+    d->element_size = mcs_node_num(fe_scn_get(mesh, "element_size"));
+    if (fe_scn_given(mesh, "origin")) st = mcs_node_vec3(fe_scn_get(mesh, "origin"), d->origin, err);
     if (strcmp(gen, "sphere_shell") == 0) {
         d->generate = FE_MESH_SPHERE_SHELL;
-        d->radius = mcs_node_num(s3_get(mesh, "radius"));
+        d->radius = mcs_node_num(fe_scn_get(mesh, "radius"));
         return st;
     }
     d->generate = FE_MESH_CYLINDER_SHELL;
-    d->diameter = mcs_node_num(s3_get(mesh, "diameter"));
-    d->length = mcs_node_num(s3_get(mesh, "length"));
-    d->axis = s3_axis_of(mcs_node_str(s3_get(mesh, "axis")), 2);
-    d->closed = mcs_node_bool(s3_get(mesh, "closed"), 0);
+    d->diameter = mcs_node_num(fe_scn_get(mesh, "diameter"));
+    d->length = mcs_node_num(fe_scn_get(mesh, "length"));
+    d->axis = fe_scn_axis_of(mcs_node_str(fe_scn_get(mesh, "axis")), 2);
+    d->closed = mcs_node_bool(fe_scn_get(mesh, "closed"), 0);
     return st;
 }
 
-mcs_status s3_read_fabric(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
+mcs_status fe_scn_read_fabric(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
 {
     d->model = FE_MAT_FABRIC;
-    d->density = mcs_node_num(s3_get(mat, "density"));
-    d->youngs_modulus = mcs_node_num(s3_get(mat, "youngs_modulus"));
-    d->poisson = mcs_node_num(s3_get(mat, "poisson"));
+    d->density = mcs_node_num(fe_scn_get(mat, "density"));
+    d->youngs_modulus = mcs_node_num(fe_scn_get(mat, "youngs_modulus"));
+    d->poisson = mcs_node_num(fe_scn_get(mat, "poisson"));
     d->fabric_e2 = mcs_node_num_or(mat, "youngs_modulus_b", 0);
     d->fabric_g12 = mcs_node_num_or(mat, "shear_modulus", 0);
     d->fabric_damping = mcs_node_num_or(mat, "damping", 0);
-    if (s3_given(mat, "direction"))
-        return mcs_node_vec3(s3_get(mat, "direction"), d->fabric_direction, err);
+    if (fe_scn_given(mat, "direction"))
+        return mcs_node_vec3(fe_scn_get(mat, "direction"), d->fabric_direction, err);
     return MCS_OK;
 }
 
@@ -57,7 +57,7 @@ static mcs_status read_inflator(const mcs_node *inf, fe_gasbag_desc *g, mcs_erro
 {
     enum { CAP = FE_GASBAG_TABLE_MAX };
     double xm[CAP], ym[CAP], xt[CAP], yt[CAP];
-    const mcs_node *cm = s3_get(inf, "mass_flow"), *ct = s3_get(inf, "temperature");
+    const mcs_node *cm = fe_scn_get(inf, "mass_flow"), *ct = fe_scn_get(inf, "temperature");
     int nm = mcs_node_curve_len(cm), nt = mcs_node_curve_len(ct);
     if (nm > CAP || nt > CAP)
         return mcs_node_error(nm > CAP ? cm : ct, err, MCS_ERR_RANGE, "at most %d points", CAP);
@@ -92,11 +92,11 @@ static mcs_status read_inflator(const mcs_node *inf, fe_gasbag_desc *g, mcs_erro
 
 static mcs_status read_airbag(const mcs_node *a, fe_airbag_desc *d, mcs_error *err)
 {
-    snprintf(d->name, sizeof d->name, "%s", mcs_node_str(s3_get(a, "name")));
-    if (strlen(mcs_node_str(s3_get(a, "name"))) >= sizeof d->name)
-        return mcs_node_error(s3_get(a, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
+    snprintf(d->name, sizeof d->name, "%s", mcs_node_str(fe_scn_get(a, "name")));
+    if (strlen(mcs_node_str(fe_scn_get(a, "name"))) >= sizeof d->name)
+        return mcs_node_error(fe_scn_get(a, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
                               FE_NAME_MAX - 1);
-    const mcs_node *parts = s3_get(a, "parts"), *vents = s3_get(a, "vents");
+    const mcs_node *parts = fe_scn_get(a, "parts"), *vents = fe_scn_get(a, "vents");
     if (mcs_node_len(parts) > FE_RESTRAINT_PARTS_MAX)
         return mcs_node_error(parts, err, MCS_ERR_RANGE, "at most %d parts",
                               FE_RESTRAINT_PARTS_MAX);
@@ -118,32 +118,32 @@ static mcs_status read_airbag(const mcs_node *a, fe_airbag_desc *d, mcs_error *e
     g->nvent = mcs_node_len(vents);
     for (int k = 0; k < g->nvent; k++) {
         const mcs_node *v = mcs_node_at(vents, k);
-        g->vent[k].area = mcs_node_num(s3_get(v, "area"));
+        g->vent[k].area = mcs_node_num(fe_scn_get(v, "area"));
         g->vent[k].discharge_coefficient = mcs_node_num_or(v, "discharge_coefficient", 1);
         g->vent[k].open_pressure = mcs_node_num_or(v, "open_pressure", 0);
     }
-    if (s3_given(a, "leakage")) {
-        const mcs_node *l = s3_get(a, "leakage");
+    if (fe_scn_given(a, "leakage")) {
+        const mcs_node *l = fe_scn_get(a, "leakage");
         g->leak_area = mcs_node_num_or(l, "area", 0);
         g->leak_porosity = mcs_node_num_or(l, "porosity", 0);
         g->leak_discharge_coefficient = mcs_node_num_or(l, "discharge_coefficient", 1);
     }
-    if (s3_given(a, "inflator")) return read_inflator(s3_get(a, "inflator"), g, err);
+    if (fe_scn_given(a, "inflator")) return read_inflator(fe_scn_get(a, "inflator"), g, err);
     return MCS_OK;
 }
 
 static mcs_status read_retractor(const mcs_node *r, fe_belt_retractor_desc *d, mcs_error *err)
 {
     static const char *names[] = {"all", "x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
-    snprintf(d->name, sizeof d->name, "%s", mcs_node_str(s3_get(r, "name")));
-    if (strlen(mcs_node_str(s3_get(r, "name"))) >= sizeof d->name)
-        return mcs_node_error(s3_get(r, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
+    snprintf(d->name, sizeof d->name, "%s", mcs_node_str(fe_scn_get(r, "name")));
+    if (strlen(mcs_node_str(fe_scn_get(r, "name"))) >= sizeof d->name)
+        return mcs_node_error(fe_scn_get(r, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
                               FE_NAME_MAX - 1);
-    snprintf(d->part, sizeof d->part, "%s", mcs_node_str(s3_get(r, "part")));
-    const char *w = mcs_node_str(s3_get(r, "where"));
+    snprintf(d->part, sizeof d->part, "%s", mcs_node_str(fe_scn_get(r, "part")));
+    const char *w = mcs_node_str(fe_scn_get(r, "where"));
     for (int i = 0; i < 7; i++)
         if (w && strcmp(w, names[i]) == 0) d->where = (fe_where)i;
-    mcs_status st = mcs_node_vec3(s3_get(r, "anchor"), d->anchor, err);
+    mcs_status st = mcs_node_vec3(fe_scn_get(r, "anchor"), d->anchor, err);
     if (st) return st;
     d->stiffness = mcs_node_num_or(r, "stiffness", 0);
     fe_retractor_desc *t = &d->retractor;
@@ -154,8 +154,8 @@ static mcs_status read_retractor(const mcs_node *r, fe_belt_retractor_desc *d, m
     t->spool_force = mcs_node_num_or(r, "spool_force", t->spool_force);
     t->lock_time = mcs_node_num_or(r, "lock_time", t->lock_time);
     t->lock_payout_rate = mcs_node_num_or(r, "lock_payout_rate", 0);
-    if (s3_given(r, "payin")) {
-        const mcs_node *c = s3_get(r, "payin");
+    if (fe_scn_given(r, "payin")) {
+        const mcs_node *c = fe_scn_get(r, "payin");
         int n = mcs_node_curve_len(c);
         if (n > FE_RETRACTOR_TABLE_MAX)
             return mcs_node_error(c, err, MCS_ERR_RANGE, "at most %d points",
@@ -169,9 +169,9 @@ static mcs_status read_retractor(const mcs_node *r, fe_belt_retractor_desc *d, m
     return st;
 }
 
-mcs_status s3_add_restraints(fe_builder *b, const mcs_node *fe, mcs_error *err)
+mcs_status fe_scn_add_restraints(fe_builder *b, const mcs_node *fe, mcs_error *err)
 {
-    const mcs_node *bags = s3_get(fe, "airbags"), *rets = s3_get(fe, "retractors");
+    const mcs_node *bags = fe_scn_get(fe, "airbags"), *rets = fe_scn_get(fe, "retractors");
     for (int i = 0; i < mcs_node_len(bags); i++) {
         const mcs_node *a = mcs_node_at(bags, i);
         fe_airbag_desc d = fe_airbag_desc_default();
@@ -179,7 +179,7 @@ mcs_status s3_add_restraints(fe_builder *b, const mcs_node *fe, mcs_error *err)
         if (st) return st;
         mcs_error kerr = {0};
         st = fe_builder_add_airbag(b, &d, &kerr);
-        if (st) return s3_relocate(st, a, &kerr, err);
+        if (st) return fe_scn_relocate(st, a, &kerr, err);
     }
     for (int i = 0; i < mcs_node_len(rets); i++) {
         const mcs_node *r = mcs_node_at(rets, i);
@@ -188,21 +188,21 @@ mcs_status s3_add_restraints(fe_builder *b, const mcs_node *fe, mcs_error *err)
         if (st) return st;
         mcs_error kerr = {0};
         st = fe_builder_add_retractor(b, &d, &kerr);
-        if (st) return s3_relocate(st, r, &kerr, err);
+        if (st) return fe_scn_relocate(st, r, &kerr, err);
     }
     return MCS_OK;
 }
 
-const mcs_node *s3_restraint_node(const mcs_node *fe, const char *msg)
+const mcs_node *fe_scn_restraint_node(const mcs_node *fe, const char *msg)
 {
     static const char *const list[2] = {"airbags", "retractors"};
     static const char *const what[2] = {"gas bag", "retractor"};
     for (int k = 0; k < 2; k++) {
-        const mcs_node *l = s3_get(fe, list[k]);
+        const mcs_node *l = fe_scn_get(fe, list[k]);
         for (int i = 0; i < mcs_node_len(l); i++) {
             const mcs_node *it = mcs_node_at(l, i);
             char needle[FE_NAME_MAX + 32];
-            snprintf(needle, sizeof needle, "%s '%s'", what[k], mcs_node_str(s3_get(it, "name")));
+            snprintf(needle, sizeof needle, "%s '%s'", what[k], mcs_node_str(fe_scn_get(it, "name")));
             if (strstr(msg, needle)) return it;
         }
     }
@@ -211,62 +211,63 @@ const mcs_node *s3_restraint_node(const mcs_node *fe, const char *msg)
 
 /* ---- results ----------------------------------------------------------------------------- */
 
-static const char *const bag_ch[S3_BAG_CHANNELS] = {"pressure", "volume", "temperature", "mass"};
-static const char *const bag_unit[S3_BAG_CHANNELS] = {"Pa", "m^3", "K", "kg"};
-static const char *const ret_ch[S3_RETRACTOR_CHANNELS] = {
+static const char *const bag_ch[FE_OUT_BAG_CHANNELS] = {"pressure", "volume", "temperature", "mass"};
+static const char *const bag_unit[FE_OUT_BAG_CHANNELS] = {"Pa", "m^3", "K", "kg"};
+static const char *const ret_ch[FE_OUT_RETRACTOR_CHANNELS] = {
     "payout", "force", "payout_pretensioner", "payout_limiter", "energy_limiter"};
-static const char *const ret_unit[S3_RETRACTOR_CHANNELS] = {"m", "N", "m", "m", "J"};
+static const char *const ret_unit[FE_OUT_RETRACTOR_CHANNELS] = {"m", "N", "m", "m", "J"};
 
-mcs_status s3_restraint_open(mcs_results *r, const fe_model *m, s3_restraint_out *o,
-                             mcs_error *err)
+mcs_status fe_out_restraint_open(mcs_results *r, int stage, const fe_model *m,
+                                 fe_out_restraint *o, mcs_error *err)
 {
     memset(o, 0, sizeof *o);
     const struct fe_restraints *rs = m->restraints;
     if (!rs) return MCS_OK;
-    o->bag = calloc((size_t)rs->nbag * S3_BAG_CHANNELS + 1, sizeof *o->bag);
-    o->retractor = calloc((size_t)rs->nretractor * S3_RETRACTOR_CHANNELS + 1, sizeof *o->retractor);
+    o->bag = calloc((size_t)rs->nbag * FE_OUT_BAG_CHANNELS + 1, sizeof *o->bag);
+    o->retractor = calloc((size_t)rs->nretractor * FE_OUT_RETRACTOR_CHANNELS + 1, sizeof *o->retractor);
     if (!o->bag || !o->retractor) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
     o->nbag = rs->nbag;
     o->nretractor = rs->nretractor;
     char path[256];
     mcs_status st = MCS_OK;
     for (int i = 0; i < rs->nbag && !st; i++)
-        for (int c = 0; c < S3_BAG_CHANNELS && !st; c++) {
-            snprintf(path, sizeof path, "/stage3/airbag/%s/%s", rs->bag[i].name, bag_ch[c]);
+        for (int c = 0; c < FE_OUT_BAG_CHANNELS && !st; c++) {
+            snprintf(path, sizeof path, "/stage%d/airbag/%s/%s", stage, rs->bag[i].name, bag_ch[c]);
             st = mcs_results_series_create(r, path, 1, NULL, bag_unit[c], 0,
-                                           &o->bag[S3_BAG_CHANNELS * i + c], err);
+                                           &o->bag[FE_OUT_BAG_CHANNELS * i + c], err);
         }
     for (int i = 0; i < rs->nretractor && !st; i++)
-        for (int c = 0; c < S3_RETRACTOR_CHANNELS && !st; c++) {
-            snprintf(path, sizeof path, "/stage3/retractor/%s/%s", rs->retractor[i].name,
+        for (int c = 0; c < FE_OUT_RETRACTOR_CHANNELS && !st; c++) {
+            snprintf(path, sizeof path, "/stage%d/retractor/%s/%s", stage,
+                     rs->retractor[i].name,
                      ret_ch[c]);
             st = mcs_results_series_create(r, path, 1, NULL, ret_unit[c], 0,
-                                           &o->retractor[S3_RETRACTOR_CHANNELS * i + c], err);
+                                           &o->retractor[FE_OUT_RETRACTOR_CHANNELS * i + c], err);
         }
     return st;
 }
 
-mcs_status s3_restraint_sample(const fe_state *s, const s3_restraint_out *o, mcs_error *err)
+mcs_status fe_out_restraint_sample(const fe_state *s, const fe_out_restraint *o, mcs_error *err)
 {
     mcs_status st = MCS_OK;
     for (int i = 0; i < o->nbag && !st; i++) {
         const fe_gasbag_state *g = &s->restraint->bag[i];
-        const double v[S3_BAG_CHANNELS] = {g->pressure, g->volume, g->temperature, g->mass};
-        for (int c = 0; c < S3_BAG_CHANNELS && !st; c++)
-            st = mcs_results_series_append(o->bag[S3_BAG_CHANNELS * i + c], &v[c], err);
+        const double v[FE_OUT_BAG_CHANNELS] = {g->pressure, g->volume, g->temperature, g->mass};
+        for (int c = 0; c < FE_OUT_BAG_CHANNELS && !st; c++)
+            st = mcs_results_series_append(o->bag[FE_OUT_BAG_CHANNELS * i + c], &v[c], err);
     }
     for (int i = 0; i < o->nretractor && !st; i++) {
         const fe_retractor_state *r = &s->restraint->retractor[i];
-        const double v[S3_RETRACTOR_CHANNELS] = {r->payout, r->force, r->payout_pretensioner,
+        const double v[FE_OUT_RETRACTOR_CHANNELS] = {r->payout, r->force, r->payout_pretensioner,
                                                  r->payout_limiter, r->energy_limiter};
-        for (int c = 0; c < S3_RETRACTOR_CHANNELS && !st; c++)
-            st = mcs_results_series_append(o->retractor[S3_RETRACTOR_CHANNELS * i + c], &v[c],
+        for (int c = 0; c < FE_OUT_RETRACTOR_CHANNELS && !st; c++)
+            st = mcs_results_series_append(o->retractor[FE_OUT_RETRACTOR_CHANNELS * i + c], &v[c],
                                            err);
     }
     return st;
 }
 
-void s3_restraint_out_free(s3_restraint_out *o)
+void fe_out_restraint_free(fe_out_restraint *o)
 {
     free(o->bag);
     free(o->retractor);

@@ -1,5 +1,5 @@
-/* s3_mesh: a part's mesh with its cell types (see s3_mesh.h). */
-#include "stage3_fe/s3_mesh.h"
+/* fe_out_mesh: a part's mesh with its cell types (see fe_out_mesh.h). */
+#include "fe/fe_out_mesh.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -43,8 +43,8 @@ static void node_range(const int *c, size_t n, int nnode, int *lo, int *hi)
     }
 }
 
-static mcs_status put_solid(mcs_results *r, const fe_model *m, const fe_part *p, int lo, int hi,
-                            mcs_error *err)
+static mcs_status put_solid(mcs_results *r, int stage, const fe_model *m, const fe_part *p, int lo,
+                            int hi, mcs_error *err)
 {
     static const char *type[SH_N] = {"hex8", "wedge6", "tet4"};
     static const int width[SH_N] = {8, 6, 4};
@@ -65,18 +65,19 @@ static mcs_status put_solid(mcs_results *r, const fe_model *m, const fe_part *p,
         if (cnt[s]) first = s;
     const size_t nn = (size_t)(hi - lo + 1);
     if (!st)
-        st = mcs_results_put_mesh(r, 3, p->name, nn, m->node_x0 + 3 * (size_t)lo,
+        st = mcs_results_put_mesh(r, stage, p->name, nn, m->node_x0 + 3 * (size_t)lo,
                                   (size_t)cnt[first], width[first], blk[first], type[first], lo,
                                   err);
     for (int s = first + 1; s < SH_N && !st; s++)
         if (cnt[s])
-            st = mcs_results_put_mesh_block(r, 3, p->name, nn, (size_t)cnt[s], width[s], blk[s],
+            st = mcs_results_put_mesh_block(r, stage, p->name, nn, (size_t)cnt[s], width[s], blk[s],
                                             type[s], err);
     for (int s = 0; s < SH_N; s++) free(blk[s]);
     return st;
 }
 
-mcs_status s3_put_part_mesh(mcs_results *r, const fe_model *m, const fe_part *p, mcs_error *err)
+mcs_status fe_out_part_mesh(mcs_results *r, int stage, const fe_model *m, const fe_part *p,
+                           mcs_error *err)
 {
     static const int width[FE_NKIND] = {8, 4, 2, 10};
     static const char *type[FE_NKIND] = {"hex8", "quad4", "line2", "tet10"};
@@ -86,11 +87,11 @@ mcs_status s3_put_part_mesh(mcs_results *r, const fe_model *m, const fe_part *p,
     if (ne <= 0) return MCS_OK;
     int lo, hi;
     node_range(c, (size_t)k * (size_t)ne, m->nnode, &lo, &hi);
-    if (p->elem_kind == FE_KIND_HEX) return put_solid(r, m, p, lo, hi, err);
+    if (p->elem_kind == FE_KIND_HEX) return put_solid(r, stage, m, p, lo, hi, err);
     int *el = malloc(sizeof(int) * (size_t)ne * (size_t)k);
     if (!el) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory writing part '%s'", p->name);
     for (size_t i = 0; i < (size_t)k * (size_t)ne; i++) el[i] = c[i] - lo;
-    mcs_status st = mcs_results_put_mesh(r, 3, p->name, (size_t)(hi - lo + 1),
+    mcs_status st = mcs_results_put_mesh(r, stage, p->name, (size_t)(hi - lo + 1),
                                          m->node_x0 + 3 * (size_t)lo, (size_t)ne, k, el,
                                          type[p->elem_kind], lo, err);
     free(el);

@@ -1,21 +1,21 @@
-/* s3_build.c: scenario `fe:` block -> fe_model (see s3_build.h). The kernel's descriptors carry
+/* fe_scn_build.c: scenario `fe:` block -> fe_model (see fe_scn_build.h). The kernel's descriptors carry
  * the scenario's key names (docs/fe.md), so this file copies keys, converts the few that differ
  * (axis names, tangent_modulus -> a hardening table) and locates every kernel error at the
  * scenario node it came from. */
-#include "stage3_fe/s3_build.h"
-#include "stage3_fe/s3_node.h"
-#include "stage3_fe/s3_build_contact.h"
-#include "stage3_fe/s3_build_solid.h"
-#include "stage3_fe/s3_restraints.h"
-#include "stage3_fe/s3_slipring.h"
-#include "stage3_fe/s3_keyword.h"
+#include "fe/fe_scn_build.h"
+#include "fe/fe_scn_node.h"
+#include "fe/fe_scn_contact.h"
+#include "fe/fe_scn_solid.h"
+#include "fe/fe_scn_restraints.h"
+#include "fe/fe_scn_slipring.h"
+#include "fe/fe_scn_keyword.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define S3_OUTPUT_RATE_DEFAULT 10e3 /* [Hz], as stage 1 */
+#define FE_SCN_OUTPUT_RATE_DEFAULT 10e3 /* [Hz], as stage 1 */
 
 static mcs_status unsupported(const mcs_node *n, mcs_error *err, const char *what)
 {
@@ -24,114 +24,114 @@ static mcs_status unsupported(const mcs_node *n, mcs_error *err, const char *wha
 
 static mcs_status read_mesh(const mcs_node *mesh, fe_mesh_desc *d, mcs_error *err)
 {
-    const char *gen = mcs_node_str(s3_get(mesh, "generate"));
+    const char *gen = mcs_node_str(fe_scn_get(mesh, "generate"));
     if (!gen) return unsupported(mesh, err, "mesh from a keyword file");
     mcs_status st = MCS_OK;
     if (strcmp(gen, "box") == 0) {
         d->generate = FE_MESH_BOX;
-        st = mcs_node_vec3(s3_get(mesh, "size"), d->size, err);
+        st = mcs_node_vec3(fe_scn_get(mesh, "size"), d->size, err);
         for (int i = 0; i < 3 && !st; i++)
-            d->divisions[i] = (int)mcs_node_num(mcs_node_at(s3_get(mesh, "divisions"), i));
-        if (!st && s3_given(mesh, "origin"))
-            st = mcs_node_vec3(s3_get(mesh, "origin"), d->origin, err);
+            d->divisions[i] = (int)mcs_node_num(mcs_node_at(fe_scn_get(mesh, "divisions"), i));
+        if (!st && fe_scn_given(mesh, "origin"))
+            st = mcs_node_vec3(fe_scn_get(mesh, "origin"), d->origin, err);
     } else if (strcmp(gen, "plate") == 0) {
         d->generate = FE_MESH_PLATE;
-        st = mcs_node_vec(s3_get(mesh, "size"), d->size, 2, err);
-        d->axis = s3_axis_of(mcs_node_str(s3_get(mesh, "axis")), 2);
+        st = mcs_node_vec(fe_scn_get(mesh, "size"), d->size, 2, err);
+        d->axis = fe_scn_axis_of(mcs_node_str(fe_scn_get(mesh, "axis")), 2);
         for (int i = 0; i < 2 && !st; i++) {
-            if (s3_given(mesh, "divisions"))
-                d->divisions[i] = (int)mcs_node_num(mcs_node_at(s3_get(mesh, "divisions"), i));
+            if (fe_scn_given(mesh, "divisions"))
+                d->divisions[i] = (int)mcs_node_num(mcs_node_at(fe_scn_get(mesh, "divisions"), i));
             else
                 d->divisions[i] = (int)fmax(
-                    1, floor(d->size[i] / mcs_node_num(s3_get(mesh, "element_size")) + 0.5));
+                    1, floor(d->size[i] / mcs_node_num(fe_scn_get(mesh, "element_size")) + 0.5));
         }
-        if (!st && s3_given(mesh, "origin"))
-            st = mcs_node_vec3(s3_get(mesh, "origin"), d->origin, err);
+        if (!st && fe_scn_given(mesh, "origin"))
+            st = mcs_node_vec3(fe_scn_get(mesh, "origin"), d->origin, err);
     } else if (strcmp(gen, "line") == 0) {
         d->generate = FE_MESH_LINE;
-        st = mcs_node_vec3(s3_get(mesh, "origin"), d->origin, err);
-        if (!st) st = mcs_node_vec3(s3_get(mesh, "end"), d->end, err);
-        d->divisions[0] = (int)mcs_node_num(s3_get(mesh, "divisions"));
+        st = mcs_node_vec3(fe_scn_get(mesh, "origin"), d->origin, err);
+        if (!st) st = mcs_node_vec3(fe_scn_get(mesh, "end"), d->end, err);
+        d->divisions[0] = (int)mcs_node_num(fe_scn_get(mesh, "divisions"));
     } else if (strcmp(gen, "square_tube") == 0) {
         d->generate = FE_MESH_SQUARE_TUBE;
-        d->side = mcs_node_num(s3_get(mesh, "side"));
+        d->side = mcs_node_num(fe_scn_get(mesh, "side"));
     } else if (strcmp(gen, "circular_tube") == 0) {
         d->generate = FE_MESH_CIRCULAR_TUBE;
-        d->diameter = mcs_node_num(s3_get(mesh, "diameter"));
+        d->diameter = mcs_node_num(fe_scn_get(mesh, "diameter"));
     } else if (strcmp(gen, "cylinder_shell") == 0 || strcmp(gen, "sphere_shell") == 0) {
-        return s3_read_shell_mesh(mesh, gen, d, err); /* s3_restraints.c */
+        return fe_scn_read_shell_mesh(mesh, gen, d, err); /* fe_scn_restraints.c */
     } else {
         char what[96];
         snprintf(what, sizeof what, "mesh generator '%s'", gen);
-        return unsupported(s3_get(mesh, "generate"), err, what);
+        return unsupported(fe_scn_get(mesh, "generate"), err, what);
     }
     if (d->generate == FE_MESH_SQUARE_TUBE || d->generate == FE_MESH_CIRCULAR_TUBE) {
-        d->length = mcs_node_num(s3_get(mesh, "length"));
-        d->element_size = mcs_node_num(s3_get(mesh, "element_size"));
-        d->axis = s3_axis_of(mcs_node_str(s3_get(mesh, "axis")), 2);
+        d->length = mcs_node_num(fe_scn_get(mesh, "length"));
+        d->element_size = mcs_node_num(fe_scn_get(mesh, "element_size"));
+        d->axis = fe_scn_axis_of(mcs_node_str(fe_scn_get(mesh, "axis")), 2);
     }
     return st;
 }
 
 static mcs_status read_section(const mcs_node *sec, fe_section_desc *d, mcs_error *err)
 {
-    const char *type = mcs_node_str(s3_get(sec, "type"));
-    const char *hg = mcs_node_str(s3_get(sec, "hourglass"));
+    const char *type = mcs_node_str(fe_scn_get(sec, "type"));
+    const char *hg = mcs_node_str(fe_scn_get(sec, "hourglass"));
     if (hg) d->hourglass = strcmp(hg, "stiffness") == 0 ? FE_HG_STIFFNESS : FE_HG_VISCOUS;
     d->hourglass_coefficient = mcs_node_num_or(sec, "hourglass_coefficient", 0);
     if (type && strcmp(type, "shell") == 0) {
         d->type = FE_SECTION_SHELL;
-        d->thickness = mcs_node_num(s3_get(sec, "thickness"));
+        d->thickness = mcs_node_num(fe_scn_get(sec, "thickness"));
         d->integration_points = (int)mcs_node_num_or(sec, "integration_points", 5);
         d->shear_factor = mcs_node_num_or(sec, "shear_factor", 0);
         return MCS_OK;
     }
     if (type && strcmp(type, "solid") == 0) {
         d->type = FE_SECTION_SOLID;
-        const char *form = mcs_node_str(s3_get(sec, "formulation"));
+        const char *form = mcs_node_str(fe_scn_get(sec, "formulation"));
         if (form && strcmp(form, "full") == 0) d->formulation = FE_HEX_FULL;
         return MCS_OK;
     }
     if (type && strcmp(type, "membrane") == 0) {
         d->type = FE_SECTION_MEMBRANE;
-        d->thickness = mcs_node_num(s3_get(sec, "thickness"));
+        d->thickness = mcs_node_num(fe_scn_get(sec, "thickness"));
         return MCS_OK;
     }
     if (type && strcmp(type, "truss") == 0) {
         d->type = FE_SECTION_TRUSS;
-        d->area = mcs_node_num(s3_get(sec, "area"));
-        d->tension_only = mcs_node_bool(s3_get(sec, "tension_only"), 0);
+        d->area = mcs_node_num(fe_scn_get(sec, "area"));
+        d->tension_only = mcs_node_bool(fe_scn_get(sec, "tension_only"), 0);
         return MCS_OK;
     }
     char what[96];
     snprintf(what, sizeof what, "section type '%s'", type ? type : "?");
-    return unsupported(s3_get(sec, "type"), err, what);
+    return unsupported(fe_scn_get(sec, "type"), err, what);
 }
 
 static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
 {
-    const char *model = mcs_node_str(s3_get(mat, "model"));
+    const char *model = mcs_node_str(fe_scn_get(mat, "model"));
     if (model && (strcmp(model, "foam") == 0 || strcmp(model, "rigid") == 0))
-        return s3_solid_material(mat, d, err);
+        return fe_scn_solid_material(mat, d, err);
     int plastic = model && strcmp(model, "elastic_plastic") == 0;
-    if (model && strcmp(model, "fabric") == 0) return s3_read_fabric(mat, d, err);
+    if (model && strcmp(model, "fabric") == 0) return fe_scn_read_fabric(mat, d, err);
     if (!plastic && !(model && strcmp(model, "elastic") == 0)) {
         char what[96];
         snprintf(what, sizeof what, "material model '%s'", model ? model : "?");
-        return unsupported(s3_get(mat, "model"), err, what);
+        return unsupported(fe_scn_get(mat, "model"), err, what);
     }
     d->model = plastic ? FE_MAT_ELASTIC_PLASTIC : FE_MAT_ELASTIC;
-    d->density = mcs_node_num(s3_get(mat, "density"));
-    d->youngs_modulus = mcs_node_num(s3_get(mat, "youngs_modulus"));
-    d->poisson = mcs_node_num(s3_get(mat, "poisson"));
+    d->density = mcs_node_num(fe_scn_get(mat, "density"));
+    d->youngs_modulus = mcs_node_num(fe_scn_get(mat, "youngs_modulus"));
+    d->poisson = mcs_node_num(fe_scn_get(mat, "poisson"));
     if (!plastic) return MCS_OK;
-    if (s3_given(mat, "failure_strain"))
-        return unsupported(s3_get(mat, "failure_strain"), err, "failure_strain (element erosion)");
-    d->yield_stress = mcs_node_num(s3_get(mat, "yield_stress"));
+    if (fe_scn_given(mat, "failure_strain"))
+        return unsupported(fe_scn_get(mat, "failure_strain"), err, "failure_strain (element erosion)");
+    d->yield_stress = mcs_node_num(fe_scn_get(mat, "yield_stress"));
     d->cowper_symonds_c = mcs_node_num_or(mat, "cowper_symonds_c", 0);
     d->cowper_symonds_p = mcs_node_num_or(mat, "cowper_symonds_p", 0);
-    const mcs_node *h = s3_get(mat, "hardening");
-    if (s3_given(mat, "hardening")) {
+    const mcs_node *h = fe_scn_get(mat, "hardening");
+    if (fe_scn_given(mat, "hardening")) {
         int n = mcs_node_curve_len(h), k = 0;
         double x[FE_CURVE_MAX], y[FE_CURVE_MAX];
         if (n > FE_CURVE_MAX - 1)
@@ -149,12 +149,12 @@ static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_er
             d->hardening[k][1] = y[i];
         }
         d->nhardening = k;
-    } else if (s3_given(mat, "tangent_modulus")) {
+    } else if (fe_scn_given(mat, "tangent_modulus")) {
         /* bilinear: tangent modulus Et of the stress-strain curve -> plastic modulus
          * H = E Et / (E - Et) (the slope of stress vs. plastic strain) */
-        double E = d->youngs_modulus, Et = mcs_node_num(s3_get(mat, "tangent_modulus"));
+        double E = d->youngs_modulus, Et = mcs_node_num(fe_scn_get(mat, "tangent_modulus"));
         if (!(Et < E))
-            return mcs_node_error(s3_get(mat, "tangent_modulus"), err, MCS_ERR_RANGE,
+            return mcs_node_error(fe_scn_get(mat, "tangent_modulus"), err, MCS_ERR_RANGE,
                                   "must be below youngs_modulus %g Pa", E);
         d->nhardening = 2;
         d->hardening[0][0] = 0;
@@ -165,42 +165,42 @@ static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_er
     return MCS_OK;
 }
 
-static mcs_status add_parts_(fe_builder *b, const mcs_node *parts, s3_kw_cache **kc,
+static mcs_status add_parts_(fe_builder *b, const mcs_node *parts, fe_scn_kw_cache **kc,
                              mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(parts); i++) {
         const mcs_node *p = mcs_node_at(parts, i);
         fe_part_desc d = fe_part_desc_default();
-        snprintf(d.name, sizeof d.name, "%s", mcs_node_str(s3_get(p, "name")));
-        if (strlen(mcs_node_str(s3_get(p, "name"))) >= sizeof d.name)
-            return mcs_node_error(s3_get(p, "name"), err, MCS_ERR_RANGE,
+        snprintf(d.name, sizeof d.name, "%s", mcs_node_str(fe_scn_get(p, "name")));
+        if (strlen(mcs_node_str(fe_scn_get(p, "name"))) >= sizeof d.name)
+            return mcs_node_error(fe_scn_get(p, "name"), err, MCS_ERR_RANGE,
                                   "longer than %d characters", FE_NAME_MAX - 1);
-        /* a keyword mesh (s3_keyword.c) may take its section and material from the deck */
-        int kw = s3_given(s3_get(p, "mesh"), "keyword");
-        mcs_status st = kw ? MCS_OK : read_mesh(s3_get(p, "mesh"), &d.mesh, err);
-        if (!st && (!kw || s3_given(p, "section")))
-            st = read_section(s3_get(p, "section"), &d.section, err);
-        if (!st && (!kw || s3_given(p, "material")))
-            st = read_material(s3_get(p, "material"), &d.material, err);
-        if (!st && s3_given(p, "initial_velocity"))
-            st = mcs_node_vec3(s3_get(p, "initial_velocity"), d.initial_velocity, err);
-        if (!st && kw) st = s3_kw_add_part(kc, b, p, &d, err);
+        /* a keyword mesh (fe_scn_keyword.c) may take its section and material from the deck */
+        int kw = fe_scn_given(fe_scn_get(p, "mesh"), "keyword");
+        mcs_status st = kw ? MCS_OK : read_mesh(fe_scn_get(p, "mesh"), &d.mesh, err);
+        if (!st && (!kw || fe_scn_given(p, "section")))
+            st = read_section(fe_scn_get(p, "section"), &d.section, err);
+        if (!st && (!kw || fe_scn_given(p, "material")))
+            st = read_material(fe_scn_get(p, "material"), &d.material, err);
+        if (!st && fe_scn_given(p, "initial_velocity"))
+            st = mcs_node_vec3(fe_scn_get(p, "initial_velocity"), d.initial_velocity, err);
+        if (!st && kw) st = fe_scn_kw_add_part(kc, b, p, &d, err);
         if (st || kw) {
             if (st) return st;
             continue;
         }
         mcs_error kerr = {0};
         st = fe_builder_add_part(b, &d, NULL, &kerr);
-        if (st) return s3_relocate(st, p, &kerr, err);
+        if (st) return fe_scn_relocate(st, p, &kerr, err);
     }
     return MCS_OK;
 }
 
 static mcs_status add_parts(fe_builder *b, const mcs_node *parts, mcs_error *err)
 {
-    s3_kw_cache *kc = NULL;
+    fe_scn_kw_cache *kc = NULL;
     mcs_status st = add_parts_(b, parts, &kc, err);
-    s3_kw_cache_free(&kc);
+    fe_scn_kw_cache_free(&kc);
     return st;
 }
 
@@ -228,37 +228,37 @@ static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error 
 {
     for (int i = 0; i < mcs_node_len(list); i++) {
         const mcs_node *c = mcs_node_at(list, i);
-        if (s3_given(c, "tolerance"))
-            return unsupported(s3_get(c, "tolerance"), err, "boundary tolerance");
-        fe_boundary_desc d = {.where = where_of(mcs_node_str(s3_get(c, "where"))),
-                              .fix = fix_mask(mcs_node_str(s3_get(c, "fix")))};
-        snprintf(d.part, sizeof d.part, "%s", mcs_node_str(s3_get(c, "part")));
-        if (s3_given(c, "velocity")) {
-            mcs_status vs = mcs_node_vec3(s3_get(c, "velocity"), d.velocity, err);
+        if (fe_scn_given(c, "tolerance"))
+            return unsupported(fe_scn_get(c, "tolerance"), err, "boundary tolerance");
+        fe_boundary_desc d = {.where = where_of(mcs_node_str(fe_scn_get(c, "where"))),
+                              .fix = fix_mask(mcs_node_str(fe_scn_get(c, "fix")))};
+        snprintf(d.part, sizeof d.part, "%s", mcs_node_str(fe_scn_get(c, "part")));
+        if (fe_scn_given(c, "velocity")) {
+            mcs_status vs = mcs_node_vec3(fe_scn_get(c, "velocity"), d.velocity, err);
             if (vs) return vs;
         }
         mcs_error kerr = {0};
         mcs_status st = fe_builder_add_boundary(b, &d, &kerr);
-        if (st) return s3_relocate(st, c, &kerr, err);
+        if (st) return fe_scn_relocate(st, c, &kerr, err);
     }
     return MCS_OK;
 }
 
 /* fe.parts[].attach: the selected nodes get their translations fixed (stage 1 prescribes
  * their velocity, mb_couple.c) and are recorded in out->att */
-static mcs_status add_attach(fe_builder *b, const mcs_node *parts, s3_problem *out,
+static mcs_status add_attach(fe_builder *b, const mcs_node *parts, fe_problem *out,
                              mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(parts); i++) {
-        const mcs_node *p = mcs_node_at(parts, i), *a = s3_get(p, "attach");
-        if (!s3_given(p, "attach")) continue;
-        int part = fe_builder_find_part(b, mcs_node_str(s3_get(p, "name")));
-        fe_where w = where_of(mcs_node_str(s3_get(a, "where")));
+        const mcs_node *p = mcs_node_at(parts, i), *a = fe_scn_get(p, "attach");
+        if (!fe_scn_given(p, "attach")) continue;
+        int part = fe_builder_find_part(b, mcs_node_str(fe_scn_get(p, "name")));
+        fe_where w = where_of(mcs_node_str(fe_scn_get(a, "where")));
         int n = part < 0 ? 0 : fe_builder_select(b, part, w, NULL, 0);
         if (n <= 0)
-            return mcs_node_error(s3_get(a, "where"), err, MCS_ERR_KEY,
-                                  "selects no node of part '%s'", mcs_node_str(s3_get(p, "name")));
-        s3_attach *na = realloc(out->att, (size_t)(out->natt + n) * sizeof *na);
+            return mcs_node_error(fe_scn_get(a, "where"), err, MCS_ERR_KEY,
+                                  "selects no node of part '%s'", mcs_node_str(fe_scn_get(p, "name")));
+        fe_attach *na = realloc(out->att, (size_t)(out->natt + n) * sizeof *na);
         int *idx = malloc((size_t)n * sizeof *idx);
         if (na) out->att = na;
         if (!na || !idx) {
@@ -272,9 +272,9 @@ static mcs_status add_attach(fe_builder *b, const mcs_node *parts, s3_problem *o
             mcs_status st = fe_builder_fix_node(b, idx[k], FE_DOF_TRANS, v0, &kerr);
             if (st) {
                 free(idx);
-                return s3_relocate(st, a, &kerr, err);
+                return fe_scn_relocate(st, a, &kerr, err);
             }
-            out->att[out->natt++] = (s3_attach){.node = idx[k], .attach = a};
+            out->att[out->natt++] = (fe_attach){.node = idx[k], .attach = a};
         }
         free(idx);
     }
@@ -283,15 +283,15 @@ static mcs_status add_attach(fe_builder *b, const mcs_node *parts, s3_problem *o
 
 static mcs_status wall_motion(const mcs_node *mo, fe_wall_desc *d, mcs_error *err)
 {
-    const char *type = mcs_node_str(s3_get(mo, "type"));
+    const char *type = mcs_node_str(fe_scn_get(mo, "type"));
     fe_wall_motion *k = &d->motion[d->nmotion++];
     k->kind = strcmp(type, "velocity") == 0       ? FE_MOTION_VELOCITY
               : strcmp(type, "acceleration") == 0 ? FE_MOTION_ACCELERATION
                                                   : FE_MOTION_DISPLACEMENT;
     memcpy(k->direction, d->normal, sizeof k->direction);
-    mcs_status st = s3_given(mo, "direction") ? mcs_node_vec3(s3_get(mo, "direction"), k->direction, err)
+    mcs_status st = fe_scn_given(mo, "direction") ? mcs_node_vec3(fe_scn_get(mo, "direction"), k->direction, err)
                                               : MCS_OK;
-    const mcs_node *c = s3_get(mo, "curve");
+    const mcs_node *c = fe_scn_get(mo, "curve");
     int n = mcs_node_curve_len(c);
     if (!st && n > FE_CURVE_MAX)
         return mcs_node_error(c, err, MCS_ERR_RANGE, "at most %d points, got %d", FE_CURVE_MAX, n);
@@ -306,29 +306,29 @@ static mcs_status add_walls(fe_builder *b, const mcs_node *list, mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(list); i++) {
         const mcs_node *w = mcs_node_at(list, i);
-        if (s3_given(w, "size"))
-            return unsupported(s3_get(w, "size"), err, "finite rigid wall size");
-        const char *name = mcs_node_str(s3_get(w, "name"));
+        if (fe_scn_given(w, "size"))
+            return unsupported(fe_scn_get(w, "size"), err, "finite rigid wall size");
+        const char *name = mcs_node_str(fe_scn_get(w, "name"));
         if (strlen(name) >= FE_NAME_MAX)
-            return mcs_node_error(s3_get(w, "name"), err, MCS_ERR_RANGE,
+            return mcs_node_error(fe_scn_get(w, "name"), err, MCS_ERR_RANGE,
                                   "longer than %d characters", FE_NAME_MAX - 1);
         fe_wall_desc d = {.method = FE_WALL_KINEMATIC};
         snprintf(d.name, sizeof d.name, "%s", name);
-        mcs_status st = mcs_node_vec3(s3_get(w, "point"), d.point, err);
-        if (!st) st = mcs_node_vec3(s3_get(w, "normal"), d.normal, err);
-        if (!st && s3_given(w, "velocity"))
-            st = mcs_node_vec3(s3_get(w, "velocity"), d.velocity, err);
+        mcs_status st = mcs_node_vec3(fe_scn_get(w, "point"), d.point, err);
+        if (!st) st = mcs_node_vec3(fe_scn_get(w, "normal"), d.normal, err);
+        if (!st && fe_scn_given(w, "velocity"))
+            st = mcs_node_vec3(fe_scn_get(w, "velocity"), d.velocity, err);
         if (st) return st;
-        const char *method = mcs_node_str(s3_get(w, "method"));
+        const char *method = mcs_node_str(fe_scn_get(w, "method"));
         if (method && strcmp(method, "penalty") == 0) d.method = FE_WALL_PENALTY;
         d.penalty_scale = mcs_node_num_or(w, "penalty_scale", 0);
         d.mass = mcs_node_num_or(w, "mass", 0); /* a free wall with mass (fe_wall.c) */
         d.friction = mcs_node_num_or(w, "friction", 0); /* Coulomb (fe_wall_fric.c) */
-        if (s3_given(w, "motion")) { /* moved by a curve (fe_wall_motion.c) */
-            st = wall_motion(s3_get(w, "motion"), &d, err);
+        if (fe_scn_given(w, "motion")) { /* moved by a curve (fe_wall_motion.c) */
+            st = wall_motion(fe_scn_get(w, "motion"), &d, err);
             if (st) return st;
         }
-        const mcs_node *parts = s3_get(w, "parts");
+        const mcs_node *parts = fe_scn_get(w, "parts");
         if (mcs_node_len(parts) > 8)
             return mcs_node_error(parts, err, MCS_ERR_RANGE, "at most 8 parts, got %d",
                                   mcs_node_len(parts));
@@ -337,7 +337,7 @@ static mcs_status add_walls(fe_builder *b, const mcs_node *list, mcs_error *err)
             snprintf(d.parts[k], sizeof d.parts[k], "%s", mcs_node_str(mcs_node_at(parts, k)));
         mcs_error kerr = {0};
         st = fe_builder_add_wall(b, &d, &kerr);
-        if (st) return s3_relocate(st, w, &kerr, err);
+        if (st) return fe_scn_relocate(st, w, &kerr, err);
     }
     return MCS_OK;
 }
@@ -346,12 +346,12 @@ static mcs_status add_loads(fe_builder *b, const mcs_node *list, mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(list); i++) {
         const mcs_node *l = mcs_node_at(list, i);
-        fe_load_desc d = {.where = where_of(mcs_node_str(s3_get(l, "where")))};
-        snprintf(d.part, sizeof d.part, "%s", mcs_node_str(s3_get(l, "part")));
-        mcs_status st = mcs_node_vec3(s3_get(l, "force"), d.force, err);
+        fe_load_desc d = {.where = where_of(mcs_node_str(fe_scn_get(l, "where")))};
+        snprintf(d.part, sizeof d.part, "%s", mcs_node_str(fe_scn_get(l, "part")));
+        mcs_status st = mcs_node_vec3(fe_scn_get(l, "force"), d.force, err);
         if (st) return st;
-        if (s3_given(l, "curve")) {
-            const mcs_node *c = s3_get(l, "curve");
+        if (fe_scn_given(l, "curve")) {
+            const mcs_node *c = fe_scn_get(l, "curve");
             int n = mcs_node_curve_len(c);
             double x[FE_CURVE_MAX], y[FE_CURVE_MAX];
             if (n > FE_CURVE_MAX)
@@ -364,16 +364,16 @@ static mcs_status add_loads(fe_builder *b, const mcs_node *list, mcs_error *err)
         }
         mcs_error kerr = {0};
         st = fe_builder_add_load(b, &d, &kerr);
-        if (st) return s3_relocate(st, l, &kerr, err);
+        if (st) return fe_scn_relocate(st, l, &kerr, err);
     }
     return MCS_OK;
 }
 
-mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
+mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err)
 {
     memset(out, 0, sizeof *out);
-    const mcs_node *root = mcs_scenario_root(scn), *fe = s3_get(root, "fe");
-    const mcs_node *sim = s3_get(root, "simulation");
+    const mcs_node *root = mcs_scenario_root(scn), *fe = fe_scn_get(root, "fe");
+    const mcs_node *sim = fe_scn_get(root, "simulation");
     if (mcs_node_kind(fe) != MCS_NODE_MAP)
         return mcs_node_error(root, err, MCS_ERR_KEY, "no fe: block (stage 3 runs an FE model)");
     mcs_status st = MCS_OK;
@@ -382,34 +382,34 @@ mcs_status s3_build(const mcs_scenario *scn, s3_problem *out, mcs_error *err)
     opts.dt_scale = mcs_node_num_or(sim, "time_step_scale", opts.dt_scale);
     opts.dt_max = mcs_node_num_or(sim, "time_step", 0);
     opts.history_capacity = 0; /* the run samples the state itself (s3_run.c) */
-    s3_solid_opts(root, &opts); /* gravity, mass scaling */
-    out->end_time = mcs_node_num(s3_get(sim, "end_time"));
-    out->output_rate = mcs_node_num_or(sim, "output_rate", S3_OUTPUT_RATE_DEFAULT);
+    fe_scn_solid_opts(root, &opts); /* gravity, mass scaling */
+    out->end_time = mcs_node_num(fe_scn_get(sim, "end_time"));
+    out->output_rate = mcs_node_num_or(sim, "output_rate", FE_SCN_OUTPUT_RATE_DEFAULT);
 
     fe_builder *b = NULL;
     mcs_error kerr = {0};
     st = fe_builder_create(&b, &kerr);
-    if (st) return s3_relocate(st, fe, &kerr, err);
-    st = add_parts(b, s3_get(fe, "parts"), err);
-    if (!st) st = add_attach(b, s3_get(fe, "parts"), out, err);
-    if (!st) st = add_boundaries(b, s3_get(fe, "boundary"), err);
-    if (!st) st = add_loads(b, s3_get(fe, "loads"), err);
-    if (!st) st = add_walls(b, s3_get(fe, "rigid_walls"), err);
-    if (!st) st = s3_solid_add(b, fe, err); /* springs, point masses */
-    if (!st) st = s3_add_restraints(b, fe, err); /* airbags, retractors (s3_restraints.c) */
-    if (!st) st = s3_add_sliprings(b, fe, err);  /* belt slip rings (s3_slipring.c) */
-    if (!st) st = s3_contact_add(b, fe, err); /* contacts, rigid ellipsoids */
+    if (st) return fe_scn_relocate(st, fe, &kerr, err);
+    st = add_parts(b, fe_scn_get(fe, "parts"), err);
+    if (!st) st = add_attach(b, fe_scn_get(fe, "parts"), out, err);
+    if (!st) st = add_boundaries(b, fe_scn_get(fe, "boundary"), err);
+    if (!st) st = add_loads(b, fe_scn_get(fe, "loads"), err);
+    if (!st) st = add_walls(b, fe_scn_get(fe, "rigid_walls"), err);
+    if (!st) st = fe_scn_solid_add(b, fe, err); /* springs, point masses */
+    if (!st) st = fe_scn_add_restraints(b, fe, err); /* airbags, retractors (fe_scn_restraints.c) */
+    if (!st) st = fe_scn_add_sliprings(b, fe, err);  /* belt slip rings (fe_scn_slipring.c) */
+    if (!st) st = fe_scn_contact_add(b, fe, err); /* contacts, rigid ellipsoids */
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
         if (st)
-            s3_relocate(st, s3_slipring_node(fe, kerr.msg, s3_restraint_node(fe, kerr.msg)),
+            fe_scn_relocate(st, fe_scn_slipring_node(fe, kerr.msg, fe_scn_restraint_node(fe, kerr.msg)),
                         &kerr, err);
     }
     fe_builder_destroy(&b);
     return st;
 }
 
-void s3_problem_free(s3_problem *p)
+void fe_problem_free(fe_problem *p)
 {
     if (!p) return;
     fe_model_destroy(&p->model);

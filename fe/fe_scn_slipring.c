@@ -1,8 +1,8 @@
-/* s3_slipring.c: scenario keys -> slip rings, and their /stage3 results (s3_slipring.h). The
+/* fe_scn_slipring.c: scenario keys -> slip rings, and their /stage3 results (fe_scn_slipring.h). The
  * kernel's descriptor carries the key names (docs/fe.md); kernel errors are relocated to the
  * scenario node. */
-#include "stage3_fe/s3_slipring.h"
-#include "stage3_fe/s3_node.h"
+#include "fe/fe_scn_slipring.h"
+#include "fe/fe_scn_node.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,19 +20,19 @@ static mcs_status name_into(const mcs_node *n, char *dst, mcs_error *err)
 
 static mcs_status read_ring(const mcs_node *r, fe_slipring_desc *d, mcs_error *err)
 {
-    mcs_status st = name_into(s3_get(r, "name"), d->name, err);
-    if (!st) st = name_into(s3_get(r, "part"), d->part, err);
-    if (!st && s3_given(r, "retractor")) st = name_into(s3_get(r, "retractor"), d->retractor, err);
-    if (!st) st = mcs_node_vec3(s3_get(r, "point"), d->point, err);
+    mcs_status st = name_into(fe_scn_get(r, "name"), d->name, err);
+    if (!st) st = name_into(fe_scn_get(r, "part"), d->part, err);
+    if (!st && fe_scn_given(r, "retractor")) st = name_into(fe_scn_get(r, "retractor"), d->retractor, err);
+    if (!st) st = mcs_node_vec3(fe_scn_get(r, "point"), d->point, err);
     d->friction = mcs_node_num_or(r, "friction", 0);
     d->lock_time = mcs_node_num_or(r, "lock_time", -1);
     d->min_length = mcs_node_num_or(r, "min_length", 0);
     return st;
 }
 
-mcs_status s3_add_sliprings(fe_builder *b, const mcs_node *fe, mcs_error *err)
+mcs_status fe_scn_add_sliprings(fe_builder *b, const mcs_node *fe, mcs_error *err)
 {
-    const mcs_node *rings = s3_get(fe, "sliprings");
+    const mcs_node *rings = fe_scn_get(fe, "sliprings");
     for (int i = 0; i < mcs_node_len(rings); i++) {
         const mcs_node *r = mcs_node_at(rings, i);
         fe_slipring_desc d = fe_slipring_desc_default();
@@ -40,24 +40,25 @@ mcs_status s3_add_sliprings(fe_builder *b, const mcs_node *fe, mcs_error *err)
         if (st) return st;
         mcs_error kerr = {0};
         st = fe_builder_add_slipring(b, &d, &kerr);
-        if (st) return s3_relocate(st, r, &kerr, err);
+        if (st) return fe_scn_relocate(st, r, &kerr, err);
     }
     return MCS_OK;
 }
 
-const mcs_node *s3_slipring_node(const mcs_node *fe, const char *msg, const mcs_node *fallback)
+const mcs_node *fe_scn_slipring_node(const mcs_node *fe, const char *msg, const mcs_node *fallback)
 {
-    const mcs_node *l = s3_get(fe, "sliprings");
+    const mcs_node *l = fe_scn_get(fe, "sliprings");
     for (int i = 0; i < mcs_node_len(l); i++) {
         const mcs_node *it = mcs_node_at(l, i);
         char needle[FE_NAME_MAX + 32];
-        snprintf(needle, sizeof needle, "slip ring '%s'", mcs_node_str(s3_get(it, "name")));
+        snprintf(needle, sizeof needle, "slip ring '%s'", mcs_node_str(fe_scn_get(it, "name")));
         if (strstr(msg, needle)) return it;
     }
     return fallback;
 }
 
-mcs_status s3_slipring_open(mcs_results *r, const fe_model *m, s3_slipring_out *o, mcs_error *err)
+mcs_status fe_out_slipring_open(mcs_results *r, int stage, const fe_model *m, fe_out_slipring *o,
+                                mcs_error *err)
 {
     memset(o, 0, sizeof *o);
     const struct fe_sliprings *rs = m->sliprings;
@@ -69,7 +70,7 @@ mcs_status s3_slipring_open(mcs_results *r, const fe_model *m, s3_slipring_out *
     mcs_status st = MCS_OK;
     for (int i = 0; i < rs->n && !st; i++)
         for (int c = 0; c < FE_SLIPRING_NCHANNEL && !st; c++) {
-            snprintf(path, sizeof path, "/stage3/slipring/%s/%s", rs->ring[i].name,
+            snprintf(path, sizeof path, "/stage%d/slipring/%s/%s", stage, rs->ring[i].name,
                      fe_slipring_channel_name[c]);
             st = mcs_results_series_create(r, path, 1, NULL, fe_slipring_channel_unit[c], 0,
                                            &o->ch[FE_SLIPRING_NCHANNEL * i + c], err);
@@ -77,7 +78,7 @@ mcs_status s3_slipring_open(mcs_results *r, const fe_model *m, s3_slipring_out *
     return st;
 }
 
-mcs_status s3_slipring_sample(const fe_state *s, const s3_slipring_out *o, mcs_error *err)
+mcs_status fe_out_slipring_sample(const fe_state *s, const fe_out_slipring *o, mcs_error *err)
 {
     mcs_status st = MCS_OK;
     for (int i = 0; i < o->n && !st; i++)
@@ -88,7 +89,7 @@ mcs_status s3_slipring_sample(const fe_state *s, const s3_slipring_out *o, mcs_e
     return st;
 }
 
-void s3_slipring_out_free(s3_slipring_out *o)
+void fe_out_slipring_free(fe_out_slipring *o)
 {
     free(o->ch);
     memset(o, 0, sizeof *o);

@@ -1,6 +1,6 @@
-/* s3_build_solid.c: see s3_build_solid.h. */
-#include "stage3_fe/s3_build_solid.h"
-#include "stage3_fe/s3_node.h"
+/* fe_scn_solid.c: see fe_scn_solid.h. */
+#include "fe/fe_scn_solid.h"
+#include "fe/fe_scn_node.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -14,14 +14,14 @@ static fe_where where_of(const char *s)
     return FE_WHERE_ALL;
 }
 
-void s3_solid_opts(const mcs_node *root, fe_opts *opts)
+void fe_scn_solid_opts(const mcs_node *root, fe_opts *opts)
 {
     /* DESIGN.md: z up, gravity a magnitude acting along -z */
-    opts->gravity[2] = -mcs_node_num_or(s3_get(root, "environment"), "gravity", 0);
+    opts->gravity[2] = -mcs_node_num_or(fe_scn_get(root, "environment"), "gravity", 0);
     opts->mass_scaling_dt =
-        mcs_node_num_or(s3_get(s3_get(root, "fe"), "mass_scaling"), "time_step", 0);
+        mcs_node_num_or(fe_scn_get(fe_scn_get(root, "fe"), "mass_scaling"), "time_step", 0);
     opts->mass_scaling_interval =
-        (int)mcs_node_num_or(s3_get(s3_get(root, "fe"), "mass_scaling"), "check_interval", 0);
+        (int)mcs_node_num_or(fe_scn_get(fe_scn_get(root, "fe"), "mass_scaling"), "check_interval", 0);
 }
 
 /* a table [[x, y], ...] of at most FE_CURVE_MAX points into c */
@@ -42,9 +42,9 @@ static mcs_status read_table(const mcs_node *n, double (*c)[2], int *np, mcs_err
 static mcs_status read_end(const mcs_node *e, fe_spring_end *d, mcs_error *err)
 {
     d->node = -1;
-    const char *part = mcs_node_str(s3_get(e, "part"));
+    const char *part = mcs_node_str(fe_scn_get(e, "part"));
     if (part) snprintf(d->part, sizeof d->part, "%s", part);
-    return mcs_node_vec3(s3_get(e, "point"), d->point, err);
+    return mcs_node_vec3(fe_scn_get(e, "point"), d->point, err);
 }
 
 static mcs_status add_springs(fe_builder *b, const mcs_node *list, mcs_error *err)
@@ -53,30 +53,30 @@ static mcs_status add_springs(fe_builder *b, const mcs_node *list, mcs_error *er
         const mcs_node *n = mcs_node_at(list, i);
         fe_spring_desc d;
         memset(&d, 0, sizeof d);
-        const char *name = mcs_node_str(s3_get(n, "name"));
+        const char *name = mcs_node_str(fe_scn_get(n, "name"));
         snprintf(d.name, sizeof d.name, "%s", name ? name : "");
         if (!name) snprintf(d.name, sizeof d.name, "springs[%d]", i);
-        if (!s3_given(n, "stiffness") && !s3_given(n, "curve") && !s3_given(n, "damping"))
+        if (!fe_scn_given(n, "stiffness") && !fe_scn_given(n, "curve") && !fe_scn_given(n, "damping"))
             return mcs_node_error(n, err, MCS_ERR_KEY,
                                   "a spring needs stiffness, curve or damping");
-        if (s3_given(n, "stiffness") && s3_given(n, "curve"))
-            return mcs_node_error(s3_get(n, "curve"), err, MCS_ERR_KEY,
+        if (fe_scn_given(n, "stiffness") && fe_scn_given(n, "curve"))
+            return mcs_node_error(fe_scn_get(n, "curve"), err, MCS_ERR_KEY,
                                   "give stiffness or curve, not both");
-        if (!s3_given(s3_get(n, "a"), "part") && !s3_given(s3_get(n, "b"), "part"))
+        if (!fe_scn_given(fe_scn_get(n, "a"), "part") && !fe_scn_given(fe_scn_get(n, "b"), "part"))
             return mcs_node_error(n, err, MCS_ERR_KEY,
                                   "both ends are fixed anchors: give a part for a or b");
-        mcs_status st = read_end(s3_get(n, "a"), &d.end[0], err);
-        if (!st) st = read_end(s3_get(n, "b"), &d.end[1], err);
+        mcs_status st = read_end(fe_scn_get(n, "a"), &d.end[0], err);
+        if (!st) st = read_end(fe_scn_get(n, "b"), &d.end[1], err);
         d.stiffness = mcs_node_num_or(n, "stiffness", 0);
         d.damping = mcs_node_num_or(n, "damping", 0);
-        const char *part = mcs_node_str(s3_get(n, "part")); /* spring part (energies) */
+        const char *part = mcs_node_str(fe_scn_get(n, "part")); /* spring part (energies) */
         if (part) snprintf(d.part, sizeof d.part, "%s", part);
-        if (!st && s3_given(n, "curve"))
-            st = read_table(s3_get(n, "curve"), d.curve, &d.ncurve, err);
+        if (!st && fe_scn_given(n, "curve"))
+            st = read_table(fe_scn_get(n, "curve"), d.curve, &d.ncurve, err);
         if (st) return st;
         mcs_error kerr = {0};
         st = fe_builder_add_spring(b, &d, &kerr);
-        if (st) return s3_relocate(st, n, &kerr, err);
+        if (st) return fe_scn_relocate(st, n, &kerr, err);
     }
     return MCS_OK;
 }
@@ -88,80 +88,80 @@ static mcs_status add_masses(fe_builder *b, const mcs_node *list, mcs_error *err
         fe_mass_desc d;
         memset(&d, 0, sizeof d);
         d.node = -1;
-        snprintf(d.part, sizeof d.part, "%s", mcs_node_str(s3_get(n, "part")));
-        d.mass = mcs_node_num(s3_get(n, "mass"));
-        if (s3_given(n, "where") == s3_given(n, "point"))
+        snprintf(d.part, sizeof d.part, "%s", mcs_node_str(fe_scn_get(n, "part")));
+        d.mass = mcs_node_num(fe_scn_get(n, "mass"));
+        if (fe_scn_given(n, "where") == fe_scn_given(n, "point"))
             return mcs_node_error(n, err, MCS_ERR_KEY, "give one of where or point");
-        d.where = where_of(mcs_node_str(s3_get(n, "where")));
-        if (s3_given(n, "point")) {
+        d.where = where_of(mcs_node_str(fe_scn_get(n, "where")));
+        if (fe_scn_given(n, "point")) {
             d.at_point = 1;
-            mcs_status st = mcs_node_vec3(s3_get(n, "point"), d.point, err);
+            mcs_status st = mcs_node_vec3(fe_scn_get(n, "point"), d.point, err);
             if (st) return st;
         }
         mcs_error kerr = {0};
         mcs_status st = fe_builder_add_mass(b, &d, &kerr);
-        if (st) return s3_relocate(st, n, &kerr, err);
+        if (st) return fe_scn_relocate(st, n, &kerr, err);
     }
     return MCS_OK;
 }
 
-mcs_status s3_solid_add(fe_builder *b, const mcs_node *fe, mcs_error *err)
+mcs_status fe_scn_solid_add(fe_builder *b, const mcs_node *fe, mcs_error *err)
 {
-    mcs_status st = add_springs(b, s3_get(fe, "springs"), err);
-    if (!st) st = add_masses(b, s3_get(fe, "masses"), err);
+    mcs_status st = add_springs(b, fe_scn_get(fe, "springs"), err);
+    if (!st) st = add_masses(b, fe_scn_get(fe, "masses"), err);
     return st;
 }
 
 /* foam: stress_strain (one rate-independent curve) or curves [{rate, points}] */
 static mcs_status read_foam(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
 {
-    if (s3_given(mat, "damping"))
-        return mcs_node_error(s3_get(mat, "damping"), err, MCS_ERR_UNSUPPORTED,
+    if (fe_scn_given(mat, "damping"))
+        return mcs_node_error(fe_scn_get(mat, "damping"), err, MCS_ERR_UNSUPPORTED,
                               "foam damping not supported yet (the curves carry the rate "
                               "effect)");
-    if (s3_given(mat, "stress_strain") == s3_given(mat, "curves"))
+    if (fe_scn_given(mat, "stress_strain") == fe_scn_given(mat, "curves"))
         return mcs_node_error(mat, err, MCS_ERR_KEY, "give one of stress_strain or curves");
     d->poisson = mcs_node_num_or(mat, "poisson", 0);
     d->foam_hysteresis = mcs_node_num_or(mat, "hysteresis", 1);
     d->foam_shape = mcs_node_num_or(mat, "shape", 1);
     d->foam_tension_cutoff = mcs_node_num_or(mat, "tension_cutoff", 0);
-    if (s3_given(mat, "stress_strain")) {
+    if (fe_scn_given(mat, "stress_strain")) {
         d->nfoam_curve = 1;
-        return read_table(s3_get(mat, "stress_strain"), d->foam_curve[0], &d->foam_npoint[0], err);
+        return read_table(fe_scn_get(mat, "stress_strain"), d->foam_curve[0], &d->foam_npoint[0], err);
     }
-    const mcs_node *list = s3_get(mat, "curves");
+    const mcs_node *list = fe_scn_get(mat, "curves");
     int n = mcs_node_len(list);
     if (n < 1 || n > FE_FOAM_NCURVE)
         return mcs_node_error(list, err, MCS_ERR_RANGE, "1..%d curves, got %d", FE_FOAM_NCURVE, n);
     d->nfoam_curve = n;
     for (int c = 0; c < n; c++) {
         const mcs_node *cv = mcs_node_at(list, c);
-        d->foam_rate[c] = mcs_node_num(s3_get(cv, "rate"));
+        d->foam_rate[c] = mcs_node_num(fe_scn_get(cv, "rate"));
         if (c > 0 && !(d->foam_rate[c] > d->foam_rate[c - 1]))
-            return mcs_node_error(s3_get(cv, "rate"), err, MCS_ERR_RANGE,
+            return mcs_node_error(fe_scn_get(cv, "rate"), err, MCS_ERR_RANGE,
                                   "rates must increase from curve to curve");
         if (n > 1 && !(d->foam_rate[c] > 0))
-            return mcs_node_error(s3_get(cv, "rate"), err, MCS_ERR_RANGE, "must be > 0");
-        mcs_status st = read_table(s3_get(cv, "points"), d->foam_curve[c], &d->foam_npoint[c], err);
+            return mcs_node_error(fe_scn_get(cv, "rate"), err, MCS_ERR_RANGE, "must be > 0");
+        mcs_status st = read_table(fe_scn_get(cv, "points"), d->foam_curve[c], &d->foam_npoint[c], err);
         if (st) return st;
     }
     return MCS_OK;
 }
 
-mcs_status s3_solid_material(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
+mcs_status fe_scn_solid_material(const mcs_node *mat, fe_material_desc *d, mcs_error *err)
 {
-    const char *model = mcs_node_str(s3_get(mat, "model"));
-    d->density = mcs_node_num(s3_get(mat, "density"));
-    d->youngs_modulus = mcs_node_num(s3_get(mat, "youngs_modulus"));
+    const char *model = mcs_node_str(fe_scn_get(mat, "model"));
+    d->density = mcs_node_num(fe_scn_get(mat, "density"));
+    d->youngs_modulus = mcs_node_num(fe_scn_get(mat, "youngs_modulus"));
     if (model && strcmp(model, "foam") == 0) {
         d->model = FE_MAT_FOAM;
         return read_foam(mat, d, err);
     }
     if (model && strcmp(model, "rigid") == 0) {
         d->model = FE_MAT_RIGID;
-        d->poisson = mcs_node_num(s3_get(mat, "poisson"));
+        d->poisson = mcs_node_num(fe_scn_get(mat, "poisson"));
         return MCS_OK;
     }
-    return mcs_node_error(s3_get(mat, "model"), err, MCS_ERR_UNSUPPORTED,
+    return mcs_node_error(fe_scn_get(mat, "model"), err, MCS_ERR_UNSUPPORTED,
                           "material model '%s' not supported yet", model ? model : "?");
 }

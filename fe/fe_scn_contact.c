@@ -1,6 +1,6 @@
-/* s3_build_contact.c: see s3_build_contact.h. */
-#include "stage3_fe/s3_build_contact.h"
-#include "stage3_fe/s3_node.h"
+/* fe_scn_contact.c: see fe_scn_contact.h. */
+#include "fe/fe_scn_contact.h"
+#include "fe/fe_scn_node.h"
 
 #include "fe/fe_contact.h"
 
@@ -28,11 +28,11 @@ static mcs_status read_parts(const mcs_node *list, char (*names)[FE_NAME_MAX], i
 static mcs_status add_contact(fe_builder *b, const mcs_node *c, int index, mcs_error *err)
 {
     fe_contact_desc d = fe_contact_desc_default();
-    const char *type = mcs_node_str(s3_get(c, "type")), *name = mcs_node_str(s3_get(c, "name"));
+    const char *type = mcs_node_str(fe_scn_get(c, "type")), *name = mcs_node_str(fe_scn_get(c, "name"));
     snprintf(d.name, sizeof d.name, "%s", name ? name : "");
     if (!name) snprintf(d.name, sizeof d.name, "contact%d", index);
     if (name && strlen(name) >= FE_NAME_MAX)
-        return mcs_node_error(s3_get(c, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
+        return mcs_node_error(fe_scn_get(c, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
                               FE_NAME_MAX - 1);
     const char *ks = "a", *km = "b";
     mcs_status st = MCS_OK;
@@ -47,11 +47,11 @@ static mcs_status add_contact(fe_builder *b, const mcs_node *c, int index, mcs_e
     } else if (type && strcmp(type, "node_to_surface") == 0) {
         d.type = FE_CONTACT_NODE_TO_SURFACE;
     } else {
-        return mcs_node_error(s3_given(c, "type") ? s3_get(c, "type") : c, err, MCS_ERR_KEY,
+        return mcs_node_error(fe_scn_given(c, "type") ? fe_scn_get(c, "type") : c, err, MCS_ERR_KEY,
                               "unknown contact type '%s'", type ? type : "?");
     }
-    st = read_parts(s3_get(c, ks), d.slave, &d.nslave, err);
-    if (!st && km) st = read_parts(s3_get(c, km), d.master, &d.nmaster, err);
+    st = read_parts(fe_scn_get(c, ks), d.slave, &d.nslave, err);
+    if (!st && km) st = read_parts(fe_scn_get(c, km), d.master, &d.nmaster, err);
     if (st) return st;
     d.friction = mcs_node_num_or(c, "friction", 0);
     d.friction_dynamic = mcs_node_num_or(c, "friction_dynamic", -1);
@@ -59,40 +59,40 @@ static mcs_status add_contact(fe_builder *b, const mcs_node *c, int index, mcs_e
     d.penalty_scale = mcs_node_num_or(c, "penalty_scale", 0);
     d.thickness_scale = mcs_node_num_or(c, "thickness_scale", 0);
     d.fabric_thickness = mcs_node_num_or(c, "fabric_thickness", 0);
-    if (s3_given(c, "friction_dynamic") && d.friction_dynamic > d.friction)
-        return mcs_node_error(s3_get(c, "friction_dynamic"), err, MCS_ERR_RANGE,
+    if (fe_scn_given(c, "friction_dynamic") && d.friction_dynamic > d.friction)
+        return mcs_node_error(fe_scn_get(c, "friction_dynamic"), err, MCS_ERR_RANGE,
                               "must not exceed friction (%g)", d.friction);
     mcs_error kerr = {0};
     st = fe_builder_add_contact(b, &d, &kerr);
-    return s3_relocate(st, c, &kerr, err);
+    return fe_scn_relocate(st, c, &kerr, err);
 }
 
 static mcs_status add_ellipsoid(fe_builder *b, const mcs_node *e, mcs_error *err)
 {
     fe_ellipsoid_desc d;
     memset(&d, 0, sizeof d);
-    const char *name = mcs_node_str(s3_get(e, "name"));
+    const char *name = mcs_node_str(fe_scn_get(e, "name"));
     if (!name || strlen(name) >= FE_NAME_MAX)
-        return mcs_node_error(s3_given(e, "name") ? s3_get(e, "name") : e, err, MCS_ERR_RANGE,
+        return mcs_node_error(fe_scn_given(e, "name") ? fe_scn_get(e, "name") : e, err, MCS_ERR_RANGE,
                               "a name shorter than %d characters", FE_NAME_MAX);
     snprintf(d.name, sizeof d.name, "%s", name);
-    mcs_status st = mcs_node_vec3(s3_get(e, "center"), d.center, err);
-    if (!st) st = mcs_node_vec3(s3_get(e, "semi_axes"), d.semi_axes, err);
-    if (!st && s3_given(e, "orientation"))
-        st = mcs_node_vec(s3_get(e, "orientation"), d.orientation, 4, err);
-    if (!st && s3_given(e, "velocity")) st = mcs_node_vec3(s3_get(e, "velocity"), d.velocity, err);
-    if (!st && s3_given(e, "parts")) st = read_parts(s3_get(e, "parts"), d.parts, &d.nparts, err);
+    mcs_status st = mcs_node_vec3(fe_scn_get(e, "center"), d.center, err);
+    if (!st) st = mcs_node_vec3(fe_scn_get(e, "semi_axes"), d.semi_axes, err);
+    if (!st && fe_scn_given(e, "orientation"))
+        st = mcs_node_vec(fe_scn_get(e, "orientation"), d.orientation, 4, err);
+    if (!st && fe_scn_given(e, "velocity")) st = mcs_node_vec3(fe_scn_get(e, "velocity"), d.velocity, err);
+    if (!st && fe_scn_given(e, "parts")) st = read_parts(fe_scn_get(e, "parts"), d.parts, &d.nparts, err);
     if (st) return st;
     d.friction = mcs_node_num_or(e, "friction", 0);
     d.penalty_scale = mcs_node_num_or(e, "penalty_scale", 0);
     mcs_error kerr = {0};
     st = fe_builder_add_ellipsoid(b, &d, &kerr);
-    return s3_relocate(st, e, &kerr, err);
+    return fe_scn_relocate(st, e, &kerr, err);
 }
 
-mcs_status s3_contact_add(fe_builder *b, const mcs_node *fe, mcs_error *err)
+mcs_status fe_scn_contact_add(fe_builder *b, const mcs_node *fe, mcs_error *err)
 {
-    const mcs_node *list = s3_get(fe, "contacts");
+    const mcs_node *list = fe_scn_get(fe, "contacts");
     if (mcs_node_len(list) > FE_CONTACT_MAX)
         return mcs_node_error(list, err, MCS_ERR_RANGE, "at most %d contacts, got %d",
                               FE_CONTACT_MAX, mcs_node_len(list));
@@ -100,7 +100,7 @@ mcs_status s3_contact_add(fe_builder *b, const mcs_node *fe, mcs_error *err)
         mcs_status st = add_contact(b, mcs_node_at(list, i), i, err);
         if (st) return st;
     }
-    list = s3_get(fe, "rigid_ellipsoids");
+    list = fe_scn_get(fe, "rigid_ellipsoids");
     if (mcs_node_len(list) > FE_ELLIPSOID_MAX)
         return mcs_node_error(list, err, MCS_ERR_RANGE, "at most %d ellipsoids, got %d",
                               FE_ELLIPSOID_MAX, mcs_node_len(list));

@@ -22,12 +22,6 @@ void fe_scn_solid_opts(const mcs_node *root, fe_opts *opts)
         mcs_node_num_or(fe_scn_get(fe_scn_get(root, "fe"), "mass_scaling"), "time_step", 0);
     opts->mass_scaling_interval =
         (int)mcs_node_num_or(fe_scn_get(fe_scn_get(root, "fe"), "mass_scaling"), "check_interval", 0);
-    /* the fe: block's run options (core/mcs_schema.c fe_keys); absent: the kernel's defaults */
-    const mcs_node *fe = fe_scn_get(root, "fe");
-    opts->damping = mcs_node_num_or(fe, "damping", opts->damping);
-    opts->bulk_q1 = mcs_node_num_or(fe, "bulk_q1", opts->bulk_q1);
-    opts->bulk_q2 = mcs_node_num_or(fe, "bulk_q2", opts->bulk_q2);
-    opts->energy_growth_limit = mcs_node_num_or(fe, "energy_growth_limit", opts->energy_growth_limit);
 }
 
 /* a table [[x, y], ...] of at most FE_CURVE_MAX points into c */

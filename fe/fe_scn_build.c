@@ -371,6 +371,12 @@ static mcs_status add_loads(fe_builder *b, const mcs_node *list, mcs_error *err)
 
 mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err)
 {
+    return fe_scn_build_with(scn, out, NULL, NULL, err);
+}
+
+mcs_status fe_scn_build_with(const mcs_scenario *scn, fe_problem *out, fe_scn_hook hook,
+                             void *ctx, mcs_error *err)
+{
     memset(out, 0, sizeof *out);
     const mcs_node *root = mcs_scenario_root(scn), *fe = fe_scn_get(root, "fe");
     const mcs_node *sim = fe_scn_get(root, "simulation");
@@ -398,7 +404,8 @@ mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err
     if (!st) st = fe_scn_solid_add(b, fe, err); /* springs, point masses */
     if (!st) st = fe_scn_add_restraints(b, fe, err); /* airbags, retractors (fe_scn_restraints.c) */
     if (!st) st = fe_scn_add_sliprings(b, fe, err);  /* belt slip rings (fe_scn_slipring.c) */
-    if (!st) st = fe_scn_contact_add(b, fe, err); /* contacts, rigid ellipsoids */
+    if (!st) st = fe_scn_contact_add(b, fe, hook != NULL, err); /* contacts, ellipsoids */
+    if (!st && hook) st = hook(b, fe, ctx, err);
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
         if (st)

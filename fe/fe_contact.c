@@ -400,15 +400,19 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
                 for (int k = 0; k < 3; k++) db[k] = nb[k] / len;
                 for (int k = 0; k < 3; k++)
                     dir[k] = R[3 * k] * db[0] + R[3 * k + 1] * db[1] + R[3 * k + 2] * db[2];
+                double qw[3]; /* the nearest surface point q - c, world */
+                for (int k = 0; k < 3; k++)
+                    qw[k] = R[3 * k] * qb[0] + R[3 * k + 1] * qb[1] + R[3 * k + 2] * qb[2];
                 double kp = E->scale * m->node_mass[n] / (dt0 * dt0), fn = -kp * g;
                 double f[3], el = 0.5 * kp * g * g, d = 0;
                 for (int k = 0; k < 3; k++) f[k] = fn * dir[k];
                 if (E->mu > 0) {
-                    /* slip against the surface moving at V + W x r */
+                    /* slip against the surface point q, moving at V + W x (q - c) */
                     const double *v = s->node_v + 3 * n;
                     double wr[3], du[3], taken;
-                    fe_cross(W, r, wr);
-                    double vr[3] = {v[0] - V[0] - wr[0], v[1] - V[1] - wr[1], v[2] - V[2] - wr[2]};
+                    fe_cross(W, qw, wr);
+                    double vr[3];
+                    for (int k = 0; k < 3; k++) vr[k] = v[k] - V[k] - wr[k];
                     double vn = fe_dot(vr, dir);
                     for (int k = 0; k < 3; k++) du[k] = (vr[k] - vn * dir[k]) * dtp;
                     double et = fe_friction_update(ft, dir, du, kp, E->mu * fn, &taken);
@@ -418,11 +422,10 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
                     for (int k = 0; k < 3; k++) f[k] += ft[k];
                 }
                 /* on the ellipsoid at its surface point q: the moment about the centre */
-                double qw[3], mq[3];
+                double mq[3];
                 for (int k = 0; k < 3; k++) {
                     cs->node_fc[3 * n + k] += f[k];
                     F[k] -= f[k];
-                    qw[k] = R[3 * k] * qb[0] + R[3 * k + 1] * qb[1] + R[3 * k + 2] * qb[2];
                 }
                 fe_cross(qw, f, mq);
                 for (int k = 0; k < 3; k++) M[k] -= mq[k];

@@ -7,10 +7,11 @@
  * FE_FACET_DEPTH of each cell, so a node's candidates are those of the cell it falls in once
  * taken into the mesh frame. A node meets the nearest triangle: on its outer side the gap is
  * the distance less the shell half thickness, pushed along the line from the nearest point;
- * behind it (signed distance < 0), the gap is minus the distance less the half thickness,
- * pushed the same way (out through the plane, or round an open edge), but only for a node seen
- * on the outer side before (fac_side): a node first found behind a panel (it came round the
- * edge, or began there) is left alone until it is out in front again, and one deeper than
+ * behind it (signed distance < 0) and under a face (the line to the nearest point within
+ * about 45 degrees of the normal, the kernel's rule for hex faces), the gap is minus the
+ * distance less the half thickness, pushed out the same way, but only for a node seen on the
+ * outer side before (fac_side): a node found behind otherwise (it came round an open edge, or
+ * began there) is left alone until it is out in front again, and one deeper than
  * FE_FACET_DEPTH is let go. Penalty k = s m_node / dt0^2 and elastic-stick Coulomb friction
  * as for the ellipsoids; the force on the node and minus it on the mesh at the nearest point,
  * summed as the mesh's force and moment about c. */
@@ -241,10 +242,14 @@ void fe_contact_facets_forces(const fe_model *m, fe_state *s)
                 for (int k = 0; k < 3; k++)
                     sn += (pb[k] - qb[k]) * nb[k];
                 const double sg = sn >= 0 ? 1 : -1;
-                if (sn >= 0)
+                if (sn >= 0) {
                     cs->fac_side[j] = 1;
-                else if (!cs->fac_side[j])
-                    goto release; /* found behind: left alone */
+                } else if (!cs->fac_side[j] || -sn < 0.7 * dist) {
+                    /* found behind, or behind beside the mesh's edge (not under a face; the
+                     * kernel's rule for hex faces): left alone until it is in front again */
+                    cs->fac_side[j] = 0;
+                    goto release;
+                }
                 /* out along the line to the nearest point (through the plane when behind) */
                 for (int k = 0; k < 3; k++)
                     db[k] = dist > 1e-12 ? sg * (pb[k] - qb[k]) / dist : nb[k];
@@ -266,10 +271,10 @@ void fe_contact_facets_forces(const fe_model *m, fe_state *s)
                 for (int k = 0; k < 3; k++)
                     f[k] = fn * dir[k];
                 if (F->mu > 0) {
-                    /* slip against the mesh moving at V + W x r */
+                    /* slip against the mesh's point q, moving at V + W x (q - c) */
                     const double *v = s->node_v + 3 * n;
                     double wr[3], du[3], taken;
-                    fe_cross(W, r, wr);
+                    fe_cross(W, qw, wr);
                     double vr[3] = {v[0] - V[0] - wr[0], v[1] - V[1] - wr[1], v[2] - V[2] - wr[2]};
                     double vn = fe_dot(vr, dir);
                     for (int k = 0; k < 3; k++)

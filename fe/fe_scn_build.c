@@ -9,6 +9,7 @@
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_slipring.h"
 #include "fe/fe_scn_keyword.h"
+#include "fe/fe_scn_place.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -371,11 +372,17 @@ static mcs_status add_loads(fe_builder *b, const mcs_node *list, mcs_error *err)
 
 mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err)
 {
-    return fe_scn_build_with(scn, out, NULL, NULL, err);
+    return fe_scn_build_with(scn, NULL, NULL, NULL, out, err);
 }
 
-mcs_status fe_scn_build_with(const mcs_scenario *scn, fe_problem *out, fe_scn_hook hook,
-                             void *ctx, mcs_error *err)
+mcs_status fe_scn_build_placed(const mcs_scenario *scn, const fe_scn_place *place,
+                               fe_problem *out, mcs_error *err)
+{
+    return fe_scn_build_with(scn, place, NULL, NULL, out, err);
+}
+
+mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
+                             fe_scn_hook hook, void *ctx, fe_problem *out, mcs_error *err)
 {
     memset(out, 0, sizeof *out);
     const mcs_node *root = mcs_scenario_root(scn), *fe = fe_scn_get(root, "fe");
@@ -391,6 +398,7 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, fe_problem *out, fe_scn_ho
     fe_scn_solid_opts(root, &opts); /* gravity, mass scaling */
     out->end_time = mcs_node_num(fe_scn_get(sim, "end_time"));
     out->output_rate = mcs_node_num_or(sim, "output_rate", FE_SCN_OUTPUT_RATE_DEFAULT);
+    out->field_rate = mcs_node_num_or(sim, "field_rate", out->output_rate);
 
     fe_builder *b = NULL;
     mcs_error kerr = {0};
@@ -405,6 +413,7 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, fe_problem *out, fe_scn_ho
     if (!st) st = fe_scn_add_restraints(b, fe, err); /* airbags, retractors (fe_scn_restraints.c) */
     if (!st) st = fe_scn_add_sliprings(b, fe, err);  /* belt slip rings (fe_scn_slipring.c) */
     if (!st) st = fe_scn_contact_add(b, fe, hook != NULL, err); /* contacts, ellipsoids */
+    if (!st && place) st = fe_scn_place_apply(b, fe, place, out, err); /* fe_scn_place.c */
     if (!st && hook) st = hook(b, fe, ctx, err);
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
@@ -421,6 +430,8 @@ void fe_problem_free(fe_problem *p)
     if (!p) return;
     fe_model_destroy(&p->model);
     free(p->att);
+    free(p->part_carrier);
+    p->part_carrier = NULL;
     p->att = NULL;
     p->natt = 0;
 }

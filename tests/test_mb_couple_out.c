@@ -168,6 +168,67 @@ static void test_layout_and_values(void)
     mcs_results_close(&h);
 }
 
+/* simulation.field_rate: /stage1/fields at every k-th row of /stage1/time (k = 5 for 1 kHz
+ * fields at 5 kHz output), the same frames as the full-rate file of test_layout_and_values;
+ * stage 3 likewise (a 2-element bar, 1 ms at 10 kHz, fields at 2 kHz) */
+static void test_field_rate(void)
+{
+    char scn[128], out[128], full[128], args[512], text[4096];
+    snprintf(text, sizeof text, SLED_YAML, 4.0, 40.0);
+    char *sim = strstr(text, "output_rate: 5 kHz}");
+    CHECK(sim != NULL);
+    if (!sim) return;
+    char tail[4096];
+    snprintf(tail, sizeof tail, "%s", sim + strlen("output_rate: 5 kHz}"));
+    snprintf(sim, sizeof text - (size_t)(sim - text), "output_rate: 5 kHz, field_rate: 1 kHz}%s",
+             tail);
+    snprintf(scn, sizeof scn, "%s/rate.yaml", tmpdir);
+    write_text(scn, text);
+    snprintf(out, sizeof out, "%s/rate.h5", tmpdir);
+    snprintf(full, sizeof full, "%s/sled.h5", tmpdir);
+    snprintf(args, sizeof args, "stage1 %s -o %s --quiet", scn, out);
+    CHECK(cli_run(args)->status == 0);
+    mcs_results *h = NULL, *g = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK && mcs_results_open(&g, full, &err) == MCS_OK);
+    mcs_array t = {0}, ft = {0}, d = {0}, dfull = {0};
+    CHECK(h && g && rd(h, "/stage1/time", &t) && rd(h, "/stage1/fields/time", &ft) &&
+          rd(h, "/stage1/fields/displacement", &d) && rd(g, "/stage1/fields/displacement", &dfull));
+    CHECK(t.n == 21 && ft.n == 5 && d.dims[0] == 5 && dfull.dims[0] == 21);
+    const size_t row = d.dims[1] * 3;
+    for (size_t i = 0; i < ft.n && 5 * i < t.n && d.dims[0] == 5 && dfull.dims[0] == 21; i++) {
+        CHECK(ft.v[i] == t.v[5 * i]);
+        CHECK(memcmp(d.v + i * row, dfull.v + 5 * i * row, row * sizeof *d.v) == 0);
+    }
+    mcs_array_free(&t), mcs_array_free(&ft), mcs_array_free(&d), mcs_array_free(&dfull);
+    mcs_results_close(&h);
+    mcs_results_close(&g);
+    /* stage 3 */
+    snprintf(scn, sizeof scn, "%s/belt3.yaml", tmpdir);
+    write_text(scn, "mcrash: 1\nname: belt\n"
+                    "simulation: {end_time: 1 ms, time_step: 50 us, output_rate: 10 kHz,"
+                    " field_rate: 2 kHz}\n"
+                    "fe:\n  parts:\n    - name: belt\n"
+                    "      mesh: {generate: line, origin: [0, 0, 0], end: [1, 0, 0],"
+                    " divisions: 2}\n"
+                    "      section: {type: truss, area: 40 mm^2}\n"
+                    "      material: {model: elastic, density: 1000, youngs_modulus: 10 GPa,"
+                    " poisson: 0}\n"
+                    "      initial_velocity: [1, 0, 0]\n");
+    snprintf(out, sizeof out, "%s/belt3.h5", tmpdir);
+    snprintf(args, sizeof args, "stage3 %s -o %s --quiet", scn, out);
+    CHECK(cli_run(args)->status == 0);
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    CHECK(h && rd(h, "/stage3/time", &t) && rd(h, "/stage3/fields/time", &ft));
+    printf("  field_rate: stage 1 %zu of 21 rows; stage 3 %zu fields, %zu rows\n", (size_t)5,
+           ft.n, t.n);
+    CHECK(ft.n == 3 && t.n >= 10); /* 0, 0.5, 1 ms */
+    for (size_t i = 0; i < ft.n; i++) /* the first step at or after each 0.5 ms */
+        CHECK(ft.v[i] > 0.5e-3 * (double)i - 1e-12 && ft.v[i] < 0.5e-3 * (double)i + 50e-6);
+    mcs_array_free(&t), mcs_array_free(&ft);
+    mcs_results_close(&h);
+}
+
 /* ---- the XDMF file ---- */
 
 static char *slurp(const char *path, size_t *n)
@@ -197,9 +258,10 @@ static int parse_dims(const char *s, size_t *d, int max)
     return n;
 }
 
-/* every HDF DataItem of the .xmf names a dataset of h with the shape it states (a block:
- * the dataset's full shape and a block inside it); returns the number checked */
-static int check_items(mcs_results *h, const char *xmf)
+/* every HDF DataItem of the .xmf names a dataset of h (or, for "<xmf>.bodies.h5:", of the
+ * outlines file hs) with the shape it states (a block: the dataset's full shape and a block
+ * inside it); returns the number checked */
+static int check_items(mcs_results *h, mcs_results *hs, const char *xmf)
 {
     int n = 0;
     for (const char *p = strstr(xmf, "Format=\"HDF\""); p; p = strstr(p + 1, "Format=\"HDF\"")) {
@@ -220,9 +282,11 @@ static int check_items(mcs_results *h, const char *xmf)
         if (!colon) break;
         if (bar) *bar = 0;
         const char *path = colon + 1;
+        *colon = 0;
+        mcs_results *in = strcmp(ref, "sled.xmf.bodies.h5") == 0 ? hs : h;
         int rk = 0;
         mcs_error err = {0};
-        CHECK(mcs_results_shape(h, path, &rk, ds, &err) == MCS_OK);
+        CHECK(in && mcs_results_shape(in, path, &rk, ds, &err) == MCS_OK);
         if (bar) { /* start:stride:count:dims */
             char *f[4], *save = NULL;
             int k = 0;
@@ -286,7 +350,11 @@ static void test_xdmf_shows_parts_and_bodies(void)
         mcs_results_close(&h);
         return;
     }
-    int items = check_items(h, x);
+    char side[160];
+    snprintf(side, sizeof side, "%s.bodies.h5", xmf);
+    mcs_results *hs = NULL;
+    CHECK(mcs_results_open(&hs, side, &err) == MCS_OK);
+    int items = check_items(h, hs, x);
     double tf[64], tb[64];
     int nf = grid_times(x, "stage1_fe", tf, 64), nb = grid_times(x, "stage1_bodies", tb, 64);
     mcs_array t = {0};
@@ -298,6 +366,33 @@ static void test_xdmf_shows_parts_and_bodies(void)
         CHECK(tf[i] == t.v[i] && tb[i] == t.v[i]);
     CHECK(strstr(x, "<Grid Name=\"fabric\"") && strstr(x, "<Grid Name=\"belt\"") &&
           strstr(x, "<Grid Name=\"sled\""));
+    /* the sled's outline in the world lies on its ellipsoid (semi-axes 0.2, 0.1, 0.05 m about
+     * the centre of gravity, the scenario's) where /stage1/bodies/sled puts it */
+    mcs_array xo = {0}, pos = {0}, ori = {0};
+    CHECK(hs && rd(hs, "/stage1/outlines/sled/nodes", &xo) &&
+          rd(h, "/stage1/bodies/sled/position", &pos) &&
+          rd(h, "/stage1/bodies/sled/orientation", &ori));
+    double worst = 0;
+    CHECK(xo.rank == 3 && xo.dims[0] == t.n && xo.dims[1] == 62);
+    for (size_t k = 0; xo.rank == 3 && k < xo.dims[0] && k < t.n; k++) {
+        double R[9];
+        quat_rot(ori.v + 4 * k, R);
+        for (size_t j = 0; j < xo.dims[1]; j++) {
+            const double *v = xo.v + 3 * (k * xo.dims[1] + j), *p = pos.v + 3 * k;
+            const double semi[3] = {0.2, 0.1, 0.05};
+            double e = 0;
+            for (int a = 0; a < 3; a++) {
+                double l = R[a] * (v[0] - p[0]) + R[3 + a] * (v[1] - p[1]) +
+                           R[6 + a] * (v[2] - p[2]);
+                e += (l / semi[a]) * (l / semi[a]);
+            }
+            worst = fmax(worst, fabs(e - 1));
+        }
+    }
+    printf("  sled outline on its ellipsoid within %.1e (x^2/a^2 + ... - 1)\n", worst);
+    CHECK(worst < 1e-12);
+    mcs_array_free(&xo), mcs_array_free(&pos), mcs_array_free(&ori);
+    mcs_results_close(&hs);
     mcs_array_free(&t);
     mcs_results_close(&h);
     free(x);
@@ -342,6 +437,7 @@ int main(void)
     if (!mkdtemp(tmpdir)) return 1;
     RUN(test_layout_and_values);
     RUN(test_xdmf_shows_parts_and_bodies);
+    RUN(test_field_rate);
     RUN(test_same_bytes_on_1_and_2_threads);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

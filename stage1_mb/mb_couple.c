@@ -125,13 +125,14 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
     if (!cs) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     size_t na = (size_t)(c->natt ? c->natt : 1), nn = (size_t)c->fe.model->nnode;
     cs->vkin = calloc(3 * (nn ? nn : 1), sizeof *cs->vkin);
+    cs->react = calloc(3 * (nn ? nn : 1), sizeof *cs->react);
     cs->imp = calloc(3 * na, sizeof *cs->imp);
     cs->force = calloc(3 * na, sizeof *cs->force);
     cs->xa = calloc(3 * na, sizeof *cs->xa);
     cs->vold = calloc(3 * na, sizeof *cs->vold);
     cs->fmean = calloc(3 * na, sizeof *cs->fmean);
     mcs_status st = MCS_OK;
-    if (!cs->vkin || !cs->imp || !cs->force || !cs->xa || !cs->vold || !cs->fmean)
+    if (!cs->vkin || !cs->react || !cs->imp || !cs->force || !cs->xa || !cs->vold || !cs->fmean)
         st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     if (!st) st = fe_state_create(c->fe.model, &cs->fe, err);
     if (!st && c->contact) st = mb_couple_contact_state_create(c->contact, &cs->contact, err);
@@ -141,6 +142,7 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
     }
     memcpy(cs->vkin, c->fe.model->node_vfix, 3 * nn * sizeof *cs->vkin);
     cs->fe->node_vkin = cs->vkin;
+    cs->fe->node_react = cs->react;
     *out = cs;
     return MCS_OK;
 }
@@ -151,7 +153,8 @@ void mb_couple_state_destroy(mb_couple_state **p)
     if (!cs) return;
     fe_state_destroy(&cs->fe);
     mb_couple_contact_state_destroy(&cs->contact);
-    free(cs->vkin), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold), free(cs->fmean);
+    free(cs->vkin), free(cs->react), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold);
+    free(cs->fmean);
     free(cs);
     *p = NULL;
 }
@@ -187,7 +190,6 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
     if (c->contact) mb_couple_contact_begin(m, s);
     /* the impulses r dth of the FE steps at t_j span [t_j - dt_prev/2, t_j + dt/2] */
     const double i0 = f->time - 0.5 * f->dt_prev;
-    const double cdamp = fm->opts.damping;
     while (f->time < t1 - 1e-12 * h) {
         double rem = t1 - f->time;
         long k = (long)ceil(rem / f->dt - 1e-9);
@@ -202,7 +204,6 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         }
         const double dth = 0.5 * (dt + f->dt_prev), tau0 = (f->time - t0) / h;
         if (c->contact) mb_couple_contact_pose(m, s, tau0, h);
-        const double d0 = 1 - 0.5 * cdamp * dth, d1 = 1 / (1 + 0.5 * cdamp * dth);
         double *vold = cs->vold;
         for (int a = 0; a < c->natt; a++)
             for (int i = 0; i < 3; i++)
@@ -216,11 +217,9 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         if (c->contact) mb_couple_contact_sum(m, s, tau0, dth);
         for (int a = 0; a < c->natt; a++) {
             const int n = c->node[a];
-            const double mass = fm->node_mass[n];
             for (int i = 0; i < 3; i++) {
                 double v0 = vold[3 * a + i], vn = f->node_v[3 * n + i];
-                double vfree = (d0 * v0 + dth * f->node_a[3 * n + i]) * d1;
-                double r = mass * (vn - vfree) / dth; /* constraint force on the node */
+                double r = cs->react[3 * n + i]; /* constraint force on the node (fe_integrate) */
                 cs->imp[3 * a + i] += r * dth;
                 cs->w_fe += r * dth * 0.5 * (v0 + vn);
             }

@@ -106,8 +106,7 @@ static mcs_status add_surface(fe_builder *fb, const mb_model *m, int k, const ch
     memcpy(f.name, nm, sizeof nm);
     memcpy(f.center, d->pos, sizeof f.center);
     memcpy(f.orientation, q, sizeof f.orientation);
-    f.vert = mb_mesh_vert(sf->mesh);
-    f.nvert = mb_mesh_nvert(sf->mesh);
+    f.vert = mb_mesh_vert(sf->mesh, &f.nvert);
     f.tri = mb_mesh_tri(sf->mesh);
     f.ntri = mb_mesh_ntri(sf->mesh);
     f.penalty_scale = scale, f.friction = mu, f.nparts = nparts;

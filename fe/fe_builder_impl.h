@@ -42,6 +42,9 @@ struct fe_builder {
     int ncontact, nellipsoid;                     /* contact descriptors (fe_contact.h) */
     fe_contact_desc contact[FE_CONTACT_MAX];
     fe_ellipsoid_desc ellipsoid[FE_ELLIPSOID_MAX];
+    int nfacets;                                  /* rigid facet surfaces; vert and tri are
+                                                     the builder's copies (owned)      */
+    fe_facet_desc facets[FE_FACETS_MAX];
     struct fe_slipring_list *sliprings;           /* slip rings to add (fe_slipring.c) */
 };
 

@@ -229,6 +229,72 @@ static void test_field_rate(void)
     mcs_results_close(&h);
 }
 
+/* a bodies contact's force (mb_couple_contact.c): a 1 kg ball at 1 m/s onto a fixed plate,
+ * no gravity (the drop of test_mb_couple_contact): /stage1/contact/hit/force is the force on
+ * the FE side, so its impulse is minus the ball's momentum change, M (v_end - v_0) from
+ * /stage1/bodies/ball/velocity (impulse-momentum; trapezoids over the 20 us rows); the ball's
+ * kernel ellipsoid is /stage1/ellipsoid/hit:<surface>/force, the force on the ball */
+static void test_bodies_contact_force(void)
+{
+    char scn[128], out[128], args[512];
+    snprintf(scn, sizeof scn, "%s/drop.yaml", tmpdir);
+    write_text(scn,
+               "mcrash: 1\nname: drop\n"
+               "simulation: {end_time: 6 ms, time_step: 20 us, output_rate: 50 kHz}\n"
+               "environment: {gravity: 0}\n"
+               "bodies:\n"
+               "  - {name: ball, mass: 1, inertia: [0.004, 0.004, 0.004],\n"
+               "     position: [0, 0, 0.1015],\n"
+               "     velocity: [0, 0, -1], angular_velocity: [0, 0, 0],\n"
+               "     surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"
+               "                 semi_axes: [0.1, 0.1, 0.1]}]}\n"
+               "fe:\n  parts:\n    - name: plate\n"
+               "      mesh: {generate: plate, size: [0.08, 0.08], divisions: [32, 32],\n"
+               "             origin: [-0.04, -0.04, 0]}\n"
+               "      section: {type: shell, thickness: 2 mm}\n"
+               "      material: {model: elastic, density: 7.85e6, youngs_modulus: 210 GPa,"
+               " poisson: 0.3}\n"
+               "  boundary: [{part: plate, where: all, fix: all}]\n"
+               "  contacts: [{name: hit, type: bodies, parts: [plate], bodies: [ball],"
+               " penalty_scale: 0.001}]\n");
+    snprintf(out, sizeof out, "%s/drop.h5", tmpdir);
+    snprintf(args, sizeof args, "stage1 %s -o %s --quiet", scn, out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    if (r->status) fprintf(stderr, "%s\n", r->err);
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    char **names = NULL;
+    int n = 0;
+    CHECK(mcs_results_list(h, "/stage1/ellipsoid", &names, &n, &err) == MCS_OK);
+    CHECK(n == 1 && strncmp(names[0], "hit:", 4) == 0);
+    char ep[256];
+    snprintf(ep, sizeof ep, "/stage1/ellipsoid/%s/force", n == 1 ? names[0] : "?");
+    mcs_results_list_free(&names, n);
+    mcs_array t = {0}, f = {0}, fe = {0}, v = {0};
+    CHECK(rd(h, "/stage1/time", &t) && rd(h, "/stage1/contact/hit/force", &f) && rd(h, ep, &fe) &&
+          rd(h, "/stage1/bodies/ball/velocity", &v));
+    CHECK(f.rank == 2 && f.dims[0] == t.n && f.dims[1] == 3 && fe.n == f.n);
+    double J = 0, fpeak = 0, worst_sym = 0;
+    for (size_t i = 1; i < t.n && f.n == 3 * t.n; i++)
+        J += 0.5 * (f.v[3 * i + 2] + f.v[3 * i - 1]) * (t.v[i] - t.v[i - 1]);
+    for (size_t i = 0; i < f.n && i < fe.n; i++) {
+        fpeak = fmax(fpeak, fabs(f.v[i]));
+        worst_sym = fmax(worst_sym, fabs(f.v[i] + fe.v[i]));
+    }
+    const double dp = 1.0 * (v.v[v.n - 1] - v.v[2]); /* M (v_end - v_0), z */
+    printf("  bodies contact 'hit': impulse on the plate %.5f N s, ball's momentum change "
+           "%.5f N s (%.2f %%), peak %.0f N\n",
+           J, dp, 100 * (-J / dp - 1), fpeak);
+    CHECK(dp > 1.5);                 /* it bounced */
+    CHECK_REL(-J, dp, 0.0012);       /* output-row trapezoids: 0.04 % measured */
+    CHECK(worst_sym == 0);           /* the plate's force is minus the ball's */
+    mcs_array_free(&t), mcs_array_free(&f), mcs_array_free(&fe), mcs_array_free(&v);
+    mcs_results_close(&h);
+}
+
 /* ---- the XDMF file ---- */
 
 static char *slurp(const char *path, size_t *n)
@@ -438,6 +504,7 @@ int main(void)
     RUN(test_layout_and_values);
     RUN(test_xdmf_shows_parts_and_bodies);
     RUN(test_field_rate);
+    RUN(test_bodies_contact_force);
     RUN(test_same_bytes_on_1_and_2_threads);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

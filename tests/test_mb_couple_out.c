@@ -15,6 +15,7 @@
 #include "cli_util.h"
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "figures.h"
 #include "s3_test_util.h"
 
 #include <math.h>
@@ -288,6 +289,7 @@ static void test_bodies_contact_force(void)
     printf("  bodies contact 'hit': impulse on the plate %.5f N s, ball's momentum change "
            "%.5f N s (%.2f %%), peak %.0f N\n",
            J, dp, 100 * (-J / dp - 1), fpeak);
+    FIG("stage1_engine.couple_out_impulse_err_pct", "%.2f", fabs(100 * (-J / dp - 1)));
     CHECK(dp > 1.5);                 /* it bounced */
     CHECK_REL(-J, dp, 0.0012);       /* output-row trapezoids: 0.04 % measured */
     CHECK(worst_sym == 0);           /* the plate's force is minus the ball's */

@@ -11,7 +11,8 @@
  *   its offset at t = 0, from /stage1/bodies/sled);
  * - `mcrash export --xdmf` references only datasets that exist, with their shapes, and shows
  *   the FE parts and the body at the same times;
- * - the file has the same bytes on 1 and 2 OpenMP threads. */
+ * - a head (a body) falling onto the bag through a bodies contact: the file has the same bytes
+ *   on 1 and 2 OpenMP threads. */
 #include "cli_util.h"
 #include "core/mcs_results.h"
 #include "harness.h"
@@ -34,6 +35,9 @@ static char tmpdir[64];
     "  - {name: sled, mass: 20, inertia: [0.5, 0.5, 0.5], position: [0, 0, 0],\n"                  \
     "     velocity: [1, 0, 0], angular_velocity: [0, 0, 2],\n"                                     \
     "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [0.2, 0.1, 0.05]}]}\n"       \
+    "  - {name: head, mass: 4, inertia: [0.02, 0.02, 0.02], position: [0.05, 0, 0.383],\n"        \
+    "     velocity: [0, 0, -5], surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"               \
+    "     semi_axes: [0.08, 0.08, 0.08]}]}\n"                                                     \
     "fe:\n"                                                                                        \
     "  parts:\n"                                                                                   \
     "    - name: fabric\n"                                                                         \
@@ -58,7 +62,8 @@ static char tmpdir[64];
     "       load_limit: 2 kN}\n"                                                                   \
     "  sliprings:\n"                                                                               \
     "    - {name: ring, part: belt, point: [0, 0, 0.5], friction: 0.2, retractor: ret}\n"         \
-    "  contacts: [{type: single_surface, parts: [fabric], friction: 0.2}]\n"
+    "  contacts: [{type: single_surface, parts: [fabric], friction: 0.2},\n"                   \
+    "             {name: head_bag, type: bodies, parts: [fabric], bodies: [head]}]\n"
 
 static const char *sled(const char *name, double elem_mm, double end_ms)
 {
@@ -492,7 +497,14 @@ static void test_same_bytes_on_1_and_2_threads(void)
     size_t dims[3] = {0};
     CHECK(mcs_results_open(&h, out[0], &err) == MCS_OK);
     CHECK(h && mcs_results_shape(h, "/stage1/mesh/fabric/elements", &rk, dims, &err) == MCS_OK);
-    printf("  1 and 2 threads: %zu bytes, identical; bag of %zu elements\n", na, dims[0]);
+    mcs_array hf = {0};
+    double fpeak = 0; /* the head has reached the bag: the bodies contact ran */
+    CHECK(h && rd(h, "/stage1/contact/head_bag/force", &hf));
+    for (size_t i = 0; i < hf.n; i++) fpeak = fmax(fpeak, fabs(hf.v[i]));
+    mcs_array_free(&hf);
+    printf("  1 and 2 threads: %zu bytes, identical; bag of %zu elements, head on the bag %.0f N\n",
+           na, dims[0], fpeak);
+    CHECK(fpeak > 10);
     CHECK(dims[0] >= 8 * 128);
     mcs_results_close(&h);
     free(a);

@@ -168,6 +168,51 @@ static void test_layout_and_values(void)
            1e3 * travel);
     CHECK(worst_x < 1e-12);
     CHECK(travel > 2e-3); /* 1 m/s over 4 ms, braked by the belt */
+    /* the parts' energies are the FE share of /stage1/energy: kinetic = the bodies' (1/2 m v^2
+     * + 1/2 I w^2, isotropic inertias of the scenario) + the parts'; internal (no joints) = the
+     * parts' internal + hourglass */
+    const char *bn[2] = {"sled", "head"};
+    const double bm[2] = {20, 4}, bi[2] = {0.5, 0.02};
+    mcs_array ek = {0}, ei = {0}, pk[2] = {{0}}, pi[2] = {{0}}, ph[2] = {{0}}, bv[2] = {{0}};
+    mcs_array bw[2] = {{0}};
+    const char *pn[2] = {"fabric", "belt"};
+    int ok = rd(h, "/stage1/energy/kinetic", &ek) && rd(h, "/stage1/energy/internal", &ei);
+    for (int k = 0; k < 2 && ok; k++) {
+        char path[128];
+        snprintf(path, sizeof path, "/stage1/parts/%s/energy/kinetic", pn[k]);
+        ok = rd(h, path, &pk[k]);
+        snprintf(path, sizeof path, "/stage1/parts/%s/energy/internal", pn[k]);
+        ok = ok && rd(h, path, &pi[k]);
+        snprintf(path, sizeof path, "/stage1/parts/%s/energy/hourglass", pn[k]);
+        ok = ok && rd(h, path, &ph[k]);
+        snprintf(path, sizeof path, "/stage1/bodies/%s/velocity", bn[k]);
+        ok = ok && rd(h, path, &bv[k]);
+        snprintf(path, sizeof path, "/stage1/bodies/%s/angular_velocity", bn[k]);
+        ok = ok && rd(h, path, &bw[k]);
+    }
+    CHECK(ok);
+    double worst_k = 0, worst_i = 0, fe_k = 0;
+    for (size_t i = 0; ok && i < nt; i++) {
+        double kb = 0, kp = pk[0].v[i] + pk[1].v[i];
+        for (int k = 0; k < 2; k++) {
+            const double *v = bv[k].v + 3 * i, *w = bw[k].v + 3 * i;
+            kb += 0.5 * bm[k] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+                  0.5 * bi[k] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        }
+        worst_k = fmax(worst_k, fabs(ek.v[i] - kb - kp) / ek.v[i]);
+        worst_i = fmax(worst_i, fabs(ei.v[i] - (pi[0].v[i] + pi[1].v[i] + ph[0].v[i] +
+                                                 ph[1].v[i])));
+        fe_k = fmax(fe_k, kp);
+    }
+    printf("  parts' energies: kinetic of bodies + parts within %.1e of /stage1/energy "
+           "(parts up to %.3g J), internal within %.1e J\n", worst_k, fe_k, worst_i);
+    CHECK(worst_k < 1e-12);
+    CHECK(worst_i < 1e-12);
+    mcs_array_free(&ek), mcs_array_free(&ei);
+    for (int k = 0; k < 2; k++) {
+        mcs_array_free(&pk[k]), mcs_array_free(&pi[k]), mcs_array_free(&ph[k]);
+        mcs_array_free(&bv[k]), mcs_array_free(&bw[k]);
+    }
     mcs_array_free(&t), mcs_array_free(&ft), mcs_array_free(&d), mcs_array_free(&nodes);
     mcs_array_free(&m), mcs_array_free(&pl), mcs_array_free(&pos), mcs_array_free(&ori);
     mcs_array_free(&V), mcs_array_free(&cf);

@@ -1,8 +1,9 @@
 /* fe_out_contact: contact force histories of a stage's FE model: /stage<N>/contact/<name>/
  * {force [nt,3] N, energy [nt] J} per fe.contacts interface (resultant on the slave side, zero
  * for self contact; elastic + frictional energy) and /stage<N>/ellipsoid/<name>/force [nt,3] N
- * per fe.rigid_ellipsoids entry (force of the structure on it), at the state's energy time
- * (docs/contracts.md). */
+ * per fe.rigid_ellipsoids entry (force of the structure on it; also a stage-1 body's ellipsoid
+ * in a bodies contact) and /stage<N>/facets/<name>/force [nt,3] N per rigid facet surface, at
+ * the state's energy time (docs/contracts.md). */
 #ifndef FE_OUT_CONTACT_H
 #define FE_OUT_CONTACT_H
 
@@ -13,6 +14,7 @@
 typedef struct {
     mcs_results_series *force[FE_CONTACT_MAX], *energy[FE_CONTACT_MAX];
     mcs_results_series *ell_force[FE_ELLIPSOID_MAX];
+    mcs_results_series *fac_force[FE_FACETS_MAX];
 } fe_out_contact;
 
 /* into /stage<stage>/contact and /stage<stage>/ellipsoid */

@@ -452,3 +452,53 @@ void mb_couple_contact_force(const mb_model *m, const mb_state *s, int k, double
             f[j] += F[j];
     }
 }
+
+struct mb_couple_contact_out {
+    int n;
+    mcs_results_series **force; /* (n) */
+};
+
+mcs_status mb_couple_contact_out_open(const mb_model *m, mcs_results *r,
+                                      mb_couple_contact_out **out, mcs_error *err)
+{
+    *out = NULL;
+    const mb_couple_contact *c = m->couple ? m->couple->contact : NULL;
+    if (!c) return MCS_OK;
+    mb_couple_contact_out *o = calloc(1, sizeof *o);
+    if (o) o->force = calloc((size_t)c->ncontact, sizeof *o->force);
+    if (!o || !o->force) {
+        if (o) free(o);
+        return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
+    }
+    *out = o;
+    o->n = c->ncontact;
+    const size_t three = 3;
+    mcs_status st = MCS_OK;
+    for (int k = 0; k < c->ncontact && !st; k++) {
+        char path[256];
+        snprintf(path, sizeof path, "/stage1/contact/%s/force", c->name[k]);
+        st = mcs_results_series_create(r, path, 2, &three, "N", 0, &o->force[k], err);
+    }
+    return st;
+}
+
+mcs_status mb_couple_contact_out_sample(const mb_model *m, const mb_state *s,
+                                        const mb_couple_contact_out *o, mcs_error *err)
+{
+    mcs_status st = MCS_OK;
+    for (int k = 0; o && k < o->n && !st; k++) {
+        double f[3];
+        mb_couple_contact_force(m, s, k, f);
+        for (int i = 0; i < 3; i++) f[i] = -f[i]; /* on the parts' nodes */
+        st = mcs_results_series_append(o->force[k], f, err);
+    }
+    return st;
+}
+
+void mb_couple_contact_out_free(mb_couple_contact_out **po)
+{
+    mb_couple_contact_out *o = po ? *po : NULL;
+    if (!o) return;
+    free(o->force), free(o);
+    *po = NULL;
+}

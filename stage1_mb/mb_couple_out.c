@@ -7,6 +7,7 @@
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_slipring.h"
 #include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_couple_contact.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -19,6 +20,7 @@ struct mb_couple_out {
     fe_out_restraint rest;  /* /stage1/airbag, /stage1/retractor              */
     fe_out_slipring rings;  /* /stage1/slipring                               */
     fe_out_contact contact; /* /stage1/contact, /stage1/ellipsoid             */
+    mb_couple_contact_out *bodies; /* /stage1/contact of the bodies contacts   */
 };
 
 mcs_status mb_couple_out_open(const mb_model *m, mcs_results *r, mb_couple_out **out,
@@ -40,6 +42,7 @@ mcs_status mb_couple_out_open(const mb_model *m, mcs_results *r, mb_couple_out *
     if (!st) st = fe_out_restraint_open(r, 1, fm, &o->rest, err);
     if (!st) st = fe_out_slipring_open(r, 1, fm, &o->rings, err);
     if (!st) st = fe_out_contact_open(r, 1, fm, &o->contact, err);
+    if (!st) st = mb_couple_contact_out_open(m, r, &o->bodies, err);
     if (!st) st = fe_out_parts_open(r, 1, fm, &o->parts, err);
     return st;
 }
@@ -58,6 +61,7 @@ mcs_status mb_couple_out_sample(const mb_model *m, const mb_state *s, mb_couple_
         if (!st) st = fe_out_restraint_sample(f, &o->rest, err);
         if (!st) st = fe_out_slipring_sample(f, &o->rings, err);
         if (!st) st = fe_out_contact_sample(fm, f, &o->contact, err);
+        if (!st) st = mb_couple_contact_out_sample(m, s, o->bodies, err);
         if (!st) st = fe_out_parts_sample(fm, f, &o->parts, err);
     }
     return st;
@@ -71,6 +75,7 @@ void mb_couple_out_free(mb_couple_out **po)
     fe_out_parts_free(&o->parts);
     fe_out_restraint_free(&o->rest);
     fe_out_slipring_free(&o->rings);
+    mb_couple_contact_out_free(&o->bodies);
     free(o);
     *po = NULL;
 }

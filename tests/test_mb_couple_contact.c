@@ -378,6 +378,51 @@ static void test_facet_block_on_membrane(void)
     mb_model_destroy(&m);
 }
 
+/* the facet block's run written to a results file: /stage1/contact/<name>/force (on the
+ * parts' nodes) is minus /stage1/facets/<surface>/force (on the block) row by row, and its
+ * peak over the 10 kHz rows is the closed form's v0 sqrt(M K) of the run above */
+static void test_contact_output(void)
+{
+    char dir[] = "/tmp/mcrash_bodyct_XXXXXX", path[128];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/facet.h5", dir);
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("facet.yaml", FACET_YAML, &err);
+    CHECK(m != NULL);
+    if (!m) return;
+    const fe_model *fm = m->couple->fe.model;
+    double K = 0;
+    for (int n = 0; n < fm->nnode; n++) {
+        const double *x = fm->node_x0 + 3 * n;
+        if (fabs(x[0]) < 0.01125 && fabs(x[1]) < 0.01125)
+            K += 0.001 * fm->node_mass[n] / (fm->contact->dt0 * fm->contact->dt0);
+    }
+    mb_run_opts o = {.out_path = path, .quiet = 1};
+    mb_run_summary sum;
+    CHECK(mb_run(m, &o, &sum, &err) == MCS_OK);
+    mcs_results *h = NULL;
+    mcs_array cf = {0}, ff = {0};
+    CHECK(mcs_results_open(&h, path, &err) == MCS_OK);
+    CHECK(h && mcs_results_read(h, "/stage1/contact/contact0/force", &cf, &err) == MCS_OK);
+    CHECK(h && mcs_results_read(h, "/stage1/facets/contact0:block.surfaces[0]/force", &ff,
+                                &err) == MCS_OK);
+    if (err.status) fprintf(stderr, "%s\n", err.msg);
+    double worst = 0, peak = 0;
+    for (size_t i = 0; i < cf.n && i < ff.n; i++) worst = fmax(worst, fabs(cf.v[i] + ff.v[i]));
+    for (size_t i = 2; i < cf.n; i += 3) peak = fmax(peak, -cf.v[i]);
+    const double fref = 0.3 * sqrt(1.0 * K);
+    printf("output: %zu rows, contact + facets force %.3g N, peak %.2f N (v0 sqrt(M K) %.2f)\n",
+           cf.n / 3, worst, peak, fref);
+    CHECK(cf.n > 0 && cf.n == ff.n && worst == 0);
+    CHECK_NEAR(peak, fref, 2e-3 * fref);
+    mcs_array_free(&cf);
+    mcs_array_free(&ff);
+    mcs_results_close(&h);
+    remove(path);
+    remove(dir);
+    mb_model_destroy(&m);
+}
+
 /* bad input is refused at its FILE:LINE:COL: a bodies contact naming an unknown body (the
  * schema's body reference), or a body without an ellipsoid or facet surface */
 static void test_bodies_contact_errors_are_located(void)
@@ -432,6 +477,7 @@ int main(void)
     RUN(test_ball_slides_then_rolls);
     RUN(test_momentum_ball_on_free_plate);
     RUN(test_facet_block_on_membrane);
+    RUN(test_contact_output);
     RUN(test_bodies_contact_errors_are_located);
     TEST_END();
 }

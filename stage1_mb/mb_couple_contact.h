@@ -8,7 +8,6 @@
 #ifndef MB_COUPLE_CONTACT_H
 #define MB_COUPLE_CONTACT_H
 
-#include "core/mcs_results.h"
 #include "fe/fe_scn_build.h"
 #include "stage1_mb/mb_model.h"
 
@@ -46,15 +45,5 @@ int mb_couple_contact_impulse(const mb_model *m, const mb_state *s, int body, do
  * none; its force on the bodies at the last FE step (the sum over its surfaces, world) [N] */
 int mb_couple_contact_find(const mb_model *m, const char *name);
 void mb_couple_contact_force(const mb_model *m, const mb_state *s, int k, double f[3]);
-
-/* /stage1/contact/<name>/force [nt,3] N per bodies contact: the force on its FE parts' nodes
- * (the slave side, as an FE interface's; minus what the bodies got), at the FE state's energy
- * time, one row per sample (stage1_mb/mb_couple_out.c) */
-typedef struct mb_couple_contact_out mb_couple_contact_out;
-mcs_status mb_couple_contact_out_open(const mb_model *m, mcs_results *r,
-                                      mb_couple_contact_out **out, mcs_error *err);
-mcs_status mb_couple_contact_out_sample(const mb_model *m, const mb_state *s,
-                                        const mb_couple_contact_out *o, mcs_error *err);
-void mb_couple_contact_out_free(mb_couple_contact_out **o);
 
 #endif

@@ -390,21 +390,20 @@ void mb_mesh_destroy(mb_mesh **pm)
     *pm = NULL;
 }
 
-int mb_mesh_ntri(const mb_mesh *m)
+const double *mb_mesh_vert(const mb_mesh *m, int *nvert)
 {
-    return m->ntri;
-}
-int mb_mesh_nvert(const mb_mesh *m)
-{
-    return m->nvert;
-}
-const double *mb_mesh_vert(const mb_mesh *m)
-{
+    *nvert = m->nvert;
     return m->vert;
 }
+
 const int *mb_mesh_tri(const mb_mesh *m)
 {
     return m->tri;
+}
+
+int mb_mesh_ntri(const mb_mesh *m)
+{
+    return m->ntri;
 }
 int mb_mesh_nnode(const mb_mesh *m)
 {

@@ -125,9 +125,9 @@ static int torus(outline *o, const mb_surface *s)
 
 static int facets(outline *o, const mb_surface *s)
 {
-    int nv = mb_mesh_nvert(s->mesh), nt = mb_mesh_ntri(s->mesh);
+    int nv = 0, nt = mb_mesh_ntri(s->mesh);
+    const double *v = mb_mesh_vert(s->mesh, &nv);
     if (grow(o, nv, nt)) return -1;
-    const double *v = mb_mesh_vert(s->mesh);
     const int *t = mb_mesh_tri(s->mesh), base = o->n;
     for (int i = 0; i < nv; i++) vert(o, v + 3 * i);
     for (int i = 0; i < nt; i++) tri(o, base + t[3 * i], base + t[3 * i + 1], base + t[3 * i + 2]);

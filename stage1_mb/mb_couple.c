@@ -98,6 +98,20 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
     }
     memcpy(cs->vkin, c->fe.model->node_vfix, 3 * nn * sizeof *cs->vkin);
     cs->fe->node_vkin = cs->vkin;
+    /* attached nodes start with their body point's velocity v + w x r (else the first
+     * subcycle jerks them to it: an impulse m v on the body and a spurious energy loss) */
+    for (int a = 0; a < c->natt; a++) {
+        const mb_body_desc *d = &m->body[c->body[a]];
+        double R[9], q[4], r[3], wr[3];
+        mb_quat_unit(d->quat, q);
+        mb_quat_to_rot(q, R);
+        const double *l = c->local + 3 * a;
+        for (int i = 0; i < 3; i++)
+            r[i] = R[3 * i] * l[0] + R[3 * i + 1] * l[1] + R[3 * i + 2] * l[2];
+        mb_cross(d->angvel, r, wr);
+        for (int i = 0; i < 3; i++)
+            cs->fe->node_v[3 * c->node[a] + i] = d->vel[i] + wr[i];
+    }
     *out = cs;
     return MCS_OK;
 }

@@ -105,6 +105,9 @@ static const mcs_skey sim_keys[] = {
     /* FE: safety factor on the Courant step (LS-DYNA TSSFAC, default 0.9) */
     Q("time_step_scale", NONE, GT | LE, 0, 1, "FE time step scale factor"),
     Q("output_rate", MCS_DIM_FREQ, GT, 0, 0, "sampling rate of the results [Hz]"),
+    /* FE parts: /stageN/fields at every k-th output row, k = round(output_rate / field_rate) */
+    Q("field_rate", MCS_DIM_FREQ, GT, 0, 0,
+      "sampling rate of the FE displacement fields [Hz] (default output_rate)"),
     END,
 };
 static const mcs_smap sim_map = {
@@ -697,6 +700,13 @@ static const mcs_skey slave_master_keys[] = {
     RS("master", PART, 1, REQ, "master side (symmetric: its nodes against the slave segments too)"),
     END,
 };
+/* FE nodes against stage-1 bodies' surfaces (stage1_mb/mb_couple_contact.c) */
+static const mcs_skey bodies_contact_keys[] = {
+    RS("parts", PART, 1, REQ, "FE parts whose nodes meet the bodies"),
+    RS("bodies", BODY, 1, REQ, "stage-1 bodies whose ellipsoid and facet surfaces they meet"),
+    END,
+};
+static const mcs_smap bodies_contact_map = {.what = "bodies contact", .keys = bodies_contact_keys};
 static const mcs_smap single_surface_map = {.what = "single_surface contact",
                                             .keys = single_surface_keys};
 static const mcs_smap two_surface_map = {.what = "two_surface contact", .keys = slave_master_keys};
@@ -706,6 +716,7 @@ static const mcs_svariant fe_contact_variants[] = {{"single_surface", &single_su
                                                    {"two_surface", &two_surface_map},
                                                    {"surface_to_surface", &s2s_map},
                                                    {"node_to_surface", &n2s_map},
+                                                   {"bodies", &bodies_contact_map},
                                                    {0}};
 static const mcs_skey fe_contact_keys[] = {
     D("type", "contact type"),

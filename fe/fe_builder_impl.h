@@ -19,6 +19,8 @@ typedef struct {
 struct fe_builder {
     int nnode, cap_node;
     double *x;                                    /* (nnode x 3) [m]      */
+    double *x_sel;  /* positions `where` selects on, before a placement moved x (fe_scn_place.c);
+                       NULL: x (nnode x 3) [m] */
     int nelem[FE_NKIND], cap_conn[FE_NKIND], cap_epart[FE_NKIND];
     int *conn[FE_NKIND];                          /* connectivity per kind */
     int *epart[FE_NKIND];                         /* part per element      */
@@ -40,6 +42,9 @@ struct fe_builder {
     int ncontact, nellipsoid;                     /* contact descriptors (fe_contact.h) */
     fe_contact_desc contact[FE_CONTACT_MAX];
     fe_ellipsoid_desc ellipsoid[FE_ELLIPSOID_MAX];
+    int nfacets;                                  /* rigid facet surfaces; vert and tri are
+                                                     the builder's copies (owned)      */
+    fe_facet_desc facets[FE_FACETS_MAX];
     struct fe_slipring_list *sliprings;           /* slip rings to add (fe_slipring.c) */
 };
 

@@ -9,6 +9,7 @@
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_slipring.h"
 #include "fe/fe_scn_keyword.h"
+#include "fe/fe_scn_place.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -371,6 +372,18 @@ static mcs_status add_loads(fe_builder *b, const mcs_node *list, mcs_error *err)
 
 mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err)
 {
+    return fe_scn_build_with(scn, NULL, NULL, NULL, out, err);
+}
+
+mcs_status fe_scn_build_placed(const mcs_scenario *scn, const fe_scn_place *place,
+                               fe_problem *out, mcs_error *err)
+{
+    return fe_scn_build_with(scn, place, NULL, NULL, out, err);
+}
+
+mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
+                             fe_scn_hook hook, void *ctx, fe_problem *out, mcs_error *err)
+{
     memset(out, 0, sizeof *out);
     const mcs_node *root = mcs_scenario_root(scn), *fe = fe_scn_get(root, "fe");
     const mcs_node *sim = fe_scn_get(root, "simulation");
@@ -383,8 +396,14 @@ mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err
     opts.dt_max = mcs_node_num_or(sim, "time_step", 0);
     opts.history_capacity = 0; /* the run samples the state itself (s3_run.c) */
     fe_scn_solid_opts(root, &opts); /* gravity, mass scaling */
+    /* mass damping, bulk viscosity, the energy check (fe_opts; defaults where not given) */
+    opts.damping = mcs_node_num_or(fe, "damping", opts.damping);
+    opts.bulk_q1 = mcs_node_num_or(fe, "bulk_q1", opts.bulk_q1);
+    opts.bulk_q2 = mcs_node_num_or(fe, "bulk_q2", opts.bulk_q2);
+    opts.energy_growth_limit = mcs_node_num_or(fe, "energy_growth_limit", opts.energy_growth_limit);
     out->end_time = mcs_node_num(fe_scn_get(sim, "end_time"));
     out->output_rate = mcs_node_num_or(sim, "output_rate", FE_SCN_OUTPUT_RATE_DEFAULT);
+    out->field_rate = mcs_node_num_or(sim, "field_rate", out->output_rate);
 
     fe_builder *b = NULL;
     mcs_error kerr = {0};
@@ -398,7 +417,9 @@ mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err
     if (!st) st = fe_scn_solid_add(b, fe, err); /* springs, point masses */
     if (!st) st = fe_scn_add_restraints(b, fe, err); /* airbags, retractors (fe_scn_restraints.c) */
     if (!st) st = fe_scn_add_sliprings(b, fe, err);  /* belt slip rings (fe_scn_slipring.c) */
-    if (!st) st = fe_scn_contact_add(b, fe, err); /* contacts, rigid ellipsoids */
+    if (!st) st = fe_scn_contact_add(b, fe, hook != NULL, err); /* contacts, ellipsoids */
+    if (!st && place) st = fe_scn_place_apply(b, fe, place, out, err); /* fe_scn_place.c */
+    if (!st && hook) st = hook(b, fe, ctx, err);
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
         if (st)
@@ -414,6 +435,8 @@ void fe_problem_free(fe_problem *p)
     if (!p) return;
     fe_model_destroy(&p->model);
     free(p->att);
+    free(p->part_carrier);
+    p->part_carrier = NULL;
     p->att = NULL;
     p->natt = 0;
 }

@@ -6,12 +6,46 @@
  * on the straight line between their body points at t and t + h (velocity prescribed through
  * fe_state.node_vkin), and the constraint impulse r dth of every step is summed. */
 #include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_couple_contact.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* impact group of a body by name for the FE placement (fe_scn_place): -1 unknown */
+static int body_group(void *ctx, const char *name)
+{
+    const mb_model *m = ctx;
+    int b = mb_model_body(m, name);
+    return b < 0 ? -1 : m->body_group ? m->body_group[b] : MB_GROUP_NONE;
+}
+
+/* the nodes of a part carried by a body start with the body's velocity field v + w x r
+ * (attached nodes, and the rest of the part, whose fixed translations keep theirs) */
+static void carried_velocities(const mb_model *m, mb_couple *c)
+{
+    fe_model *fm = c->fe.model;
+    if (!c->fe.part_carrier) return;
+    unsigned char *att = calloc((size_t)fm->nnode + 1, 1);
+    if (!att) return; /* only the start velocities of carried nodes are lost: never here */
+    for (int a = 0; a < c->natt; a++) att[c->node[a]] = 1;
+    for (int n = 0; n < fm->nnode; n++) {
+        const int ip = fm->node_part[n];
+        const mcs_node *bn = ip >= 0 ? c->fe.part_carrier[ip] : NULL;
+        const int b = bn ? mb_model_body(m, mcs_node_str(bn)) : -1;
+        if (b < 0) continue;
+        const mb_body_desc *d = &m->body[b];
+        double r[3], wr[3];
+        for (int i = 0; i < 3; i++) r[i] = fm->node_x0[3 * n + i] - d->pos[i];
+        mb_cross(d->angvel, r, wr);
+        for (int i = 0; i < 3; i++)
+            if (att[n] || !(fm->node_fix[n] & (1u << i)))
+                fm->node_v0[3 * n + i] = d->vel[i] + wr[i];
+    }
+    free(att);
+}
 
 mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
 {
@@ -20,15 +54,19 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
     mb_couple *c = calloc(1, sizeof *c);
     if (!c) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     m->couple = c;
-    mcs_status st = fe_scn_build(scn, &c->fe, err);
+    /* with an impact: block, the parts carried by the bodies it placed move with them and
+     * start with their velocity field (fe_scn_place); without, the parts start as the fe:
+     * block puts them (initial_velocity, default at rest) */
+    fe_scn_place pl = {.moved = MB_GROUP_MOTO, .group = body_group, .ctx = m};
+    memcpy(pl.R, m->place_R, sizeof pl.R);
+    memcpy(pl.t, m->place_t, sizeof pl.t);
+    mcs_status st =
+        fe_scn_build_with(scn, m->body_group ? &pl : NULL, mb_couple_contact_add, m, &c->fe, err);
     if (st) return st;
     /* one gravity for the bodies and the FE parts: stage 1's (environment.gravity, 9.81 m/s^2
      * by default, where stage 3 defaults to none) */
     for (int i = 0; i < 3; i++)
         c->fe.model->opts.gravity[i] = m->gravity[i];
-    if (mcs_node_kind(mcs_node_get(root, "impact")) == MCS_NODE_MAP && c->fe.natt > 0)
-        return mcs_node_error(mcs_node_get(root, "impact"), err, MCS_ERR_UNSUPPORTED,
-                              "impact: with fe.parts[].attach not supported yet");
     int n = c->natt = c->fe.natt;
     c->node = calloc((size_t)(n ? n : 1), sizeof *c->node);
     c->body = calloc((size_t)(n ? n : 1), sizeof *c->body);
@@ -36,6 +74,8 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
     if (!c->node || !c->body || !c->local)
         return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     const fe_model *fm = c->fe.model;
+    /* local coordinates from the placed poses and nodes: the same as before the placement
+     * (one rigid motion), to round-off */
     for (int a = 0; a < n; a++) {
         const mcs_node *bn = mcs_node_get(c->fe.att[a].attach, "body");
         int b = mb_model_body(m, mcs_node_str(bn));
@@ -51,6 +91,7 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
         c->node[a] = c->fe.att[a].node;
         c->body[a] = b;
     }
+    carried_velocities(m, c);
     return MCS_OK;
 }
 
@@ -59,6 +100,7 @@ void mb_couple_destroy(mb_couple **pc)
     mb_couple *c = pc ? *pc : NULL;
     if (!c) return;
     fe_problem_free(&c->fe);
+    mb_couple_contact_destroy(&c->contact);
     free(c->node), free(c->body), free(c->local);
     free(c);
     *pc = NULL;
@@ -83,35 +125,24 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
     if (!cs) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     size_t na = (size_t)(c->natt ? c->natt : 1), nn = (size_t)c->fe.model->nnode;
     cs->vkin = calloc(3 * (nn ? nn : 1), sizeof *cs->vkin);
+    cs->react = calloc(3 * (nn ? nn : 1), sizeof *cs->react);
     cs->imp = calloc(3 * na, sizeof *cs->imp);
     cs->force = calloc(3 * na, sizeof *cs->force);
     cs->xa = calloc(3 * na, sizeof *cs->xa);
     cs->vold = calloc(3 * na, sizeof *cs->vold);
     cs->fmean = calloc(3 * na, sizeof *cs->fmean);
     mcs_status st = MCS_OK;
-    if (!cs->vkin || !cs->imp || !cs->force || !cs->xa || !cs->vold || !cs->fmean)
+    if (!cs->vkin || !cs->react || !cs->imp || !cs->force || !cs->xa || !cs->vold || !cs->fmean)
         st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     if (!st) st = fe_state_create(c->fe.model, &cs->fe, err);
+    if (!st && c->contact) st = mb_couple_contact_state_create(c->contact, &cs->contact, err);
     if (st) {
         mb_couple_state_destroy(&cs);
         return st;
     }
     memcpy(cs->vkin, c->fe.model->node_vfix, 3 * nn * sizeof *cs->vkin);
     cs->fe->node_vkin = cs->vkin;
-    /* attached nodes start with their body point's velocity v + w x r (else the first
-     * subcycle jerks them to it: an impulse m v on the body and a spurious energy loss) */
-    for (int a = 0; a < c->natt; a++) {
-        const mb_body_desc *d = &m->body[c->body[a]];
-        double R[9], q[4], r[3], wr[3];
-        mb_quat_unit(d->quat, q);
-        mb_quat_to_rot(q, R);
-        const double *l = c->local + 3 * a;
-        for (int i = 0; i < 3; i++)
-            r[i] = R[3 * i] * l[0] + R[3 * i + 1] * l[1] + R[3 * i + 2] * l[2];
-        mb_cross(d->angvel, r, wr);
-        for (int i = 0; i < 3; i++)
-            cs->fe->node_v[3 * c->node[a] + i] = d->vel[i] + wr[i];
-    }
+    cs->fe->node_react = cs->react;
     *out = cs;
     return MCS_OK;
 }
@@ -121,7 +152,9 @@ void mb_couple_state_destroy(mb_couple_state **p)
     mb_couple_state *cs = p ? *p : NULL;
     if (!cs) return;
     fe_state_destroy(&cs->fe);
-    free(cs->vkin), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold), free(cs->fmean);
+    mb_couple_contact_state_destroy(&cs->contact);
+    free(cs->vkin), free(cs->react), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold);
+    free(cs->fmean);
     free(cs);
     *p = NULL;
 }
@@ -134,6 +167,7 @@ void mb_couple_apply(const mb_model *m, mb_state *s)
         point_now(m, s, a, cs->xa + 3 * a);
         mb_body_add_force_at_pos(s->world, c->body[a], cs->force + 3 * a, cs->xa + 3 * a);
     }
+    if (c->contact) mb_couple_contact_apply(m, s);
 }
 
 mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
@@ -153,9 +187,9 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         mb_copy(x, x1 + 3 * a);
     }
     memset(cs->imp, 0, 3 * (size_t)c->natt * sizeof *cs->imp);
+    if (c->contact) mb_couple_contact_begin(m, s);
     /* the impulses r dth of the FE steps at t_j span [t_j - dt_prev/2, t_j + dt/2] */
     const double i0 = f->time - 0.5 * f->dt_prev;
-    const double cdamp = fm->opts.damping;
     while (f->time < t1 - 1e-12 * h) {
         double rem = t1 - f->time;
         long k = (long)ceil(rem / f->dt - 1e-9);
@@ -168,8 +202,8 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
                 cs->vkin[3 * n + i] = (xt - f->node_x[3 * n + i]) / dt;
             }
         }
-        const double dth = 0.5 * (dt + f->dt_prev);
-        const double d0 = 1 - 0.5 * cdamp * dth, d1 = 1 / (1 + 0.5 * cdamp * dth);
+        const double dth = 0.5 * (dt + f->dt_prev), tau0 = (f->time - t0) / h;
+        if (c->contact) mb_couple_contact_pose(m, s, tau0, h);
         double *vold = cs->vold;
         for (int a = 0; a < c->natt; a++)
             for (int i = 0; i < 3; i++)
@@ -180,13 +214,12 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
             return st;
         }
         cs->substeps++;
+        if (c->contact) mb_couple_contact_sum(m, s, tau0, dth);
         for (int a = 0; a < c->natt; a++) {
             const int n = c->node[a];
-            const double mass = fm->node_mass[n];
             for (int i = 0; i < 3; i++) {
                 double v0 = vold[3 * a + i], vn = f->node_v[3 * n + i];
-                double vfree = (d0 * v0 + dth * f->node_a[3 * n + i]) * d1;
-                double r = mass * (vn - vfree) / dth; /* constraint force on the node */
+                double r = cs->react[3 * n + i]; /* constraint force on the node (fe_integrate) */
                 cs->imp[3 * a + i] += r * dth;
                 cs->w_fe += r * dth * 0.5 * (v0 + vn);
             }
@@ -206,21 +239,32 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
             cs->fmean[3 * a + i] = fm;
         }
     }
+    if (c->contact) mb_couple_contact_end(m, s, h, alpha, cs->started);
     cs->started = 1;
     return MCS_OK;
 }
 
 double mb_couple_energy(const mb_model *m, const mb_state *s, double e[7])
 {
-    (void)m;
     const mb_couple_state *cs = s->couple;
-    const double *E = cs->fe->energy;
+    const fe_state *f = cs->fe;
+    const double *E = f->energy;
     e[0] = E[FE_E_kinetic];
+    if (f->nstep == 0) { /* before the first FE step: the initial velocities' (carried parts) */
+        const fe_model *fm = m->couple->fe.model;
+        e[0] = 0;
+        for (int n = 0; n < fm->nnode; n++) {
+            const double *v = f->node_v + 3 * n, *w = f->node_w + 3 * n;
+            e[0] += 0.5 * fm->node_mass[n] * mb_dot(v, v);
+            e[0] += 0.5 * fm->node_inertia[n] * mb_dot(w, w);
+        }
+    }
     e[1] = E[FE_E_potential];
     e[2] = E[FE_E_internal] + E[FE_E_hourglass];
     e[3] = E[FE_E_contact];
     e[4] = E[FE_E_dissipated];
     e[5] = E[FE_E_external_work] - cs->w_fe; /* loads other than the bodies' */
+    if (m->couple->contact) e[5] -= mb_couple_contact_work(m, s); /* bodies' surfaces */
     e[6] = e[0] + e[1] + e[2] + e[3] + e[4] - e[5];
     return e[6];
 }

@@ -17,11 +17,14 @@ typedef struct mb_couple {
     int *node;          /* FE node of each (natt)                                        */
     int *body;          /* carrying body (natt)                                          */
     double *local;      /* node position in the body frame, about the CG (natt x 3) [m]  */
+    struct mb_couple_contact *contact; /* type: bodies contacts (mb_couple_contact.h), NULL none */
 } mb_couple;
 
 typedef struct mb_couple_state {
     fe_state *fe;       /* FE state (owned)                                              */
     double *vkin;       /* prescribed velocities of the fixed translations (nnode x 3)    */
+    double *react;      /* constraint reactions the FE step records (fe_state.node_react)
+                           (nnode x 3) [N]                                                */
     double *imp;        /* constraint impulse on each attached node this ODE step (natt x 3) */
     double *force;      /* its mean force, applied to the body in the next step (natt x 3) */
     double *xa;         /* attached points in the world at the step's start (natt x 3) [m] */
@@ -32,10 +35,12 @@ typedef struct mb_couple_state {
     double w_body;      /* work of the coupling forces on the bodies [J]                  */
     double w_fe;        /* work of the bodies on the attached nodes [J]                    */
     long substeps;      /* FE steps taken [-]                                             */
+    struct mb_couple_contact_state *contact; /* of m->couple->contact, NULL none          */
 } mb_couple_state;
 
-/* the fe: block of a scenario with bodies -> m->couple (NULL without fe:); call before the
- * impact placement: attached points are taken at t = 0 poses */
+/* the fe: block of a scenario with bodies -> m->couple (NULL without fe:); call after the
+ * impact placement (mb_impact.h): with an impact: block the parts carried by the motorcycle
+ * group move with it, and every carried part starts with its body's velocity field v + w x r */
 mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err);
 void mb_couple_destroy(mb_couple **c);
 mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out,

@@ -57,9 +57,12 @@ def bag(res, out):
     a = mean_accel(t, h5(h, "/stage1/bodies/plate/velocity"), 2)
     M, r, h0, n = 20.0, 0.15, 0.2, 38  # the scenario's plate, cap radius, height, ring nodes
     A = 0.5 * n * r * r * math.sin(2 * math.pi / n)
+    p, V = h5(h, "/stage1/airbag/bag/pressure"), h5(h, "/stage1/airbag/bag/volume")
+    pvg0 = p[0] * V[0] ** GAMMA
     write(os.path.join(out, "bag.dat"),
-          [(1e3 * (h0 - 0.5 * (z[i][2] + z[i - 1][2])), M * a[i - 1], 1e3 * t[i])
-           for i in range(2, len(t))])
+          [(1e3 * (h0 - 0.5 * (z[i][2] + z[i - 1][2])), M * a[i - 1], 1e3 * t[i],
+            (0.5 * (p[i] + p[i - 1]) - P_AMB) * A, p[i] * V[i] ** GAMMA / pvg0 - 1)
+           for i in range(2, min(len(t), len(p)))])
     write(os.path.join(out, "bag_ref.dat"),
           [(1e3 * d, (P_AMB * (h0 / (h0 - d)) ** GAMMA - P_AMB) * A)
            for d in [k * 0.0005 for k in range(0, 70)]])
@@ -79,8 +82,10 @@ def limiter(res, out):
             ref.append(v0 * math.cos(w * ti))
         else:
             ref.append(max(v_on - F / M * (ti - t_on), float("nan")))
+    f = h5(h, "/stage1/retractor/retractor/force")
     write(os.path.join(out, "limiter.dat"),
-          [(1e3 * t[i], v[i][0], ref[i] if ref[i] > 0 else float("nan")) for i in range(len(t))])
+          [(1e3 * t[i], v[i][0], ref[i] if ref[i] > 0 else float("nan"), f[i] / 1e3)
+           for i in range(min(len(t), len(f)))])
 
 
 def pretensioner(res, out):
@@ -165,12 +170,16 @@ set output "{img}/restraints_bag.png"
 set title "Rigid body on a closed bag: force on the plate against the stroke"
 set xlabel "stroke [mm]"; set ylabel "force [N]"
 plot "{d}/bag.dat" using 1:2 with lines lw 2 title "coupled run: M a of the plate", \\
+     "{d}/bag.dat" using 1:4 with lines dt 2 lw 2 title "coupled run: (p - p_a) A_cap of the bag's gas", \\
      "{d}/bag_ref.dat" using 1:2 with lines dt 2 lc rgb "black" title "closed form, the bag as a prism (no bulge): (p0 (V0/V)^1.4 - p_a) A_cap"
 set output "{img}/restraints_limiter.png"
 set title "Body pulled by a belt through a 2 kN load limiter (20 kg, 4 m/s)"
-set xlabel "time [ms]"; set ylabel "velocity [m/s]"
-plot "{d}/limiter.dat" using 1:2 with lines lw 2 title "coupled run", \\
-     "{d}/limiter.dat" using 1:3 with lines dt 2 lc rgb "black" title "closed form: elastic, then F/M = 100 m/s^2"
+set xlabel "time [ms]"; set ylabel "velocity [m/s]"; set y2label "belt force at the retractor [kN]"
+set ytics nomirror; set y2tics; set y2range [0:2.5]
+plot "{d}/limiter.dat" using 1:2 with lines lw 2 title "coupled run: body velocity", \\
+     "{d}/limiter.dat" using 1:3 with lines dt 2 lc rgb "black" title "closed form: elastic, then F/M = 100 m/s^2", \\
+     "{d}/limiter.dat" using 1:4 axes x1y2 with lines lc rgb "gray50" title "belt force (/stage1/retractor)"
+unset y2tics; unset y2label; set ytics mirror
 set output "{img}/restraints_pretensioner.png"
 set title "Pretensioner pay-in (Eq. 3) pulling a free 1 kg body"
 set xlabel "time [ms]"; set ylabel "displacement [mm]"

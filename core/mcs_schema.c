@@ -440,6 +440,15 @@ static const mcs_skey sphere_keys[] = {
     MESH_COMMON,
     END,
 };
+/* a flat (2D-design) gas bag: two panels sewn at their edges (fe/fe_mesh_shell.c) */
+static const mcs_skey flat_bag_keys[] = {
+    V("size", LEN, 2, 2, REQ | GT, 0, "panel size along the two in-plane axes [m]"),
+    Q("gap", LEN, REQ | GT, 0, 0, "distance of the two panels inside the seam [m]"),
+    Q("element_size", LEN, REQ | GT, 0, 0, "element edge length [m]"),
+    E("axis", CHOICES_AXIS, 0, "panel normal (default z)"),
+    V("origin", LEN, 3, 3, 0, 0, "centre of the bag [m]"),
+    END,
+};
 static const mcs_skey line_keys[] = {
     V("origin", LEN, 3, 3, REQ, 0, "start point [m]"),
     V("end", LEN, 3, 3, REQ, 0, "end point [m]"),
@@ -474,6 +483,7 @@ static const mcs_smap plate_map = {
 static const mcs_smap box_map = {.what = "box mesh", .keys = box_keys};
 static const mcs_smap sphere_shell_map = {.what = "sphere_shell mesh", .keys = sphere_keys};
 static const mcs_smap line_map = {.what = "line mesh", .keys = line_keys};
+static const mcs_smap flat_bag_map = {.what = "flat_bag mesh", .keys = flat_bag_keys};
 static const mcs_smap keyword_map = {.what = "keyword mesh", .keys = keyword_keys};
 /* "(keyword)": chosen when generate: is absent, never by name */
 static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
@@ -482,6 +492,7 @@ static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"plate", &plate_map},
                                              {"box", &box_map},
                                              {"sphere_shell", &sphere_shell_map},
+                                             {"flat_bag", &flat_bag_map},
                                              {"line", &line_map},
                                              {"(keyword)", &keyword_map},
                                              {0}};

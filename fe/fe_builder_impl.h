@@ -62,6 +62,7 @@ mcs_status fe_mesh_generate(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_er
 /* sphere_shell and cylinder_shell (fe_mesh_shell.c) */
 mcs_status fe_mesh_sphere(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
 mcs_status fe_mesh_cylinder(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
+mcs_status fe_mesh_flat_bag(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
 /* fabric material keys of a membrane part (fe_fabric.c) */
 mcs_status fe_fabric_check(const fe_part_desc *d, mcs_error *err);
 void fe_restraint_list_free(fe_builder *b);

@@ -59,7 +59,8 @@ static mcs_status read_mesh(const mcs_node *mesh, fe_mesh_desc *d, mcs_error *er
     } else if (strcmp(gen, "circular_tube") == 0) {
         d->generate = FE_MESH_CIRCULAR_TUBE;
         d->diameter = mcs_node_num(fe_scn_get(mesh, "diameter"));
-    } else if (strcmp(gen, "cylinder_shell") == 0 || strcmp(gen, "sphere_shell") == 0) {
+    } else if (strcmp(gen, "cylinder_shell") == 0 || strcmp(gen, "sphere_shell") == 0 ||
+               strcmp(gen, "flat_bag") == 0) {
         return fe_scn_read_shell_mesh(mesh, gen, d, err); /* fe_scn_restraints.c */
     } else {
         char what[96];

@@ -6,6 +6,7 @@
  * on the straight line between their body points at t and t + h (velocity prescribed through
  * fe_state.node_vkin), and the constraint impulse r dth of every step is summed. */
 #include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_couple_rx.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -51,13 +52,14 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
         c->node[a] = c->fe.att[a].node;
         c->body[a] = b;
     }
-    return MCS_OK;
+    return mb_couple_rx_build(scn, m, err); /* triggers, anchors on bodies */
 }
 
 void mb_couple_destroy(mb_couple **pc)
 {
     mb_couple *c = pc ? *pc : NULL;
     if (!c) return;
+    mb_couple_rx_destroy(&c->rx);
     fe_problem_free(&c->fe);
     free(c->node), free(c->body), free(c->local);
     free(c);
@@ -92,12 +94,22 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
     if (!cs->vkin || !cs->imp || !cs->force || !cs->xa || !cs->vold || !cs->fmean)
         st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     if (!st) st = fe_state_create(c->fe.model, &cs->fe, err);
+    if (!st) st = mb_couple_rx_state_create(m, cs, err);
     if (st) {
         mb_couple_state_destroy(&cs);
         return st;
     }
     memcpy(cs->vkin, c->fe.model->node_vfix, 3 * nn * sizeof *cs->vkin);
     cs->fe->node_vkin = cs->vkin;
+    /* attached nodes start with their body's point velocity v + w x r (not at rest) */
+    for (int a = 0; a < c->natt; a++) {
+        const mb_body_desc *d = &m->body[c->body[a]];
+        const int n = c->node[a];
+        double r[3], wr[3];
+        for (int i = 0; i < 3; i++) r[i] = c->fe.model->node_x0[3 * n + i] - d->pos[i];
+        mb_cross(d->angvel, r, wr);
+        for (int i = 0; i < 3; i++) cs->vkin[3 * n + i] = cs->fe->node_v[3 * n + i] = d->vel[i] + wr[i];
+    }
     *out = cs;
     return MCS_OK;
 }
@@ -106,6 +118,7 @@ void mb_couple_state_destroy(mb_couple_state **p)
 {
     mb_couple_state *cs = p ? *p : NULL;
     if (!cs) return;
+    mb_couple_rx_state_destroy(&cs->rx);
     fe_state_destroy(&cs->fe);
     free(cs->vkin), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold), free(cs->fmean);
     free(cs);
@@ -120,6 +133,7 @@ void mb_couple_apply(const mb_model *m, mb_state *s)
         point_now(m, s, a, cs->xa + 3 * a);
         mb_body_add_force_at_pos(s->world, c->body[a], cs->force + 3 * a, cs->xa + 3 * a);
     }
+    mb_couple_anchor_apply(m, s);
 }
 
 mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
@@ -129,6 +143,8 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
     fe_state *f = cs->fe;
     const fe_model *fm = c->fe.model;
     const double t0 = f->time, t1 = s->t, h = t1 - t0;
+    mb_couple_trigger_check(m, s); /* the contact forces of t fire inflators, retractors */
+    mb_couple_anchor_begin(m, s);
     double *x1 = cs->force; /* scratch: body points at t + h, then the forces */
     for (int a = 0; a < c->natt; a++) {
         double x[3];
@@ -160,11 +176,13 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         for (int a = 0; a < c->natt; a++)
             for (int i = 0; i < 3; i++)
                 vold[3 * a + i] = f->node_v[3 * c->node[a] + i];
+        mb_couple_anchor_move(m, s, (f->time - t0) / h); /* anchors on bodies at t_j */
         mcs_status st = fe_step(fm, f);
         if (st) {
             *err = f->err;
             return st;
         }
+        mb_couple_anchor_collect(m, s, dth);
         cs->substeps++;
         for (int a = 0; a < c->natt; a++) {
             const int n = c->node[a];
@@ -192,6 +210,7 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
             cs->fmean[3 * a + i] = fm;
         }
     }
+    mb_couple_anchor_end(m, s, h, alpha, cs->started);
     cs->started = 1;
     return MCS_OK;
 }
@@ -206,7 +225,8 @@ double mb_couple_energy(const mb_model *m, const mb_state *s, double e[7])
     e[2] = E[FE_E_internal] + E[FE_E_hourglass];
     e[3] = E[FE_E_contact];
     e[4] = E[FE_E_dissipated];
-    e[5] = E[FE_E_external_work] - cs->w_fe; /* loads other than the bodies' */
+    /* loads other than the bodies', and the retractors' on the bodies carrying their anchors */
+    e[5] = E[FE_E_external_work] - cs->w_fe + cs->rx->w_anchor;
     e[6] = e[0] + e[1] + e[2] + e[3] + e[4] - e[5];
     return e[6];
 }

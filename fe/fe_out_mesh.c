@@ -53,7 +53,8 @@ static mcs_status put_solid(mcs_results *r, int stage, const fe_model *m, const 
     mcs_status st = MCS_OK;
     for (int s = 0; s < SH_N && !st; s++)
         if (!(blk[s] = malloc(sizeof(int) * (size_t)ne * (size_t)width[s])))
-            st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory writing part '%s'", p->name);
+            st = MCS_ERR(err, MCS_ERR_NOMEM, "stage %d: out of memory writing part '%s'", stage,
+                         p->name);
     for (int e = p->elem_begin; e < p->elem_end && !st; e++) {
         int c[8];
         const int s = shape(m->hex_node + 8 * (size_t)e, c);
@@ -89,11 +90,44 @@ mcs_status fe_out_part_mesh(mcs_results *r, int stage, const fe_model *m, const 
     node_range(c, (size_t)k * (size_t)ne, m->nnode, &lo, &hi);
     if (p->elem_kind == FE_KIND_HEX) return put_solid(r, stage, m, p, lo, hi, err);
     int *el = malloc(sizeof(int) * (size_t)ne * (size_t)k);
-    if (!el) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory writing part '%s'", p->name);
+    if (!el)
+        return MCS_ERR(err, MCS_ERR_NOMEM, "stage %d: out of memory writing part '%s'", stage,
+                       p->name);
     for (size_t i = 0; i < (size_t)k * (size_t)ne; i++) el[i] = c[i] - lo;
     mcs_status st = mcs_results_put_mesh(r, stage, p->name, (size_t)(hi - lo + 1),
                                          m->node_x0 + 3 * (size_t)lo, (size_t)ne, k, el,
                                          type[p->elem_kind], lo, err);
     free(el);
     return st;
+}
+
+mcs_status fe_out_meshes(mcs_results *r, int stage, const fe_model *m, mcs_error *err)
+{
+    mcs_status st = MCS_OK;
+    for (int i = 0; i < m->npart && !st; i++) st = fe_out_part_mesh(r, stage, m, &m->part[i], err);
+    return st;
+}
+
+mcs_status fe_out_field_open(mcs_results *r, int stage, const fe_model *m, fe_out_field *o,
+                             mcs_error *err)
+{
+    memset(o, 0, sizeof *o);
+    o->buf = malloc(sizeof(double) * 3 * (size_t)(m->nnode > 0 ? m->nnode : 1));
+    if (!o->buf) return MCS_ERR(err, MCS_ERR_NOMEM, "stage %d: out of memory (fields)", stage);
+    return mcs_results_field_series(r, stage, (size_t)m->nnode, &o->time, &o->disp, err);
+}
+
+mcs_status fe_out_field_sample(const fe_model *m, const fe_state *s, double t,
+                               const fe_out_field *o, mcs_error *err)
+{
+    for (size_t i = 0; i < 3 * (size_t)m->nnode; i++) o->buf[i] = s->node_x[i] - m->node_x0[i];
+    mcs_status st = mcs_results_series_append(o->time, &t, err);
+    if (!st) st = mcs_results_series_append(o->disp, o->buf, err);
+    return st;
+}
+
+void fe_out_field_free(fe_out_field *o)
+{
+    free(o->buf);
+    memset(o, 0, sizeof *o);
 }

@@ -9,9 +9,27 @@
 
 #include "core/mcs_results.h"
 #include "fe/fe_model.h"
+#include "fe/fe_state.h"
 
 /* into /stage<stage>/mesh/<part> */
 mcs_status fe_out_part_mesh(mcs_results *r, int stage, const fe_model *m, const fe_part *p,
                            mcs_error *err);
+/* every part's mesh */
+mcs_status fe_out_meshes(mcs_results *r, int stage, const fe_model *m, mcs_error *err);
+
+/* the displacement field of every node, /stage<stage>/fields/{time [nout] s, displacement
+ * [nout, nnode, 3] m} (rows of the model's node numbering; each mesh's node_offset says where
+ * its part begins) */
+typedef struct {
+    mcs_results_series *time, *disp;
+    double *buf; /* (nnode x 3) */
+} fe_out_field;
+
+mcs_status fe_out_field_open(mcs_results *r, int stage, const fe_model *m, fe_out_field *o,
+                             mcs_error *err);
+/* one frame: time t [s] and x - x0 of the state's nodes */
+mcs_status fe_out_field_sample(const fe_model *m, const fe_state *s, double t,
+                               const fe_out_field *o, mcs_error *err);
+void fe_out_field_free(fe_out_field *o);
 
 #endif

@@ -2,6 +2,7 @@
  * allocated before the loop; the loop calls fe_step and appends rows to results series at
  * the output rate. */
 #include "stage3_fe/s3_run.h"
+#include "fe/fe_out_contact.h"
 #include "fe/fe_out_mesh.h"
 #include "fe/fe_out_parts.h"
 #include "fe/fe_scn_restraints.h"
@@ -27,47 +28,12 @@ static double now_s(void)
 
 typedef struct {
     mcs_results_series *time, *energy[FE_NENERGY], *wall_f[FE_WALL_MAX], *wall_d[FE_WALL_MAX];
-    mcs_results_series *ftime, *fdisp;
-    mcs_results_series *con_f[FE_CONTACT_MAX], *con_e[FE_CONTACT_MAX], *ell_f[FE_ELLIPSOID_MAX];
-    double *disp; /* [nnode, 3] */
+    fe_out_field field;     /* /stage3/fields (fe_out_mesh.c) */
+    fe_out_contact contact; /* /stage3/contact, /stage3/ellipsoid (fe_out_contact.c) */
     fe_out_restraint rest; /* airbags and retractors (fe_scn_restraints.c) */
     fe_out_slipring rings; /* slip rings (fe_scn_slipring.c) */
     fe_out_parts parts;     /* per-part energies (fe_out_parts.c) */
 } s3_out;
-
-/* /stage3/contact/<name>/{force [nt,3] N, energy [nt] J}, /stage3/ellipsoid/<name>/force */
-static mcs_status open_contact_series(mcs_results *r, const fe_model *m, s3_out *o,
-                                      mcs_error *err)
-{
-    const fe_contact_model *c = m->contact;
-    char path[256];
-    const size_t three = 3;
-    mcs_status st = MCS_OK;
-    for (int i = 0; c && i < c->nif && !st; i++) {
-        snprintf(path, sizeof path, "/stage3/contact/%s/force", c->iface[i].name);
-        st = mcs_results_series_create(r, path, 2, &three, "N", 0, &o->con_f[i], err);
-        snprintf(path, sizeof path, "/stage3/contact/%s/energy", c->iface[i].name);
-        if (!st) st = mcs_results_series_create(r, path, 1, NULL, "J", 0, &o->con_e[i], err);
-    }
-    for (int i = 0; c && i < c->nell && !st; i++) {
-        snprintf(path, sizeof path, "/stage3/ellipsoid/%s/force", c->ell[i].name);
-        st = mcs_results_series_create(r, path, 2, &three, "N", 0, &o->ell_f[i], err);
-    }
-    return st;
-}
-
-static mcs_status sample_contact(const fe_model *m, const fe_state *s, s3_out *o, mcs_error *err)
-{
-    const fe_contact_model *c = m->contact;
-    mcs_status st = MCS_OK;
-    for (int i = 0; c && i < c->nif && !st; i++) {
-        st = mcs_results_series_append(o->con_f[i], s->contact->if_force + 3 * i, err);
-        if (!st) st = mcs_results_series_append(o->con_e[i], s->contact->if_energy + i, err);
-    }
-    for (int i = 0; c && i < c->nell && !st; i++)
-        st = mcs_results_series_append(o->ell_f[i], s->contact->ell_force + 3 * i, err);
-    return st;
-}
 
 static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_error *err)
 {
@@ -83,8 +49,8 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
         snprintf(path, sizeof path, "/stage3/rigidwall/%s/displacement", m->wall[w].name);
         if (!st) st = mcs_results_series_create(r, path, 1, NULL, "m", 0, &o->wall_d[w], err);
     }
-    if (!st) st = open_contact_series(r, m, o, err);
-    if (!st) st = mcs_results_field_series(r, 3, (size_t)m->nnode, &o->ftime, &o->fdisp, err);
+    if (!st) st = fe_out_contact_open(r, 3, m, &o->contact, err);
+    if (!st) st = fe_out_field_open(r, 3, m, &o->field, err);
     if (!st) st = fe_out_restraint_open(r, 3, m, &o->rest, err);
     if (!st) st = fe_out_slipring_open(r, 3, m, &o->rings, err);
     if (!st) st = fe_out_parts_open(r, 3, m, &o->parts, err);
@@ -102,17 +68,14 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
     }
     if (!st) st = fe_out_restraint_sample(s, &o->rest, err);
     if (!st) st = fe_out_slipring_sample(s, &o->rings, err);
-    if (!st) st = sample_contact(m, s, o, err);
+    if (!st) st = fe_out_contact_sample(m, s, &o->contact, err);
     if (!st) st = fe_out_parts_sample(m, s, &o->parts, err);
     return st;
 }
 
 static mcs_status sample_field(const fe_model *m, const fe_state *s, s3_out *o, mcs_error *err)
 {
-    for (size_t i = 0; i < 3 * (size_t)m->nnode; i++) o->disp[i] = s->node_x[i] - m->node_x0[i];
-    mcs_status st = mcs_results_series_append(o->ftime, &s->time, err);
-    if (!st) st = mcs_results_series_append(o->fdisp, o->disp, err);
-    return st;
+    return fe_out_field_sample(m, s, s->time, &o->field, err);
 }
 
 /* the time loop: fe_step until end_time, sampling energies (at t_n) and fields (at t_n+1) */
@@ -161,11 +124,7 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
     s3_out o = {0};
     mcs_status st = fe_state_create(m, &s, err);
     if (!st) st = mcs_results_create(&r, ro->out_path, ro->scenario_text, err);
-    if (!st) {
-        o.disp = malloc(sizeof(double) * 3 * (size_t)(m->nnode > 0 ? m->nnode : 1));
-        if (!o.disp) st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
-    }
-    for (int i = 0; i < m->npart && !st; i++) st = fe_out_part_mesh(r, 3, m, &m->part[i], err);
+    if (!st) st = fe_out_meshes(r, 3, m, err);
     if (!st) st = open_series(r, m, &o, err);
     if (!st) st = loop(p, ro, s, &o, err);
     if (!st) {
@@ -191,7 +150,7 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
         if (!st) st = mcs_results_commit(&r, err);
     }
     mcs_results_abort(&r);
-    free(o.disp);
+    fe_out_field_free(&o.field);
     fe_out_restraint_free(&o.rest);
     fe_out_slipring_free(&o.rings);
     fe_out_parts_free(&o.parts);

@@ -1,0 +1,68 @@
+/* mb_couple_out.c: the coupled FE parts' /stage1 output (mb_couple_out.h), written as a
+ * stage-3 run writes /stage3 (stage3_fe/s3_run.c) with the fe/fe_out_* writers and stage 1. */
+#include "stage1_mb/mb_couple_out.h"
+#include "fe/fe_out_contact.h"
+#include "fe/fe_out_mesh.h"
+#include "fe/fe_out_parts.h"
+#include "fe/fe_scn_restraints.h"
+#include "fe/fe_scn_slipring.h"
+#include "stage1_mb/mb_couple.h"
+
+#include <stdlib.h>
+
+struct mb_couple_out {
+    long rows;              /* stage-1 output rows sampled so far             */
+    fe_out_field field;     /* /stage1/mesh, /stage1/fields                   */
+    fe_out_parts parts;     /* /stage1/parts/<part>/energy                    */
+    fe_out_restraint rest;  /* /stage1/airbag, /stage1/retractor              */
+    fe_out_slipring rings;  /* /stage1/slipring                               */
+    fe_out_contact contact; /* /stage1/contact, /stage1/ellipsoid             */
+};
+
+mcs_status mb_couple_out_open(const mb_model *m, mcs_results *r, mb_couple_out **out,
+                              mcs_error *err)
+{
+    *out = NULL;
+    if (!m->couple) return MCS_OK;
+    const fe_model *fm = m->couple->fe.model;
+    mb_couple_out *o = calloc(1, sizeof *o);
+    if (!o) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
+    *out = o;
+    mcs_status st = fe_out_meshes(r, 1, fm, err);
+    if (!st) st = fe_out_field_open(r, 1, fm, &o->field, err);
+    if (!st) st = fe_out_restraint_open(r, 1, fm, &o->rest, err);
+    if (!st) st = fe_out_slipring_open(r, 1, fm, &o->rings, err);
+    if (!st) st = fe_out_contact_open(r, 1, fm, &o->contact, err);
+    if (!st) st = fe_out_parts_open(r, 1, fm, &o->parts, err);
+    return st;
+}
+
+mcs_status mb_couple_out_sample(const mb_model *m, const mb_state *s, mb_couple_out *o,
+                                mcs_error *err)
+{
+    if (!o) return MCS_OK;
+    const fe_model *fm = m->couple->fe.model;
+    const fe_state *f = s->couple->fe;
+    mcs_status st = MCS_OK;
+    /* the FE state is that of the last recorded row: a row per step at most */
+    for (; o->rows < s->nrec && !st; o->rows++) {
+        st = fe_out_field_sample(fm, f, s->rec_t[o->rows], &o->field, err);
+        if (!st) st = fe_out_restraint_sample(f, &o->rest, err);
+        if (!st) st = fe_out_slipring_sample(f, &o->rings, err);
+        if (!st) st = fe_out_contact_sample(fm, f, &o->contact, err);
+        if (!st) st = fe_out_parts_sample(fm, f, &o->parts, err);
+    }
+    return st;
+}
+
+void mb_couple_out_free(mb_couple_out **po)
+{
+    mb_couple_out *o = po ? *po : NULL;
+    if (!o) return;
+    fe_out_field_free(&o->field);
+    fe_out_parts_free(&o->parts);
+    fe_out_restraint_free(&o->rest);
+    fe_out_slipring_free(&o->rings);
+    free(o);
+    *po = NULL;
+}

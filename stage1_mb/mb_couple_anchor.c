@@ -84,6 +84,7 @@ void mb_couple_anchor_begin(const mb_model *m, mb_state *s)
 void mb_couple_anchor_move(const mb_model *m, mb_state *s, double tau)
 {
     const mb_couple_rx *rx = m->couple->rx;
+    if (rx->nanchor == 0) return; /* (no restraint state without retractors) */
     mb_couple_rx_state *q = s->couple->rx;
     double *an = s->couple->fe->restraint->retractor_anchor;
     for (int a = 0; a < rx->nanchor; a++)
@@ -95,6 +96,7 @@ void mb_couple_anchor_move(const mb_model *m, mb_state *s, double tau)
 void mb_couple_anchor_collect(const mb_model *m, mb_state *s, double dth)
 {
     const mb_couple_rx *rx = m->couple->rx;
+    if (rx->nanchor == 0) return;
     mb_couple_rx_state *q = s->couple->rx;
     const double *fa = s->couple->fe->restraint->retractor_fanchor;
     for (int a = 0; a < rx->nanchor; a++)

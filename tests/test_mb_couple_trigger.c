@@ -17,6 +17,8 @@
  *   mass_in(t) = m_dot (t - t_fire) for a constant table (paper 2023 Eq. 4, no exhaust);
  * - the pretensioner's pay-in follows Eq. 3 from the state's firing time:
  *   L(t) = -(100 mm / 15 ms)(t - t_fire) within 15 ms of firing. */
+#include "tests/cli_util.h"
+#include "core/mcs_results.h"
 #include "fe/fe_restraint.h"
 #include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_couple_rx.h"
@@ -194,10 +196,51 @@ static void test_bad_input_is_located(void)
                  "bad.yaml:32:63:", "unknown body 'y'");
 }
 
+/* through `mcrash stage1`: the attribute fire_time of /stage1/airbag/bag and
+ * /stage1/retractor/ret (within one ODE step of the references above); `mcrash stage3` of
+ * the same scenario refuses the trigger at its key (exit 2) */
+static void test_fire_time_written(void)
+{
+    char dir[] = "/tmp/mcrash_trig_XXXXXX", path[96], out[96], args[256];
+    if (!mkdtemp(dir)) return;
+    snprintf(path, sizeof path, "%s/drop.yaml", dir);
+    snprintf(out, sizeof out, "%s/drop.h5", dir);
+    const double tc = sqrt(2 * H_DROP / G);
+    FILE *f = fopen(path, "w");
+    if (f) {
+        fputs(drop(tc + 0.015, ", delay: 12 ms", ", force: 50 N, delay: 2 ms"), f);
+        fclose(f);
+    }
+    snprintf(args, sizeof args, "stage1 %s -o %s --quiet", path, out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    if (r->status) fprintf(stderr, "%s\n", r->err);
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    double tb = NAN, tr = NAN;
+    if (mcs_results_open(&h, out, &err) == MCS_OK) {
+        CHECK(mcs_results_attr_double(h, "/stage1/airbag/bag", "fire_time", &tb, &err) == MCS_OK);
+        CHECK(mcs_results_attr_double(h, "/stage1/retractor/ret", "fire_time", &tr, &err) ==
+              MCS_OK);
+        mcs_results_close(&h);
+    }
+    printf("fire_time attributes: bag %.6f s, retractor %.6f s\n", tb, tr);
+    CHECK(fabs(tb - (tc + 0.012)) < H_ODE);
+    CHECK(fabs(tr - (tc + tau_force(50) + 0.002)) < H_ODE);
+    snprintf(args, sizeof args, "stage3 %s -o %s --quiet", path, out);
+    r = cli_run(args);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "drop.yaml:31:");
+    CHECK_STR_CONTAINS(r->err, "stage-1 bodies");
+    snprintf(args, sizeof args, "rm -rf %s", dir);
+    if (system(args)) printf("  could not remove %s\n", dir);
+}
+
 int main(void)
 {
     RUN(test_fires_on_first_contact);
     RUN(test_no_contact_no_fire);
     RUN(test_bad_input_is_located);
+    RUN(test_fire_time_written);
     TEST_END();
 }

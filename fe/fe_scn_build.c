@@ -413,6 +413,7 @@ mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err
     fe_scn_solid_opts(root, &opts); /* gravity, mass scaling */
     out->end_time = mcs_node_num(fe_scn_get(sim, "end_time"));
     out->output_rate = mcs_node_num_or(sim, "output_rate", FE_SCN_OUTPUT_RATE_DEFAULT);
+    out->field_rate = mcs_node_num_or(sim, "field_rate", out->output_rate);
 
     fe_builder *b = NULL;
     mcs_error kerr = {0};

@@ -3,8 +3,9 @@
  * (stage1_mb/mb_couple.c; every stage shares it).
  *
  * What it reads: simulation.{end_time, time_step (upper bound on the stable step),
- * time_step_scale (safety factor, default 0.9), output_rate (default 10 kHz)}; fe.parts with
- * generated meshes (box, plate, square_tube, circular_tube, cylinder_shell, sphere_shell, line),
+ * time_step_scale (safety factor, default 0.9), output_rate (default 10 kHz), field_rate
+ * (of the displacement fields, default output_rate)}; fe.parts with generated meshes (box,
+ * plate, square_tube, circular_tube, cylinder_shell, sphere_shell, line),
  * keyword meshes (fe_scn_keyword.h: section and material may then come from the deck),
  * shell/solid/membrane/truss sections (hourglass form and coefficient, shear_factor,
  * tension_only), elastic, elastic_plastic (hardening curve or tangent_modulus, Cowper-Symonds)
@@ -36,6 +37,7 @@ typedef struct {
     fe_attach *att;       /* (natt), owned; their translations are fixed in the model */
     double end_time;      /* simulated duration [s]                                 */
     double output_rate;   /* sampling rate of the results [Hz]                      */
+    double field_rate;    /* sampling rate of the displacement fields [Hz]          */
 } fe_problem;
 
 /* build the model of a validated scenario; errors name FILE:LINE:COL and the key */

@@ -8,10 +8,12 @@
 #include "fe/fe_scn_slipring.h"
 #include "stage1_mb/mb_couple.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 struct mb_couple_out {
     long rows;              /* stage-1 output rows sampled so far             */
+    long field_every;       /* a field at every k-th row (simulation.field_rate) */
     fe_out_field field;     /* /stage1/mesh, /stage1/fields                   */
     fe_out_parts parts;     /* /stage1/parts/<part>/energy                    */
     fe_out_restraint rest;  /* /stage1/airbag, /stage1/retractor              */
@@ -28,6 +30,11 @@ mcs_status mb_couple_out_open(const mb_model *m, mcs_results *r, mb_couple_out *
     mb_couple_out *o = calloc(1, sizeof *o);
     if (!o) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     *out = o;
+    /* field_rate (its default: output_rate, every row) -> every k-th output row */
+    const fe_problem *p = &m->couple->fe;
+    o->field_every = 1;
+    if (p->field_rate != p->output_rate && p->field_rate > 0)
+        o->field_every = lround(fmax(1.0, m->output_rate / p->field_rate));
     mcs_status st = fe_out_meshes(r, 1, fm, err);
     if (!st) st = fe_out_field_open(r, 1, fm, &o->field, err);
     if (!st) st = fe_out_restraint_open(r, 1, fm, &o->rest, err);
@@ -46,7 +53,8 @@ mcs_status mb_couple_out_sample(const mb_model *m, const mb_state *s, mb_couple_
     mcs_status st = MCS_OK;
     /* the FE state is that of the last recorded row: a row per step at most */
     for (; o->rows < s->nrec && !st; o->rows++) {
-        st = fe_out_field_sample(fm, f, s->rec_t[o->rows], &o->field, err);
+        if (o->rows % o->field_every == 0)
+            st = fe_out_field_sample(fm, f, s->rec_t[o->rows], &o->field, err);
         if (!st) st = fe_out_restraint_sample(f, &o->rest, err);
         if (!st) st = fe_out_slipring_sample(f, &o->rings, err);
         if (!st) st = fe_out_contact_sample(fm, f, &o->contact, err);

@@ -9,7 +9,8 @@
  * One row per stage-1 output row, at the times of /stage1/time: the FE state is the one at the
  * end of the ODE step (mb_couple_advance has subcycled it to s->t); energies, bag, retractor,
  * ring and contact values are those of its last FE step (fe_state.energy_time, one FE step
- * before s->t at most), the displacement that of s->t.
+ * before s->t at most), the displacement that of s->t. With simulation.field_rate below
+ * output_rate, /stage1/fields holds every k-th row only, k = round(output_rate / field_rate).
  * The groups /stage1/airbag/<name> and /stage1/retractor/<name> exist from mb_couple_out_open
  * on, so that attributes (fire_time) can be set on them before the file is committed. */
 #ifndef MB_COUPLE_OUT_H

@@ -84,7 +84,8 @@ static mcs_status loop(const fe_problem *p, const s3_run_opts *ro, fe_state *s, 
 {
     const fe_model *m = p->model;
     const double every = 1.0 / p->output_rate;
-    double next_e = 0, next_f = every;
+    const double fevery = p->field_rate > 0 ? 1.0 / p->field_rate : every; /* fields */
+    double next_e = 0, next_f = fevery;
     mcs_progress prog;
     mcs_progress_opts po = mcs_progress_opts_default();
     po.quiet = ro->quiet;
@@ -104,7 +105,7 @@ static mcs_status loop(const fe_problem *p, const s3_run_opts *ro, fe_state *s, 
         }
         if (!st && s->time >= next_f - eps) {
             st = sample_field(m, s, o, err);
-            next_f += every * fmax(1.0, ceil((s->time - next_f) / every + 1e-9));
+            next_f += fevery * fmax(1.0, ceil((s->time - next_f) / fevery + 1e-9));
         }
         mcs_progress_update(&prog, s->time);
     }

@@ -168,6 +168,66 @@ static void test_layout_and_values(void)
     mcs_results_close(&h);
 }
 
+/* simulation.field_rate: /stage1/fields at every k-th row of /stage1/time (k = 5 for 1 kHz
+ * fields at 5 kHz output), the same frames as the full-rate file of test_layout_and_values;
+ * stage 3 likewise (a 2-element bar, 1 ms at 10 kHz, fields at 2 kHz) */
+static void test_field_rate(void)
+{
+    char scn[128], out[128], full[128], args[512], text[4096];
+    snprintf(text, sizeof text, SLED_YAML, 4.0, 40.0);
+    char *sim = strstr(text, "output_rate: 5 kHz}");
+    CHECK(sim != NULL);
+    if (!sim) return;
+    char tail[4096];
+    snprintf(tail, sizeof tail, "%s", sim + strlen("output_rate: 5 kHz}"));
+    snprintf(sim, sizeof text - (size_t)(sim - text), "output_rate: 5 kHz, field_rate: 1 kHz}%s",
+             tail);
+    snprintf(scn, sizeof scn, "%s/rate.yaml", tmpdir);
+    write_text(scn, text);
+    snprintf(out, sizeof out, "%s/rate.h5", tmpdir);
+    snprintf(full, sizeof full, "%s/sled.h5", tmpdir);
+    snprintf(args, sizeof args, "stage1 %s -o %s --quiet", scn, out);
+    CHECK(cli_run(args)->status == 0);
+    mcs_results *h = NULL, *g = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK && mcs_results_open(&g, full, &err) == MCS_OK);
+    mcs_array t = {0}, ft = {0}, d = {0}, dfull = {0};
+    CHECK(h && g && rd(h, "/stage1/time", &t) && rd(h, "/stage1/fields/time", &ft) &&
+          rd(h, "/stage1/fields/displacement", &d) && rd(g, "/stage1/fields/displacement", &dfull));
+    CHECK(t.n == 21 && ft.n == 5 && d.dims[0] == 5 && dfull.dims[0] == 21);
+    const size_t row = d.dims[1] * 3;
+    for (size_t i = 0; i < ft.n && 5 * i < t.n && d.dims[0] == 5 && dfull.dims[0] == 21; i++) {
+        CHECK(ft.v[i] == t.v[5 * i]);
+        CHECK(memcmp(d.v + i * row, dfull.v + 5 * i * row, row * sizeof *d.v) == 0);
+    }
+    mcs_array_free(&t), mcs_array_free(&ft), mcs_array_free(&d), mcs_array_free(&dfull);
+    mcs_results_close(&h);
+    mcs_results_close(&g);
+    /* stage 3 */
+    snprintf(scn, sizeof scn, "%s/belt3.yaml", tmpdir);
+    write_text(scn, "mcrash: 1\nname: belt\n"
+                    "simulation: {end_time: 1 ms, time_step: 50 us, output_rate: 10 kHz,"
+                    " field_rate: 2 kHz}\n"
+                    "fe:\n  parts:\n    - name: belt\n"
+                    "      mesh: {generate: line, origin: [0, 0, 0], end: [1, 0, 0], divisions: 2}\n"
+                    "      section: {type: truss, area: 40 mm^2}\n"
+                    "      material: {model: elastic, density: 1000, youngs_modulus: 10 GPa,"
+                    " poisson: 0}\n"
+                    "      initial_velocity: [1, 0, 0]\n");
+    snprintf(out, sizeof out, "%s/belt3.h5", tmpdir);
+    snprintf(args, sizeof args, "stage3 %s -o %s --quiet", scn, out);
+    CHECK(cli_run(args)->status == 0);
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    CHECK(h && rd(h, "/stage3/time", &t) && rd(h, "/stage3/fields/time", &ft));
+    printf("  field_rate: stage 1 %zu of 21 rows; stage 3 %zu fields, %zu rows\n", (size_t)5,
+           ft.n, t.n);
+    CHECK(ft.n == 3 && t.n >= 10); /* 0, 0.5, 1 ms */
+    for (size_t i = 0; i < ft.n; i++) /* the first step at or after each 0.5 ms */
+        CHECK(ft.v[i] > 0.5e-3 * (double)i - 1e-12 && ft.v[i] < 0.5e-3 * (double)i + 50e-6);
+    mcs_array_free(&t), mcs_array_free(&ft);
+    mcs_results_close(&h);
+}
+
 /* ---- the XDMF file ---- */
 
 static char *slurp(const char *path, size_t *n)
@@ -342,6 +402,7 @@ int main(void)
     if (!mkdtemp(tmpdir)) return 1;
     RUN(test_layout_and_values);
     RUN(test_xdmf_shows_parts_and_bodies);
+    RUN(test_field_rate);
     RUN(test_same_bytes_on_1_and_2_threads);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

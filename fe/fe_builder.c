@@ -45,6 +45,7 @@ void fe_builder_destroy(fe_builder **p)
     if (!p || !*p) return;
     fe_builder *b = *p;
     free(b->x);
+    free(b->x_sel);
     for (int k = 0; k < FE_NKIND; k++) {
         free(b->conn[k]);
         free(b->epart[k]);
@@ -369,12 +370,13 @@ int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, i
     unsigned char *mark = malloc((size_t)b->nnode);
     if (!mark) return -1;
     fe_builder_part_nodes(b, part, mark);
+    const double *x = b->x_sel ? b->x_sel : b->x; /* before a placement moved the part */
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int n = 0; n < b->nnode; n++)
         if (mark[n])
             for (int i = 0; i < 3; i++) {
-                lo[i] = fmin(lo[i], b->x[3 * n + i]);
-                hi[i] = fmax(hi[i], b->x[3 * n + i]);
+                lo[i] = fmin(lo[i], x[3 * n + i]);
+                hi[i] = fmax(hi[i], x[3 * n + i]);
             }
     double span = 0;
     for (int i = 0; i < 3; i++) span = fmax(span, hi[i] - lo[i]);
@@ -384,7 +386,7 @@ int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, i
         if (!mark[n]) continue;
         int take = where == FE_WHERE_ALL;
         if (!take) {
-            double c = b->x[3 * n + axis];
+            double c = x[3 * n + axis];
             take = ismax ? c >= hi[axis] - tol : c <= lo[axis] + tol;
         }
         if (take) {

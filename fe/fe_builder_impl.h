@@ -19,6 +19,8 @@ typedef struct {
 struct fe_builder {
     int nnode, cap_node;
     double *x;                                    /* (nnode x 3) [m]      */
+    double *x_sel;  /* positions `where` selects on, before a placement moved x (fe_scn_place.c);
+                       NULL: x (nnode x 3) [m] */
     int nelem[FE_NKIND], cap_conn[FE_NKIND], cap_epart[FE_NKIND];
     int *conn[FE_NKIND];                          /* connectivity per kind */
     int *epart[FE_NKIND];                         /* part per element      */

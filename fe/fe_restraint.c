@@ -105,6 +105,14 @@ mcs_status fe_builder_add_retractor(fe_builder *b, const fe_belt_retractor_desc 
     return MCS_OK;
 }
 
+double *fe_builder_retractor_anchor(fe_builder *b, const char *name)
+{
+    struct fe_restraint_list *l = b->restraints;
+    for (int i = 0; l && name && i < l->nret; i++)
+        if (strcmp(l->ret[i].name, name) == 0) return l->ret[i].anchor;
+    return NULL;
+}
+
 /* the faces of a bag's parts: shells and membranes, degenerate shells as triangles */
 static mcs_status bag_surface(const fe_builder *b, const fe_model *m, const fe_airbag_desc *d,
                               fe_airbag *bag, mcs_error *err)

@@ -57,6 +57,9 @@ fe_belt_retractor_desc fe_belt_retractor_desc_default(void);
 mcs_status fe_builder_add_airbag(fe_builder *b, const fe_airbag_desc *d, mcs_error *err);
 mcs_status fe_builder_add_retractor(fe_builder *b, const fe_belt_retractor_desc *d,
                                     mcs_error *err);
+/* the anchor of the retractor added as `name`, to move it with a placement (fe_scn_place.c);
+ * NULL if none [m] */
+double *fe_builder_retractor_anchor(fe_builder *b, const char *name);
 
 /* ---- the frozen model's part ---------------------------------------------------------- */
 

@@ -9,6 +9,7 @@
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_slipring.h"
 #include "fe/fe_scn_keyword.h"
+#include "fe/fe_scn_place.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -399,6 +400,12 @@ static mcs_status add_loads(fe_builder *b, const mcs_node *list, mcs_error *err)
 
 mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err)
 {
+    return fe_scn_build_placed(scn, NULL, out, err);
+}
+
+mcs_status fe_scn_build_placed(const mcs_scenario *scn, const fe_scn_place *place,
+                               fe_problem *out, mcs_error *err)
+{
     memset(out, 0, sizeof *out);
     const mcs_node *root = mcs_scenario_root(scn), *fe = fe_scn_get(root, "fe");
     const mcs_node *sim = fe_scn_get(root, "simulation");
@@ -429,6 +436,7 @@ mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err
     if (!st) st = fe_scn_add_restraints(b, fe, err); /* airbags, retractors (fe_scn_restraints.c) */
     if (!st) st = fe_scn_add_sliprings(b, fe, err);  /* belt slip rings (fe_scn_slipring.c) */
     if (!st) st = fe_scn_contact_add(b, fe, err); /* contacts, rigid ellipsoids */
+    if (!st && place) st = fe_scn_place_apply(b, fe, place, out, err); /* fe_scn_place.c */
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
         if (st)
@@ -444,6 +452,8 @@ void fe_problem_free(fe_problem *p)
     if (!p) return;
     fe_model_destroy(&p->model);
     free(p->att);
+    free(p->part_carrier);
+    p->part_carrier = NULL;
     p->att = NULL;
     p->natt = 0;
 }

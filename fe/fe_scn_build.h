@@ -31,10 +31,29 @@ typedef struct {
                                ring (scenario-owned)                                  */
 } fe_attach;
 
+/* a rigid placement of stage-1 bodies, applied to the FE parts they carry (stage 1's impact:
+ * block, stage1_mb/mb_impact.h; fe/fe_scn_place.c): a part is carried by the body of its
+ * attach:, of a retractor's anchor_body or of a slip ring's body on it, or by the carrier of a
+ * part it shares nodes with. The parts carried by a body of group `moved` move x' = R x + t
+ * with it (`where` still selects on the positions before the move), and so do their
+ * retractor anchors and slip-ring points on such bodies and the points that pick their nodes
+ * (springs, masses). Refused (the meaning is ambiguous): a part carried by bodies of two groups,
+ * a moved part held to the ground (translations in fe.boundary, a retractor anchor or a
+ * slip-ring point without a body), initial_velocity on a carried part (it takes its body's). */
+typedef struct fe_scn_place {
+    double R[9], t[3]; /* x' = R x + t, R row-major [-], [m]                                 */
+    int moved;         /* the group that moves; -1 none [-]                                   */
+    int (*group)(void *ctx, const char *body); /* group (>= 0) of a body by name; -1 unknown */
+    void *ctx;
+} fe_scn_place;
+
 typedef struct {
     fe_model *model;      /* owned                                                  */
     int natt;             /* nodes attached to bodies [-]                           */
     fe_attach *att;       /* (natt), owned; their translations are fixed in the model */
+    const mcs_node **part_carrier; /* (model->npart), owned: the body-name node carrying each
+                                      part (fe_scn_place above), NULL none; NULL without a
+                                      placement                                        */
     double end_time;      /* simulated duration [s]                                 */
     double output_rate;   /* sampling rate of the results [Hz]                      */
     double field_rate;    /* sampling rate of the displacement fields [Hz]          */
@@ -42,6 +61,9 @@ typedef struct {
 
 /* build the model of a validated scenario; errors name FILE:LINE:COL and the key */
 mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err);
+/* the same with the parts carried by bodies placed by `place` (NULL: fe_scn_build) */
+mcs_status fe_scn_build_placed(const mcs_scenario *scn, const fe_scn_place *place,
+                               fe_problem *out, mcs_error *err);
 void fe_problem_free(fe_problem *p);
 
 #endif

@@ -37,6 +37,14 @@ static int named(const char *name)
     return name[0] && memchr(name, 0, FE_NAME_MAX) != NULL;
 }
 
+double *fe_builder_slipring_point(fe_builder *b, const char *name)
+{
+    struct fe_slipring_list *l = b->sliprings;
+    for (int i = 0; l && name && i < l->n; i++)
+        if (strcmp(l->d[i].name, name) == 0) return l->d[i].point;
+    return NULL;
+}
+
 mcs_status fe_builder_add_slipring(fe_builder *b, const fe_slipring_desc *d, mcs_error *err)
 {
     if (!b->sliprings) b->sliprings = calloc(1, sizeof *b->sliprings);

@@ -53,6 +53,9 @@ typedef struct {
 
 fe_slipring_desc fe_slipring_desc_default(void);
 mcs_status fe_builder_add_slipring(fe_builder *b, const fe_slipring_desc *d, mcs_error *err);
+/* the point of the ring added as `name`, to move it with a placement (fe_scn_place.c); NULL if
+ * none [m] */
+double *fe_builder_slipring_point(fe_builder *b, const char *name);
 
 /* one ring of the frozen model; side 0 and 1 (side 0 the retractor segment if any, else the
  * element whose far node has the lower index) */

@@ -222,8 +222,8 @@ mcs_status mb_model_build(const mcs_scenario *scn, const mb_opts *opts, mb_model
     if (!st) st = mb_position_attach(root, m, err);
     if (!st) st = build_sensors(root, m, err);
     if (!st) st = mb_build_loadcells(root, m, err);
-    if (!st) st = mb_couple_build(scn, m, err); /* attached points at the t = 0 poses */
-    if (!st) st = mb_impact_apply(root, m, err); /* last: places the built motorcycle group */
+    if (!st) st = mb_impact_apply(root, m, err); /* places the built motorcycle group */
+    if (!st) st = mb_couple_build(scn, m, err);  /* last: FE parts placed with their bodies */
     if (st) {
         mb_model_destroy(&m);
         return st;
@@ -249,6 +249,7 @@ void mb_model_destroy(mb_model **pm)
     free(m->sensor);
     free(m->loadcell);
     mb_couple_destroy(&m->couple);
+    free(m->body_group);
     free(m);
     *pm = NULL;
 }

@@ -14,6 +14,39 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* impact group of a body by name for the FE placement (fe_scn_place): -1 unknown */
+static int body_group(void *ctx, const char *name)
+{
+    const mb_model *m = ctx;
+    int b = mb_model_body(m, name);
+    return b < 0 ? -1 : m->body_group ? m->body_group[b] : MB_GROUP_NONE;
+}
+
+/* the nodes of a part carried by a body start with the body's velocity field v + w x r
+ * (attached nodes, and the rest of the part, whose fixed translations keep theirs) */
+static void carried_velocities(const mb_model *m, mb_couple *c)
+{
+    fe_model *fm = c->fe.model;
+    if (!c->fe.part_carrier) return;
+    unsigned char *att = calloc((size_t)fm->nnode + 1, 1);
+    if (!att) return; /* only the start velocities of carried nodes are lost: never here */
+    for (int a = 0; a < c->natt; a++) att[c->node[a]] = 1;
+    for (int n = 0; n < fm->nnode; n++) {
+        const int ip = fm->node_part[n];
+        const mcs_node *bn = ip >= 0 ? c->fe.part_carrier[ip] : NULL;
+        const int b = bn ? mb_model_body(m, mcs_node_str(bn)) : -1;
+        if (b < 0) continue;
+        const mb_body_desc *d = &m->body[b];
+        double r[3], wr[3];
+        for (int i = 0; i < 3; i++) r[i] = fm->node_x0[3 * n + i] - d->pos[i];
+        mb_cross(d->angvel, r, wr);
+        for (int i = 0; i < 3; i++)
+            if (att[n] || !(fm->node_fix[n] & (1u << i)))
+                fm->node_v0[3 * n + i] = d->vel[i] + wr[i];
+    }
+    free(att);
+}
+
 mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
 {
     const mcs_node *root = mcs_scenario_root(scn), *fe = mcs_node_get(root, "fe");
@@ -21,15 +54,18 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
     mb_couple *c = calloc(1, sizeof *c);
     if (!c) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     m->couple = c;
-    mcs_status st = fe_scn_build(scn, &c->fe, err);
+    /* with an impact: block, the parts carried by the bodies it placed move with them and
+     * start with their velocity field (fe_scn_place); without, the parts start as the fe:
+     * block puts them (initial_velocity, default at rest) */
+    fe_scn_place pl = {.moved = MB_GROUP_MOTO, .group = body_group, .ctx = m};
+    memcpy(pl.R, m->place_R, sizeof pl.R);
+    memcpy(pl.t, m->place_t, sizeof pl.t);
+    mcs_status st = fe_scn_build_placed(scn, m->body_group ? &pl : NULL, &c->fe, err);
     if (st) return st;
     /* one gravity for the bodies and the FE parts: stage 1's (environment.gravity, 9.81 m/s^2
      * by default, where stage 3 defaults to none) */
     for (int i = 0; i < 3; i++)
         c->fe.model->opts.gravity[i] = m->gravity[i];
-    if (mcs_node_kind(mcs_node_get(root, "impact")) == MCS_NODE_MAP && c->fe.natt > 0)
-        return mcs_node_error(mcs_node_get(root, "impact"), err, MCS_ERR_UNSUPPORTED,
-                              "impact: with fe.parts[].attach not supported yet");
     int n = c->natt = c->fe.natt;
     c->node = calloc((size_t)(n ? n : 1), sizeof *c->node);
     c->body = calloc((size_t)(n ? n : 1), sizeof *c->body);
@@ -37,6 +73,8 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
     if (!c->node || !c->body || !c->local)
         return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     const fe_model *fm = c->fe.model;
+    /* local coordinates from the placed poses and nodes: the same as before the placement
+     * (one rigid motion), to round-off */
     for (int a = 0; a < n; a++) {
         const mcs_node *bn = mcs_node_get(c->fe.att[a].attach, "body");
         int b = mb_model_body(m, mcs_node_str(bn));
@@ -52,6 +90,7 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
         c->node[a] = c->fe.att[a].node;
         c->body[a] = b;
     }
+    carried_velocities(m, c);
     return mb_couple_rx_build(scn, m, err); /* triggers, anchors on bodies */
 }
 
@@ -217,10 +256,19 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
 
 double mb_couple_energy(const mb_model *m, const mb_state *s, double e[7])
 {
-    (void)m;
     const mb_couple_state *cs = s->couple;
-    const double *E = cs->fe->energy;
+    const fe_state *f = cs->fe;
+    const double *E = f->energy;
     e[0] = E[FE_E_kinetic];
+    if (f->nstep == 0) { /* before the first FE step: the initial velocities' (carried parts) */
+        const fe_model *fm = m->couple->fe.model;
+        e[0] = 0;
+        for (int n = 0; n < fm->nnode; n++) {
+            const double *v = f->node_v + 3 * n, *w = f->node_w + 3 * n;
+            e[0] += 0.5 * fm->node_mass[n] * mb_dot(v, v);
+            e[0] += 0.5 * fm->node_inertia[n] * mb_dot(w, w);
+        }
+    }
     e[1] = E[FE_E_potential];
     e[2] = E[FE_E_internal] + E[FE_E_hourglass];
     e[3] = E[FE_E_contact];

@@ -36,8 +36,9 @@ typedef struct mb_couple_state {
     struct mb_couple_rx_state *rx; /* triggers and anchors (mb_couple_rx.h)               */
 } mb_couple_state;
 
-/* the fe: block of a scenario with bodies -> m->couple (NULL without fe:); call before the
- * impact placement: attached points are taken at t = 0 poses */
+/* the fe: block of a scenario with bodies -> m->couple (NULL without fe:); call after the
+ * impact placement (mb_impact.h): with an impact: block the parts carried by the motorcycle
+ * group move with it, and every carried part starts with its body's velocity field v + w x r */
 mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err);
 void mb_couple_destroy(mb_couple **c);
 mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out,

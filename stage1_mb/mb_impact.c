@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { G_NONE = 0, G_MOTO = 1, G_OPP = 2 };
+enum { G_NONE = MB_GROUP_NONE, G_MOTO = MB_GROUP_MOTO, G_OPP = MB_GROUP_OPP };
 
 static const char *const default_moto[] = {"moto_*", "rider_*"};
 
@@ -225,7 +225,7 @@ mcs_status mb_impact_apply(const mcs_node *root, mb_model *m, mcs_error *err)
 {
     const mcs_node *imp = mcs_node_get(root, "impact");
     if (mcs_node_kind(imp) != MCS_NODE_MAP) return MCS_OK;
-    int *grp = calloc((size_t)(m->nbody > 0 ? m->nbody : 1), sizeof *grp);
+    int *grp = m->body_group = calloc((size_t)(m->nbody > 0 ? m->nbody : 1), sizeof *grp);
     if (!grp) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     assign_groups(imp, m, grp);
     plan p;
@@ -233,9 +233,10 @@ mcs_status mb_impact_apply(const mcs_node *root, mb_model *m, mcs_error *err)
     if (!st) st = check_ties(root, imp, m, grp, &p, err);
     if (!st) {
         place_moto(m, grp, &p);
+        memcpy(m->place_R, p.R, sizeof p.R); /* for the FE parts (mb_couple_build) */
+        memcpy(m->place_t, p.t, sizeof p.t);
         st = boost(imp, m, grp, G_MOTO, p.v_mc, p.h_mc, err);
     }
     if (!st) st = boost(imp, m, grp, G_OPP, p.v_op, p.h_op, err);
-    free(grp);
     return st;
 }

@@ -17,7 +17,9 @@
  *      both points at the same height (a difference is logged).
  * Without the two contact points steps 1-2 turn the motorcycle about the model origin.
  * Every motorcycle body's pose and velocity, the anchors and axes of the joints between them and
- * world attachment points move with it (a rigid motion).
+ * world attachment points move with it (a rigid motion); so do the FE parts carried by its
+ * bodies (fe.parts[].attach and the rest, fe/fe_scn_build.h fe_scn_place), placed by
+ * mb_couple_build after this from m->place_R, place_t and body_group.
  *
  * Speeds. Motorcycle bodies get motorcycle_speed along h_mc added to their (rotated) model
  * velocity; opponent bodies opponent_speed along the opponent's heading. A body of either group
@@ -36,7 +38,8 @@
 
 #include "stage1_mb/mb_model.h"
 
-/* apply root's impact: block (nothing without one); called last by mb_model_build */
+/* apply root's impact: block (nothing without one): the bodies' poses and velocities, and
+ * m->body_group, place_R, place_t; called by mb_model_build before mb_couple_build */
 mcs_status mb_impact_apply(const mcs_node *root, mb_model *m, mcs_error *err);
 
 #endif

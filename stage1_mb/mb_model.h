@@ -152,7 +152,14 @@ typedef struct {
     int nloadcell;          /* load-cell sensors (mb_loadcell.h)                              */
     struct mb_loadcell *loadcell; /* (nloadcell)                                              */
     struct mb_couple *couple;     /* FE parts coupled to the bodies (mb_couple.h), NULL none */
+    /* the impact: placement (mb_impact.c) of the motorcycle group, x' = R x + t; the FE parts
+     * carried by its bodies move with it (mb_couple.c, fe/fe_scn_place.c) */
+    double place_R[9], place_t[3]; /* rotation (row-major) [-], translation [m]             */
+    int *body_group;              /* impact group of each body: MB_GROUP_* (nbody); NULL without
+                                     an impact: block                                          */
 } mb_model;
+
+enum { MB_GROUP_NONE = 0, MB_GROUP_MOTO = 1, MB_GROUP_OPP = 2 }; /* impact groups (mb_impact.h) */
 
 /* build from a loaded scenario; every error names FILE:LINE:COL and the key */
 mcs_status mb_model_build(const mcs_scenario *scn, const mb_opts *opts, mb_model **out,

@@ -1,0 +1,224 @@
+/* tests for the impact: placement of FE parts carried by stage-1 bodies (stage1_mb/mb_impact.c,
+ * mb_couple.c, fe/fe_scn_place.c; docs/stage1_engine.md "Coupling to FE parts").
+ *
+ * A box body moto_frame (the motorcycle group by the default pattern moto_*) carries a steel
+ * truss bar attached at its x_min end. impact: turns the group by heading_angle psi about the
+ * vertical after rolling it by roll_angle phi about its x axis, brings motorcycle_contact to
+ * opponent_contact less initial_gap along the heading (plan view), and gives it the speed V
+ * along the heading (mb_impact.h). References, computed here by hand from those definitions:
+ * - x' = Rz(psi) Rx(phi) x + t, t = (po - gap h - R pm) in x and y, 0 in z, h = (cos psi,
+ *   sin psi, 0): every node of the bar, attached or not (a rigid motion of the whole part);
+ * - the bar's nodes start with the body's velocity field v + w x (x' - p'), v = V h, w = R w0;
+ * - the energy at t = 0: M V^2 / 2 + w0.I w0 / 2 (I in body axes) + sum of m_n |v_n|^2 / 2
+ *   with the bar's lumped masses rho A l_e (half at the two ends). */
+#include "fe/fe_state.h"
+#include "stage1_mb/mb_couple.h"
+#include "tests/harness.h"
+#include "tests/figures.h"
+#include "tests/mb_test_util.h"
+
+#define PSI (30 * M_PI / 180)
+#define PHI (10 * M_PI / 180)
+#define V_MC 10.0
+#define GAP 0.1
+#define NDIV 8
+
+static const double p0[3] = {0.5, 0, 0.8};       /* body CG before the placement [m] */
+static const double w0[3] = {0, 0.5, 2};         /* body angular velocity, model frame [rad/s] */
+static const double pm[3] = {1.2, 0, 0.3};       /* motorcycle_contact [m] */
+static const double po[3] = {3.0, 1.0, 0.29544}; /* opponent_contact [m] */
+static const double Ib[3] = {1.0, 2.0, 2.5};     /* principal inertia, body axes [kg m^2] */
+#define M_BODY 50.0
+
+#define BOX_YAML                                                                                   \
+    "mcrash: 1\nname: carried\n"                                                                   \
+    "simulation: {end_time: %s, time_step: 10 us, output_rate: 10 kHz}\n"                          \
+    "environment: {gravity: 0}\n"                                                                  \
+    "bodies:\n"                                                                                    \
+    "  - {name: moto_frame, mass: 50, inertia: [1.0, 2.0, 2.5], position: [0.5, 0, 0.8],\n"        \
+    "     velocity: [0, 0, 0], angular_velocity: [0, 0.5, 2]}\n"                                   \
+    "impact: {heading_angle: 30 deg, roll_angle: 10 deg, motorcycle_speed: 10 m/s,\n"              \
+    "         motorcycle_contact: [1.2, 0, 0.3], opponent_contact: [3.0, 1.0, 0.29544],\n"         \
+    "         initial_gap: 0.1}\n"                                                                 \
+    "fe:\n  parts:\n    - name: bar\n"                                                             \
+    "      mesh: {generate: line, origin: [0.6, 0.1, 0.8], end: [1.0, 0.1, 0.8], divisions: 8}\n"  \
+    "      section: {type: truss, area: 1e-4}\n"                                                   \
+    "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, poisson: 0.3}\n"     \
+    "      attach: {body: moto_frame, where: x_min}\n"
+
+static char yaml[4096];
+
+static const char *box(const char *end_time)
+{
+    snprintf(yaml, sizeof yaml, BOX_YAML, end_time);
+    return yaml;
+}
+
+/* R = Rz(psi) Rx(phi), row-major, written out */
+static void rot(double R[9])
+{
+    const double c = cos(PSI), s = sin(PSI), cr = cos(PHI), sr = sin(PHI);
+    const double Rz[9] = {c, -s, 0, s, c, 0, 0, 0, 1}, Rx[9] = {1, 0, 0, 0, cr, -sr, 0, sr, cr};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            R[3 * i + j] = 0;
+            for (int k = 0; k < 3; k++)
+                R[3 * i + j] += Rz[3 * i + k] * Rx[3 * k + j];
+        }
+}
+
+static void apply(const double R[9], const double x[3], double y[3])
+{
+    for (int i = 0; i < 3; i++)
+        y[i] = R[3 * i] * x[0] + R[3 * i + 1] * x[1] + R[3 * i + 2] * x[2];
+}
+
+static void place(const double R[9], const double x[3], double y[3])
+{
+    const double h[3] = {cos(PSI), sin(PSI), 0};
+    double rp[3], rx[3];
+    apply(R, pm, rp);
+    apply(R, x, rx);
+    const double t[3] = {po[0] - GAP * h[0] - rp[0], po[1] - GAP * h[1] - rp[1], 0};
+    for (int i = 0; i < 3; i++)
+        y[i] = rx[i] + t[i];
+}
+
+static void test_placement_and_velocity_field(void)
+{
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("carried.yaml", box("1 ms"), &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    const mb_couple *c = m->couple;
+    const fe_model *fm = c->fe.model;
+    CHECK(fm->nnode == NDIV + 1 && c->natt == 1);
+    double R[9], p1[3], w1[3], v1[3];
+    rot(R);
+    place(R, p0, p1);
+    apply(R, w0, w1);
+    const double h[3] = {cos(PSI), sin(PSI), 0};
+    for (int i = 0; i < 3; i++)
+        v1[i] = V_MC * h[i];
+    double ex = 0, ev = 0, ek = 0, mtot = 0;
+    for (int n = 0; n < fm->nnode; n++) {
+        /* the generator's node n lies at origin + n / NDIV (end - origin) before the move */
+        const double x[3] = {0.6 + 0.4 * n / NDIV, 0.1, 0.8};
+        double y[3], r[3], wr[3];
+        place(R, x, y);
+        for (int i = 0; i < 3; i++) {
+            ex = fmax(ex, fabs(fm->node_x0[3 * n + i] - y[i]));
+            r[i] = y[i] - p1[i];
+        }
+        wr[0] = w1[1] * r[2] - w1[2] * r[1];
+        wr[1] = w1[2] * r[0] - w1[0] * r[2];
+        wr[2] = w1[0] * r[1] - w1[1] * r[0];
+        double v2 = 0;
+        for (int i = 0; i < 3; i++) {
+            ev = fmax(ev, fabs(fm->node_v0[3 * n + i] - (v1[i] + wr[i])));
+            v2 += (v1[i] + wr[i]) * (v1[i] + wr[i]);
+        }
+        const double mn = 7850 * 1e-4 * 0.4 / NDIV * (n == 0 || n == NDIV ? 0.5 : 1);
+        ek += 0.5 * mn * v2;
+        mtot += mn;
+    }
+    /* the attached node: x_min before the move (node 0), at the body point it was on */
+    CHECK(c->node[0] == 0);
+    const double l0[3] = {0.1, 0.1, 0}; /* x_min end - CG, body axes (identity at t = 0) */
+    for (int i = 0; i < 3; i++)
+        CHECK_NEAR(c->local[i], l0[i], 1e-12);
+    /* the body itself, against the same hand placement */
+    mb_body_desc *d = &m->body[0];
+    for (int i = 0; i < 3; i++) {
+        CHECK_NEAR(d->pos[i], p1[i], 1e-12);
+        CHECK_NEAR(d->angvel[i], w1[i], 1e-12);
+        CHECK_NEAR(d->vel[i], v1[i], 1e-12);
+    }
+    printf("placed bar: position error %.3g m, velocity error %.3g m/s\n", ex, ev);
+    CHECK(ex < 1e-12);
+    CHECK(ev < 1e-12);
+    /* energy at t = 0 */
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    CHECK(st == MCS_OK);
+    const double eb = 0.5 * M_BODY * V_MC * V_MC +
+                      0.5 * (Ib[0] * w0[0] * w0[0] + Ib[1] * w0[1] * w0[1] + Ib[2] * w0[2] * w0[2]);
+    if (s) {
+        printf("energy at t = 0: %.9g J (hand %.9g J: body %.6g, bar %.6g, bar mass %.4g kg)\n",
+               s->e.total, eb + ek, eb, ek, mtot);
+        CHECK_REL(s->e.total, eb + ek, 1e-12);
+        CHECK_REL(s->e.kinetic, eb + ek, 1e-12);
+    }
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* a short run of the placed model: one energy balance of the body and the bar */
+static void test_short_run_drift(void)
+{
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("carried.yaml", box("20 ms"), &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    mb_state *s = NULL;
+    mcs_status st = mt_run(m, &s, &err);
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    double drift = s ? mb_energy_drift(m, s) : 1;
+    printf("placed bar, 20 ms: energy drift %.3g, FE steps %ld\n", drift,
+           s ? s->couple->substeps : 0);
+    FIG_TOL("stage1_engine.couple_impact_drift", "%.1e", drift, 2e-8);
+    CHECK(drift < 1e-3);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* what the placement refuses, at FILE:LINE:COL */
+static void expect_error(const char *what, const char *from, const char *to, const char *loc,
+                         const char *msg)
+{
+    char *y = malloc(8192);
+    strcpy(y, box("1 ms"));
+    char *p = strstr(y, from);
+    CHECK(p != NULL);
+    if (p) {
+        char tail[4096];
+        snprintf(tail, sizeof tail, "%s", p + strlen(from));
+        snprintf(p, 8192 - (size_t)(p - y), "%s%s", to, tail);
+    }
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("bad.yaml", y, &err);
+    printf("%s: %s\n", what, err.msg);
+    CHECK(m == NULL);
+    CHECK(err.status != MCS_OK);
+    CHECK(mcs_status_exit_code(err.status) == 2);
+    CHECK_STR_CONTAINS(err.msg, loc);
+    CHECK_STR_CONTAINS(err.msg, msg);
+    mb_model_destroy(&m);
+    free(y);
+}
+
+static void test_refusals(void)
+{
+    /* a translation held in the world on a moved part */
+    expect_error("boundary", "x_min}\n", "x_min}\n  boundary: [{part: bar, where: x_max}]\n",
+                 "bad.yaml:18:14", "moves with the impact placement");
+    /* an initial velocity on a carried part */
+    expect_error("initial_velocity", "      attach:",
+                 "      initial_velocity: [1, 0, 0]\n      attach:", "bad.yaml:17:25",
+                 "remove initial_velocity");
+}
+
+int main(void)
+{
+    RUN(test_placement_and_velocity_field);
+    RUN(test_short_run_drift);
+    RUN(test_refusals);
+    TEST_END();
+}

@@ -13,6 +13,10 @@ typedef struct {
     FILE *f;
     mcs_results *r;
     char h5[PATH_MAX];   /* the results file, relative to the .xmf          */
+    const char *cur;     /* the file the DataItems name: h5, or side_name    */
+    char side[PATH_MAX + 16];      /* the bodies' outlines file beside the .xmf */
+    char side_name[PATH_MAX + 16]; /* its name relative to the .xmf            */
+    mcs_results *sw;     /* its writer, created at the first outline       */
     mcs_xdmf_opts opts;
 } xw;
 
@@ -97,7 +101,7 @@ static void item_hdf(xw *w, int ind, const char *path, int rank, const size_t *d
     put_dims(w->f, rank, dims);
     fprintf(w->f, "\" NumberType=\"%s\" Precision=\"%d\" Format=\"HDF\">", is_int ? "Int" : "Float",
             is_int ? 4 : 8);
-    put_esc(w->f, w->h5);
+    put_esc(w->f, w->cur);
     fputc(':', w->f);
     put_esc(w->f, path);
     fputs("</DataItem>\n", w->f);
@@ -121,7 +125,7 @@ static void item_slab(xw *w, int ind, const char *path, int rank, const size_t *
     fputs("\" NumberType=\"Float\" Precision=\"8\"", f);
     if (!w->opts.legacy) {
         fputs(" Format=\"HDF\">", f);
-        put_esc(f, w->h5);
+        put_esc(f, w->cur);
         fputc(':', f);
         put_esc(f, path);
         fputc('|', f);
@@ -376,6 +380,7 @@ static mcs_status fe_stage(xw *w, int stage, int *ngrids, mcs_error *err)
 typedef struct {
     char name[256], pos[512], ori[512];
     int has_ori;
+    size_t nout, neout; /* outline nodes and triangles (/stageN/outlines/<body>), 0: none */
 } rb_body;
 
 static void put_body(xw *w, int ind, const rb_body *b, int id, size_t nt, size_t step)
@@ -418,6 +423,42 @@ static void put_body(xw *w, int ind, const rb_body *b, int id, size_t nt, size_t
     fputs("</Grid>\n", f);
 }
 
+/* a body's outline at frame k of the outlines file: triangles on its world nodes */
+static void put_outline(xw *w, int ind, int stage, const rb_body *b, int id, size_t nf,
+                        size_t k)
+{
+    FILE *f = w->f;
+    char pe[600], pn[600];
+    snprintf(pe, sizeof pe, "/stage%d/outlines/%s/elements", stage, b->name);
+    snprintf(pn, sizeof pn, "/stage%d/outlines/%s/nodes", stage, b->name);
+    size_t de[2] = {b->neout, 3}, dn[3] = {nf, b->nout, 3}, start[3] = {k, 0, 0};
+    size_t count[3] = {1, b->nout, 3}, out[2] = {b->nout, 3};
+    w->cur = w->side_name;
+    put_indent(f, ind);
+    fputs("<Grid Name=\"", f);
+    put_esc(f, b->name);
+    fputs("\" GridType=\"Uniform\">\n", f);
+    put_indent(f, ind + 1);
+    fprintf(f, "<Topology TopologyType=\"Triangle\" NumberOfElements=\"%zu\">\n", b->neout);
+    item_hdf(w, ind + 2, pe, 2, de, 1);
+    put_indent(f, ind + 1);
+    fputs("</Topology>\n", f);
+    put_indent(f, ind + 1);
+    fputs("<Geometry GeometryType=\"XYZ\">\n", f);
+    item_slab(w, ind + 2, pn, 3, dn, start, count, 2, out);
+    put_indent(f, ind + 1);
+    fputs("</Geometry>\n", f);
+    put_indent(f, ind + 1);
+    fputs("<Attribute Name=\"body_id\" AttributeType=\"Scalar\" Center=\"Grid\">\n", f);
+    put_indent(f, ind + 2);
+    fprintf(f, "<DataItem Dimensions=\"1\" NumberType=\"Int\" Format=\"XML\">%d</DataItem>\n", id);
+    put_indent(f, ind + 1);
+    fputs("</Attribute>\n", f);
+    put_indent(f, ind);
+    fputs("</Grid>\n", f);
+    w->cur = w->h5;
+}
+
 /* bodies with a position [nt,3]; an orientation, when there is one, must be [nt,4] */
 static mcs_status read_bodies(mcs_results *r, int stage, rb_body **out, int *nb, size_t *nt,
                               mcs_error *err)
@@ -453,6 +494,18 @@ static mcs_status read_bodies(mcs_results *r, int stage, rb_body **out, int *nb,
         if (x->has_ori && !st && (rk != 2 || d[0] != *nt || d[1] != 4))
             st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: must be [nt,4]", mcs_results_path(r),
                          x->ori);
+        /* an outline (stage-1 surfaces in the body frame) needs the orientation */
+        char pn[600], pe[600];
+        snprintf(pn, sizeof pn, "/stage%d/outlines/%s/nodes", stage, names[i]);
+        snprintf(pe, sizeof pe, "/stage%d/outlines/%s/elements", stage, names[i]);
+        size_t dn[3], de[3];
+        int rn = 0, re = 0;
+        if (!st && x->has_ori && mcs_results_kind(r, pn) == MCS_RES_DATASET &&
+            mcs_results_kind(r, pe) == MCS_RES_DATASET &&
+            !(st = mcs_results_shape(r, pn, &rn, dn, err)) &&
+            !(st = mcs_results_shape(r, pe, &re, de, err)) && rn == 2 && dn[1] == 3 && re == 2 &&
+            de[1] == 3 && dn[0] > 0 && de[0] > 0)
+            x->nout = dn[0], x->neout = de[0];
         k++;
     }
     mcs_results_list_free(&names, n);
@@ -463,6 +516,49 @@ static mcs_status read_bodies(mcs_results *r, int stage, rb_body **out, int *nb,
     *out = b;
     *nb = k;
     return MCS_OK;
+}
+
+/* the outline of body b in the world at frames fr[0..nf-1] into the outlines file:
+ * x = p + R(q) x_body; elements copied */
+static mcs_status write_outline(xw *w, int stage, const rb_body *b, const size_t *fr, size_t nf,
+                                mcs_error *err)
+{
+    char pn[600], pe[600];
+    snprintf(pn, sizeof pn, "/stage%d/outlines/%s/nodes", stage, b->name);
+    snprintf(pe, sizeof pe, "/stage%d/outlines/%s/elements", stage, b->name);
+    mcs_array xl = {0}, el = {0}, p = {0}, q = {0};
+    double *x = NULL;
+    mcs_status st = mcs_results_read(w->r, pn, &xl, err);
+    if (!st) st = mcs_results_read_int(w->r, pe, &el, err);
+    if (!st) st = mcs_results_read(w->r, b->pos, &p, err);
+    if (!st) st = mcs_results_read(w->r, b->ori, &q, err);
+    const size_t n = b->nout;
+    if (!st && !(x = malloc(sizeof *x * 3 * n * (nf ? nf : 1))))
+        st = MCS_ERR(err, MCS_ERR_NOMEM, "export: out of memory");
+    for (size_t k = 0; k < nf && !st; k++) {
+        const double *pp = p.v + 3 * fr[k], *qq = q.v + 4 * fr[k];
+        double qw = qq[0], qx = qq[1], qy = qq[2], qz = qq[3];
+        double nq = qw * qw + qx * qx + qy * qy + qz * qz;
+        double s = nq > 0 ? 2 / nq : 0;
+        double R[9] = {1 - s * (qy * qy + qz * qz), s * (qx * qy - qw * qz),
+                       s * (qx * qz + qw * qy),     s * (qx * qy + qw * qz),
+                       1 - s * (qx * qx + qz * qz), s * (qy * qz - qw * qx),
+                       s * (qx * qz - qw * qy),     s * (qy * qz + qw * qx),
+                       1 - s * (qx * qx + qy * qy)};
+        for (size_t j = 0; j < n; j++) {
+            const double *l = xl.v + 3 * j;
+            double *o = x + 3 * (k * n + j);
+            for (int i = 0; i < 3; i++)
+                o[i] = pp[i] + R[3 * i] * l[0] + R[3 * i + 1] * l[1] + R[3 * i + 2] * l[2];
+        }
+    }
+    if (!st && !w->sw) st = mcs_results_create(&w->sw, w->side, NULL, err);
+    size_t dn[3] = {nf, n, 3}, de[2] = {b->neout, 3};
+    if (!st) st = mcs_results_write(w->sw, pn, 3, dn, x, "m", err);
+    if (!st) st = mcs_results_write_int(w->sw, pe, 2, de, el.iv, "-", err);
+    free(x);
+    mcs_array_free(&xl), mcs_array_free(&el), mcs_array_free(&p), mcs_array_free(&q);
+    return st;
 }
 
 static mcs_status body_stage(xw *w, int stage, int *ngrids, mcs_error *err)
@@ -479,22 +575,32 @@ static mcs_status body_stage(xw *w, int stage, int *ngrids, mcs_error *err)
     snprintf(tp, sizeof tp, "/stage%d/time", stage);
     const char *cands[] = {tp, NULL};
     double *t = NULL;
-    st = read_times(w->r, cands, nt, &t, err);
+    size_t *fr = malloc(sizeof *fr * nt), nf = 0;
+    st = fr ? read_times(w->r, cands, nt, &t, err)
+            : MCS_ERR(err, MCS_ERR_NOMEM, "export: out of memory");
+    const size_t s = frame_stride(w, nt);
+    for (int i = 0; !st && i >= 0; i = next_frame((size_t)i, s, nt)) fr[nf++] = (size_t)i;
+    /* the outlines in the world at the frames shown, in the outlines file beside the .xmf */
+    for (int j = 0; j < nb && !st; j++)
+        if (b[j].nout) st = write_outline(w, stage, &b[j], fr, nf, err);
     if (!st) {
         FILE *f = w->f;
         fprintf(f, "    <Grid Name=\"stage%d_bodies\" GridType=\"Collection\" "
                    "CollectionType=\"Temporal\">\n", stage);
-        size_t s = frame_stride(w, nt);
-        for (int i = 0; i >= 0; i = next_frame((size_t)i, s, nt)) {
-            fprintf(f, "      <Grid Name=\"stage%d_bodies_%d\" GridType=\"Collection\" "
-                       "CollectionType=\"Spatial\">\n", stage, i);
-            fprintf(f, "        <Time Value=\"%.17g\"/>\n", t[i]);
-            for (int j = 0; j < nb; j++) put_body(w, 4, &b[j], j, nt, (size_t)i);
+        for (size_t k = 0; k < nf; k++) {
+            fprintf(f, "      <Grid Name=\"stage%d_bodies_%zu\" GridType=\"Collection\" "
+                       "CollectionType=\"Spatial\">\n", stage, fr[k]);
+            fprintf(f, "        <Time Value=\"%.17g\"/>\n", t[fr[k]]);
+            for (int j = 0; j < nb; j++) {
+                if (b[j].nout) put_outline(w, 4, stage, &b[j], j, nf, k);
+                else put_body(w, 4, &b[j], j, nt, fr[k]);
+            }
             fputs("      </Grid>\n", f);
         }
         fputs("    </Grid>\n", f);
         (*ngrids)++;
     }
+    free(fr);
     free(t);
     free(b);
     return st;
@@ -512,7 +618,12 @@ mcs_status mcs_results_export_xdmf(mcs_results *r, const char *xmf_path,
                                             "mcrash results file?)",
                        mcs_results_path(r));
     xw w = {.r = r, .opts = opts ? *opts : mcs_xdmf_opts_default()};
+    w.cur = w.h5;
     if (!xmf_path || !*xmf_path) return MCS_ERR(err, MCS_ERR_USAGE, "export --xdmf: no file");
+    /* the bodies' outlines go to <xmf>.bodies.h5 beside it (named by its base name) */
+    const char *xb = strrchr(xmf_path, '/') ? strrchr(xmf_path, '/') + 1 : xmf_path;
+    snprintf(w.side, sizeof w.side, "%s.bodies.h5", xmf_path);
+    snprintf(w.side_name, sizeof w.side_name, "%s.bodies.h5", xb);
     if (relative_name(mcs_results_path(r), xmf_path, w.h5, sizeof w.h5))
         return MCS_ERR(err, MCS_ERR_IO, "%s: cannot resolve the directory: %s", xmf_path,
                        strerror(errno));
@@ -537,6 +648,8 @@ mcs_status mcs_results_export_xdmf(mcs_results *r, const char *xmf_path,
         st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: no meshes (/stageN/mesh) and no bodies "
                                           "(/stageN/bodies) to show",
                      mcs_results_path(r));
+    if (!st && w.sw) st = mcs_results_commit(&w.sw, err);
+    mcs_results_abort(&w.sw);
     if (!st && rename(tmp, xmf_path) != 0)
         st = MCS_ERR(err, MCS_ERR_IO, "%s: cannot rename: %s", xmf_path, strerror(errno));
     if (st) remove(tmp);

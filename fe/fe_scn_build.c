@@ -418,6 +418,11 @@ mcs_status fe_scn_build_placed(const mcs_scenario *scn, const fe_scn_place *plac
     opts.dt_max = mcs_node_num_or(sim, "time_step", 0);
     opts.history_capacity = 0; /* the run samples the state itself (s3_run.c) */
     fe_scn_solid_opts(root, &opts); /* gravity, mass scaling */
+    /* mass damping, bulk viscosity, the energy check (fe_opts; defaults where not given) */
+    opts.damping = mcs_node_num_or(fe, "damping", opts.damping);
+    opts.bulk_q1 = mcs_node_num_or(fe, "bulk_q1", opts.bulk_q1);
+    opts.bulk_q2 = mcs_node_num_or(fe, "bulk_q2", opts.bulk_q2);
+    opts.energy_growth_limit = mcs_node_num_or(fe, "energy_growth_limit", opts.energy_growth_limit);
     out->end_time = mcs_node_num(fe_scn_get(sim, "end_time"));
     out->output_rate = mcs_node_num_or(sim, "output_rate", FE_SCN_OUTPUT_RATE_DEFAULT);
     out->field_rate = mcs_node_num_or(sim, "field_rate", out->output_rate);

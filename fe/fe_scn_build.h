@@ -13,7 +13,8 @@
  * force, curve); fe.rigid_walls (point, normal, velocity, method, penalty_scale, parts);
  * fe.airbags and fe.retractors (fe_scn_restraints.c); fe.contacts and fe.rigid_ellipsoids
  * (fe_scn_contact.h); foam and rigid materials, solid formulation full, fe.springs,
- * fe.masses, fe.mass_scaling and environment.gravity (fe_scn_solid.h).
+ * fe.masses, fe.mass_scaling and environment.gravity (fe_scn_solid.h); fe.damping, bulk_q1,
+ * bulk_q2 and energy_growth_limit (fe_opts).
  * What the kernel cannot do yet is refused with MCS_ERR_UNSUPPORTED at the key's
  * FILE:LINE:COL (wall friction and size, boundary tolerance, failure strain, foam damping);
  * nothing is silently dropped. */

@@ -202,6 +202,7 @@ void fe_accelerations(const fe_model *m, fe_state *s)
 /* constants of one integration step */
 typedef struct {
     double dt, dth, tn, c, d0, d1, hb, idth;
+    double ridth; /* (1 + c dth / 2) / dth: constraint force of a velocity jump per mass [1/s] */
     unsigned kin; /* bit w: wall w is kinematic */
 } integ_par;
 
@@ -209,7 +210,8 @@ typedef struct {
 static void integrate_chunk(const fe_model *m, fe_state *s, int k, const integ_par *P)
 {
     const double dt = P->dt, dth = P->dth, c = P->c, d0 = P->d0, d1 = P->d1;
-    const double hb = P->hb, idth = P->idth;
+    const double hb = P->hb, idth = P->idth, ridth = P->ridth;
+    double *react = s->node_react; /* a coupling's record of the reactions, or NULL */
     const unsigned kin = P->kin;
     const int stride = m->node_acc_stride, npart = m->npart, nwall = m->nwall;
     double *acc = s->node_acc + (size_t)stride * k, *pke = acc + FE_NACC_FIXED;
@@ -256,7 +258,9 @@ static void integrate_chunk(const fe_model *m, fe_state *s, int k, const integ_p
          * K(n+1) - K(n) = sum of the works exactly (fe_state.h); no interval before t = 0 */
         double ek = 0;
         for (int i = 0; i < 3; i++) {
-            double r = mass * (vn[i] - vfree[i]) * idth; /* constraint and wall reaction */
+            /* constraint and wall reaction: m (vn - vo) / dth = f + r - c m (vo + vn) / 2 */
+            double r = mass * (vn[i] - vfree[i]) * ridth;
+            if (react) react[3 * n + i] = r;
             double fd = -c * mass * 0.5 * (vo[i] + vn[i]);
             ek += vo[i] * vn[i];
             wb += 0.5 * (fe[i] + r) * hb * vo[i];
@@ -313,6 +317,7 @@ void fe_integrate(const fe_model *m, fe_state *s)
     P.c = m->opts.damping, P.d0 = 1 - 0.5 * P.c * P.dth, P.d1 = 1 / (1 + 0.5 * P.c * P.dth);
     P.hb = dtp > 0 ? P.dth : 0; /* weight of the interval before t */
     P.idth = 1 / P.dth;
+    P.ridth = (1 + 0.5 * P.c * P.dth) / P.dth; /* = idth without damping */
     P.kin = 0;
     for (int w = 0; w < m->nwall; w++)
         if (m->wall[w].method == FE_WALL_KINEMATIC) P.kin |= 1u << w;

@@ -170,6 +170,12 @@ typedef struct fe_state {
     const double *node_vkin;      /* prescribed velocities of the fixed translations this step,
                                      (nnode x 3), set by a coupling (stage1_mb/mb_couple.c);
                                      NULL: the model's node_vfix [m/s]                       */
+    double *node_react;           /* set by a coupling (nnode x 3): fe_integrate writes the
+                                     constraint (and kinematic wall) reaction on each node at t,
+                                     r = (m + dm) (v_new - v_free) (1 + c dth/2) / dth, the force
+                                     the constraint applies, mass damping c and run-time mass
+                                     scaling dm included; rigid-body nodes are not written;
+                                     NULL: not recorded [N]                                  */
 } fe_state;
 
 /* the velocities of the fixed translations this step: a coupling's (node_vkin) or the

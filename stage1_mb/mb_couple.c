@@ -124,13 +124,14 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
     if (!cs) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     size_t na = (size_t)(c->natt ? c->natt : 1), nn = (size_t)c->fe.model->nnode;
     cs->vkin = calloc(3 * (nn ? nn : 1), sizeof *cs->vkin);
+    cs->react = calloc(3 * (nn ? nn : 1), sizeof *cs->react);
     cs->imp = calloc(3 * na, sizeof *cs->imp);
     cs->force = calloc(3 * na, sizeof *cs->force);
     cs->xa = calloc(3 * na, sizeof *cs->xa);
     cs->vold = calloc(3 * na, sizeof *cs->vold);
     cs->fmean = calloc(3 * na, sizeof *cs->fmean);
     mcs_status st = MCS_OK;
-    if (!cs->vkin || !cs->imp || !cs->force || !cs->xa || !cs->vold || !cs->fmean)
+    if (!cs->vkin || !cs->react || !cs->imp || !cs->force || !cs->xa || !cs->vold || !cs->fmean)
         st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     if (!st) st = fe_state_create(c->fe.model, &cs->fe, err);
     if (!st) st = mb_couple_rx_state_create(m, cs, err);
@@ -149,6 +150,7 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
         mb_cross(d->angvel, r, wr);
         for (int i = 0; i < 3; i++) cs->vkin[3 * n + i] = cs->fe->node_v[3 * n + i] = d->vel[i] + wr[i];
     }
+    cs->fe->node_react = cs->react;
     *out = cs;
     return MCS_OK;
 }
@@ -159,7 +161,7 @@ void mb_couple_state_destroy(mb_couple_state **p)
     if (!cs) return;
     mb_couple_rx_state_destroy(&cs->rx);
     fe_state_destroy(&cs->fe);
-    free(cs->vkin), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold), free(cs->fmean);
+    free(cs->vkin), free(cs->react), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold), free(cs->fmean);
     free(cs);
     *p = NULL;
 }
@@ -196,7 +198,6 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
     memset(cs->imp, 0, 3 * (size_t)c->natt * sizeof *cs->imp);
     /* the impulses r dth of the FE steps at t_j span [t_j - dt_prev/2, t_j + dt/2] */
     const double i0 = f->time - 0.5 * f->dt_prev;
-    const double cdamp = fm->opts.damping;
     while (f->time < t1 - 1e-12 * h) {
         double rem = t1 - f->time;
         long k = (long)ceil(rem / f->dt - 1e-9);
@@ -210,7 +211,6 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
             }
         }
         const double dth = 0.5 * (dt + f->dt_prev);
-        const double d0 = 1 - 0.5 * cdamp * dth, d1 = 1 / (1 + 0.5 * cdamp * dth);
         double *vold = cs->vold;
         for (int a = 0; a < c->natt; a++)
             for (int i = 0; i < 3; i++)
@@ -225,11 +225,9 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         cs->substeps++;
         for (int a = 0; a < c->natt; a++) {
             const int n = c->node[a];
-            const double mass = fm->node_mass[n];
             for (int i = 0; i < 3; i++) {
                 double v0 = vold[3 * a + i], vn = f->node_v[3 * n + i];
-                double vfree = (d0 * v0 + dth * f->node_a[3 * n + i]) * d1;
-                double r = mass * (vn - vfree) / dth; /* constraint force on the node */
+                double r = cs->react[3 * n + i]; /* constraint force on the node (fe_integrate) */
                 cs->imp[3 * a + i] += r * dth;
                 cs->w_fe += r * dth * 0.5 * (v0 + vn);
             }

@@ -23,6 +23,8 @@ typedef struct mb_couple {
 typedef struct mb_couple_state {
     fe_state *fe;       /* FE state (owned)                                              */
     double *vkin;       /* prescribed velocities of the fixed translations (nnode x 3)    */
+    double *react;      /* constraint reactions the FE step records (fe_state.node_react)
+                           (nnode x 3) [N]                                                */
     double *imp;        /* constraint impulse on each attached node this ODE step (natt x 3) */
     double *force;      /* its mean force, applied to the body in the next step (natt x 3) */
     double *xa;         /* attached points in the world at the step's start (natt x 3) [m] */

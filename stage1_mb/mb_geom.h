@@ -107,6 +107,9 @@ mcs_status mb_mesh_create(mb_mesh **out, int nvert, const double *vert, int ntri
                           mcs_error *err);
 void mb_mesh_destroy(mb_mesh **m);
 int mb_mesh_ntri(const mb_mesh *m);
+/* the mesh's vertices (nvert x 3, mesh frame) and triangles (ntri x 3) as given to create */
+const double *mb_mesh_vert(const mb_mesh *m, int *nvert);
+const int *mb_mesh_tri(const mb_mesh *m);
 int mb_mesh_nnode(const mb_mesh *m); /* AABB tree nodes */
 
 /* ellipsoid against a posed mesh (pose NULL = identity). Fills *deepest with the deepest

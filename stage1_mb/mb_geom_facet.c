@@ -390,6 +390,17 @@ void mb_mesh_destroy(mb_mesh **pm)
     *pm = NULL;
 }
 
+const double *mb_mesh_vert(const mb_mesh *m, int *nvert)
+{
+    *nvert = m->nvert;
+    return m->vert;
+}
+
+const int *mb_mesh_tri(const mb_mesh *m)
+{
+    return m->tri;
+}
+
 int mb_mesh_ntri(const mb_mesh *m)
 {
     return m->ntri;

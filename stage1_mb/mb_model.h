@@ -317,6 +317,10 @@ void mb_channels_sample(const mb_model *m, const mb_state *s, double *row);
 mcs_status mb_channels_write(const mb_model *m, const mb_state *s, mcs_results *r, double *buf,
                              mcs_error *err);
 
+/* the bodies' surfaces as triangles in the body frame, /stage1/outlines/<body>/{nodes,
+ * elements} (mb_outline.c), for `mcrash export --xdmf` */
+mcs_status mb_outline_write(const mb_model *m, mcs_results *r, mcs_error *err);
+
 /* write /stage1 of the recorded state into an open results file (mb_output.c) */
 mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r, mcs_error *err);
 

@@ -87,6 +87,7 @@ mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r,
     if (!buf) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1 output: out of memory");
     mcs_status st = mcs_results_put_time(r, 1, nt, s->rec_t, err);
     if (!st) st = write_bodies(m, s, r, buf, err);
+    if (!st) st = mb_outline_write(m, r, err);
     if (!st) st = write_channels(m, s, r, buf, err);
     if (!st) st = mb_loadcell_write(m, s, r, err);
     if (!st) st = write_energy(s, r, buf, err);

@@ -209,7 +209,8 @@ static void test_field_rate(void)
                     "simulation: {end_time: 1 ms, time_step: 50 us, output_rate: 10 kHz,"
                     " field_rate: 2 kHz}\n"
                     "fe:\n  parts:\n    - name: belt\n"
-                    "      mesh: {generate: line, origin: [0, 0, 0], end: [1, 0, 0], divisions: 2}\n"
+                    "      mesh: {generate: line, origin: [0, 0, 0], end: [1, 0, 0],"
+                    " divisions: 2}\n"
                     "      section: {type: truss, area: 40 mm^2}\n"
                     "      material: {model: elastic, density: 1000, youngs_modulus: 10 GPa,"
                     " poisson: 0}\n"
@@ -257,9 +258,10 @@ static int parse_dims(const char *s, size_t *d, int max)
     return n;
 }
 
-/* every HDF DataItem of the .xmf names a dataset of h with the shape it states (a block:
- * the dataset's full shape and a block inside it); returns the number checked */
-static int check_items(mcs_results *h, const char *xmf)
+/* every HDF DataItem of the .xmf names a dataset of h (or, for "<xmf>.bodies.h5:", of the
+ * outlines file hs) with the shape it states (a block: the dataset's full shape and a block
+ * inside it); returns the number checked */
+static int check_items(mcs_results *h, mcs_results *hs, const char *xmf)
 {
     int n = 0;
     for (const char *p = strstr(xmf, "Format=\"HDF\""); p; p = strstr(p + 1, "Format=\"HDF\"")) {
@@ -280,9 +282,11 @@ static int check_items(mcs_results *h, const char *xmf)
         if (!colon) break;
         if (bar) *bar = 0;
         const char *path = colon + 1;
+        *colon = 0;
+        mcs_results *in = strcmp(ref, "sled.xmf.bodies.h5") == 0 ? hs : h;
         int rk = 0;
         mcs_error err = {0};
-        CHECK(mcs_results_shape(h, path, &rk, ds, &err) == MCS_OK);
+        CHECK(in && mcs_results_shape(in, path, &rk, ds, &err) == MCS_OK);
         if (bar) { /* start:stride:count:dims */
             char *f[4], *save = NULL;
             int k = 0;
@@ -346,7 +350,11 @@ static void test_xdmf_shows_parts_and_bodies(void)
         mcs_results_close(&h);
         return;
     }
-    int items = check_items(h, x);
+    char side[160];
+    snprintf(side, sizeof side, "%s.bodies.h5", xmf);
+    mcs_results *hs = NULL;
+    CHECK(mcs_results_open(&hs, side, &err) == MCS_OK);
+    int items = check_items(h, hs, x);
     double tf[64], tb[64];
     int nf = grid_times(x, "stage1_fe", tf, 64), nb = grid_times(x, "stage1_bodies", tb, 64);
     mcs_array t = {0};
@@ -358,6 +366,33 @@ static void test_xdmf_shows_parts_and_bodies(void)
         CHECK(tf[i] == t.v[i] && tb[i] == t.v[i]);
     CHECK(strstr(x, "<Grid Name=\"fabric\"") && strstr(x, "<Grid Name=\"belt\"") &&
           strstr(x, "<Grid Name=\"sled\""));
+    /* the sled's outline in the world lies on its ellipsoid (semi-axes 0.2, 0.1, 0.05 m about
+     * the centre of gravity, the scenario's) where /stage1/bodies/sled puts it */
+    mcs_array xo = {0}, pos = {0}, ori = {0};
+    CHECK(hs && rd(hs, "/stage1/outlines/sled/nodes", &xo) &&
+          rd(h, "/stage1/bodies/sled/position", &pos) &&
+          rd(h, "/stage1/bodies/sled/orientation", &ori));
+    double worst = 0;
+    CHECK(xo.rank == 3 && xo.dims[0] == t.n && xo.dims[1] == 62);
+    for (size_t k = 0; xo.rank == 3 && k < xo.dims[0] && k < t.n; k++) {
+        double R[9];
+        quat_rot(ori.v + 4 * k, R);
+        for (size_t j = 0; j < xo.dims[1]; j++) {
+            const double *v = xo.v + 3 * (k * xo.dims[1] + j), *p = pos.v + 3 * k;
+            const double semi[3] = {0.2, 0.1, 0.05};
+            double e = 0;
+            for (int a = 0; a < 3; a++) {
+                double l = R[a] * (v[0] - p[0]) + R[3 + a] * (v[1] - p[1]) +
+                           R[6 + a] * (v[2] - p[2]);
+                e += (l / semi[a]) * (l / semi[a]);
+            }
+            worst = fmax(worst, fabs(e - 1));
+        }
+    }
+    printf("  sled outline on its ellipsoid within %.1e (x^2/a^2 + ... - 1)\n", worst);
+    CHECK(worst < 1e-12);
+    mcs_array_free(&xo), mcs_array_free(&pos), mcs_array_free(&ori);
+    mcs_results_close(&hs);
     mcs_array_free(&t);
     mcs_results_close(&h);
     free(x);

@@ -1,5 +1,6 @@
-/* cmd_injury.c: `mcrash injury OUT.h5 [--stage N] [--json]`: the injury criteria of a results
- * file against their limits (the channel names are listed in analysis/an_injury.h) */
+/* cmd_injury.c: `mcrash injury A.h5 [B.h5 ...] [--stage N] [--json]`: the injury criteria of
+ * results files against their limits (the channel names are listed in analysis/an_injury.h);
+ * with several files one column per file (the ISO 13232 pairing: conventional and concept) */
 #include "analysis/an_injury.h"
 #include "cli/cli.h"
 #include "cli/cli_common.h"
@@ -8,6 +9,16 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#define INJ_MAXFILES 8
+
+/* one file's criteria */
+typedef struct {
+    const char *file;
+    int stage;          /* the stage evaluated */
+    an_injury_row *row; /* (n) */
+    int n;
+} inj_file;
 
 static void json_num(double v)
 {
@@ -41,7 +52,7 @@ static void print_json(const char *file, int stage, const an_injury_row *r, int 
         cli_json_string(r[i].channel);
         printf(", \"cfc\": %d}", r[i].cfc);
     }
-    printf("]}\n");
+    printf("]}");
 }
 
 static void print_table(const char *file, int stage, const an_injury_row *r, int n)
@@ -60,11 +71,49 @@ static void print_table(const char *file, int stage, const an_injury_row *r, int
     }
 }
 
+/* the row of criterion key in f, NULL when that file has none */
+static const an_injury_row *find_row(const inj_file *f, const char *key)
+{
+    for (int i = 0; i < f->n; i++)
+        if (strcmp(f->row[i].key, key) == 0) return &f->row[i];
+    return NULL;
+}
+
+/* one row per criterion found in any file (in the order first seen), one column per file:
+ * value and fraction of the limit */
+static void print_columns(const inj_file *f, int nf)
+{
+    printf("injury criteria, one column per file (value, fraction of the limit)\n");
+    for (int k = 0; k < nf; k++) printf("  [%d] %s, stage %d\n", k + 1, f[k].file, f[k].stage);
+    printf("%-22s %-4s %9s", "criterion", "unit", "limit");
+    for (int k = 0; k < nf; k++) printf("  %18s[%d]", "", k + 1);
+    printf("\n");
+    for (int k = 0; k < nf; k++) {
+        for (int i = 0; i < f[k].n; i++) {
+            const an_injury_row *r = &f[k].row[i];
+            int seen = 0;
+            for (int j = 0; j < k && !seen; j++) seen = find_row(&f[j], r->key) != NULL;
+            if (seen) continue;
+            char lim[32] = "-";
+            if (isfinite(r->limit)) snprintf(lim, sizeof lim, "%.6g", r->limit);
+            printf("%-22s %-4s %9s", r->label, r->unit, lim);
+            for (int j = 0; j < nf; j++) {
+                const an_injury_row *q = find_row(&f[j], r->key);
+                char frac[32] = "";
+                if (q && isfinite(q->fraction)) snprintf(frac, sizeof frac, "(%.3f)", q->fraction);
+                if (q) printf("  %11.4g %9s", q->value, frac);
+                else printf("  %11s %9s", "-", "");
+            }
+            printf("\n");
+        }
+    }
+}
+
 int cli_injury(int argc, char **argv)
 {
     if (cli_wants_help(argv[0], argc, argv)) return 0;
-    const char *file = NULL;
-    int stage = 0, json = 0;
+    const char *file[INJ_MAXFILES];
+    int nfile = 0, stage = 0, json = 0;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--json") == 0) {
             json = 1;
@@ -76,32 +125,49 @@ int cli_injury(int argc, char **argv)
                 return 2;
             }
             stage = (int)s;
-        } else if (argv[i][0] == '-' || file) {
+        } else if (argv[i][0] == '-') {
             fprintf(stderr, "mcrash injury: unexpected argument %s\n", argv[i]);
             return cli_usage(argv[0]);
+        } else if (nfile == INJ_MAXFILES) {
+            fprintf(stderr, "mcrash injury: at most %d files\n", INJ_MAXFILES);
+            return 2;
         } else {
-            file = argv[i];
+            file[nfile++] = argv[i];
         }
     }
-    if (!file) return cli_usage(argv[0]);
-    an_injury_row *rows = NULL;
-    int n = 0, used = 0;
-    mcs_error e = {0};
-    if (an_injury_evaluate(file, stage, &rows, &n, &used, &e)) {
-        fprintf(stderr, "mcrash injury: %s\n", e.msg);
-        return mcs_status_exit_code(e.status);
+    if (!nfile) return cli_usage(argv[0]);
+    inj_file f[INJ_MAXFILES] = {{0}};
+    int rc = 0, k;
+    for (k = 0; k < nfile && !rc; k++) {
+        mcs_error e = {0};
+        f[k].file = file[k];
+        if (an_injury_evaluate(file[k], stage, &f[k].row, &f[k].n, &f[k].stage, &e)) {
+            fprintf(stderr, "mcrash injury: %s\n", e.msg);
+            rc = mcs_status_exit_code(e.status);
+        } else if (f[k].n == 0) {
+            fprintf(stderr,
+                    "mcrash injury: %s: stage %d has none of the dummy channels (head_ax/ay/az, "
+                    "head_wx/wy/wz, neck_fx/fz/my, chest_ax/ay/az, chest_d, pelvis_ax/ay/az, "
+                    "femur_left_fz, femur_right_fz, tibia_left_mx/my/fz, ...) nor a head body\n",
+                    file[k], f[k].stage);
+            rc = 2;
+        }
     }
-    if (n == 0) {
-        fprintf(stderr,
-                "mcrash injury: %s: stage %d has none of the dummy channels (head_ax/ay/az, "
-                "head_wx/wy/wz, neck_fx/fz/my, chest_ax/ay/az, chest_d, pelvis_ax/ay/az, "
-                "femur_left_fz, femur_right_fz, tibia_left_mx/my/fz, ...) nor a head body\n",
-                file, used);
-        free(rows);
-        return 2;
+    if (!rc && json && nfile == 1) {
+        print_json(f[0].file, f[0].stage, f[0].row, f[0].n);
+        printf("\n");
+    } else if (!rc && json) {
+        printf("{\"files\": [");
+        for (k = 0; k < nfile; k++) {
+            if (k) printf(", ");
+            print_json(f[k].file, f[k].stage, f[k].row, f[k].n);
+        }
+        printf("]}\n");
+    } else if (!rc && nfile == 1) {
+        print_table(f[0].file, f[0].stage, f[0].row, f[0].n);
+    } else if (!rc) {
+        print_columns(f, nfile);
     }
-    if (json) print_json(file, used, rows, n);
-    else print_table(file, used, rows, n);
-    free(rows);
-    return 0;
+    for (k = 0; k < nfile; k++) free(f[k].row);
+    return rc;
 }

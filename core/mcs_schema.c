@@ -440,6 +440,15 @@ static const mcs_skey sphere_keys[] = {
     MESH_COMMON,
     END,
 };
+/* a flat (2D-design) gas bag: two panels sewn at their edges (fe/fe_mesh_shell.c) */
+static const mcs_skey flat_bag_keys[] = {
+    V("size", LEN, 2, 2, REQ | GT, 0, "panel size along the two in-plane axes [m]"),
+    Q("gap", LEN, REQ | GT, 0, 0, "distance of the two panels inside the seam [m]"),
+    Q("element_size", LEN, REQ | GT, 0, 0, "element edge length [m]"),
+    E("axis", CHOICES_AXIS, 0, "panel normal (default z)"),
+    V("origin", LEN, 3, 3, 0, 0, "centre of the bag [m]"),
+    END,
+};
 static const mcs_skey line_keys[] = {
     V("origin", LEN, 3, 3, REQ, 0, "start point [m]"),
     V("end", LEN, 3, 3, REQ, 0, "end point [m]"),
@@ -474,6 +483,7 @@ static const mcs_smap plate_map = {
 static const mcs_smap box_map = {.what = "box mesh", .keys = box_keys};
 static const mcs_smap sphere_shell_map = {.what = "sphere_shell mesh", .keys = sphere_keys};
 static const mcs_smap line_map = {.what = "line mesh", .keys = line_keys};
+static const mcs_smap flat_bag_map = {.what = "flat_bag mesh", .keys = flat_bag_keys};
 static const mcs_smap keyword_map = {.what = "keyword mesh", .keys = keyword_keys};
 /* "(keyword)": chosen when generate: is absent, never by name */
 static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
@@ -482,6 +492,7 @@ static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"plate", &plate_map},
                                              {"box", &box_map},
                                              {"sphere_shell", &sphere_shell_map},
+                                             {"flat_bag", &flat_bag_map},
                                              {"line", &line_map},
                                              {"(keyword)", &keyword_map},
                                              {0}};
@@ -700,6 +711,13 @@ static const mcs_skey slave_master_keys[] = {
     RS("master", PART, 1, REQ, "master side (symmetric: its nodes against the slave segments too)"),
     END,
 };
+/* FE nodes against stage-1 bodies' surfaces (stage1_mb/mb_couple_contact.c) */
+static const mcs_skey bodies_contact_keys[] = {
+    RS("parts", PART, 1, REQ, "FE parts whose nodes meet the bodies"),
+    RS("bodies", BODY, 1, REQ, "stage-1 bodies whose ellipsoid and facet surfaces they meet"),
+    END,
+};
+static const mcs_smap bodies_contact_map = {.what = "bodies contact", .keys = bodies_contact_keys};
 static const mcs_smap single_surface_map = {.what = "single_surface contact",
                                             .keys = single_surface_keys};
 static const mcs_smap two_surface_map = {.what = "two_surface contact", .keys = slave_master_keys};
@@ -709,6 +727,7 @@ static const mcs_svariant fe_contact_variants[] = {{"single_surface", &single_su
                                                    {"two_surface", &two_surface_map},
                                                    {"surface_to_surface", &s2s_map},
                                                    {"node_to_surface", &n2s_map},
+                                                   {"bodies", &bodies_contact_map},
                                                    {0}};
 static const mcs_skey fe_contact_keys[] = {
     D("type", "contact type"),

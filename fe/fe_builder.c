@@ -58,6 +58,10 @@ void fe_builder_destroy(fe_builder **p)
     fe_slipring_list_free(b);
     free(b->spring);
     free(b->mass);
+    for (int i = 0; i < b->nfacets; i++) {
+        free((void *)b->facets[i].vert);
+        free((void *)b->facets[i].tri);
+    }
     free(b);
     *p = NULL;
 }

@@ -42,6 +42,9 @@ struct fe_builder {
     int ncontact, nellipsoid;                     /* contact descriptors (fe_contact.h) */
     fe_contact_desc contact[FE_CONTACT_MAX];
     fe_ellipsoid_desc ellipsoid[FE_ELLIPSOID_MAX];
+    int nfacets;                                  /* rigid facet surfaces; vert and tri are
+                                                     the builder's copies (owned)      */
+    fe_facet_desc facets[FE_FACETS_MAX];
     struct fe_slipring_list *sliprings;           /* slip rings to add (fe_slipring.c) */
 };
 
@@ -59,6 +62,7 @@ mcs_status fe_mesh_generate(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_er
 /* sphere_shell and cylinder_shell (fe_mesh_shell.c) */
 mcs_status fe_mesh_sphere(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
 mcs_status fe_mesh_cylinder(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
+mcs_status fe_mesh_flat_bag(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err);
 /* fabric material keys of a membrane part (fe_fabric.c) */
 mcs_status fe_fabric_check(const fe_part_desc *d, mcs_error *err);
 void fe_restraint_list_free(fe_builder *b);

@@ -30,7 +30,10 @@ void fe_contact_state_destroy(fe_contact_state **p)
     free(c->ent_ft), free(c->ent_et), free(c->ell_ft), free(c->ell_et);
     free(c->node_fc), free(c->part_fric), free(c->part_elastic), free(c->if_force);
     free(c->if_energy), free(c->if_fric), free(c->ell_c), free(c->ell_R), free(c->ell_v);
-    free(c->ell_force);
+    free(c->ell_force), free(c->ell_w), free(c->ell_vl), free(c->ell_moment), free(c->ell_work);
+    free(c->fac_c), free(c->fac_R), free(c->fac_v), free(c->fac_w), free(c->fac_vl);
+    free(c->fac_force), free(c->fac_moment), free(c->fac_work), free(c->fac_ft), free(c->fac_et);
+    free(c->fac_side);
     free(c->rec_live), free(c->q_rec0), free(c->q_nrec), free(c->q_done), free(c->pow_chunk);
     free(c);
     *p = NULL;
@@ -84,6 +87,22 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
     s->ell_R = zalloc(9 * (size_t)c->nell, sizeof(double), &b);
     s->ell_v = zalloc(3 * (size_t)c->nell, sizeof(double), &b);
     s->ell_force = zalloc(3 * (size_t)c->nell, sizeof(double), &b);
+    const size_t nl = (size_t)c->nell, nf = (size_t)c->nfac, nfn = (size_t)c->nfac_node;
+    s->ell_w = zalloc(3 * nl, sizeof(double), &b);
+    s->ell_vl = zalloc(6 * nl, sizeof(double), &b);
+    s->ell_moment = zalloc(3 * nl, sizeof(double), &b);
+    s->ell_work = zalloc(nl, sizeof(double), &b);
+    s->fac_c = zalloc(3 * nf, sizeof(double), &b);
+    s->fac_R = zalloc(9 * nf, sizeof(double), &b);
+    s->fac_v = zalloc(3 * nf, sizeof(double), &b);
+    s->fac_w = zalloc(3 * nf, sizeof(double), &b);
+    s->fac_vl = zalloc(6 * nf, sizeof(double), &b);
+    s->fac_force = zalloc(3 * nf, sizeof(double), &b);
+    s->fac_moment = zalloc(3 * nf, sizeof(double), &b);
+    s->fac_work = zalloc(nf, sizeof(double), &b);
+    s->fac_ft = zalloc(3 * nfn, sizeof(double), &b);
+    s->fac_et = zalloc(nfn, sizeof(double), &b);
+    s->fac_side = zalloc(nfn, 1, &b);
     const size_t nq = (ne + FE_CONTACT_LIVE_CHUNK - 1) / FE_CONTACT_LIVE_CHUNK;
     s->rec_live = zalloc((size_t)s->slot_cap, sizeof(int), &b);
     s->q_rec0 = zalloc(nq, sizeof(int), &b);
@@ -95,7 +114,10 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
         !s->cell_off || !s->cell_item || !s->ent_cand_off || !s->ent_cand || !s->ent_flag ||
         !s->live || !s->slot || !s->ent_ft || !s->ent_et || !s->ell_ft || !s->ell_et ||
         !s->node_fc || !s->part_fric || !s->part_elastic || !s->if_force || !s->if_energy ||
-        !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v || !s->ell_force || !s->rec_live ||
+        !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v || !s->ell_force || !s->ell_w ||
+        !s->ell_vl || !s->ell_moment || !s->ell_work || !s->fac_c || !s->fac_R || !s->fac_v ||
+        !s->fac_w || !s->fac_vl || !s->fac_force || !s->fac_moment || !s->fac_work ||
+        !s->fac_ft || !s->fac_et || !s->fac_side || !s->rec_live ||
         !s->q_rec0 || !s->q_nrec || !s->q_done || !s->pow_chunk) {
         fe_contact_state_destroy(&s);
         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact state)");
@@ -123,24 +145,60 @@ void fe_contact_state_reset(const fe_model *m, fe_contact_state *s)
     memset(s->if_energy, 0, (size_t)c->nif * sizeof(double));
     memset(s->if_fric, 0, (size_t)c->nif * sizeof(double));
     memset(s->ell_force, 0, 3 * (size_t)c->nell * sizeof(double));
+    memset(s->ell_moment, 0, 3 * (size_t)c->nell * sizeof(double));
+    memset(s->ell_w, 0, 3 * (size_t)c->nell * sizeof(double));
+    memset(s->ell_vl, 0, 6 * (size_t)c->nell * sizeof(double));
+    memset(s->ell_work, 0, (size_t)c->nell * sizeof(double));
     for (int i = 0; i < c->nell; i++) {
         memcpy(s->ell_c + 3 * i, c->ell[i].center, 3 * sizeof(double));
         memcpy(s->ell_R + 9 * i, c->ell[i].R, 9 * sizeof(double));
         memcpy(s->ell_v + 3 * i, c->ell[i].velocity, 3 * sizeof(double));
+        memcpy(s->ell_vl + 6 * i, c->ell[i].velocity, 3 * sizeof(double));
+    }
+    const size_t nf = (size_t)c->nfac, nfn = (size_t)c->nfac_node;
+    memset(s->fac_v, 0, 3 * nf * sizeof(double));
+    memset(s->fac_w, 0, 3 * nf * sizeof(double));
+    memset(s->fac_vl, 0, 6 * nf * sizeof(double));
+    memset(s->fac_force, 0, 3 * nf * sizeof(double));
+    memset(s->fac_moment, 0, 3 * nf * sizeof(double));
+    memset(s->fac_work, 0, nf * sizeof(double));
+    memset(s->fac_ft, 0, 3 * nfn * sizeof(double));
+    memset(s->fac_et, 0, nfn * sizeof(double));
+    memset(s->fac_side, 0, nfn);
+    for (int i = 0; i < c->nfac; i++) {
+        memcpy(s->fac_c + 3 * i, c->fac[i].center, 3 * sizeof(double));
+        memcpy(s->fac_R + 9 * i, c->fac[i].R, 9 * sizeof(double));
     }
     s->work_nodes = s->work_bodies = s->dth_prev = s->pen_max = s->energy = 0;
     s->nrebuild = 0;
     s->need_rebuild = 1;
 }
 
+static void set_pose(double *C, double *Rs, double *V, double *W, const double c[3],
+                     const double R[9], const double v[3], const double w[3])
+{
+    memcpy(C, c, 3 * sizeof(double));
+    if (R) memcpy(Rs, R, 9 * sizeof(double));
+    memcpy(V, v, 3 * sizeof(double));
+    for (int k = 0; k < 3; k++) W[k] = w ? w[k] : 0;
+}
+
 void fe_contact_set_ellipsoid(const fe_model *m, fe_state *s, int i, const double c[3],
-                              const double R[9], const double v[3])
+                              const double R[9], const double v[3], const double w[3])
 {
     if (!m->contact || !s->contact || i < 0 || i >= m->contact->nell) return;
     fe_contact_state *cs = s->contact;
-    memcpy(cs->ell_c + 3 * i, c, 3 * sizeof(double));
-    if (R) memcpy(cs->ell_R + 9 * i, R, 9 * sizeof(double));
-    memcpy(cs->ell_v + 3 * i, v, 3 * sizeof(double));
+    set_pose(cs->ell_c + 3 * i, cs->ell_R + 9 * i, cs->ell_v + 3 * i, cs->ell_w + 3 * i, c, R,
+             v, w);
+}
+
+void fe_contact_set_facets(const fe_model *m, fe_state *s, int i, const double c[3],
+                           const double R[9], const double v[3], const double w[3])
+{
+    if (!m->contact || !s->contact || i < 0 || i >= m->contact->nfac) return;
+    fe_contact_state *cs = s->contact;
+    set_pose(cs->fac_c + 3 * i, cs->fac_R + 9 * i, cs->fac_v + 3 * i, cs->fac_w + 3 * i, c, R,
+             v, w);
 }
 
 /* ---- phase 1: one slave entry ------------------------------------------------------------ */
@@ -316,9 +374,10 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
     for (int i = 0; i < c->nell; i++) {
         const fe_contact_ellipsoid *E = &c->ell[i];
         const double *C = cs->ell_c + 3 * i, *R = cs->ell_R + 9 * i, *V = cs->ell_v + 3 * i;
+        const double *W = cs->ell_w + 3 * i;
         const double amax = fmax(E->semi[0], fmax(E->semi[1], E->semi[2]));
-        double *F = cs->ell_force + 3 * i;
-        F[0] = F[1] = F[2] = 0;
+        double *F = cs->ell_force + 3 * i, *M = cs->ell_moment + 3 * i;
+        F[0] = F[1] = F[2] = M[0] = M[1] = M[2] = 0;
         for (int j = E->node_begin; j < E->node_end; j++) {
             const int n = c->ell_node[j];
             const double *x = s->node_x + 3 * n;
@@ -341,12 +400,19 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
                 for (int k = 0; k < 3; k++) db[k] = nb[k] / len;
                 for (int k = 0; k < 3; k++)
                     dir[k] = R[3 * k] * db[0] + R[3 * k + 1] * db[1] + R[3 * k + 2] * db[2];
+                double qw[3]; /* the nearest surface point q - c, world */
+                for (int k = 0; k < 3; k++)
+                    qw[k] = R[3 * k] * qb[0] + R[3 * k + 1] * qb[1] + R[3 * k + 2] * qb[2];
                 double kp = E->scale * m->node_mass[n] / (dt0 * dt0), fn = -kp * g;
                 double f[3], el = 0.5 * kp * g * g, d = 0;
                 for (int k = 0; k < 3; k++) f[k] = fn * dir[k];
                 if (E->mu > 0) {
+                    /* slip against the surface point q, moving at V + W x (q - c) */
                     const double *v = s->node_v + 3 * n;
-                    double vr[3] = {v[0] - V[0], v[1] - V[1], v[2] - V[2]}, du[3], taken;
+                    double wr[3], du[3], taken;
+                    fe_cross(W, qw, wr);
+                    double vr[3];
+                    for (int k = 0; k < 3; k++) vr[k] = v[k] - V[k] - wr[k];
                     double vn = fe_dot(vr, dir);
                     for (int k = 0; k < 3; k++) du[k] = (vr[k] - vn * dir[k]) * dtp;
                     double et = fe_friction_update(ft, dir, du, kp, E->mu * fn, &taken);
@@ -355,10 +421,14 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
                     el += et;
                     for (int k = 0; k < 3; k++) f[k] += ft[k];
                 }
+                /* on the ellipsoid at its surface point q: the moment about the centre */
+                double mq[3];
                 for (int k = 0; k < 3; k++) {
                     cs->node_fc[3 * n + k] += f[k];
                     F[k] -= f[k];
                 }
+                fe_cross(qw, f, mq);
+                for (int k = 0; k < 3; k++) M[k] -= mq[k];
                 int ip = m->node_part[n];
                 if (ip >= 0) {
                     cs->part_elastic[ip] += el;
@@ -377,11 +447,38 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
 
 /* ---- the sub-stage ----------------------------------------------------------------------- */
 
-static double body_power(const fe_contact_model *c, const fe_contact_state *cs)
+/* the power of the moving rigid surfaces on the structure, -(F.V + M.W), with the velocities
+ * of the last step (vl); each surface's work is summed in ell_work / fac_work with weight hw,
+ * the total returned [W] */
+static double body_power(const fe_contact_model *c, fe_contact_state *cs, double hw)
 {
     double p = 0;
-    for (int i = 0; i < c->nell; i++) p -= fe_dot(cs->ell_force + 3 * i, cs->ell_v + 3 * i);
+    for (int i = 0; i < c->nell; i++) {
+        const double *vl = cs->ell_vl + 6 * i;
+        double pi = -fe_dot(cs->ell_force + 3 * i, vl) - fe_dot(cs->ell_moment + 3 * i, vl + 3);
+        cs->ell_work[i] += hw * pi;
+        p += pi;
+    }
+    for (int i = 0; i < c->nfac; i++) {
+        const double *vl = cs->fac_vl + 6 * i;
+        double pi = -fe_dot(cs->fac_force + 3 * i, vl) - fe_dot(cs->fac_moment + 3 * i, vl + 3);
+        cs->fac_work[i] += hw * pi;
+        p += pi;
+    }
     return p;
+}
+
+/* the velocities of this step become the last step's */
+static void keep_velocities(const fe_contact_model *c, fe_contact_state *cs)
+{
+    for (int i = 0; i < c->nell; i++) {
+        memcpy(cs->ell_vl + 6 * i, cs->ell_v + 3 * i, 3 * sizeof(double));
+        memcpy(cs->ell_vl + 6 * i + 3, cs->ell_w + 3 * i, 3 * sizeof(double));
+    }
+    for (int i = 0; i < c->nfac; i++) {
+        memcpy(cs->fac_vl + 6 * i, cs->fac_v + 3 * i, 3 * sizeof(double));
+        memcpy(cs->fac_vl + 6 * i + 3, cs->fac_w + 3 * i, 3 * sizeof(double));
+    }
 }
 
 /* ---- thread shares ----------------------------------------------------------------------
@@ -614,8 +711,9 @@ static void scatter(const fe_model *m, fe_state *s)
         }
     }
     for (int i = 0; i < c->nif; i++) cs->if_energy[i] += cs->if_fric[i];
-    /* phase 3: ellipsoids add to node_fc */
+    /* phase 3: ellipsoids and rigid facet surfaces add to node_fc */
     ellipsoid_forces(m, s);
+    fe_contact_facets_forces(m, s);
 }
 
 void fe_contact_begin(const fe_model *m, fe_state *s)
@@ -637,7 +735,7 @@ void fe_contact_begin(const fe_model *m, fe_state *s)
         pre_share(m, s, &r, &moved);
     }
     cs->work_nodes += 0.5 * cs->dth_prev * chunk_power(m, cs);
-    cs->work_bodies += 0.5 * cs->dth_prev * body_power(c, cs);
+    cs->work_bodies += 0.5 * cs->dth_prev * body_power(c, cs, 0.5 * cs->dth_prev);
     if (c->npass > 0 && (cs->need_rebuild || moved)) {
         fe_contact_search(m, s);
         fe_contact_candidates(m, s);
@@ -687,7 +785,8 @@ void fe_contact_finish(const fe_model *m, fe_state *s)
     }
     /* back half of this step's contact work */
     cs->work_nodes += 0.5 * hb * chunk_power(m, cs);
-    cs->work_bodies += 0.5 * hb * body_power(c, cs);
+    cs->work_bodies += 0.5 * hb * body_power(c, cs, 0.5 * hb);
+    keep_velocities(c, cs);
     cs->dth_prev = dth;
     /* energies at t */
     double e = 0;
@@ -699,6 +798,7 @@ void fe_contact_finish(const fe_model *m, fe_state *s)
     cs->energy = e;
     /* the ellipsoids move on with their velocity */
     for (int i = 0; i < 3 * c->nell; i++) cs->ell_c[i] += s->dt * cs->ell_v[i];
+    for (int i = 0; i < 3 * c->nfac; i++) cs->fac_c[i] += s->dt * cs->fac_v[i];
 }
 
 double fe_contact_energy(const fe_model *m, const fe_state *s)

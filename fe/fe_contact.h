@@ -17,7 +17,10 @@
 
 #define FE_CONTACT_MAX 16    /* most contact interfaces                                      */
 #define FE_CONTACT_PARTS 8   /* most parts on each side of an interface                      */
-#define FE_ELLIPSOID_MAX 32  /* most rigid ellipsoids                                        */
+#define FE_ELLIPSOID_MAX 64  /* most rigid ellipsoids (a rider's surfaces in several contacts) */
+#define FE_FACETS_MAX 32     /* most rigid facet (triangle mesh) surfaces                    */
+#define FE_FACET_DEPTH 0.01  /* rigid facets: a node counts within this distance of the mesh,
+                                and behind it down to this depth [m]                        */
 #define FE_CONTACT_LIVE_CHUNK 64 /* live entries per chunk of the threaded entry loop      */
 #define FE_CONTACT_CAND 4    /* candidate segments kept between searches, per slave node on
                                 average (one pool; entries past it scan their buckets)     */
@@ -65,11 +68,31 @@ typedef struct {
     char parts[FE_CONTACT_PARTS][FE_NAME_MAX];
 } fe_ellipsoid_desc;
 
+/* a rigid triangle mesh moving with a pose (stage-1 facet surfaces, stage1_mb/
+ * mb_couple_contact.c): one-sided, outward by the counter-clockwise vertex order; a node
+ * meets it from the outer side only (docs/fe.md "Contact") */
+typedef struct {
+    char name[FE_NAME_MAX];
+    double center[3];        /* reference point at t = 0, world [m]                            */
+    double orientation[4];   /* mesh -> world quaternion w, x, y, z (0 0 0 0 takes identity) [-] */
+    int nvert, ntri;         /* [-]                                                            */
+    const double *vert;      /* (nvert x 3) vertices about center, mesh frame (copied) [m]      */
+    const int *tri;          /* (ntri x 3) vertex indices, outward counter-clockwise (copied)  */
+    double penalty_scale;    /* k = s m_node / dt0^2 per node; 0 -> 0.1 [-]                     */
+    double friction;         /* Coulomb coefficient [-]                                        */
+    int nparts;              /* 0: every node with mass                                        */
+    char parts[FE_CONTACT_PARTS][FE_NAME_MAX];
+} fe_facet_desc;
+
 fe_contact_desc fe_contact_desc_default(void);
 
 /* the builder keeps the descriptors; fe_model_create resolves them */
 mcs_status fe_builder_add_contact(fe_builder *b, const fe_contact_desc *d, mcs_error *err);
 mcs_status fe_builder_add_ellipsoid(fe_builder *b, const fe_ellipsoid_desc *d, mcs_error *err);
+mcs_status fe_builder_add_facets(fe_builder *b, const fe_facet_desc *d, mcs_error *err);
+/* rigid ellipsoids and facet surfaces added so far: the next one's kernel index */
+int fe_builder_nellipsoid(const fe_builder *b);
+int fe_builder_nfacets(const fe_builder *b);
 
 /* ---- the frozen contact model (fe_model.contact; NULL when there is no contact) --------- */
 
@@ -95,8 +118,22 @@ typedef struct {
     char name[FE_NAME_MAX];
 } fe_contact_ellipsoid;
 
+typedef struct {
+    double center[3], R[9];    /* initial pose: reference point [m], mesh -> world rotation    */
+    double scale, mu;          /* penalty scale, friction [-]                                  */
+    int node_begin, node_end;  /* its nodes in fac_node [-]                                    */
+    int nvert, ntri;           /* [-]                                                          */
+    double *vert;              /* (nvert x 3) mesh frame [m] (owned)                           */
+    int *tri;                  /* (ntri x 3) (owned)                                           */
+    double *tri_n;             /* (ntri x 3) unit outward normals, mesh frame (owned)          */
+    double lo[3], cell;        /* grid over the mesh grown by FE_FACET_DEPTH: origin, cell [m] */
+    int dim[3];                /* cells along x, y, z [-]                                      */
+    int *cell_off, *cell_tri;  /* triangles near each cell (dim product + 1, ...) (owned)      */
+    char name[FE_NAME_MAX];
+} fe_contact_facets;
+
 typedef struct fe_contact_model {
-    int nif, npass, nseg, nent, nnode_touch, nell, nell_node;
+    int nif, npass, nseg, nent, nnode_touch, nell, nell_node, nfac, nfac_node;
     fe_contact_if *iface;        /* (nif)                                                      */
     fe_contact_pass *pass;       /* (npass)                                                    */
     int *seg_node;               /* (nseg x 4) segment nodes (triangle: 4th = 3rd)             */
@@ -115,6 +152,9 @@ typedef struct fe_contact_model {
     double dt0;                  /* stable step the cap refers to [s]                          */
     size_t bytes;                /* memory held [B]                                            */
     double *ell_ht;              /* (nell_node) half shell thickness at each ellipsoid node [m] */
+    fe_contact_facets *fac;      /* (nfac) rigid facet surfaces (fe_contact_facet.c)            */
+    int *fac_node;               /* (nfac_node) nodes each facet surface acts on                */
+    double *fac_ht;              /* (nfac_node) half shell thickness at each of them [m]        */
 } fe_contact_model;
 
 /* called by fe_model_create once the model is frozen (masses, dt_initial known) */
@@ -159,7 +199,18 @@ typedef struct fe_contact_state {
     double *if_energy;      /* (nif) elastic + dissipated energy of the interface [J]       */
     double *if_fric;        /* (nif) frictional dissipation so far [J]                        */
     double *ell_c, *ell_R, *ell_v; /* (nell x 3, 9, 3) current ellipsoid poses [m], [-], [m/s] */
+    double *ell_w;          /* (nell x 3) angular velocity over this step, world [rad/s]     */
+    double *ell_vl;         /* (nell x 6) velocity and angular velocity of the last step     */
     double *ell_force;      /* (nell x 3) force of the structure on each ellipsoid at t [N]  */
+    double *ell_moment;     /* (nell x 3) its moment about the ellipsoid's centre [N m]      */
+    double *ell_work;       /* (nell) work of each moving ellipsoid on the structure [J]      */
+    /* rigid facet surfaces, as the ellipsoids (pose of the reference point); fac_side: 1 once
+     * a node was seen on the outer side (a node first seen behind is left alone) */
+    double *fac_c, *fac_R, *fac_v, *fac_w, *fac_vl; /* (nfac x 3, 9, 3, 3, 6)               */
+    double *fac_force, *fac_moment, *fac_work;      /* (nfac x 3, 3, 1) [N], [N m], [J]     */
+    double *fac_ft;         /* (nfac_node x 3) friction history [N]                          */
+    double *fac_et;         /* (nfac_node) its tangential elastic energy [J]                 */
+    unsigned char *fac_side; /* (nfac_node) [-]                                              */
     double work_nodes;      /* work of contact forces on the nodes, synchronised with work_ext [J] */
     double work_bodies;     /* work of moving rigid bodies through contact [J]               */
     double dth_prev;        /* velocity-update step of the previous step [s]                 */
@@ -204,9 +255,15 @@ double fe_contact_energy(const fe_model *m, const struct fe_state *s);
 double fe_contact_work(const fe_model *m, const struct fe_state *s);
 
 /* move an ellipsoid (stage-1 coupling): centre [m], rotation body -> world (row major) [-],
- * velocity [m/s]; R may be NULL to keep the orientation */
+ * velocity [m/s] and angular velocity [rad/s] over the coming step (the surface moves at
+ * v + w x (x - c)); R may be NULL to keep the orientation, w NULL for none. The contact
+ * force and moment of the structure on it come back in ell_force, ell_moment, the work it
+ * did in ell_work. */
 void fe_contact_set_ellipsoid(const fe_model *m, struct fe_state *s, int i, const double c[3],
-                              const double R[9], const double v[3]);
+                              const double R[9], const double v[3], const double w[3]);
+/* the same for rigid facet surface i (c: its reference point) */
+void fe_contact_set_facets(const fe_model *m, struct fe_state *s, int i, const double c[3],
+                           const double R[9], const double v[3], const double w[3]);
 
 /* nearest point of an ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1 (body frame) to p; returns
  * the signed distance (< 0 inside) and the point in q [m] */

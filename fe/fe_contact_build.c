@@ -3,6 +3,7 @@
  * contact, rigid ellipsoids. Runs once inside fe_model_create. */
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_contact.h"
+#include "fe/fe_contact_impl.h"
 #include "fe/fe_elem.h"
 
 #include <limits.h>
@@ -81,6 +82,49 @@ mcs_status fe_builder_add_ellipsoid(fe_builder *b, const fe_ellipsoid_desc *d, m
     mcs_status st = check_parts(b, "ellipsoid", d->name, d->nparts, d->parts, 0, err);
     if (st) return st;
     b->ellipsoid[b->nellipsoid++] = *d;
+    return MCS_OK;
+}
+
+int fe_builder_nellipsoid(const fe_builder *b)
+{
+    return b->nellipsoid;
+}
+
+int fe_builder_nfacets(const fe_builder *b)
+{
+    return b->nfacets;
+}
+
+mcs_status fe_builder_add_facets(fe_builder *b, const fe_facet_desc *d, mcs_error *err)
+{
+    if (b->nfacets >= FE_FACETS_MAX)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: at most %d rigid facet surfaces", FE_FACETS_MAX);
+    if (d->nvert < 3 || d->ntri < 1 || !d->vert || !d->tri)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: facet surface '%s': no triangles", d->name);
+    for (int i = 0; i < 3 * d->nvert; i++)
+        if (!isfinite(d->vert[i]))
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: facet surface '%s': vertex not finite",
+                           d->name);
+    for (int i = 0; i < 3 * d->ntri; i++)
+        if (d->tri[i] < 0 || d->tri[i] >= d->nvert)
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: facet surface '%s': bad vertex index %d",
+                           d->name, d->tri[i]);
+    if (!(d->penalty_scale >= 0) || !(d->friction >= 0))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: facet surface '%s': penalty_scale and friction must be >= 0", d->name);
+    mcs_status st = check_parts(b, "facet surface", d->name, d->nparts, d->parts, 0, err);
+    if (st) return st;
+    double *v = malloc(sizeof(double) * 3 * (size_t)d->nvert);
+    int *t = malloc(sizeof(int) * 3 * (size_t)d->ntri);
+    if (!v || !t) {
+        free(v), free(t);
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (facets)");
+    }
+    memcpy(v, d->vert, sizeof(double) * 3 * (size_t)d->nvert);
+    memcpy(t, d->tri, sizeof(int) * 3 * (size_t)d->ntri);
+    fe_facet_desc *o = &b->facets[b->nfacets++];
+    *o = *d;
+    o->vert = v, o->tri = t;
     return MCS_OK;
 }
 
@@ -398,7 +442,7 @@ static mcs_status build_neighbours(fe_contact_model *c, const fe_model *m, mcs_e
     return MCS_OK;
 }
 
-static void quat_to_R(const double q0[4], double R[9])
+void fe_contact_quat_to_R(const double q0[4], double R[9])
 {
     double q[4] = {q0[0], q0[1], q0[2], q0[3]};
     double n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
@@ -428,7 +472,7 @@ static mcs_status build_ellipsoids(const fe_builder *b, fe_contact_model *c, con
         memcpy(E->center, d->center, sizeof E->center);
         memcpy(E->semi, d->semi_axes, sizeof E->semi);
         memcpy(E->velocity, d->velocity, sizeof E->velocity);
-        quat_to_R(d->orientation, E->R);
+        fe_contact_quat_to_R(d->orientation, E->R);
         E->scale = d->penalty_scale > 0 ? d->penalty_scale : 0.1;
         E->mu = d->friction;
         memset(mark, d->nparts ? 0 : 1, (size_t)m->nnode);
@@ -458,6 +502,7 @@ static mcs_status build_touch(fe_contact_model *c, const fe_model *m, unsigned c
     for (int e = 0; e < c->nent; e++) mark[c->ent_node[e]] = 1;
     for (int s = 0; s < 4 * c->nseg; s++) mark[c->seg_node[s]] = 1;
     for (int i = 0; i < c->nell_node; i++) mark[c->ell_node[i]] = 1;
+    for (int i = 0; i < c->nfac_node; i++) mark[c->fac_node[i]] = 1;
     c->touch = malloc(sizeof(int) * (size_t)(m->nnode ? m->nnode : 1));
     if (!c->touch) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
     for (int n = 0; n < m->nnode; n++)
@@ -492,13 +537,14 @@ void fe_contact_model_free(fe_model *m)
     free(c->seg_ht), free(c->seg_k);
     free(c->ent_node), free(c->ent_ht), free(c->nbr_off), free(c->nbr);
     free(c->touch), free(c->ell), free(c->ell_node), free(c->ell_ht);
+    fe_contact_facets_free(c);
     free(c);
     m->contact = NULL;
 }
 
 mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *err)
 {
-    if (b->ncontact == 0 && b->nellipsoid == 0) return MCS_OK;
+    if (b->ncontact == 0 && b->nellipsoid == 0 && b->nfacets == 0) return MCS_OK;
     fe_contact_model *c = calloc(1, sizeof *c);
     if (!c) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
     m->contact = c;
@@ -546,6 +592,7 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
     }
     if (!st && any_self) st = build_neighbours(c, m, err);
     if (!st) st = build_ellipsoids(b, c, m, cb.mark, cb.shell_ht, err);
+    if (!st) st = fe_contact_facets_build(b, c, m, cb.mark, cb.shell_ht, err);
     if (!st) st = build_touch(c, m, cb.mark, err);
     if (!st) {
         search_margin(c, m);

@@ -92,4 +92,16 @@ double fe_tri_nearest(const double p[3], const double a[3], const double b[3], c
 double fe_friction_update(double ft[3], const double n[3], const double du[3], double k,
                           double fmax, double *taken);
 
+/* rigid facet surfaces (fe_contact_facet.c): node lists and grids when the model is built
+ * (mark: nnode bytes of scratch, shell_ht: half shell thickness per node), freed with it; their
+ * forces in the serial phase 3 (after the ellipsoids) */
+mcs_status fe_contact_facets_build(const fe_builder *b, fe_contact_model *c,
+                                   const fe_model *m, unsigned char *mark,
+                                   const double *shell_ht, mcs_error *err);
+void fe_contact_facets_free(fe_contact_model *c);
+void fe_contact_facets_forces(const fe_model *m, fe_state *s);
+
+/* body -> world rotation of a quaternion w, x, y, z (all zero: identity) */
+void fe_contact_quat_to_R(const double q[4], double R[9]);
+
 #endif

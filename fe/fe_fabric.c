@@ -61,9 +61,19 @@ static void principal(const double t[3], double *a, double *b, double *cs, doubl
     double m = 0.5 * (t[0] + t[1]), h = 0.5 * (t[0] - t[1]), r = sqrt(h * h + t[2] * t[2]);
     *a = m + r;
     *b = m - r;
-    double th = 0.5 * atan2(t[2], h);
-    *cs = cos(th);
-    *sn = sin(th);
+    /* the angle th = atan2(t12, h) / 2 in (-pi/2, pi/2] by the half-angle formulas of
+     * cos 2th = h / r, sin 2th = t12 / r (no trigonometric calls: this runs twice per fabric
+     * element and step); the larger of cos th, |sin th| from its square root, the other from
+     * sin 2th = 2 sin th cos th, so neither loses digits */
+    if (!(r > 0)) {
+        *cs = 1, *sn = 0;
+    } else if (h >= 0) {
+        *cs = sqrt(0.5 * (1 + h / r));
+        *sn = t[2] / (2 * r * *cs);
+    } else {
+        *sn = copysign(sqrt(0.5 * (1 - h / r)), t[2]);
+        *cs = t[2] / (2 * r * *sn);
+    }
 }
 
 /* S = Q : e (tensor components; the shear pairs with 2 e12) */

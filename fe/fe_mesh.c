@@ -148,14 +148,16 @@ mcs_status fe_mesh_generate(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_er
         [FE_MESH_SQUARE_TUBE] = FE_SECTION_SHELL, [FE_MESH_CIRCULAR_TUBE] = FE_SECTION_SHELL,
         [FE_MESH_LINE] = FE_SECTION_TRUSS};
     static const char *const gname[] = {"", "box", "plate", "square_tube", "circular_tube", "line"};
-    if (m->generate == FE_MESH_SPHERE_SHELL || m->generate == FE_MESH_CYLINDER_SHELL) {
+    if (m->generate == FE_MESH_SPHERE_SHELL || m->generate == FE_MESH_CYLINDER_SHELL ||
+        m->generate == FE_MESH_FLAT_BAG) {
         if (t != FE_SECTION_SHELL && t != FE_SECTION_MEMBRANE)
             return MCS_ERR(err, MCS_ERR_TYPE,
-                           "fe: part '%s': mesh.generate: sphere_shell and cylinder_shell make "
-                           "shell or membrane elements",
+                           "fe: part '%s': mesh.generate: sphere_shell, cylinder_shell and "
+                           "flat_bag make shell or membrane elements",
                            name);
         if (m->axis < 0 || m->axis > 2)
             return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': mesh.axis must be x, y or z", name);
+        if (m->generate == FE_MESH_FLAT_BAG) return fe_mesh_flat_bag(b, ip, m, err);
         return m->generate == FE_MESH_SPHERE_SHELL ? fe_mesh_sphere(b, ip, m, err)
                                                    : fe_mesh_cylinder(b, ip, m, err);
     }

@@ -8,7 +8,15 @@
  * cylinder_shell: rings of quads along `axis` from w = 0 to length (as circular_tube), centred
  * on the axis through `origin`; with `closed`, two flat end caps of concentric rings whose
  * point counts grow with the radius, joined by triangle strips (degenerate shells; membrane
- * parts take triangles anyway), a fan around the centre. */
+ * parts take triangles anyway), a fan around the centre.
+ * flat_bag: a flat (2D-design) gas bag, two rectangular panels of size[0] x size[1] in the
+ * plane normal to `axis`, centred on `origin`, sewn along their edges: the edge nodes are
+ * shared (w = 0), the inner nodes of the panels lie at w = +-gap/2. Closed, all quads, each
+ * starting at a node whose diagonal (the membrane split, fe_builder.c) never joins two seam
+ * nodes, which both panels would share. Enclosed volume (grid spacings du, dv; nu x nv cells):
+ * shells gap du dv (nu - 1)(nv - 1) (a quad's split about its centroid encloses its bilinear
+ * mean height), membranes gap du dv ((nu - 1)(nv - 1) + 1/3) (a corner cell's two triangles
+ * both hold its inner node: mean height gap/6 instead of gap/8 per panel). */
 #include "fe/fe_builder_impl.h"
 
 #include <math.h>
@@ -173,5 +181,46 @@ mcs_status fe_mesh_cylinder(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_er
         if (st == MCS_OK) st = gen_cap(b, ip, m, m->length, ring, nc, 0, err);
         free(ring);
     }
+    return st;
+}
+
+mcs_status fe_mesh_flat_bag(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_error *err)
+{
+    const char *name = b->part[ip].name;
+    if (!(m->size[0] > 0) || !(m->size[1] > 0) || !(m->gap > 0) || !(m->element_size > 0) ||
+        !isfinite(m->size[0] + m->size[1] + m->gap + m->element_size))
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: part '%s': mesh: size, gap and element_size must be > 0", name);
+    double nud = fmax(2, floor(m->size[0] / m->element_size + 0.5));
+    double nvd = fmax(2, floor(m->size[1] / m->element_size + 0.5));
+    if (2 * nud * nvd > 5e7)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': mesh: too many elements", name);
+    const int nu = (int)nud, nv = (int)nvd, np = (nu + 1) * (nv + 1);
+    int *grid = malloc(sizeof(int) * 2 * (size_t)np); /* panel s: node of lattice (i, j) */
+    if (!grid) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory meshing '%s'", name);
+    mcs_status st = MCS_OK;
+    for (int s = 0; s < 2 && st == MCS_OK; s++)
+        for (int j = 0; j <= nv && st == MCS_OK; j++)
+            for (int i = 0; i <= nu && st == MCS_OK; i++) {
+                int edge = i == 0 || j == 0 || i == nu || j == nv, k = i + (nu + 1) * j;
+                if (edge && s == 1) {
+                    grid[np + k] = grid[k];
+                    continue;
+                }
+                double x[3], w = edge ? 0 : (s ? -0.5 : 0.5) * m->gap;
+                to_world(m->axis, m->size[0] * ((double)i / nu - 0.5),
+                         m->size[1] * ((double)j / nv - 0.5), w, m->origin, x);
+                st = fe_builder_add_node(b, x, &grid[s * np + k], err);
+            }
+    /* (u, v) counter-clockwise about +axis: the w > 0 panel faces +axis, the other is reversed */
+    for (int s = 0; s < 2 && st == MCS_OK; s++)
+        for (int j = 0; j < nv && st == MCS_OK; j++)
+            for (int i = 0; i < nu && st == MCS_OK; i++) {
+                const int *g = grid + s * np, k = i + (nu + 1) * j;
+                int c[4] = {g[k], g[k + 1], g[k + nu + 2], g[k + nu + 1]};
+                int r = (i == nu - 1 && j == 0) || (i == 0 && j == nv - 1); /* corners */
+                st = add_quad(b, ip, c[r], c[r + 1], c[r + 2], c[(r + 3) % 4], s, err);
+            }
+    free(grid);
     return st;
 }

@@ -32,8 +32,10 @@ typedef enum {
     FE_MESH_CIRCULAR_TUBE,  /* shell tube: diameter, length, element_size, axis */
     FE_MESH_LINE,           /* truss line: origin -> end, divisions[0]          */
     FE_MESH_SPHERE_SHELL,   /* closed sphere of quads: radius, element_size, origin = centre */
-    FE_MESH_CYLINDER_SHELL  /* circular cylinder: diameter, length, element_size, axis,
+    FE_MESH_CYLINDER_SHELL, /* circular cylinder: diameter, length, element_size, axis,
                                origin = centre of the w = 0 end; closed: end caps (triangles) */
+    FE_MESH_FLAT_BAG        /* closed flat bag, two panels sewn at their edges: size[0..1],
+                               gap, element_size, axis = panel normal, origin = centre */
 } fe_mesh_kind;
 
 typedef struct {
@@ -49,6 +51,7 @@ typedef struct {
     int axis;              /* tube axis / plate normal: 0 x, 1 y, 2 z [-]               */
     double radius;         /* sphere_shell radius [m]                                   */
     int closed;            /* cylinder_shell: add end caps (a closed surface) [-]       */
+    double gap;            /* flat_bag: distance of the panels' inner nodes [m]         */
 } fe_mesh_desc;
 
 typedef enum {

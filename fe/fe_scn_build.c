@@ -59,7 +59,8 @@ static mcs_status read_mesh(const mcs_node *mesh, fe_mesh_desc *d, mcs_error *er
     } else if (strcmp(gen, "circular_tube") == 0) {
         d->generate = FE_MESH_CIRCULAR_TUBE;
         d->diameter = mcs_node_num(fe_scn_get(mesh, "diameter"));
-    } else if (strcmp(gen, "cylinder_shell") == 0 || strcmp(gen, "sphere_shell") == 0) {
+    } else if (strcmp(gen, "cylinder_shell") == 0 || strcmp(gen, "sphere_shell") == 0 ||
+               strcmp(gen, "flat_bag") == 0) {
         return fe_scn_read_shell_mesh(mesh, gen, d, err); /* fe_scn_restraints.c */
     } else {
         char what[96];
@@ -400,11 +401,17 @@ static mcs_status add_loads(fe_builder *b, const mcs_node *list, mcs_error *err)
 
 mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err)
 {
-    return fe_scn_build_placed(scn, NULL, out, err);
+    return fe_scn_build_with(scn, NULL, NULL, NULL, out, err);
 }
 
 mcs_status fe_scn_build_placed(const mcs_scenario *scn, const fe_scn_place *place,
                                fe_problem *out, mcs_error *err)
+{
+    return fe_scn_build_with(scn, place, NULL, NULL, out, err);
+}
+
+mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
+                             fe_scn_hook hook, void *ctx, fe_problem *out, mcs_error *err)
 {
     memset(out, 0, sizeof *out);
     const mcs_node *root = mcs_scenario_root(scn), *fe = fe_scn_get(root, "fe");
@@ -440,8 +447,9 @@ mcs_status fe_scn_build_placed(const mcs_scenario *scn, const fe_scn_place *plac
     if (!st) st = fe_scn_solid_add(b, fe, err); /* springs, point masses */
     if (!st) st = fe_scn_add_restraints(b, fe, err); /* airbags, retractors (fe_scn_restraints.c) */
     if (!st) st = fe_scn_add_sliprings(b, fe, err);  /* belt slip rings (fe_scn_slipring.c) */
-    if (!st) st = fe_scn_contact_add(b, fe, err); /* contacts, rigid ellipsoids */
+    if (!st) st = fe_scn_contact_add(b, fe, hook != NULL, err); /* contacts, ellipsoids */
     if (!st && place) st = fe_scn_place_apply(b, fe, place, out, err); /* fe_scn_place.c */
+    if (!st && hook) st = hook(b, fe, ctx, err);
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
         if (st)

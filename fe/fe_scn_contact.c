@@ -90,14 +90,22 @@ static mcs_status add_ellipsoid(fe_builder *b, const mcs_node *e, mcs_error *err
     return fe_scn_relocate(st, e, &kerr, err);
 }
 
-mcs_status fe_scn_contact_add(fe_builder *b, const mcs_node *fe, mcs_error *err)
+mcs_status fe_scn_contact_add(fe_builder *b, const mcs_node *fe, int coupled, mcs_error *err)
 {
     const mcs_node *list = fe_scn_get(fe, "contacts");
     if (mcs_node_len(list) > FE_CONTACT_MAX)
         return mcs_node_error(list, err, MCS_ERR_RANGE, "at most %d contacts, got %d",
                               FE_CONTACT_MAX, mcs_node_len(list));
     for (int i = 0; i < mcs_node_len(list); i++) {
-        mcs_status st = add_contact(b, mcs_node_at(list, i), i, err);
+        const mcs_node *c = mcs_node_at(list, i);
+        const char *type = mcs_node_str(fe_scn_get(c, "type"));
+        if (type && strcmp(type, "bodies") == 0) { /* the coupling's (fe_scn_build_with) */
+            if (coupled) continue;
+            return mcs_node_error(fe_scn_get(c, "type"), err, MCS_ERR_UNSUPPORTED,
+                                  "type: bodies meets stage-1 bodies: only in a scenario with "
+                                  "bodies (stage 1)");
+        }
+        mcs_status st = add_contact(b, c, i, err);
         if (st) return st;
     }
     list = fe_scn_get(fe, "rigid_ellipsoids");

@@ -9,6 +9,7 @@
 #include "core/mcs_scenario.h"
 #include "fe/fe_model.h"
 
-mcs_status fe_scn_contact_add(fe_builder *b, const mcs_node *fe, mcs_error *err);
+/* coupled: contacts of type bodies are left to the stage-1 coupling (else refused) */
+mcs_status fe_scn_contact_add(fe_builder *b, const mcs_node *fe, int coupled, mcs_error *err);
 
 #endif

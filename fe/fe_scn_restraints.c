@@ -20,6 +20,13 @@ mcs_status fe_scn_read_shell_mesh(const mcs_node *mesh, const char *gen, fe_mesh
         d->radius = mcs_node_num(fe_scn_get(mesh, "radius"));
         return st;
     }
+    if (strcmp(gen, "flat_bag") == 0) {
+        d->generate = FE_MESH_FLAT_BAG;
+        if (!st) st = mcs_node_vec(fe_scn_get(mesh, "size"), d->size, 2, err);
+        d->gap = mcs_node_num(fe_scn_get(mesh, "gap"));
+        d->axis = fe_scn_axis_of(mcs_node_str(fe_scn_get(mesh, "axis")), 2);
+        return st;
+    }
     d->generate = FE_MESH_CYLINDER_SHELL;
     d->diameter = mcs_node_num(fe_scn_get(mesh, "diameter"));
     d->length = mcs_node_num(fe_scn_get(mesh, "length"));

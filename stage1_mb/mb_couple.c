@@ -7,6 +7,7 @@
  * fe_state.node_vkin), and the constraint impulse r dth of every step is summed. */
 #include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_couple_rx.h"
+#include "stage1_mb/mb_couple_contact.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -60,7 +61,8 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
     fe_scn_place pl = {.moved = MB_GROUP_MOTO, .group = body_group, .ctx = m};
     memcpy(pl.R, m->place_R, sizeof pl.R);
     memcpy(pl.t, m->place_t, sizeof pl.t);
-    mcs_status st = fe_scn_build_placed(scn, m->body_group ? &pl : NULL, &c->fe, err);
+    mcs_status st =
+        fe_scn_build_with(scn, m->body_group ? &pl : NULL, mb_couple_contact_add, m, &c->fe, err);
     if (st) return st;
     /* one gravity for the bodies and the FE parts: stage 1's (environment.gravity, 9.81 m/s^2
      * by default, where stage 3 defaults to none) */
@@ -100,6 +102,7 @@ void mb_couple_destroy(mb_couple **pc)
     if (!c) return;
     mb_couple_rx_destroy(&c->rx);
     fe_problem_free(&c->fe);
+    mb_couple_contact_destroy(&c->contact);
     free(c->node), free(c->body), free(c->local);
     free(c);
     *pc = NULL;
@@ -135,6 +138,7 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
         st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     if (!st) st = fe_state_create(c->fe.model, &cs->fe, err);
     if (!st) st = mb_couple_rx_state_create(m, cs, err);
+    if (!st && c->contact) st = mb_couple_contact_state_create(c->contact, &cs->contact, err);
     if (st) {
         mb_couple_state_destroy(&cs);
         return st;
@@ -161,7 +165,9 @@ void mb_couple_state_destroy(mb_couple_state **p)
     if (!cs) return;
     mb_couple_rx_state_destroy(&cs->rx);
     fe_state_destroy(&cs->fe);
-    free(cs->vkin), free(cs->react), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold), free(cs->fmean);
+    mb_couple_contact_state_destroy(&cs->contact);
+    free(cs->vkin), free(cs->react), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold);
+    free(cs->fmean);
     free(cs);
     *p = NULL;
 }
@@ -175,6 +181,7 @@ void mb_couple_apply(const mb_model *m, mb_state *s)
         mb_body_add_force_at_pos(s->world, c->body[a], cs->force + 3 * a, cs->xa + 3 * a);
     }
     mb_couple_anchor_apply(m, s);
+    if (c->contact) mb_couple_contact_apply(m, s);
 }
 
 mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
@@ -196,6 +203,7 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         mb_copy(x, x1 + 3 * a);
     }
     memset(cs->imp, 0, 3 * (size_t)c->natt * sizeof *cs->imp);
+    if (c->contact) mb_couple_contact_begin(m, s);
     /* the impulses r dth of the FE steps at t_j span [t_j - dt_prev/2, t_j + dt/2] */
     const double i0 = f->time - 0.5 * f->dt_prev;
     while (f->time < t1 - 1e-12 * h) {
@@ -210,7 +218,8 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
                 cs->vkin[3 * n + i] = (xt - f->node_x[3 * n + i]) / dt;
             }
         }
-        const double dth = 0.5 * (dt + f->dt_prev);
+        const double dth = 0.5 * (dt + f->dt_prev), tau0 = (f->time - t0) / h;
+        if (c->contact) mb_couple_contact_pose(m, s, tau0, h);
         double *vold = cs->vold;
         for (int a = 0; a < c->natt; a++)
             for (int i = 0; i < 3; i++)
@@ -223,6 +232,7 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         }
         mb_couple_anchor_collect(m, s, dth);
         cs->substeps++;
+        if (c->contact) mb_couple_contact_sum(m, s, tau0, dth);
         for (int a = 0; a < c->natt; a++) {
             const int n = c->node[a];
             for (int i = 0; i < 3; i++) {
@@ -248,6 +258,7 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         }
     }
     mb_couple_anchor_end(m, s, h, alpha, cs->started);
+    if (c->contact) mb_couple_contact_end(m, s, h, alpha, cs->started);
     cs->started = 1;
     return MCS_OK;
 }
@@ -273,6 +284,7 @@ double mb_couple_energy(const mb_model *m, const mb_state *s, double e[7])
     e[4] = E[FE_E_dissipated];
     /* loads other than the bodies', and the retractors' on the bodies carrying their anchors */
     e[5] = E[FE_E_external_work] - cs->w_fe + cs->rx->w_anchor;
+    if (m->couple->contact) e[5] -= mb_couple_contact_work(m, s); /* bodies' surfaces */
     e[6] = e[0] + e[1] + e[2] + e[3] + e[4] - e[5];
     return e[6];
 }

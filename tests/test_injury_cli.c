@@ -28,8 +28,9 @@ static double crit(const char *json, const char *key, const char *field)
  * (resultant = the pulse), upper-neck loads with the four hand-computed Nij points of
  * test_criteria.c, chest deflection D = -(0.002 + 1.5 t - 20 t^2 + 60 t^3 - 150 t^4)
  * (compression negative: V D > 0 as for a positive D), femur and tibia peaks, head angular
- * velocity, and an unfiltered pelvis body acceleration of a constant 30 g. */
-static void write_run(const char *path, int nt, double h)
+ * velocity, and an unfiltered pelvis body acceleration of a constant 30 g. The head pulse's
+ * amplitude A [g] is the caller's. */
+static void write_run(const char *path, int nt, double h, double A)
 {
     double *t = calloc((size_t)nt, sizeof(double)), *buf = calloc((size_t)nt * 3, sizeof(double));
     double *z = calloc((size_t)nt, sizeof(double));
@@ -38,7 +39,7 @@ static void write_run(const char *path, int nt, double h)
     if (!t || !buf || !z || mcs_results_create(&r, path, NULL, &e)) goto done;
     for (int i = 0; i < nt; i++) t[i] = i * h;
     mcs_results_put_time(r, 1, (size_t)nt, t, &e);
-    double A = 100, T = 0.012;
+    double T = 0.012;
     for (int k = 0; k < 2; k++) {
         for (int i = 0; i < nt; i++) {
             double s = t[i] - 0.01;
@@ -107,7 +108,7 @@ static void test_injury_table(void)
     snprintf(path, sizeof path, "%s/run.h5", tmpdir);
     int nt = 4001;
     double h = 2e-5;
-    write_run(path, nt, h);
+    write_run(path, nt, h, 100);
     snprintf(args, sizeof args, "injury %s --json", path);
     cli_result *r = cli_run(args);
     CHECK(r->status == 0);
@@ -159,6 +160,51 @@ static void test_injury_table(void)
     CHECK_STR_CONTAINS(r->err, "stage2");
 }
 
+/* two files side by side (`mcrash injury A.h5 B.h5`): one column per file, each the value of
+ * its own file; head pulses of 100 g and 50 g: HIC scales as A^2.5 (Eq. 7 of the 2023 paper),
+ * so B's HIC15 is A's / 2^2.5 = 0.1768 of it; JSON: {"files": [A's object, B's object]} */
+static void test_injury_two_files(void)
+{
+    char a[128], b[128], args[512];
+    snprintf(a, sizeof a, "%s/a.h5", tmpdir);
+    snprintf(b, sizeof b, "%s/b.h5", tmpdir);
+    write_run(a, 4001, 2e-5, 100);
+    write_run(b, 4001, 2e-5, 50);
+    snprintf(args, sizeof args, "injury %s %s --json", a, b);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "{\"files\": [{\"file\": ");
+    const char *second = strstr(r->out, "}]}, {\"file\": ");
+    CHECK(second != NULL);
+    if (!second) return;
+    double h1 = crit(r->out, "hic15", "value"), h2 = crit(second, "hic15", "value");
+    CHECK_REL(h1, hic_half_sine(100, 0.012, 0.015), 1.5e-5);
+    CHECK_REL(h2 / h1, pow(0.5, 2.5), 1e-9);
+    CHECK_REL(crit(second, "neck_tension", "value"), 3403, 1e-9);
+    /* the table: one row per criterion, A's then B's value on it */
+    snprintf(args, sizeof args, "injury %s %s", a, b);
+    r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "[1] ");
+    CHECK_STR_CONTAINS(r->out, "[2] ");
+    const char *row = strstr(r->out, "\nHIC15 ");
+    CHECK(row != NULL);
+    if (!row) return;
+    char label[16], unit[8];
+    double lim = 0, v1 = 0, v2 = 0, f1 = 0, f2 = 0;
+    int got = sscanf(row, " %15s %7s %lf %lf (%lf) %lf (%lf)", label, unit, &lim, &v1, &f1, &v2,
+                     &f2);
+    CHECK(got == 7);
+    CHECK_REL(v1, h1, 1e-3); /* 4 digits printed */
+    CHECK_REL(v2, h2, 1e-3);
+    CHECK_NEAR(f2, h2 / lim, 5e-4); /* 3 decimals printed */
+    /* a missing file among several: exit 2 naming it */
+    snprintf(args, sizeof args, "injury %s /nonexistent/b.h5", a);
+    r = cli_run(args);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "/nonexistent/b.h5");
+}
+
 static void test_injury_errors(void)
 {
     cli_result *r = cli_run("injury /nonexistent/run.h5");
@@ -189,6 +235,7 @@ int main(void)
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_injcli_XXXXXX");
     if (!mkdtemp(tmpdir)) return 1;
     RUN(test_injury_table);
+    RUN(test_injury_two_files);
     RUN(test_injury_errors);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

@@ -104,6 +104,46 @@ static void test_retractor_scenario(void)
     remove(out);
 }
 
+/* mesh.generate: flat_bag (fe/fe_mesh_shell.c), a 2D-design bag of two sewn panels: closed
+ * (the airbag builder accepts it) and its volume at t = 0 by hand: the seam nodes at w = 0,
+ * the panels' inner nodes at +-g/2, each membrane quad split into two triangles (volume under
+ * a triangle: its area x the mean of its 3 heights). Inner cells enclose g du dv (both panels),
+ * edge cells g/2 du dv (either diagonal: triangles with one and two raised nodes), corner cells
+ * g/3 du dv (the diagonal through the inner node: both triangles hold it). With nu x nv cells:
+ * V0 = g du dv ((nu - 2)(nv - 2) + (nu + nv - 4) + 4/3) = g du dv ((nu - 1)(nv - 1) + 1/3). */
+static void test_flat_bag(void)
+{
+    char scn[128], out[128], args[512];
+    snprintf(scn, sizeof scn, "%s/flat.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/flat.h5", tmpdir);
+    write_text(scn, "mcrash: 1\nname: flat\nsimulation: {end_time: 0.2 ms, output_rate: 10 kHz}\n"
+                    "fe:\n  parts:\n"
+                    "    - name: bag\n"
+                    "      mesh: {generate: flat_bag, size: [0.5, 0.4], gap: 10 mm,"
+                    " element_size: 25 mm, axis: x, origin: [1, 0, 1]}\n"
+                    "      section: {type: membrane, thickness: 0.4 mm}\n"
+                    "      material: {model: fabric, density: 1000, youngs_modulus: 500 MPa,"
+                    " poisson: 0.3}\n"
+                    "  airbags:\n"
+                    "    - {name: bag, parts: [bag], initial_pressure: 120 kPa}\n");
+    snprintf(args, sizeof args, "run %s -o %s --quiet --json", scn, out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    if (r->status) fprintf(stderr, "%s\n", r->err);
+    CHECK_STR_CONTAINS(r->out, "\"elements\": 1280"); /* 2 panels x 20 x 16 quads x 2 */
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    mcs_array V = {0};
+    CHECK(rd(h, "/stage3/airbag/bag/volume", &V) && V.n > 0);
+    const double V0 = 0.010 * 0.025 * 0.025 * (19 * 15 + 1.0 / 3);
+    printf("  flat_bag: V0 %.6e m^3 (closed form %.6e)\n", V.n ? V.v[0] : 0, V0);
+    if (V.n) CHECK_REL(V.v[0], V0, 1e-12);
+    mcs_array_free(&V);
+    mcs_results_close(&h);
+}
+
 /* a gas bag on an open surface, and one on a part that does not exist, are refused at the
  * bag's line with what is wrong */
 static void test_bad_bags_located(void)
@@ -164,6 +204,7 @@ int main(void)
     if (!mkdtemp(tmpdir)) return 1;
     RUN(test_airbag_scenario);
     RUN(test_retractor_scenario);
+    RUN(test_flat_bag);
     RUN(test_bad_bags_located);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

@@ -1,0 +1,431 @@
+/* tests for stage1_mb/mb_couple_contact: fe.contacts[] of type bodies (FE nodes against the
+ * ellipsoid and facet surfaces of stage-1 bodies) in a coupled stage-1 run.
+ *
+ * The plates that stand for fixed FE surfaces are heavy (density x 1000): every node is fixed,
+ * so their mass only sets the FE stable step dt0 (and the per-node penalty k = s m_n / dt0^2,
+ * which the closed forms take from the model as an input), and keeps the subcycles few. */
+#include "fe/fe_contact.h"
+#include "fe/fe_state.h"
+#include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_couple_contact.h"
+#include "tests/harness.h"
+#include "tests/figures.h"
+#include "tests/mb_test_util.h"
+
+/* a ball (sphere radius R, mass M) over a fixed square plate of quads in z = 0 */
+#define DROP_YAML                                                                                  \
+    "mcrash: 1\nname: drop\n"                                                                      \
+    "simulation: {end_time: %g, time_step: %g, output_rate: 10 kHz}\n"                             \
+    "environment: {gravity: %g}\n"                                                                 \
+    "bodies:\n"                                                                                    \
+    "  - {name: ball, mass: 1, inertia: [%g, %g, %g], position: [0, 0, %.9g],\n"                   \
+    "     velocity: [%g, 0, %g], angular_velocity: [0, 0, 0],\n"                                   \
+    "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [%g, %g, %g]}]}\n"            \
+    "fe:\n  parts:\n    - name: plate\n"                                                           \
+    "      mesh: {generate: plate, size: [%g, %g], divisions: [%d, %d], origin: [%g, %g, 0]}\n"    \
+    "      section: {type: shell, thickness: 2 mm}\n"                                              \
+    "      material: {model: elastic, density: 7.85e6, youngs_modulus: 210 GPa, poisson: 0.3}\n"   \
+    "  boundary: [{part: plate, where: all, fix: all}]\n"                                          \
+    "  contacts: [{type: bodies, parts: [plate], bodies: [ball], friction: %g,\n"                  \
+    "              penalty_scale: %g}]\n"
+
+typedef struct {
+    double end, h, g, inertia, z0, vx, vz, R, size[2], mu, scale;
+    int div[2];
+    double origin[2]; /* plate's min corner [m]; 0 0: centred on the axis */
+} drop_case;
+
+static char yaml[4096];
+
+static const char *drop_text(const drop_case *c)
+{
+    snprintf(yaml, sizeof yaml, DROP_YAML, c->end, c->h, c->g, c->inertia, c->inertia, c->inertia,
+             c->z0, c->vx, c->vz, c->R, c->R, c->R, c->size[0], c->size[1], c->div[0], c->div[1],
+             c->origin[0] || c->origin[1] ? c->origin[0] : -0.5 * c->size[0],
+             c->origin[0] || c->origin[1] ? c->origin[1] : -0.5 * c->size[1], c->mu, c->scale);
+    return yaml;
+}
+
+/* the penalty force of the fixed plate on the sphere pushed delta below its first touch: the
+ * sum over the plate's nodes of k_n (delta - h_n), h_n = R - sqrt(R^2 - rho_n^2) the height of
+ * the sphere above node n at rho_n from the axis, k_n = s m_n / dt0^2 (docs/fe.md "Contact");
+ * its work w */
+static double lattice_force(const fe_model *fm, double R, double scale, double delta, double *w)
+{
+    double f = 0, e = 0, dt0 = fm->contact->dt0;
+    for (int n = 0; n < fm->nnode; n++) {
+        const double *x = fm->node_x0 + 3 * n;
+        double r2 = x[0] * x[0] + x[1] * x[1]; /* the ball's axis is x = y = 0 */
+        if (r2 >= R * R) continue;
+        double d = delta - (R - sqrt(R * R - r2));
+        if (d <= 0) continue;
+        double k = scale * fm->node_mass[n] / (dt0 * dt0);
+        f += k * d, e += 0.5 * k * d * d;
+    }
+    *w = e;
+    return f;
+}
+
+/* A ball dropped on a fixed plate, no gravity, v0 = 1 m/s: the penalty is elastic and the
+ * plate does not move, so the ball is a conservative one-degree oscillator on the lattice
+ * force F(delta) above: it rebounds at -v0, and the peak force is F(delta_max) with
+ * W(delta_max) = M v0^2 / 2 (energy balance; no Hertz: the penalty is per node). The impulse
+ * the body received equals the one the plate's nodes received (equal and opposite) and 2 M v0
+ * (momentum). */
+static void test_ball_drop_on_fixed_plate(void)
+{
+    const double R = 0.1, v0 = 1, t_half = 1e-3; /* half the plate's 2 mm shell thickness */
+    drop_case c = {.end = 0.01,
+                   .h = 20e-6,
+                   .g = 0,
+                   .inertia = 0.004,
+                   .z0 = R + t_half + 0.5e-3,
+                   .vx = 0,
+                   .vz = -v0,
+                   .R = R,
+                   .size = {0.08, 0.08},
+                   .div = {32, 32},
+                   .mu = 0,
+                   .scale = 0.001};
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("drop.yaml", drop_text(&c), &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    CHECK(st == MCS_OK);
+    const fe_model *fm = m->couple->fe.model;
+    double fpeak = 0, imp_body = 0, imp_fe = 0, vend = 0;
+    while (!st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        const fe_contact_state *ks = s->couple->fe->contact;
+        fpeak = fmax(fpeak, ks->ell_force[2]);
+        mb_body_kin k;
+        mb_body_get(s->world, 0, &k);
+        vend = k.vel[2];
+    }
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    double jfe[6], jb[6];
+    CHECK(mb_couple_contact_impulse(m, s, 0, jfe, jb) == 0);
+    imp_fe = jfe[2], imp_body = jb[2];
+    /* the closed form: delta_max from W = M v0^2 / 2 by bisection */
+    double lo = 0, hi = 0.01, w = 0;
+    for (int i = 0; i < 200; i++) {
+        double mid = 0.5 * (lo + hi);
+        lattice_force(fm, R, c.scale, mid, &w);
+        if (w < 0.5 * 1 * v0 * v0)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    double fref = lattice_force(fm, R, c.scale, lo, &w);
+    const double drift = mb_energy_drift(m, s), perr = 100 * (fpeak / fref - 1);
+    const double verr = 100 * (vend / v0 - 1);
+    printf("drop: rebound %.5f m/s (v0 = %.5f, %+.3f %%), peak force %.2f N (closed form %.2f N, "
+           "delta %.3f mm, %+.3f %%), drift %.3g, FE steps %ld\n",
+           vend, v0, verr, fpeak, fref, 1e3 * lo, perr, drift, s->couple->substeps);
+    printf("drop: impulse given by the plate %.6f N s, received by the ball %.6f N s, "
+           "2 M v0 = %.6f, M dv = %.6f\n",
+           imp_fe, imp_body, 2 * v0, vend + v0);
+    FIG("stage1_engine.contact_drop_rebound_err_pct", "%.3f", fabs(verr));
+    FIG("stage1_engine.contact_drop_peak_err_pct", "%.2f", fabs(perr));
+    FIG_TOL("stage1_engine.contact_drop_drift", "%.4f", drift, 3e-4);
+    CHECK_NEAR(verr, 0, 0.1);
+    CHECK_NEAR(perr, 0, 1.0);
+    /* equal and opposite: what the plate's nodes received (minus it) is what the ball got;
+     * the ball's momentum change is that impulse (ODE: M dv = J) */
+    CHECK_NEAR(imp_body, imp_fe, 1e-6 * imp_fe);
+    CHECK_NEAR(vend + v0, imp_body, 1e-9);
+    CHECK_NEAR(imp_fe, 2 * v0, 1e-3);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* the sphere's rest penetration under its weight M g on the lattice (bisection) */
+static double rest_depth(const fe_model *fm, double R, double scale, double weight)
+{
+    double lo = 0, hi = 0.01, w;
+    for (int i = 0; i < 200; i++) {
+        double mid = 0.5 * (lo + hi);
+        if (lattice_force(fm, R, scale, mid, &w) < weight)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+/* A solid ball (I = 2/5 M R^2) set down sliding at v0 = 1 m/s, no spin, on a fixed plate with
+ * friction mu = 0.3 under gravity: while it slides the CG decelerates at mu g and the spin
+ * grows at 5 mu g / (2 R); it rolls from t* = 2 v0 / (7 mu g) = 97 ms on at v = 5/7 v0 and
+ * omega = v / R (the classic billiard-ball result: Routh, Dynamics of a System of Rigid Bodies,
+ * or any text on rolling with slipping). The spin comes only from the friction's moment about
+ * the CG: the moment transfer is checked too. */
+static void test_ball_slides_then_rolls(void)
+{
+    const double R = 0.1, v0 = 1, mu = 0.3, g = 9.81, scale = 1e-4;
+    drop_case c = {.end = 0.13,
+                   .h = 20e-6,
+                   .g = g,
+                   .inertia = 0.4 * R * R,
+                   .vx = v0,
+                   .vz = 0,
+                   .R = R,
+                   .size = {0.16, 0.04},
+                   .div = {64, 16},
+                   .origin = {-0.02, -0.02},
+                   .mu = mu,
+                   .scale = scale};
+    /* first the model as placed, for the rest depth of the weight on the lattice */
+    c.z0 = R + 1e-3;
+    mb_model *m = mt_model_text("roll.yaml", drop_text(&c), NULL);
+    CHECK(m != NULL);
+    if (!m) return;
+    const double d = rest_depth(m->couple->fe.model, R, scale, g);
+    mb_model_destroy(&m);
+    c.z0 = R + 1e-3 - d;
+    mcs_error err = {0};
+    m = mt_model_text("roll.yaml", drop_text(&c), &err);
+    CHECK(m != NULL);
+    if (!m) return;
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    /* least-squares slope of vx(t) over the sliding phase 10 .. 80 ms */
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+    mb_body_kin k = {0};
+    while (!st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        mb_body_get(s->world, 0, &k);
+        if (s->t >= 0.01 && s->t <= 0.08)
+            sx += s->t, sy += k.vel[0], sxx += s->t * s->t, sxy += s->t * k.vel[0], n++;
+    }
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    const double a = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    const double aerr = 100 * (-a / (mu * g) - 1), verr = 100 * (k.vel[0] / (5.0 / 7 * v0) - 1);
+    const double werr = 100 * (k.angvel[1] * R / k.vel[0] - 1);
+    printf("roll: rest depth %.4f mm; sliding deceleration %.4f m/s^2 (mu g = %.4f, %+.3f %%); "
+           "rolling at %.5f m/s (5/7 v0 = %.5f, %+.3f %%), omega R / v %+.3f %%, drift %.3g, "
+           "FE steps %ld\n",
+           1e3 * d, -a, mu * g, aerr, k.vel[0], 5.0 / 7 * v0, verr, werr, mb_energy_drift(m, s),
+           s->couple->substeps);
+    FIG("stage1_engine.contact_slide_decel_err_pct", "%.2f", fabs(aerr));
+    FIG("stage1_engine.contact_roll_speed_err_pct", "%.2f", fabs(verr));
+    FIG("stage1_engine.contact_roll_spin_err_pct", "%.2f", fabs(werr));
+    CHECK_NEAR(aerr, 0, 0.02);
+    CHECK_NEAR(verr, 0, 0.2);
+    CHECK_NEAR(werr, 0, 0.6);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* A ball (1 kg, R = 50 mm) thrown obliquely (vx 0.5, vz -1 m/s) at a free aluminium plate in
+ * space (no supports, no gravity), friction 0.3: nothing outside acts on the ball and the
+ * plate, so their total momentum M v + sum m_n v_n stays what it was (Newton's third law: the
+ * contact force on the nodes and on the ball are equal and opposite); checked after the
+ * contact, once nothing is in transit between them. */
+#define FREE_YAML                                                                                  \
+    "mcrash: 1\nname: free\n"                                                                      \
+    "simulation: {end_time: 4 ms, time_step: 10 us, output_rate: 10 kHz}\n"                        \
+    "environment: {gravity: 0}\n"                                                                  \
+    "bodies:\n"                                                                                    \
+    "  - {name: ball, mass: 1, inertia: [0.001, 0.001, 0.001], position: [0, 0, 0.0515],\n"        \
+    "     velocity: [0.5, 0, -1], angular_velocity: [0, 0, 0],\n"                                  \
+    "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [0.05, 0.05, 0.05]}]}\n"      \
+    "fe:\n  parts:\n    - name: plate\n"                                                           \
+    "      mesh: {generate: plate, size: [0.1, 0.1], divisions: [20, 20],\n"                       \
+    "             origin: [-0.05, -0.05, 0]}\n"                                                    \
+    "      section: {type: shell, thickness: 2 mm}\n"                                              \
+    "      material: {model: elastic, density: 2700, youngs_modulus: 70 GPa, poisson: 0.33}\n"     \
+    "  contacts: [{type: bodies, parts: [plate], bodies: [ball], friction: 0.3}]\n"
+
+static void fe_momentum(const fe_model *fm, const fe_state *f, double p[3])
+{
+    p[0] = p[1] = p[2] = 0;
+    for (int n = 0; n < fm->nnode; n++)
+        for (int i = 0; i < 3; i++)
+            p[i] += fm->node_mass[n] * f->node_v[3 * n + i];
+}
+
+static void test_momentum_ball_on_free_plate(void)
+{
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("free.yaml", FREE_YAML, &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    const fe_model *fm = m->couple->fe.model;
+    const double p0[3] = {0.5, 0, -1}; /* the ball's; the plate is at rest */
+    double fpk = 0, p[3], pf[3];
+    mb_body_kin k = {0};
+    while (!st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        const double *F = s->couple->fe->contact->ell_force;
+        fpk = fmax(fpk, sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]));
+    }
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    const double *F = s->couple->fe->contact->ell_force;
+    CHECK(F[0] == 0 && F[1] == 0 && F[2] == 0); /* apart at the end */
+    mb_body_get(s->world, 0, &k);
+    fe_momentum(fm, s->couple->fe, pf);
+    double err_p = 0;
+    for (int i = 0; i < 3; i++) {
+        p[i] = k.vel[i] + pf[i];
+        err_p = fmax(err_p, fabs(p[i] - p0[i]));
+    }
+    const double rel = err_p / sqrt(p0[0] * p0[0] + p0[2] * p0[2]);
+    printf("free plate: peak force %.1f N, ball after %.4f %.4f %.4f m/s, plate momentum "
+           "%.4f %.4f %.4f N s, total error %.3g N s (%.2g of |p0|), drift %.3g, FE steps %ld\n",
+           fpk, k.vel[0], k.vel[1], k.vel[2], pf[0], pf[1], pf[2], err_p, rel,
+           mb_energy_drift(m, s), s->couple->substeps);
+    CHECK(fpk > 100);     /* they met */
+    CHECK(pf[2] < -0.05); /* and the plate took some of the ball's momentum */
+    CHECK(rel < 1e-12);   /* exchanged exactly: round-off */
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* A block whose underside is a facet surface (a 22.5 mm square of two triangles, outward
+ * normal -z) dropped flat at v0 = 0.3 m/s on a fixed fabric membrane: the N = 81 membrane nodes
+ * under the square each push with k_n (delta - 0): a linear spring K = sum k_n, so the block
+ * leaves at -v0 after half a period pi sqrt(M / K) and the peak force is v0 sqrt(M K) (the
+ * undamped oscillator). The nodes beside the square are 1.25 mm from its edge: out of reach. */
+#define FACET_YAML                                                                                 \
+    "mcrash: 1\nname: facet\n"                                                                     \
+    "simulation: {end_time: 8 ms, time_step: 20 us, output_rate: 10 kHz}\n"                        \
+    "environment: {gravity: 0}\n"                                                                  \
+    "bodies:\n"                                                                                    \
+    "  - {name: block, mass: 1, inertia: [0.01, 0.01, 0.01], position: [0, 0, 0.0207],\n"          \
+    "     velocity: [0, 0, -0.3], angular_velocity: [0, 0, 0],\n"                                  \
+    "     surfaces: [{type: facet, vertices: [[-0.01125, -0.01125, -0.02],\n"                      \
+    "                 [0.01125, -0.01125, -0.02], [0.01125, 0.01125, -0.02],\n"                    \
+    "                 [-0.01125, 0.01125, -0.02]], triangles: [[0, 2, 1], [0, 3, 2]]}]}\n"         \
+    "fe:\n  parts:\n    - name: sheet\n"                                                           \
+    "      mesh: {generate: plate, size: [0.1, 0.1], divisions: [40, 40],\n"                       \
+    "             origin: [-0.05, -0.05, 0]}\n"                                                    \
+    "      section: {type: membrane, thickness: 0.4 mm}\n"                                         \
+    "      material: {model: fabric, density: 1e6, youngs_modulus: 0.5 GPa, poisson: 0.3}\n"       \
+    "  boundary: [{part: sheet, where: all, fix: all}]\n"                                          \
+    "  contacts: [{type: bodies, parts: [sheet], bodies: [block], penalty_scale: 0.001}]\n"
+
+static void test_facet_block_on_membrane(void)
+{
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("facet.yaml", FACET_YAML, &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    const fe_model *fm = m->couple->fe.model;
+    const double v0 = 0.3, M = 1, dt0 = fm->contact->dt0;
+    double K = 0;
+    int nunder = 0;
+    for (int n = 0; n < fm->nnode; n++) {
+        const double *x = fm->node_x0 + 3 * n;
+        if (fabs(x[0]) < 0.01125 && fabs(x[1]) < 0.01125)
+            K += 0.001 * fm->node_mass[n] / (dt0 * dt0), nunder++;
+    }
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    double fpeak = 0, t_on = -1, t_off = -1, mz = 0;
+    mb_body_kin k = {0};
+    while (!st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        const fe_contact_state *ks = s->couple->fe->contact;
+        const double fz = ks->fac_force[2];
+        fpeak = fmax(fpeak, fz);
+        if (fz > 0 && t_on < 0) t_on = s->couple->fe->energy_time;
+        if (fz > 0) t_off = s->couple->fe->energy_time;
+        mz = fmax(mz, fabs(ks->fac_moment[0]) + fabs(ks->fac_moment[1]));
+    }
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    mb_body_get(s->world, 0, &k);
+    const double fref = v0 * sqrt(M * K), tref = M_PI * sqrt(M / K);
+    const double ferr = 100 * (fpeak / fref - 1), verr = 100 * (k.vel[2] / v0 - 1);
+    double jfe[6], jb[6];
+    CHECK(mb_couple_contact_impulse(m, s, 0, jfe, jb) == 0);
+    printf("facet: %d nodes under it, K %.4g N/m; peak force %.2f N (v0 sqrt(M K) = %.2f, "
+           "%+.3f %%), contact %.3f ms (pi sqrt(M/K) = %.3f), rebound %.5f m/s (%+.3f %%), "
+           "largest moment about the CG %.2g N m, impulse %.6f / %.6f N s, drift %.3g\n",
+           nunder, K, fpeak, fref, ferr, 1e3 * (t_off - t_on), 1e3 * tref, k.vel[2], verr, mz,
+           jfe[2], jb[2], mb_energy_drift(m, s));
+    CHECK(nunder == 81);
+    FIG("stage1_engine.contact_facet_peak_err_pct", "%.2f", fabs(ferr));
+    FIG("stage1_engine.contact_facet_rebound_err_pct", "%.3f", fabs(verr));
+    CHECK_NEAR(ferr, 0, 0.05);
+    CHECK_NEAR(verr, 0, 0.01);
+    CHECK_NEAR(t_off - t_on, tref, 2 * 20e-6); /* to two ODE steps (the sampling) */
+    CHECK_NEAR(jb[2], jfe[2], 1e-6 * jfe[2]);
+    CHECK_NEAR(jb[2], M * (k.vel[2] + v0), 1e-9);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* bad input is refused at its FILE:LINE:COL: a bodies contact naming an unknown body (the
+ * schema's body reference), or a body without an ellipsoid or facet surface */
+static void test_bodies_contact_errors_are_located(void)
+{
+    drop_case c = {.end = 0.001,
+                   .h = 20e-6,
+                   .R = 0.1,
+                   .z0 = 0.2,
+                   .size = {0.1, 0.1},
+                   .div = {2, 2},
+                   .inertia = 0.004,
+                   .scale = 0.001};
+    char *y = malloc(8192);
+    strcpy(y, drop_text(&c));
+    char *p = strstr(y, "bodies: [ball]");
+    memcpy(p, "bodies: [bal1]", 14);
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("bad.yaml", y, &err);
+    CHECK(m == NULL);
+    CHECK(err.status != MCS_OK);
+    printf("unknown body: %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "bad.yaml:16:54");
+    CHECK_STR_CONTAINS(err.msg, "bal1");
+    mb_model_destroy(&m);
+    /* a body without surfaces, beside one with an ellipsoid */
+    const char *nosurf =
+        "mcrash: 1\nname: bad\nsimulation: {end_time: 1 ms, time_step: 20 us}\n"
+        "bodies:\n"
+        "  - {name: ball, mass: 1, inertia: [1, 1, 1], position: [0, 0, 1], velocity: [0, 0, 0],\n"
+        "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [0.1, 0.1, 0.1]}]}\n"
+        "  - {name: bare, mass: 1, inertia: [1, 1, 1], position: [0, 0, 2], velocity: [0, 0, 0]}\n"
+        "fe:\n  parts:\n    - name: plate\n"
+        "      mesh: {generate: plate, size: [0.1, 0.1], divisions: [2, 2]}\n"
+        "      section: {type: shell, thickness: 2 mm}\n"
+        "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, poisson: 0.3}\n"
+        "  contacts: [{type: bodies, parts: [plate], bodies: [ball, bare]}]\n";
+    strcpy(y, nosurf);
+    memset(&err, 0, sizeof err);
+    m = mt_model_text("bad.yaml", y, &err);
+    CHECK(m == NULL);
+    printf("no surfaces: %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, "bad.yaml:14:60");
+    CHECK_STR_CONTAINS(err.msg, "no ellipsoid or facet surfaces");
+    mb_model_destroy(&m);
+    free(y);
+}
+
+int main(void)
+{
+    fe_set_threads(1); /* small models: one thread is faster than a team's start-up */
+    RUN(test_ball_drop_on_fixed_plate);
+    RUN(test_ball_slides_then_rolls);
+    RUN(test_momentum_ball_on_free_plate);
+    RUN(test_facet_block_on_membrane);
+    RUN(test_bodies_contact_errors_are_located);
+    TEST_END();
+}

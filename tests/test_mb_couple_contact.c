@@ -361,6 +361,12 @@ static void test_facet_block_on_membrane(void)
            nunder, K, fpeak, fref, ferr, 1e3 * (t_off - t_on), 1e3 * tref, k.vel[2], verr, mz,
            jfe[2], jb[2], mb_energy_drift(m, s));
     CHECK(nunder == 81);
+    /* the contact by its (default) name: what the body got from it at the last FE step */
+    const int kc = mb_couple_contact_find(m, "contact0");
+    double fc[3];
+    CHECK(kc == 0 && mb_couple_contact_find(m, "nothing") == -1);
+    if (kc == 0) mb_couple_contact_force(m, s, kc, fc);
+    CHECK(kc == 0 && fc[2] == s->couple->fe->contact->fac_force[2]);
     FIG("stage1_engine.contact_facet_peak_err_pct", "%.2f", fabs(ferr));
     FIG("stage1_engine.contact_facet_rebound_err_pct", "%.3f", fabs(verr));
     CHECK_NEAR(ferr, 0, 0.05);

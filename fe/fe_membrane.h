@@ -35,6 +35,8 @@ typedef struct {
 
 int fe_membrane_reference(const double X[3][3], const double fibre[3], fe_membrane_ref *r);
 
+/* the reference of every membrane element from node_x0 into m->shell_mref (model build) */
+void fe_membrane_references(struct fe_model *m);
 /* element loop of a membrane part: stresses, slot forces, energies, element steps */
 void fe_membrane_part(const fe_model *m, fe_state *s, int ip);
 

@@ -280,6 +280,8 @@ typedef struct {
     X(int, tet10_part, ntet10, 1, "-", "part of each tet10")                                       \
     X(double, tet10_dtf, ntet10, 1, "-", "tet10 step factor: (2 / omega_max) / (l / c) at t = 0") \
     X(int, node_body, nnode, 1, "-", "rigid body carrying the node, -1 none")                      \
+    X(double, shell_mref, nshell_mref, 8, "-",                                                     \
+      "membrane reference: b (3), c (3) [1/m], area [m^2], altitude [m] (fe_membrane.c)")        \
     X(int, chunk_part, nchunk, 1, "-", "part of each element chunk (threaded element loops)")      \
     X(int, chunk_elem, nchunk, 1, "-", "first element of each chunk, index in its kind")           \
     X(int, chunk_nc, nchunk, 1, "-", "first node chunk of each element chunk's thread share")
@@ -334,6 +336,8 @@ typedef struct fe_model {
     int node_acc_stride;   /* partial sums per node chunk: FE_NACC_FIXED + npart + 3 FE_WALL_MAX */
     int nnode_acc;         /* nnode_chunk x node_acc_stride [-]                            */
     int nshell_rate;       /* nshell_ip when a shell part has a rate factor, else 0 [-]    */
+    int nshell_mref;       /* nshell when a part is a membrane (its t = 0 reference geometry
+                              is kept, fe_membrane.c), else 0 [-]                          */
     int nspring_part;      /* spring parts (energies per part, fe_discrete.c) [-]          */
     int nms_node, nms_elem; /* run-time mass scaling: nnode, nelem (0 when off) [-]        */
     double *elem_ms0;      /* (nms_elem) density factor of the t = 0 mass scaling (1 none) [-] */

@@ -153,25 +153,6 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
     }
     memcpy(cs->vkin, c->fe.model->node_vfix, 3 * nn * sizeof *cs->vkin);
     cs->fe->node_vkin = cs->vkin;
-    /* attached nodes start with their body's point velocity v + w x r (not at rest) */
-    for (int a = 0; a < c->natt; a++) {
-        const mb_body_desc *d = &m->body[c->body[a]];
-        const int n = c->node[a];
-        double r[3], wr[3];
-        for (int i = 0; i < 3; i++) r[i] = c->fe.model->node_x0[3 * n + i] - d->pos[i];
-        mb_cross(d->angvel, r, wr);
-        for (int i = 0; i < 3; i++) cs->vkin[3 * n + i] = cs->fe->node_v[3 * n + i] = d->vel[i] + wr[i];
-    }
-    /* the FE state's kinetic energies at t = 0 from these velocities (the kernel's come with
-     * its first step), so the parts' energy rows and the balance start from them */
-    const fe_model *fm = c->fe.model;
-    fe_state *f = cs->fe;
-    for (int n = 0; n < fm->nnode; n++) {
-        const double *v = f->node_v + 3 * n, *w = f->node_w + 3 * n;
-        double ke = 0.5 * fm->node_mass[n] * mb_dot(v, v) + 0.5 * fm->node_inertia[n] * mb_dot(w, w);
-        f->energy[FE_E_kinetic] += ke;
-        if (fm->node_part[n] >= 0) f->part_energy[FE_NENERGY * fm->node_part[n] + FE_E_kinetic] += ke;
-    }
     cs->fe->node_react = cs->react;
     *out = cs;
     return MCS_OK;

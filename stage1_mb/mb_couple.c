@@ -40,9 +40,12 @@ static void carried_velocities(const mb_model *m, mb_couple *c)
         double r[3], wr[3];
         for (int i = 0; i < 3; i++) r[i] = fm->node_x0[3 * n + i] - d->pos[i];
         mb_cross(d->angvel, r, wr);
-        for (int i = 0; i < 3; i++)
+        for (int i = 0; i < 3; i++) {
             if (att[n] || !(fm->node_fix[n] & (1u << i)))
                 fm->node_v0[3 * n + i] = d->vel[i] + wr[i];
+            if (fm->node_inertia[n] > 0 && !(fm->node_fix[n] & (8u << i))) /* shell nodes spin */
+                fm->node_w0[3 * n + i] = d->angvel[i];
+        }
     }
     free(att);
 }

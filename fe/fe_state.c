@@ -105,6 +105,16 @@ void fe_state_reset(const fe_model *m, fe_state *s)
 double fe_part_energy(const fe_model *m, const fe_state *s, int part, fe_energy_kind k)
 {
     if (part < 0 || part >= m->npart || k < 0 || k >= FE_NENERGY) return NAN;
+    if (k == FE_E_kinetic && s->nstep == 0) { /* before the first step: the initial velocities' */
+        double e = 0;
+        for (int n = 0; n < m->nnode; n++) {
+            if (m->node_part[n] != part) continue;
+            const double *v = s->node_v + 3 * n, *w = s->node_w + 3 * n;
+            e += 0.5 * m->node_mass[n] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            e += 0.5 * m->node_inertia[n] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        }
+        return e;
+    }
     return s->part_energy[FE_NENERGY * part + k];
 }
 

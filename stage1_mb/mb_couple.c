@@ -22,11 +22,26 @@ static int body_group(void *ctx, const char *name)
     return b < 0 ? -1 : m->body_group ? m->body_group[b] : MB_GROUP_NONE;
 }
 
+/* the velocity field v + w x r of body b at node n, into node_v0 (the fixed translations
+ * too when all) */
+static void start_with_body(const mb_model *m, fe_model *fm, int b, int n, int all)
+{
+    const mb_body_desc *d = &m->body[b];
+    double r[3], wr[3];
+    for (int i = 0; i < 3; i++) r[i] = fm->node_x0[3 * n + i] - d->pos[i];
+    mb_cross(d->angvel, r, wr);
+    for (int i = 0; i < 3; i++)
+        if (all || !(fm->node_fix[n] & (1u << i))) fm->node_v0[3 * n + i] = d->vel[i] + wr[i];
+}
+
 /* the nodes of a part carried by a body start with the body's velocity field v + w x r
- * (attached nodes, and the rest of the part, whose fixed translations keep theirs) */
+ * (attached nodes, and the rest of the part, whose fixed translations keep theirs); attached
+ * nodes always do, with or without impact: (else the first subcycle jerks them to it: an
+ * impulse m v on the body and a spurious energy loss) */
 static void carried_velocities(const mb_model *m, mb_couple *c)
 {
     fe_model *fm = c->fe.model;
+    for (int a = 0; a < c->natt; a++) start_with_body(m, fm, c->body[a], c->node[a], 1);
     if (!c->fe.part_carrier) return;
     unsigned char *att = calloc((size_t)fm->nnode + 1, 1);
     if (!att) return; /* only the start velocities of carried nodes are lost: never here */
@@ -35,14 +50,7 @@ static void carried_velocities(const mb_model *m, mb_couple *c)
         const int ip = fm->node_part[n];
         const mcs_node *bn = ip >= 0 ? c->fe.part_carrier[ip] : NULL;
         const int b = bn ? mb_model_body(m, mcs_node_str(bn)) : -1;
-        if (b < 0) continue;
-        const mb_body_desc *d = &m->body[b];
-        double r[3], wr[3];
-        for (int i = 0; i < 3; i++) r[i] = fm->node_x0[3 * n + i] - d->pos[i];
-        mb_cross(d->angvel, r, wr);
-        for (int i = 0; i < 3; i++)
-            if (att[n] || !(fm->node_fix[n] & (1u << i)))
-                fm->node_v0[3 * n + i] = d->vel[i] + wr[i];
+        if (b >= 0) start_with_body(m, fm, b, n, att[n]);
     }
     free(att);
 }

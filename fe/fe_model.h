@@ -262,6 +262,7 @@ typedef struct {
 #define FE_MODEL_ARRAYS(X)                                                                         \
     X(double, node_x0, nnode, 3, "m", "initial position")                                          \
     X(double, node_v0, nnode, 3, "m/s", "initial velocity")                                        \
+    X(double, node_w0, nnode, 3, "rad/s", "initial angular velocity (carried shell nodes)")        \
     X(double, node_mass, nnode, 1, "kg", "lumped mass")                                            \
     X(double, node_inertia, nnode, 1, "kg m^2", "lumped rotary inertia (shell nodes)")             \
     X(unsigned, node_fix, nnode, 1, "-", "FE_DOF_* mask of constrained dofs")                      \

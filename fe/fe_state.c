@@ -80,6 +80,7 @@ void fe_state_reset(const fe_model *m, fe_state *s)
 #undef FE_X_ZERO
     memcpy(s->node_x, m->node_x0, sizeof(double) * 3 * (size_t)m->nnode);
     memcpy(s->node_v, m->node_v0, sizeof(double) * 3 * (size_t)m->nnode);
+    memcpy(s->node_w, m->node_w0, sizeof(double) * 3 * (size_t)m->nnode);
     for (int ip = 0; ip < m->npart; ip++) s->part_bad_elem[ip] = -1;
     s->time = s->dt_prev = s->energy_time = 0;
     s->dt = m->dt_initial;

@@ -23,15 +23,18 @@ static int body_group(void *ctx, const char *name)
 }
 
 /* the velocity field v + w x r of body b at node n, into node_v0 (the fixed translations
- * too when all) */
-static void start_with_body(const mb_model *m, fe_model *fm, int b, int n, int all)
+ * too when all); with spin, a shell node's free rotations take w (node_w0) */
+static void start_with_body(const mb_model *m, fe_model *fm, int b, int n, int all, int spin)
 {
     const mb_body_desc *d = &m->body[b];
     double r[3], wr[3];
     for (int i = 0; i < 3; i++) r[i] = fm->node_x0[3 * n + i] - d->pos[i];
     mb_cross(d->angvel, r, wr);
-    for (int i = 0; i < 3; i++)
+    for (int i = 0; i < 3; i++) {
         if (all || !(fm->node_fix[n] & (1u << i))) fm->node_v0[3 * n + i] = d->vel[i] + wr[i];
+        if (spin && fm->node_inertia[n] > 0 && !(fm->node_fix[n] & (8u << i)))
+            fm->node_w0[3 * n + i] = d->angvel[i];
+    }
 }
 
 /* the nodes of a part carried by a body start with the body's velocity field v + w x r
@@ -41,7 +44,7 @@ static void start_with_body(const mb_model *m, fe_model *fm, int b, int n, int a
 static void carried_velocities(const mb_model *m, mb_couple *c)
 {
     fe_model *fm = c->fe.model;
-    for (int a = 0; a < c->natt; a++) start_with_body(m, fm, c->body[a], c->node[a], 1);
+    for (int a = 0; a < c->natt; a++) start_with_body(m, fm, c->body[a], c->node[a], 1, 0);
     if (!c->fe.part_carrier) return;
     unsigned char *att = calloc((size_t)fm->nnode + 1, 1);
     if (!att) return; /* only the start velocities of carried nodes are lost: never here */
@@ -50,7 +53,7 @@ static void carried_velocities(const mb_model *m, mb_couple *c)
         const int ip = fm->node_part[n];
         const mcs_node *bn = ip >= 0 ? c->fe.part_carrier[ip] : NULL;
         const int b = bn ? mb_model_body(m, mcs_node_str(bn)) : -1;
-        if (b >= 0) start_with_body(m, fm, b, n, att[n]);
+        if (b >= 0) start_with_body(m, fm, b, n, att[n], 1);
     }
     free(att);
 }

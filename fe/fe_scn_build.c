@@ -226,7 +226,33 @@ static fe_where where_of(const char *s)
     return FE_WHERE_ALL;
 }
 
-static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error *err)
+/* a boundary holding a translation of a node a body carries (attach, slip ring): the two
+ * prescribe the same node's motion differently */
+static mcs_status boundary_on_attached(fe_builder *b, const mcs_node *c, const fe_boundary_desc *d,
+                                       const fe_problem *out, mcs_error *err)
+{
+    int part = fe_builder_find_part(b, d->part);
+    int n = (d->fix & FE_DOF_TRANS) && out->natt ? fe_builder_select(b, part, d->where, NULL, 0)
+                                                 : 0;
+    if (n <= 0) return MCS_OK;
+    int *idx = malloc((size_t)n * sizeof *idx);
+    if (!idx) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
+    fe_builder_select(b, part, d->where, idx, n);
+    const mcs_node *hit = NULL;
+    for (int k = 0; k < n && !hit; k++)
+        for (int a = 0; a < out->natt && !hit; a++)
+            if (out->att[a].node == idx[k]) hit = out->att[a].attach;
+    free(idx);
+    if (!hit) return MCS_OK;
+    const mcs_node *body = fe_scn_get(hit, "body");
+    return mcs_node_error(fe_scn_get(c, "where"), err, MCS_ERR_KEY,
+                          "holds translations of nodes of part '%s' that body '%s' carries (line "
+                          "%d): a node is either held in the world or carried by a body",
+                          d->part, mcs_node_str(body), mcs_node_line(body));
+}
+
+static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, const fe_problem *out,
+                                 mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(list); i++) {
         const mcs_node *c = mcs_node_at(list, i);
@@ -235,6 +261,8 @@ static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error 
         fe_boundary_desc d = {.where = where_of(mcs_node_str(fe_scn_get(c, "where"))),
                               .fix = fix_mask(mcs_node_str(fe_scn_get(c, "fix")))};
         snprintf(d.part, sizeof d.part, "%s", mcs_node_str(fe_scn_get(c, "part")));
+        mcs_status bs = boundary_on_attached(b, c, &d, out, err);
+        if (bs) return bs;
         if (fe_scn_given(c, "velocity")) {
             mcs_status vs = mcs_node_vec3(fe_scn_get(c, "velocity"), d.velocity, err);
             if (vs) return vs;
@@ -441,7 +469,7 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     st = add_parts(b, fe_scn_get(fe, "parts"), err);
     if (!st) st = add_attach(b, fe_scn_get(fe, "parts"), out, err);
     if (!st) st = add_ring_bodies(b, fe_scn_get(fe, "sliprings"), out, err);
-    if (!st) st = add_boundaries(b, fe_scn_get(fe, "boundary"), err);
+    if (!st) st = add_boundaries(b, fe_scn_get(fe, "boundary"), out, err);
     if (!st) st = add_loads(b, fe_scn_get(fe, "loads"), err);
     if (!st) st = add_walls(b, fe_scn_get(fe, "rigid_walls"), err);
     if (!st) st = fe_scn_solid_add(b, fe, err); /* springs, point masses */

@@ -58,11 +58,12 @@
     "  airbags:\n"                                                                                 \
     "    - name: bag\n"                                                                            \
     "      parts: [fabric]\n"                                                                      \
-    "      inflator: {mass_flow: [[0, 0.1], [1, 0.1]], temperature: [[0, 600 K]],\n"              \
+    "      inflator: {mass_flow: [[0, 0.1], [1, 0.1]], temperature: [[0, 600 K]],\n"               \
     "                 trigger: {contact: ball_ground, force: 10 N, delay: 1 ms}}\n"                \
     "  sliprings: [{name: ring, part: belt, point: [1.25, 1, 0.5], body: moto_frame}]\n"           \
     "  retractors:\n"                                                                              \
-    "    - {name: ret, part: belt, where: x_min, anchor: [0.5, 1, 0.5], anchor_body: moto_frame,\n" \
+    "    - {name: ret, part: belt, where: x_min, anchor: [0.5, 1, 0.5], anchor_body: "             \
+    "moto_frame,\n"                                                                                \
     "       load_limit: 2 kN, trigger: {contact: ball_ground, force: 50 N, delay: 2 ms}}\n"
 
 /* with impact: the moto_* group (moto_frame, and the parts it carries) is placed and set moving;
@@ -77,9 +78,9 @@ typedef struct {
     int impact;       /* on the impact base */
     const char *from; /* replaced (first occurrence) */
     const char *to;
-    const char *at;   /* the text the message must point at (unique in the edited scenario) */
-    const char *key;  /* key path in the message */
-    const char *why;  /* reason in the message */
+    const char *at;  /* the text the message must point at (unique in the edited scenario) */
+    const char *key; /* key path in the message */
+    const char *why; /* reason in the message */
 } bad_case;
 
 static const bad_case cases[] = {
@@ -105,8 +106,8 @@ static const bad_case cases[] = {
     /* fe.contacts[] of type: bodies */
     {"bodies contact: unknown body", 0, "bodies: [ball]", "bodies: [bal1]", "bal1",
      "fe.contacts[0].bodies[0]", "unknown body 'bal1'"},
-    {"bodies contact: body without surfaces", 0, "bodies: [ball]", "bodies: [ball, bare]",
-     "bare]", "fe.contacts[0].bodies[1]", "no ellipsoid or facet surfaces"},
+    {"bodies contact: body without surfaces", 0, "bodies: [ball]", "bodies: [ball, bare]", "bare]",
+     "fe.contacts[0].bodies[1]", "no ellipsoid or facet surfaces"},
     {"bodies contact: unknown part", 0, "parts: [plate]", "parts: [plat]", "plat]",
      "fe.contacts[0].parts[0]", "unknown FE part 'plat'"},
     {"bodies contact: no parts", 0, "parts: [plate]", "parts: []", "[], bodies",
@@ -138,8 +139,8 @@ static const bad_case cases[] = {
     /* airbags */
     {"airbag: surface not closed", 0, "parts: [fabric]", "parts: [plate]", "[plate]\n",
      "fe.airbags[0].parts", "the surface is not closed"},
-    {"airbag: truss part", 0, "parts: [fabric]", "parts: [belt]", "[belt]",
-     "fe.airbags[0].parts", "must be made of shells or membranes"},
+    {"airbag: truss part", 0, "parts: [fabric]", "parts: [belt]", "[belt]", "fe.airbags[0].parts",
+     "must be made of shells or membranes"},
     {"two airbags share a part", 0, "  sliprings:",
      "    - name: bag2\n      parts: [fabric]\n"
      "      inflator: {mass_flow: [[0, 0.2], [1, 0.2]], temperature: [[0, 600 K]]}\n"
@@ -162,10 +163,10 @@ static const bad_case cases[] = {
     {"impact: moved part held in the world", 1, "    - {part: plate, where: all, fix: all}\n",
      "    - {part: plate, where: all, fix: all}\n    - {part: belt, where: x_max, fix: all}\n",
      "{part: belt", "fe.boundary[1]", "moves with the impact placement"},
-    {"impact: ground anchor on a moved part", 1, " anchor_body: moto_frame,", "",
-     "[0.5, 1, 0.5]", "fe.retractors[0].anchor", "fixed to the ground"},
-    {"impact: initial_velocity on a carried part", 1, "      attach:",
-     "      initial_velocity: [1, 0, 0]\n      attach:", "[1, 0, 0]\n",
+    {"impact: ground anchor on a moved part", 1, " anchor_body: moto_frame,", "", "[0.5, 1, 0.5]",
+     "fe.retractors[0].anchor", "fixed to the ground"},
+    {"impact: initial_velocity on a carried part", 1,
+     "      attach:", "      initial_velocity: [1, 0, 0]\n      attach:", "[1, 0, 0]\n",
      "fe.parts[0].initial_velocity", "remove initial_velocity"},
 };
 
@@ -283,12 +284,11 @@ static void test_refusals(void)
             cli_result *r = cli_run(args);
             int ok = r->status == 2 && strstr(r->err, loc) && strstr(r->err, c->key) &&
                      strstr(r->err, c->why) && !strstr(r->err, "Sanitizer") &&
-                     !strstr(r->err, "runtime error") && count_files(outdir) == 0 &&
-                     r->out[0] == 0;
+                     !strstr(r->err, "runtime error") && count_files(outdir) == 0 && r->out[0] == 0;
             CHECK(ok);
             if (!ok)
-                fprintf(stderr, "  %s / %s: status %d, want %s%s: ...%s; got: %s", c->name,
-                        cmds[k], r->status, loc, c->key, c->why, r->err);
+                fprintf(stderr, "  %s / %s: status %d, want %s%s: ...%s; got: %s", c->name, cmds[k],
+                        r->status, loc, c->key, c->why, r->err);
             if (k == 1 && ok) printf("%-42s %s", c->name, r->err);
         }
     }

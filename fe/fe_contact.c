@@ -386,6 +386,11 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
             const double ht = c->ell_ht[j]; /* shell nodes meet it at t/2, solids at 0 */
             if (fe_dot(r, r) > (amax + ht) * (amax + ht)) goto release;
             for (int k = 0; k < 3; k++) pb[k] = R[k] * r[0] + R[3 + k] * r[1] + R[6 + k] * r[2];
+            /* outside the bounding box in the body frame: outside (long, flat ellipsoids, as a
+             * car's side zones, leave most nodes inside the sphere of their longest axis) */
+            if (fabs(pb[0]) > E->semi[0] + ht || fabs(pb[1]) > E->semi[1] + ht ||
+                fabs(pb[2]) > E->semi[2] + ht)
+                goto release;
             double g = fe_ellipsoid_nearest(E->semi, pb, qb) - ht;
             if (g >= 0) goto release;
             {

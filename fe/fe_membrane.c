@@ -70,6 +70,27 @@ int fe_membrane_reference(const double X[3][3], const double fibre[3], fe_membra
     return 1;
 }
 
+_Static_assert(sizeof(fe_membrane_ref) == 8 * sizeof(double), "fe_model.shell_mref: 8 doubles");
+
+void fe_membrane_ref_build(fe_model *m)
+{
+    for (int ip = 0; ip < m->npart; ip++) {
+        const fe_part *p = &m->part[ip];
+        if (p->section.type != FE_SECTION_MEMBRANE) continue;
+        const double *dir = p->material.fabric_direction;
+        const int has_dir = fe_dot(dir, dir) > 0;
+        for (int e = p->elem_begin; e < p->elem_end; e++) {
+            const int *c = m->shell_node + 4 * e;
+            double X[3][3];
+            for (int k = 0; k < 3; k++)
+                for (int i = 0; i < 3; i++) X[k][i] = m->node_x0[3 * c[k] + i];
+            fe_membrane_ref r;
+            fe_membrane_reference(X, has_dir ? dir : NULL, &r); /* degenerate: area 0 */
+            memcpy(m->shell_mref + 8 * (size_t)e, &r, sizeof r);
+        }
+    }
+}
+
 /* F1, F2 of the triangle at positions xe and its Green strain (tensor xx, yy, xy) */
 static void green(const fe_membrane_ref *r, const double xe[3][3], double F1[3], double F2[3],
                   double e[3])
@@ -89,25 +110,23 @@ void fe_membrane_part(const fe_model *m, fe_state *s, int ip)
     const double dt = s->dt_prev, t = p->section.thickness, c0 = p->wave_speed;
     const double zeta = p->material.fabric_damping;
     const int stride = m->nip_max;
-    const double *dir = p->material.fabric_direction;
-    const int has_dir = fe_dot(dir, dir) > 0;
     fe_fabric_c fc;
     fe_fabric_constants(&p->material, &fc);
     double e_int = 0, e_diss = 0, dtmin = INFINITY;
     int dtel = -1, bad = -1;
     for (int e = p->elem_begin; e < p->elem_end; e++) {
         const int *c = m->shell_node + 4 * e;
-        double X[3][3], xe[3][3], xo[3][3];
+        double xe[3][3], xo[3][3];
         for (int k = 0; k < 3; k++)
             for (int i = 0; i < 3; i++) {
-                X[k][i] = m->node_x0[3 * c[k] + i];
                 xe[k][i] = s->node_x[3 * c[k] + i];
                 xo[k][i] = xe[k][i] - dt * s->node_v[3 * c[k] + i];
             }
         double *f = s->slot_f + 3 * ((size_t)m->slot_base[FE_KIND_SHELL] + 4 * (size_t)e);
         double *sg = s->shell_sig + 3 * (size_t)stride * e;
         fe_membrane_ref r;
-        if (!fe_membrane_reference(X, has_dir ? dir : NULL, &r)) {
+        memcpy(&r, m->shell_mref + 8 * (size_t)e, sizeof r); /* fe_membrane_ref_build */
+        if (!(r.area > 0)) {
             if (bad < 0) bad = e;
             memset(f, 0, 12 * sizeof(double));
             continue;

@@ -274,6 +274,8 @@ typedef struct {
     X(int, hex_part, nhex, 1, "-", "part of each hex")                                             \
     X(int, shell_node, nshell, 4, "-", "shell connectivity, counter-clockwise about the normal")   \
     X(int, shell_part, nshell, 1, "-", "part of each shell")                                       \
+    X(double, shell_mref, nshell, 8, "-", "membrane reference (fe_membrane_ref: b, c [1/m], area "  \
+      "[m^2], altitude [m]); zero area: degenerate")                                               \
     X(int, truss_node, ntruss, 2, "-", "truss connectivity")                                       \
     X(int, truss_part, ntruss, 1, "-", "part of each truss")                                     \
     X(int, tet10_node, ntet10, 10, "-", "tet10 connectivity: corners 1-4, then mid-edges 12 23 31 14 24 34") \
@@ -382,6 +384,8 @@ int fe_builder_nnode(const fe_builder *b);
 int fe_builder_find_part(const fe_builder *b, const char *name);
 /* nodes of a part on its bounding-box side `where`, written to idx (capacity cap); count returned */
 int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, int cap);
+/* the node of a part nearest to p [m] (the first of equals), -1 if the part has none */
+int fe_builder_nearest(const fe_builder *b, int part, const double p[3]);
 
 /* validate and freeze; opts NULL takes fe_opts_default() */
 mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **out,

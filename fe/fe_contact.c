@@ -33,7 +33,8 @@ void fe_contact_state_destroy(fe_contact_state **p)
     free(c->ell_force), free(c->ell_w), free(c->ell_vl), free(c->ell_moment), free(c->ell_work);
     free(c->fac_c), free(c->fac_R), free(c->fac_v), free(c->fac_w), free(c->fac_vl);
     free(c->fac_force), free(c->fac_moment), free(c->fac_work), free(c->fac_ft), free(c->fac_et);
-    free(c->fac_side);
+    free(c->fac_side), free(c->ell_cand), free(c->ell_ncand), free(c->ell_cref);
+    free(c->fac_cand), free(c->fac_ncand), free(c->fac_cref);
     free(c->rec_live), free(c->q_rec0), free(c->q_nrec), free(c->q_done), free(c->pow_chunk);
     free(c);
     *p = NULL;
@@ -103,6 +104,12 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
     s->fac_ft = zalloc(3 * nfn, sizeof(double), &b);
     s->fac_et = zalloc(nfn, sizeof(double), &b);
     s->fac_side = zalloc(nfn, 1, &b);
+    s->ell_cand = zalloc((size_t)c->nell_node, sizeof(int), &b);
+    s->ell_ncand = zalloc(nl, sizeof(int), &b);
+    s->ell_cref = zalloc(4 * nl, sizeof(double), &b);
+    s->fac_cand = zalloc(nfn, sizeof(int), &b);
+    s->fac_ncand = zalloc(nf, sizeof(int), &b);
+    s->fac_cref = zalloc(4 * nf, sizeof(double), &b);
     const size_t nq = (ne + FE_CONTACT_LIVE_CHUNK - 1) / FE_CONTACT_LIVE_CHUNK;
     s->rec_live = zalloc((size_t)s->slot_cap, sizeof(int), &b);
     s->q_rec0 = zalloc(nq, sizeof(int), &b);
@@ -117,7 +124,8 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
         !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v || !s->ell_force || !s->ell_w ||
         !s->ell_vl || !s->ell_moment || !s->ell_work || !s->fac_c || !s->fac_R || !s->fac_v ||
         !s->fac_w || !s->fac_vl || !s->fac_force || !s->fac_moment || !s->fac_work ||
-        !s->fac_ft || !s->fac_et || !s->fac_side || !s->rec_live ||
+        !s->fac_ft || !s->fac_et || !s->fac_side || !s->ell_cand || !s->ell_ncand ||
+        !s->ell_cref || !s->fac_cand || !s->fac_ncand || !s->fac_cref || !s->rec_live ||
         !s->q_rec0 || !s->q_nrec || !s->q_done || !s->pow_chunk) {
         fe_contact_state_destroy(&s);
         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact state)");
@@ -165,6 +173,10 @@ void fe_contact_state_reset(const fe_model *m, fe_contact_state *s)
     memset(s->fac_ft, 0, 3 * nfn * sizeof(double));
     memset(s->fac_et, 0, nfn * sizeof(double));
     memset(s->fac_side, 0, nfn);
+    /* no candidates yet: the first step makes the lists */
+    s->travel = 0;
+    for (int i = 0; i < c->nell; i++) s->ell_cref[4 * i + 3] = -INFINITY;
+    for (int i = 0; i < c->nfac; i++) s->fac_cref[4 * i + 3] = -INFINITY;
     for (int i = 0; i < c->nfac; i++) {
         memcpy(s->fac_c + 3 * i, c->fac[i].center, 3 * sizeof(double));
         memcpy(s->fac_R + 9 * i, c->fac[i].R, 9 * sizeof(double));
@@ -378,8 +390,8 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
         const double amax = fmax(E->semi[0], fmax(E->semi[1], E->semi[2]));
         double *F = cs->ell_force + 3 * i, *M = cs->ell_moment + 3 * i;
         F[0] = F[1] = F[2] = M[0] = M[1] = M[2] = 0;
-        for (int j = E->node_begin; j < E->node_end; j++) {
-            const int n = c->ell_node[j];
+        for (int jc = 0; jc < cs->ell_ncand[i]; jc++) {
+            const int j = cs->ell_cand[E->node_begin + jc], n = c->ell_node[j];
             const double *x = s->node_x + 3 * n;
             double *ft = cs->ell_ft + 3 * j;
             double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]}, pb[3], qb[3], dir[3];
@@ -717,6 +729,7 @@ static void scatter(const fe_model *m, fe_state *s)
     }
     for (int i = 0; i < c->nif; i++) cs->if_energy[i] += cs->if_fric[i];
     /* phase 3: ellipsoids and rigid facet surfaces add to node_fc */
+    if (c->nell + c->nfac > 0) fe_contact_rigid_candidates(m, s);
     ellipsoid_forces(m, s);
     fe_contact_facets_forces(m, s);
 }

@@ -21,6 +21,9 @@
 #define FE_FACETS_MAX 32     /* most rigid facet (triangle mesh) surfaces                    */
 #define FE_FACET_DEPTH 0.01  /* rigid facets: a node counts within this distance of the mesh,
                                 and behind it down to this depth [m]                        */
+#define FE_RIGID_MARGIN 0.02 /* moving rigid surfaces: candidate nodes within their bounding
+                                sphere grown by this, kept until nodes and centre together may
+                                have moved half of it [m]                                   */
 #define FE_CONTACT_LIVE_CHUNK 64 /* live entries per chunk of the threaded entry loop      */
 #define FE_CONTACT_CAND 4    /* candidate segments kept between searches, per slave node on
                                 average (one pool; entries past it scan their buckets)     */
@@ -126,6 +129,7 @@ typedef struct {
     double *vert;              /* (nvert x 3) mesh frame [m] (owned)                           */
     int *tri;                  /* (ntri x 3) (owned)                                           */
     double *tri_n;             /* (ntri x 3) unit outward normals, mesh frame (owned)          */
+    double rmax;               /* largest vertex distance from the reference point [m]       */
     double lo[3], cell;        /* grid over the mesh grown by FE_FACET_DEPTH: origin, cell [m] */
     int dim[3];                /* cells along x, y, z [-]                                      */
     int *cell_off, *cell_tri;  /* triangles near each cell (dim product + 1, ...) (owned)      */
@@ -204,6 +208,14 @@ typedef struct fe_contact_state {
     double *ell_force;      /* (nell x 3) force of the structure on each ellipsoid at t [N]  */
     double *ell_moment;     /* (nell x 3) its moment about the ellipsoid's centre [N m]      */
     double *ell_work;       /* (nell) work of each moving ellipsoid on the structure [J]      */
+    /* candidate nodes of the moving rigid surfaces (fe_contact_rigid_candidates): per surface
+     * a sublist of its nodes (in its node range), their count, and the centre [m] and the
+     * node travel [m] when it was made */
+    int *ell_cand, *ell_ncand;      /* (nell_node), (nell)                                    */
+    double *ell_cref;               /* (nell x 4)                                             */
+    int *fac_cand, *fac_ncand;      /* (nfac_node), (nfac)                                    */
+    double *fac_cref;               /* (nfac x 4)                                             */
+    double travel;          /* sum over steps of the fastest contact node's travel [m]       */
     /* rigid facet surfaces, as the ellipsoids (pose of the reference point); fac_side: 1 once
      * a node was seen on the outer side (a node first seen behind is left alone) */
     double *fac_c, *fac_R, *fac_v, *fac_w, *fac_vl; /* (nfac x 3, 9, 3, 3, 6)               */

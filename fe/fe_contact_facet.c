@@ -150,6 +150,10 @@ mcs_status fe_contact_facets_build(const fe_builder *b, fe_contact_model *c, con
             for (int k = 0; k < 3; k++)
                 n[k] /= len;
         }
+        for (int v = 0; v < F->nvert; v++) {
+            const double *p = F->vert + 3 * v;
+            F->rmax = fmax(F->rmax, sqrt(fe_dot(p, p)));
+        }
         if (!st) st = facet_grid(F, FE_FACET_DEPTH + htmax, err);
         memset(mark, d->nparts ? 0 : 1, (size_t)m->nnode);
         for (int j = 0; j < d->nparts && !st; j++) {
@@ -223,8 +227,8 @@ void fe_contact_facets_forces(const fe_model *m, fe_state *s)
         const double *W = cs->fac_w + 3 * i;
         double *Ft = cs->fac_force + 3 * i, *M = cs->fac_moment + 3 * i;
         Ft[0] = Ft[1] = Ft[2] = M[0] = M[1] = M[2] = 0;
-        for (int j = F->node_begin; j < F->node_end; j++) {
-            const int n = c->fac_node[j];
+        for (int jc = 0; jc < cs->fac_ncand[i]; jc++) {
+            const int j = cs->fac_cand[F->node_begin + jc], n = c->fac_node[j];
             const double *x = s->node_x + 3 * n, ht = c->fac_ht[j];
             double *ft = cs->fac_ft + 3 * j;
             double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]}, pb[3], qb[3], dist;
@@ -308,5 +312,75 @@ void fe_contact_facets_forces(const fe_model *m, fe_state *s)
             cs->fac_et[j] = 0;
             ft[0] = ft[1] = ft[2] = 0;
         }
+    }
+}
+
+/* ---- candidate nodes of the moving rigid surfaces ----------------------------------------
+ * A node farther from a surface's reference point than its bounding radius (an ellipsoid's
+ * largest semi-axis, a mesh's farthest vertex, plus the node's reach) cannot touch it, whatever
+ * the rotation. Each surface keeps the nodes within that radius + FE_RIGID_MARGIN; the list
+ * holds while the fastest node's travel plus the centre's displacement since it was made stay
+ * below half the margin, so every step looks at the few nodes near the surface, not at every
+ * node of the parts. */
+
+/* the nodes of range [b, e) within radius + reach_j + margin of centre C into cand */
+static int make_list(const fe_state *s, const int *node, const double *reach, int b, int e,
+                     const double C[3], double radius, int *cand)
+{
+    int n = 0;
+    for (int j = b; j < e; j++) {
+        const double *x = s->node_x + 3 * node[j];
+        const double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]};
+        const double lim = radius + reach[j] + FE_RIGID_MARGIN;
+        if (fe_dot(r, r) <= lim * lim) cand[n++] = j;
+    }
+    return n;
+}
+
+/* whether a list made at ref (centre, travel) still holds at centre C */
+static int list_holds(const double *ref, const double C[3], double travel)
+{
+    const double d[3] = {C[0] - ref[0], C[1] - ref[1], C[2] - ref[2]};
+    return travel - ref[3] + sqrt(fe_dot(d, d)) < 0.5 * FE_RIGID_MARGIN;
+}
+
+void fe_contact_rigid_candidates(const fe_model *m, fe_state *s)
+{
+    const fe_contact_model *c = m->contact;
+    fe_contact_state *cs = s->contact;
+    /* x(t) = x(t - dt_prev) + dt_prev v: the fastest node's step */
+    double v2 = 0;
+    for (int t = 0; t < c->nnode_touch; t++) {
+        const double *v = s->node_v + 3 * c->touch[t];
+        v2 = fmax(v2, fe_dot(v, v));
+    }
+    cs->travel += s->dt_prev * sqrt(v2);
+    for (int i = 0; i < c->nell; i++) {
+        const fe_contact_ellipsoid *E = &c->ell[i];
+        const double *C = cs->ell_c + 3 * i;
+        double *ref = cs->ell_cref + 4 * i;
+        if (list_holds(ref, C, cs->travel)) continue;
+        const double amax = fmax(E->semi[0], fmax(E->semi[1], E->semi[2]));
+        cs->ell_ncand[i] = make_list(s, c->ell_node, c->ell_ht, E->node_begin, E->node_end, C, amax,
+                                     cs->ell_cand + E->node_begin);
+        ref[0] = C[0], ref[1] = C[1], ref[2] = C[2], ref[3] = cs->travel;
+    }
+    for (int i = 0; i < c->nfac; i++) {
+        const fe_contact_facets *F = &c->fac[i];
+        const double *C = cs->fac_c + 3 * i;
+        double *ref = cs->fac_cref + 4 * i;
+        if (list_holds(ref, C, cs->travel)) continue;
+        const int *cand = cs->fac_cand + F->node_begin;
+        const int n = make_list(s, c->fac_node, c->fac_ht, F->node_begin, F->node_end, C,
+                                F->rmax + FE_FACET_DEPTH, cs->fac_cand + F->node_begin);
+        /* a node left out is out of reach: its side is unknown again (the list is in order) */
+        for (int j = F->node_begin, k = 0; j < F->node_end; j++) {
+            if (k < n && cand[k] == j)
+                k++;
+            else
+                cs->fac_side[j] = 0;
+        }
+        cs->fac_ncand[i] = n;
+        ref[0] = C[0], ref[1] = C[1], ref[2] = C[2], ref[3] = cs->travel;
     }
 }

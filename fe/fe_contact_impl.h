@@ -101,6 +101,11 @@ mcs_status fe_contact_facets_build(const fe_builder *b, fe_contact_model *c,
 void fe_contact_facets_free(fe_contact_model *c);
 void fe_contact_facets_forces(const fe_model *m, fe_state *s);
 
+/* before the rigid surfaces' forces: the fastest contact node's travel since the last step
+ * into cs->travel, and each surface's candidate list made anew when nodes and centre may have
+ * moved FE_RIGID_MARGIN / 2 since it was made (fe_contact_facet.c) */
+void fe_contact_rigid_candidates(const fe_model *m, fe_state *s);
+
 /* body -> world rotation of a quaternion w, x, y, z (all zero: identity) */
 void fe_contact_quat_to_R(const double q[4], double R[9]);
 

@@ -36,18 +36,21 @@ int fe_membrane_reference(const double X[3][3], const double fibre[3], fe_membra
     double nn = sqrt(fe_dot(n, n));
     memset(r, 0, sizeof *r);
     if (!(nn > 0)) return 0;
-    for (int i = 0; i < 3; i++) n[i] /= nn;
+    for (int i = 0; i < 3; i++)
+        n[i] /= nn;
     /* first axis: the fibre projected on the plane, else side 1 */
     double fa = fibre ? fe_dot(fibre, n) : 0, fl = 0;
     if (fibre) {
-        for (int i = 0; i < 3; i++) g1[i] = fibre[i] - fa * n[i];
+        for (int i = 0; i < 3; i++)
+            g1[i] = fibre[i] - fa * n[i];
         fl = sqrt(fe_dot(g1, g1));
     }
     if (!(fl > 1e-6 * (fibre ? sqrt(fe_dot(fibre, fibre)) : 0))) {
         memcpy(g1, s1, sizeof g1);
         fl = sqrt(fe_dot(g1, g1));
     }
-    for (int i = 0; i < 3; i++) g1[i] /= fl;
+    for (int i = 0; i < 3; i++)
+        g1[i] /= fl;
     fe_cross(n, g1, g2);
     double x[3], y[3], lmax = 0;
     for (int k = 0; k < 3; k++) {
@@ -70,27 +73,6 @@ int fe_membrane_reference(const double X[3][3], const double fibre[3], fe_membra
     return 1;
 }
 
-_Static_assert(sizeof(fe_membrane_ref) == 8 * sizeof(double), "fe_model.shell_mref: 8 doubles");
-
-void fe_membrane_ref_build(fe_model *m)
-{
-    for (int ip = 0; ip < m->npart; ip++) {
-        const fe_part *p = &m->part[ip];
-        if (p->section.type != FE_SECTION_MEMBRANE) continue;
-        const double *dir = p->material.fabric_direction;
-        const int has_dir = fe_dot(dir, dir) > 0;
-        for (int e = p->elem_begin; e < p->elem_end; e++) {
-            const int *c = m->shell_node + 4 * e;
-            double X[3][3];
-            for (int k = 0; k < 3; k++)
-                for (int i = 0; i < 3; i++) X[k][i] = m->node_x0[3 * c[k] + i];
-            fe_membrane_ref r;
-            fe_membrane_reference(X, has_dir ? dir : NULL, &r); /* degenerate: area 0 */
-            memcpy(m->shell_mref + 8 * (size_t)e, &r, sizeof r);
-        }
-    }
-}
-
 /* F1, F2 of the triangle at positions xe and its Green strain (tensor xx, yy, xy) */
 static void green(const fe_membrane_ref *r, const double xe[3][3], double F1[3], double F2[3],
                   double e[3])
@@ -102,6 +84,28 @@ static void green(const fe_membrane_ref *r, const double xe[3][3], double F1[3],
     e[0] = 0.5 * (fe_dot(F1, F1) - 1);
     e[1] = 0.5 * (fe_dot(F2, F2) - 1);
     e[2] = 0.5 * fe_dot(F1, F2);
+}
+
+void fe_membrane_references(fe_model *m)
+{
+    for (int ip = 0; ip < m->npart && m->nshell_mref; ip++) {
+        const fe_part *p = &m->part[ip];
+        if (p->section.type != FE_SECTION_MEMBRANE) continue;
+        const double *dir = p->material.fabric_direction;
+        const int has_dir = fe_dot(dir, dir) > 0;
+        for (int e = p->elem_begin; e < p->elem_end; e++) {
+            const int *c = m->shell_node + 4 * e;
+            double X[3][3];
+            for (int k = 0; k < 3; k++)
+                for (int i = 0; i < 3; i++)
+                    X[k][i] = m->node_x0[3 * c[k] + i];
+            fe_membrane_ref r;
+            fe_membrane_reference(X, has_dir ? dir : NULL, &r); /* degenerate: area 0 */
+            double *q = m->shell_mref + 8 * (size_t)e;
+            memcpy(q, r.b, sizeof r.b), memcpy(q + 3, r.c, sizeof r.c);
+            q[6] = r.area, q[7] = r.length;
+        }
+    }
 }
 
 void fe_membrane_part(const fe_model *m, fe_state *s, int ip)
@@ -124,8 +128,10 @@ void fe_membrane_part(const fe_model *m, fe_state *s, int ip)
             }
         double *f = s->slot_f + 3 * ((size_t)m->slot_base[FE_KIND_SHELL] + 4 * (size_t)e);
         double *sg = s->shell_sig + 3 * (size_t)stride * e;
-        fe_membrane_ref r;
-        memcpy(&r, m->shell_mref + 8 * (size_t)e, sizeof r); /* fe_membrane_ref_build */
+        fe_membrane_ref r; /* the t = 0 geometry, kept in the model */
+        const double *q = m->shell_mref + 8 * (size_t)e;
+        memcpy(r.b, q, sizeof r.b), memcpy(r.c, q + 3, sizeof r.c);
+        r.area = q[6], r.length = q[7];
         if (!(r.area > 0)) {
             if (bad < 0) bad = e;
             memset(f, 0, 12 * sizeof(double));

@@ -34,11 +34,9 @@ typedef struct {
 } fe_membrane_ref;
 
 int fe_membrane_reference(const double X[3][3], const double fibre[3], fe_membrane_ref *r);
-/* the reference of every membrane triangle at the initial positions into m->shell_mref (its
- * geometry never changes: built once, not every step) */
-struct fe_model;
-void fe_membrane_ref_build(struct fe_model *m);
 
+/* the reference of every membrane element from node_x0 into m->shell_mref (model build) */
+void fe_membrane_references(struct fe_model *m);
 /* element loop of a membrane part: stresses, slot forces, energies, element steps */
 void fe_membrane_part(const fe_model *m, fe_state *s, int ip);
 

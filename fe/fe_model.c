@@ -408,12 +408,15 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
     for (int ip = 0; ip < m->npart; ip++)
         if (m->part[ip].elem_kind == FE_KIND_SHELL && m->part[ip].material.cowper_symonds_c > 0)
             m->nshell_rate = m->nshell_ip;
+    for (int ip = 0; ip < m->npart; ip++)
+        if (m->part[ip].section.type == FE_SECTION_MEMBRANE) m->nshell_mref = m->nshell;
     if (st == MCS_OK) st = alloc_arrays(m, err);
     if (st == MCS_OK) {
         memcpy(m->node_x0, b->x, sizeof(double) * 3 * (size_t)m->nnode);
         sort_elements(b, m);
         fe_build_chunks(m);
         st = lump_masses(m, err);
+        fe_membrane_references(m); /* t = 0 geometry of the membranes */
     }
     if (st == MCS_OK) st = fe_solid_build(b, m, err); /* point masses, springs, rigid bodies */
     if (st == MCS_OK) {

@@ -274,14 +274,14 @@ typedef struct {
     X(int, hex_part, nhex, 1, "-", "part of each hex")                                             \
     X(int, shell_node, nshell, 4, "-", "shell connectivity, counter-clockwise about the normal")   \
     X(int, shell_part, nshell, 1, "-", "part of each shell")                                       \
-    X(double, shell_mref, nshell, 8, "-", "membrane reference (fe_membrane_ref: b, c [1/m], area "  \
-      "[m^2], altitude [m]); zero area: degenerate")                                               \
     X(int, truss_node, ntruss, 2, "-", "truss connectivity")                                       \
     X(int, truss_part, ntruss, 1, "-", "part of each truss")                                     \
     X(int, tet10_node, ntet10, 10, "-", "tet10 connectivity: corners 1-4, then mid-edges 12 23 31 14 24 34") \
     X(int, tet10_part, ntet10, 1, "-", "part of each tet10")                                       \
     X(double, tet10_dtf, ntet10, 1, "-", "tet10 step factor: (2 / omega_max) / (l / c) at t = 0") \
     X(int, node_body, nnode, 1, "-", "rigid body carrying the node, -1 none")                      \
+    X(double, shell_mref, nshell_mref, 8, "-",                                                     \
+      "membrane reference: b (3), c (3) [1/m], area [m^2], altitude [m] (fe_membrane.c)")        \
     X(int, chunk_part, nchunk, 1, "-", "part of each element chunk (threaded element loops)")      \
     X(int, chunk_elem, nchunk, 1, "-", "first element of each chunk, index in its kind")           \
     X(int, chunk_nc, nchunk, 1, "-", "first node chunk of each element chunk's thread share")
@@ -336,6 +336,8 @@ typedef struct fe_model {
     int node_acc_stride;   /* partial sums per node chunk: FE_NACC_FIXED + npart + 3 FE_WALL_MAX */
     int nnode_acc;         /* nnode_chunk x node_acc_stride [-]                            */
     int nshell_rate;       /* nshell_ip when a shell part has a rate factor, else 0 [-]    */
+    int nshell_mref;       /* nshell when a part is a membrane (its t = 0 reference geometry
+                              is kept, fe_membrane.c), else 0 [-]                          */
     int nspring_part;      /* spring parts (energies per part, fe_discrete.c) [-]          */
     int nms_node, nms_elem; /* run-time mass scaling: nnode, nelem (0 when off) [-]        */
     double *elem_ms0;      /* (nms_elem) density factor of the t = 0 mass scaling (1 none) [-] */
@@ -384,8 +386,6 @@ int fe_builder_nnode(const fe_builder *b);
 int fe_builder_find_part(const fe_builder *b, const char *name);
 /* nodes of a part on its bounding-box side `where`, written to idx (capacity cap); count returned */
 int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, int cap);
-/* the node of a part nearest to p [m] (the first of equals), -1 if the part has none */
-int fe_builder_nearest(const fe_builder *b, int part, const double p[3]);
 
 /* validate and freeze; opts NULL takes fe_opts_default() */
 mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **out,

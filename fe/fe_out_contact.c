@@ -22,6 +22,10 @@ mcs_status fe_out_contact_open(mcs_results *r, int stage, const fe_model *m, fe_
         snprintf(path, sizeof path, "/stage%d/ellipsoid/%s/force", stage, c->ell[i].name);
         st = mcs_results_series_create(r, path, 2, &three, "N", 0, &o->ell_force[i], err);
     }
+    for (int i = 0; c && i < c->nfac && !st; i++) {
+        snprintf(path, sizeof path, "/stage%d/facets/%s/force", stage, c->fac[i].name);
+        st = mcs_results_series_create(r, path, 2, &three, "N", 0, &o->fac_force[i], err);
+    }
     return st;
 }
 
@@ -36,5 +40,7 @@ mcs_status fe_out_contact_sample(const fe_model *m, const fe_state *s, const fe_
     }
     for (int i = 0; c && i < c->nell && !st; i++)
         st = mcs_results_series_append(o->ell_force[i], s->contact->ell_force + 3 * i, err);
+    for (int i = 0; c && i < c->nfac && !st; i++)
+        st = mcs_results_series_append(o->fac_force[i], s->contact->fac_force + 3 * i, err);
     return st;
 }

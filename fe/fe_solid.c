@@ -2,7 +2,6 @@
  * fully integrated hex and mass scaling modules (fe_solid.h), called once each from
  * fe_model_create, fe_model_destroy and fe_state_reset. */
 #include "fe/fe_elem.h"
-#include "fe/fe_membrane.h"
 #include "fe/fe_solid.h"
 #include "fe/fe_tet10.h"
 
@@ -46,7 +45,6 @@ mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err)
     st = fe_discrete_build(b, m, err);
     if (!st) st = fe_tet_dt_build(m, err);
     if (!st) st = fe_tet10_dt_build(m, err);
-    if (!st) fe_membrane_ref_build(m);
     if (!st) st = fe_massscale_build(m, err);
     if (!st) st = fe_hex_dt_build(m, err);
     if (!st) st = fe_rigid_build(m, err);

@@ -21,10 +21,11 @@
 #include <string.h>
 
 typedef struct {
-    int facets; /* 1: kernel facet surface, 0: kernel ellipsoid              */
-    int index;  /* its index in the kernel                                  */
-    int body;   /* slot in the contact's body list (cb)                      */
-    int surf;   /* stage-1 surface                                          */
+    int facets;  /* 1: kernel facet surface, 0: kernel ellipsoid              */
+    int index;   /* its index in the kernel                                  */
+    int body;    /* slot in the contact's body list (cb)                      */
+    int surf;    /* stage-1 surface                                          */
+    int contact; /* the bodies contact it belongs to                        */
 } cc_surf;
 
 struct mb_couple_contact {
@@ -32,6 +33,8 @@ struct mb_couple_contact {
     cc_surf *s;
     int nbody; /* bodies any surface belongs to [-]                        */
     int *body; /* their mb body index (nbody)                              */
+    int ncontact;
+    char (*name)[FE_NAME_MAX]; /* each bodies contact's name (ncontact)     */
 };
 
 struct mb_couple_contact_state {
@@ -137,6 +140,10 @@ static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc
         return mcs_node_error(pl, err, MCS_ERR_RANGE, "at most %d parts", FE_CONTACT_PARTS);
     for (int i = 0; i < np; i++)
         snprintf(parts[i], FE_NAME_MAX, "%s", mcs_node_str(mcs_node_at(pl, i)));
+    char(*nn)[FE_NAME_MAX] = realloc(cc->name, sizeof *nn * (size_t)(cc->ncontact + 1));
+    if (!nn) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
+    cc->name = nn;
+    memcpy(cc->name[cc->ncontact++], name, FE_NAME_MAX);
     const double mu = mcs_node_num_or(n, "friction", 0);
     const double scale = mcs_node_num_or(n, "penalty_scale", 0);
     for (int j = 0; j < mcs_node_len(bl); j++) {
@@ -154,7 +161,7 @@ static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc
             int kind = 0;
             mcs_status st = add_surface(fb, m, k, name, parts, np, mu, scale, &kind, &kerr);
             if (st) return mcs_node_error(bn, err, st, "%s", kerr.msg);
-            cc_surf v = {kind, 0, slot, k};
+            cc_surf v = {kind, 0, slot, k, cc->ncontact - 1};
             v.index = -1;
             if (push_surf(cc, v)) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
             found = 1;
@@ -199,7 +206,7 @@ void mb_couple_contact_destroy(mb_couple_contact **p)
 {
     mb_couple_contact *c = p ? *p : NULL;
     if (!c) return;
-    free(c->s), free(c->body), free(c);
+    free(c->s), free(c->body), free(c->name), free(c);
     *p = NULL;
 }
 
@@ -422,4 +429,26 @@ int mb_couple_contact_impulse(const mb_model *m, const mb_state *s, int body, do
             return 0;
         }
     return -1;
+}
+
+int mb_couple_contact_find(const mb_model *m, const char *name)
+{
+    const mb_couple_contact *c = m->couple ? m->couple->contact : NULL;
+    for (int k = 0; c && name && k < c->ncontact; k++)
+        if (strcmp(c->name[k], name) == 0) return k;
+    return -1;
+}
+
+void mb_couple_contact_force(const mb_model *m, const mb_state *s, int k, double f[3])
+{
+    const mb_couple_contact *c = m->couple->contact;
+    const fe_contact_state *ks = s->couple->fe->contact;
+    f[0] = f[1] = f[2] = 0;
+    for (int i = 0; i < c->nsurf; i++) {
+        const cc_surf *v = &c->s[i];
+        if (v->contact != k) continue;
+        const double *F = (v->facets ? ks->fac_force : ks->ell_force) + 3 * v->index;
+        for (int j = 0; j < 3; j++)
+            f[j] += F[j];
+    }
 }

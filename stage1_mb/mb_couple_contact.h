@@ -41,5 +41,9 @@ double mb_couple_contact_work(const mb_model *m, const mb_state *s);
  * world) [N s, N m s]; -1 when no bodies contact names the body */
 int mb_couple_contact_impulse(const mb_model *m, const mb_state *s, int body, double fe[6],
                               double onbody[6]);
+/* a bodies contact by name (`name`, default contact<i> as the FE contacts): its index, -1 if
+ * none; its force on the bodies at the last FE step (the sum over its surfaces, world) [N] */
+int mb_couple_contact_find(const mb_model *m, const char *name);
+void mb_couple_contact_force(const mb_model *m, const mb_state *s, int k, double f[3]);
 
 #endif

@@ -56,6 +56,7 @@ static double lattice_force(const fe_model *fm, double R, double scale, double d
     for (int n = 0; n < fm->nnode; n++) {
         const double *x = fm->node_x0 + 3 * n;
         double r2 = x[0] * x[0] + x[1] * x[1]; /* the ball's axis is x = y = 0 */
+        if (x[2] < -1e-9) continue;            /* below the top face (a block's inside) */
         if (r2 >= R * R) continue;
         double d = delta - (R - sqrt(R * R - r2));
         if (d <= 0) continue;
@@ -157,6 +158,67 @@ static double rest_depth(const fe_model *fm, double R, double scale, double weig
             hi = mid;
     }
     return 0.5 * (lo + hi);
+}
+
+/* The same drop on a fixed block of hex8 (10 mm thick, 2 elements through): the ball meets
+ * the hex nodes of the top face (offset 0, as solid nodes), the same lattice closed form. */
+static void test_ball_drop_on_fixed_hex_block(void)
+{
+    const double R = 0.1, v0 = 1, scale = 0.001;
+    char y[4096];
+    snprintf(y, sizeof y,
+             "mcrash: 1\nname: hex\n"
+             "simulation: {end_time: 0.01, time_step: 20 us, output_rate: 10 kHz}\n"
+             "environment: {gravity: 0}\n"
+             "bodies:\n"
+             "  - {name: ball, mass: 1, inertia: [0.004, 0.004, 0.004], position: [0, 0, %.9g],\n"
+             "     velocity: [0, 0, %g], angular_velocity: [0, 0, 0],\n"
+             "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [%g, %g, %g]}]}\n"
+             "fe:\n  parts:\n    - name: block\n"
+             "      mesh: {generate: box, size: [0.08, 0.08, 0.01], divisions: [32, 32, 2],\n"
+             "             origin: [-0.04, -0.04, -0.01]}\n"
+             "      section: {type: solid}\n"
+             "      material: {model: elastic, density: 7.85e6, youngs_modulus: 210 GPa, "
+             "poisson: 0.3}\n"
+             "  boundary: [{part: block, where: all, fix: all}]\n"
+             "  contacts: [{type: bodies, parts: [block], bodies: [ball], penalty_scale: %g}]\n",
+             R + 0.5e-3, -v0, R, R, R, scale);
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("hex.yaml", y, &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    const fe_model *fm = m->couple->fe.model;
+    double fpeak = 0;
+    mb_body_kin k = {0};
+    while (!st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        fpeak = fmax(fpeak, s->couple->fe->contact->ell_force[2]);
+    }
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    mb_body_get(s->world, 0, &k);
+    double lo = 0, hi = 0.01, w = 0;
+    for (int i = 0; i < 200; i++) {
+        double mid = 0.5 * (lo + hi);
+        lattice_force(fm, R, scale, mid, &w);
+        if (w < 0.5 * v0 * v0) lo = mid;
+        else hi = mid;
+    }
+    const double fref = lattice_force(fm, R, scale, lo, &w);
+    const double perr = 100 * (fpeak / fref - 1), verr = 100 * (k.vel[2] / v0 - 1);
+    printf("hex block: rebound %.5f m/s (%+.3f %%), peak force %.2f N (closed form %.2f N, "
+           "%+.3f %%), drift %.3g\n",
+           k.vel[2], verr, fpeak, fref, perr, mb_energy_drift(m, s));
+    FIG("stage1_engine.contact_hex_peak_err_pct", "%.2f", fabs(perr));
+    CHECK_NEAR(verr, 0, 0.1);
+    CHECK_NEAR(perr, 0, 1.0);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
 }
 
 /* A solid ball (I = 2/5 M R^2) set down sliding at v0 = 1 m/s, no spin, on a fixed plate with
@@ -361,6 +423,12 @@ static void test_facet_block_on_membrane(void)
            nunder, K, fpeak, fref, ferr, 1e3 * (t_off - t_on), 1e3 * tref, k.vel[2], verr, mz,
            jfe[2], jb[2], mb_energy_drift(m, s));
     CHECK(nunder == 81);
+    /* the contact by its (default) name: what the body got from it at the last FE step */
+    const int kc = mb_couple_contact_find(m, "contact0");
+    double fc[3];
+    CHECK(kc == 0 && mb_couple_contact_find(m, "nothing") == -1);
+    if (kc == 0) mb_couple_contact_force(m, s, kc, fc);
+    CHECK(kc == 0 && fc[2] == s->couple->fe->contact->fac_force[2]);
     FIG("stage1_engine.contact_facet_peak_err_pct", "%.2f", fabs(ferr));
     FIG("stage1_engine.contact_facet_rebound_err_pct", "%.3f", fabs(verr));
     CHECK_NEAR(ferr, 0, 0.05);
@@ -369,6 +437,51 @@ static void test_facet_block_on_membrane(void)
     CHECK_NEAR(jb[2], jfe[2], 1e-6 * jfe[2]);
     CHECK_NEAR(jb[2], M * (k.vel[2] + v0), 1e-9);
     mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
+/* the facet block's run written to a results file: /stage1/contact/<name>/force (on the
+ * parts' nodes) is minus /stage1/facets/<surface>/force (on the block) row by row, and its
+ * peak over the 10 kHz rows is the closed form's v0 sqrt(M K) of the run above */
+static void test_contact_output(void)
+{
+    char dir[] = "/tmp/mcrash_bodyct_XXXXXX", path[128];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/facet.h5", dir);
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("facet.yaml", FACET_YAML, &err);
+    CHECK(m != NULL);
+    if (!m) return;
+    const fe_model *fm = m->couple->fe.model;
+    double K = 0;
+    for (int n = 0; n < fm->nnode; n++) {
+        const double *x = fm->node_x0 + 3 * n;
+        if (fabs(x[0]) < 0.01125 && fabs(x[1]) < 0.01125)
+            K += 0.001 * fm->node_mass[n] / (fm->contact->dt0 * fm->contact->dt0);
+    }
+    mb_run_opts o = {.out_path = path, .quiet = 1};
+    mb_run_summary sum;
+    CHECK(mb_run(m, &o, &sum, &err) == MCS_OK);
+    mcs_results *h = NULL;
+    mcs_array cf = {0}, ff = {0};
+    CHECK(mcs_results_open(&h, path, &err) == MCS_OK);
+    CHECK(h && mcs_results_read(h, "/stage1/contact/contact0/force", &cf, &err) == MCS_OK);
+    CHECK(h && mcs_results_read(h, "/stage1/facets/contact0:block.surfaces[0]/force", &ff,
+                                &err) == MCS_OK);
+    if (err.status) fprintf(stderr, "%s\n", err.msg);
+    double worst = 0, peak = 0;
+    for (size_t i = 0; i < cf.n && i < ff.n; i++) worst = fmax(worst, fabs(cf.v[i] + ff.v[i]));
+    for (size_t i = 2; i < cf.n; i += 3) peak = fmax(peak, -cf.v[i]);
+    const double fref = 0.3 * sqrt(1.0 * K);
+    printf("output: %zu rows, contact + facets force %.3g N, peak %.2f N (v0 sqrt(M K) %.2f)\n",
+           cf.n / 3, worst, peak, fref);
+    CHECK(cf.n > 0 && cf.n == ff.n && worst == 0);
+    CHECK_NEAR(peak, fref, 2e-3 * fref);
+    mcs_array_free(&cf);
+    mcs_array_free(&ff);
+    mcs_results_close(&h);
+    remove(path);
+    remove(dir);
     mb_model_destroy(&m);
 }
 
@@ -423,9 +536,11 @@ int main(void)
 {
     fe_set_threads(1); /* small models: one thread is faster than a team's start-up */
     RUN(test_ball_drop_on_fixed_plate);
+    RUN(test_ball_drop_on_fixed_hex_block);
     RUN(test_ball_slides_then_rolls);
     RUN(test_momentum_ball_on_free_plate);
     RUN(test_facet_block_on_membrane);
+    RUN(test_contact_output);
     RUN(test_bodies_contact_errors_are_located);
     TEST_END();
 }

@@ -179,6 +179,75 @@ static void test_short_run_drift(void)
     mb_model_destroy(&m);
 }
 
+/* a part attached to nothing stays where the fe: block puts it, with its initial_velocity */
+static void test_free_part_stays(void)
+{
+    char *y = malloc(8192);
+    strcpy(y, box("1 ms"));
+    strcat(y, "    - name: free\n"
+              "      mesh: {generate: line, origin: [5, 5, 1], end: [5, 6, 1], divisions: 4}\n"
+              "      section: {type: truss, area: 1e-4}\n"
+              "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, "
+              "poisson: 0.3}\n"
+              "      initial_velocity: [1, 2, 3]\n");
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("free.yaml", y, &err);
+    CHECK(m != NULL);
+    if (!m) fprintf(stderr, "%s\n", err.msg);
+    const fe_model *fm = m ? m->couple->fe.model : NULL;
+    double ex = 0, ev = 0;
+    for (int n = NDIV + 1; fm && n < fm->nnode; n++) { /* the free part's nodes follow the bar's */
+        const double x[3] = {5, 5 + 0.25 * (n - NDIV - 1), 1}, v[3] = {1, 2, 3};
+        for (int i = 0; i < 3; i++) {
+            ex = fmax(ex, fabs(fm->node_x0[3 * n + i] - x[i]));
+            ev = fmax(ev, fabs(fm->node_v0[3 * n + i] - v[i]));
+        }
+    }
+    CHECK(fm && fm->nnode == NDIV + 1 + 5);
+    CHECK(ex == 0 && ev == 0);
+    mb_model_destroy(&m);
+    free(y);
+}
+
+/* a part carried by an opponent body stays in place (the opponent is not moved) and starts
+ * with the opponent's speed along its heading (+x by default) */
+static void test_opponent_part(void)
+{
+    char *y = malloc(8192);
+    strcpy(y, box("1 ms"));
+    char *p = strstr(y, "impact: {");
+    char tail[4096];
+    snprintf(tail, sizeof tail, "%s", p + strlen("impact: {"));
+    snprintf(p, 8192 - (size_t)(p - y),
+             "  - {name: car, mass: 1000, inertia: [300, 1000, 1000], position: [5, 0, 0.5],\n"
+             "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0]}\n"
+             "impact: {opponent_speed: 2 m/s, %s",
+             tail);
+    strcat(y, "    - name: door\n"
+              "      mesh: {generate: line, origin: [5, 1, 0.5], end: [5, 2, 0.5], divisions: 4}\n"
+              "      section: {type: truss, area: 1e-4}\n"
+              "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, "
+              "poisson: 0.3}\n"
+              "      attach: {body: car, where: y_min}\n");
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("opp.yaml", y, &err);
+    CHECK(m != NULL);
+    if (!m) fprintf(stderr, "%s\n", err.msg);
+    const fe_model *fm = m ? m->couple->fe.model : NULL;
+    double ex = 0, ev = 0;
+    for (int n = NDIV + 1; fm && n < fm->nnode; n++) {
+        const double x[3] = {5, 1 + 0.25 * (n - NDIV - 1), 0.5}, v[3] = {2, 0, 0};
+        for (int i = 0; i < 3; i++) {
+            ex = fmax(ex, fabs(fm->node_x0[3 * n + i] - x[i]));
+            ev = fmax(ev, fabs(fm->node_v0[3 * n + i] - v[i]));
+        }
+    }
+    CHECK(fm && fm->nnode == NDIV + 1 + 5);
+    CHECK(ex == 0 && ev == 0);
+    mb_model_destroy(&m);
+    free(y);
+}
+
 /* what the placement refuses, at FILE:LINE:COL */
 static void expect_error(const char *what, const char *from, const char *to, const char *loc,
                          const char *msg)
@@ -209,6 +278,11 @@ static void test_refusals(void)
     /* a translation held in the world on a moved part */
     expect_error("boundary", "x_min}\n", "x_min}\n  boundary: [{part: bar, where: x_max}]\n",
                  "bad.yaml:18:14", "moves with the impact placement");
+    /* a retractor on a moved part anchored to the ground */
+    expect_error("ground anchor", "x_min}\n",
+                 "x_min}\n  retractors:\n"
+                 "    - {name: ret, part: bar, where: x_max, anchor: [1.1, 0.1, 0.8]}\n",
+                 "bad.yaml:19:", "fixed to the ground");
     /* an initial velocity on a carried part */
     expect_error("initial_velocity", "      attach:",
                  "      initial_velocity: [1, 0, 0]\n      attach:", "bad.yaml:17:25",
@@ -219,6 +293,8 @@ int main(void)
 {
     RUN(test_placement_and_velocity_field);
     RUN(test_short_run_drift);
+    RUN(test_free_part_stays);
+    RUN(test_opponent_part);
     RUN(test_refusals);
     TEST_END();
 }

@@ -11,10 +11,12 @@
  *   its offset at t = 0, from /stage1/bodies/sled);
  * - `mcrash export --xdmf` references only datasets that exist, with their shapes, and shows
  *   the FE parts and the body at the same times;
- * - the file has the same bytes on 1 and 2 OpenMP threads. */
+ * - a head (a body) falling onto the bag through a bodies contact: the file has the same bytes
+ *   on 1 and 2 OpenMP threads. */
 #include "cli_util.h"
 #include "core/mcs_results.h"
 #include "harness.h"
+#include "figures.h"
 #include "s3_test_util.h"
 
 #include <math.h>
@@ -33,6 +35,9 @@ static char tmpdir[64];
     "  - {name: sled, mass: 20, inertia: [0.5, 0.5, 0.5], position: [0, 0, 0],\n"                  \
     "     velocity: [1, 0, 0], angular_velocity: [0, 0, 2],\n"                                     \
     "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [0.2, 0.1, 0.05]}]}\n"       \
+    "  - {name: head, mass: 4, inertia: [0.02, 0.02, 0.02], position: [0.05, 0, 0.383],\n"        \
+    "     velocity: [0, 0, -5], surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"               \
+    "     semi_axes: [0.08, 0.08, 0.08]}]}\n"                                                     \
     "fe:\n"                                                                                        \
     "  parts:\n"                                                                                   \
     "    - name: fabric\n"                                                                         \
@@ -57,7 +62,8 @@ static char tmpdir[64];
     "       load_limit: 2 kN}\n"                                                                   \
     "  sliprings:\n"                                                                               \
     "    - {name: ring, part: belt, point: [0, 0, 0.5], friction: 0.2, retractor: ret}\n"         \
-    "  contacts: [{type: single_surface, parts: [fabric], friction: 0.2}]\n"
+    "  contacts: [{type: single_surface, parts: [fabric], friction: 0.2},\n"                   \
+    "             {name: head_bag, type: bodies, parts: [fabric], bodies: [head]}]\n"
 
 static const char *sled(const char *name, double elem_mm, double end_ms)
 {
@@ -162,6 +168,51 @@ static void test_layout_and_values(void)
            1e3 * travel);
     CHECK(worst_x < 1e-12);
     CHECK(travel > 2e-3); /* 1 m/s over 4 ms, braked by the belt */
+    /* the parts' energies are the FE share of /stage1/energy: kinetic = the bodies' (1/2 m v^2
+     * + 1/2 I w^2, isotropic inertias of the scenario) + the parts'; internal (no joints) = the
+     * parts' internal + hourglass */
+    const char *bn[2] = {"sled", "head"};
+    const double bm[2] = {20, 4}, bi[2] = {0.5, 0.02};
+    mcs_array ek = {0}, ei = {0}, pk[2] = {{0}}, pi[2] = {{0}}, ph[2] = {{0}}, bv[2] = {{0}};
+    mcs_array bw[2] = {{0}};
+    const char *pn[2] = {"fabric", "belt"};
+    int ok = rd(h, "/stage1/energy/kinetic", &ek) && rd(h, "/stage1/energy/internal", &ei);
+    for (int k = 0; k < 2 && ok; k++) {
+        char path[128];
+        snprintf(path, sizeof path, "/stage1/parts/%s/energy/kinetic", pn[k]);
+        ok = rd(h, path, &pk[k]);
+        snprintf(path, sizeof path, "/stage1/parts/%s/energy/internal", pn[k]);
+        ok = ok && rd(h, path, &pi[k]);
+        snprintf(path, sizeof path, "/stage1/parts/%s/energy/hourglass", pn[k]);
+        ok = ok && rd(h, path, &ph[k]);
+        snprintf(path, sizeof path, "/stage1/bodies/%s/velocity", bn[k]);
+        ok = ok && rd(h, path, &bv[k]);
+        snprintf(path, sizeof path, "/stage1/bodies/%s/angular_velocity", bn[k]);
+        ok = ok && rd(h, path, &bw[k]);
+    }
+    CHECK(ok);
+    double worst_k = 0, worst_i = 0, fe_k = 0;
+    for (size_t i = 0; ok && i < nt; i++) {
+        double kb = 0, kp = pk[0].v[i] + pk[1].v[i];
+        for (int k = 0; k < 2; k++) {
+            const double *v = bv[k].v + 3 * i, *w = bw[k].v + 3 * i;
+            kb += 0.5 * bm[k] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+                  0.5 * bi[k] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        }
+        worst_k = fmax(worst_k, fabs(ek.v[i] - kb - kp) / ek.v[i]);
+        worst_i = fmax(worst_i, fabs(ei.v[i] - (pi[0].v[i] + pi[1].v[i] + ph[0].v[i] +
+                                                 ph[1].v[i])));
+        fe_k = fmax(fe_k, kp);
+    }
+    printf("  parts' energies: kinetic of bodies + parts within %.1e of /stage1/energy "
+           "(parts up to %.3g J), internal within %.1e J\n", worst_k, fe_k, worst_i);
+    CHECK(worst_k < 1e-12);
+    CHECK(worst_i < 1e-12);
+    mcs_array_free(&ek), mcs_array_free(&ei);
+    for (int k = 0; k < 2; k++) {
+        mcs_array_free(&pk[k]), mcs_array_free(&pi[k]), mcs_array_free(&ph[k]);
+        mcs_array_free(&bv[k]), mcs_array_free(&bw[k]);
+    }
     mcs_array_free(&t), mcs_array_free(&ft), mcs_array_free(&d), mcs_array_free(&nodes);
     mcs_array_free(&m), mcs_array_free(&pl), mcs_array_free(&pos), mcs_array_free(&ori);
     mcs_array_free(&V), mcs_array_free(&cf);
@@ -226,6 +277,73 @@ static void test_field_rate(void)
     for (size_t i = 0; i < ft.n; i++) /* the first step at or after each 0.5 ms */
         CHECK(ft.v[i] > 0.5e-3 * (double)i - 1e-12 && ft.v[i] < 0.5e-3 * (double)i + 50e-6);
     mcs_array_free(&t), mcs_array_free(&ft);
+    mcs_results_close(&h);
+}
+
+/* a bodies contact's force (mb_couple_contact.c): a 1 kg ball at 1 m/s onto a fixed plate,
+ * no gravity (the drop of test_mb_couple_contact): /stage1/contact/hit/force is the force on
+ * the FE side, so its impulse is minus the ball's momentum change, M (v_end - v_0) from
+ * /stage1/bodies/ball/velocity (impulse-momentum; trapezoids over the 20 us rows); the ball's
+ * kernel ellipsoid is /stage1/ellipsoid/hit:<surface>/force, the force on the ball */
+static void test_bodies_contact_force(void)
+{
+    char scn[128], out[128], args[512];
+    snprintf(scn, sizeof scn, "%s/drop.yaml", tmpdir);
+    write_text(scn,
+               "mcrash: 1\nname: drop\n"
+               "simulation: {end_time: 6 ms, time_step: 20 us, output_rate: 50 kHz}\n"
+               "environment: {gravity: 0}\n"
+               "bodies:\n"
+               "  - {name: ball, mass: 1, inertia: [0.004, 0.004, 0.004],\n"
+               "     position: [0, 0, 0.1015],\n"
+               "     velocity: [0, 0, -1], angular_velocity: [0, 0, 0],\n"
+               "     surfaces: [{type: ellipsoid, center: [0, 0, 0],\n"
+               "                 semi_axes: [0.1, 0.1, 0.1]}]}\n"
+               "fe:\n  parts:\n    - name: plate\n"
+               "      mesh: {generate: plate, size: [0.08, 0.08], divisions: [32, 32],\n"
+               "             origin: [-0.04, -0.04, 0]}\n"
+               "      section: {type: shell, thickness: 2 mm}\n"
+               "      material: {model: elastic, density: 7.85e6, youngs_modulus: 210 GPa,"
+               " poisson: 0.3}\n"
+               "  boundary: [{part: plate, where: all, fix: all}]\n"
+               "  contacts: [{name: hit, type: bodies, parts: [plate], bodies: [ball],"
+               " penalty_scale: 0.001}]\n");
+    snprintf(out, sizeof out, "%s/drop.h5", tmpdir);
+    snprintf(args, sizeof args, "stage1 %s -o %s --quiet", scn, out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    if (r->status) fprintf(stderr, "%s\n", r->err);
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    char **names = NULL;
+    int n = 0;
+    CHECK(mcs_results_list(h, "/stage1/ellipsoid", &names, &n, &err) == MCS_OK);
+    CHECK(n == 1 && strncmp(names[0], "hit:", 4) == 0);
+    char ep[256];
+    snprintf(ep, sizeof ep, "/stage1/ellipsoid/%s/force", n == 1 ? names[0] : "?");
+    mcs_results_list_free(&names, n);
+    mcs_array t = {0}, f = {0}, fe = {0}, v = {0};
+    CHECK(rd(h, "/stage1/time", &t) && rd(h, "/stage1/contact/hit/force", &f) && rd(h, ep, &fe) &&
+          rd(h, "/stage1/bodies/ball/velocity", &v));
+    CHECK(f.rank == 2 && f.dims[0] == t.n && f.dims[1] == 3 && fe.n == f.n);
+    double J = 0, fpeak = 0, worst_sym = 0;
+    for (size_t i = 1; i < t.n && f.n == 3 * t.n; i++)
+        J += 0.5 * (f.v[3 * i + 2] + f.v[3 * i - 1]) * (t.v[i] - t.v[i - 1]);
+    for (size_t i = 0; i < f.n && i < fe.n; i++) {
+        fpeak = fmax(fpeak, fabs(f.v[i]));
+        worst_sym = fmax(worst_sym, fabs(f.v[i] + fe.v[i]));
+    }
+    const double dp = 1.0 * (v.v[v.n - 1] - v.v[2]); /* M (v_end - v_0), z */
+    printf("  bodies contact 'hit': impulse on the plate %.5f N s, ball's momentum change "
+           "%.5f N s (%.2f %%), peak %.0f N\n",
+           J, dp, 100 * (-J / dp - 1), fpeak);
+    FIG("stage1_engine.couple_out_impulse_err_pct", "%.2f", fabs(100 * (-J / dp - 1)));
+    CHECK(dp > 1.5);                 /* it bounced */
+    CHECK_REL(-J, dp, 0.0012);       /* output-row trapezoids: 0.04 % measured */
+    CHECK(worst_sym == 0);           /* the plate's force is minus the ball's */
+    mcs_array_free(&t), mcs_array_free(&f), mcs_array_free(&fe), mcs_array_free(&v);
     mcs_results_close(&h);
 }
 
@@ -424,7 +542,14 @@ static void test_same_bytes_on_1_and_2_threads(void)
     size_t dims[3] = {0};
     CHECK(mcs_results_open(&h, out[0], &err) == MCS_OK);
     CHECK(h && mcs_results_shape(h, "/stage1/mesh/fabric/elements", &rk, dims, &err) == MCS_OK);
-    printf("  1 and 2 threads: %zu bytes, identical; bag of %zu elements\n", na, dims[0]);
+    mcs_array hf = {0};
+    double fpeak = 0; /* the head has reached the bag: the bodies contact ran */
+    CHECK(h && rd(h, "/stage1/contact/head_bag/force", &hf));
+    for (size_t i = 0; i < hf.n; i++) fpeak = fmax(fpeak, fabs(hf.v[i]));
+    mcs_array_free(&hf);
+    printf("  1 and 2 threads: %zu bytes, identical; bag of %zu elements, head on the bag %.0f N\n",
+           na, dims[0], fpeak);
+    CHECK(fpeak > 10);
     CHECK(dims[0] >= 8 * 128);
     mcs_results_close(&h);
     free(a);
@@ -438,6 +563,7 @@ int main(void)
     RUN(test_layout_and_values);
     RUN(test_xdmf_shows_parts_and_bodies);
     RUN(test_field_rate);
+    RUN(test_bodies_contact_force);
     RUN(test_same_bytes_on_1_and_2_threads);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

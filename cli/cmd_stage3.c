@@ -5,6 +5,7 @@
  * Exit status: 0 done, 1 numerical failure (no results file left), 2 bad input. */
 #include "cli/cli.h"
 #include "cli/cli_common.h"
+#include "fe/fe_scn_restraints.h"
 #include "stage3_fe/s3_run.h"
 
 #include <stdio.h>
@@ -15,7 +16,12 @@ int cli_stage3_scenario(const mcs_scenario *scn, const char *out, int quiet, int
     mcs_error err = {0};
     fe_problem p = {0};
     s3_summary sum = {0};
-    mcs_status st = fe_scn_build(scn, &p, &err);
+    const mcs_node *k1 = fe_scn_stage1_key(mcs_node_get(mcs_scenario_root(scn), "fe"));
+    mcs_status st = k1 ? mcs_node_error(k1, &err, MCS_ERR_UNSUPPORTED,
+                                        "needs the stage-1 bodies (a coupled stage-1 run): not "
+                                        "in a stage-3 run")
+                       : MCS_OK;
+    if (!st) st = fe_scn_build(scn, &p, &err);
     if (!st) {
         s3_run_opts o = {.out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = quiet};
         st = s3_run(&p, &o, &sum, &err);

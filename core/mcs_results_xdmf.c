@@ -1,5 +1,8 @@
 /* mcs_results_xdmf.c: `mcrash export --xdmf` — an XDMF 3 file that points into the results
- * file, so ParaView shows the FE meshes deforming and the rigid bodies moving over time. */
+ * file, so ParaView shows the FE meshes deforming and the rigid bodies moving over time. What
+ * XDMF cannot compute from the results (the bodies' outlines posed in the world; the deformed
+ * positions of the parts of a stage that also has bodies) is written at export into
+ * FILE.xmf.h5 beside the .xmf (docs/contracts.md). */
 #include "core/mcs_results_export.h"
 
 #include <errno.h>
@@ -14,9 +17,10 @@ typedef struct {
     mcs_results *r;
     char h5[PATH_MAX];   /* the results file, relative to the .xmf          */
     const char *cur;     /* the file the DataItems name: h5, or side_name    */
-    char side[PATH_MAX + 16];      /* the bodies' outlines file beside the .xmf */
+    char side[PATH_MAX + 16];      /* the outlines file <xmf>.h5 beside the .xmf */
     char side_name[PATH_MAX + 16]; /* its name relative to the .xmf            */
     mcs_results *sw;     /* its writer, created at the first outline       */
+    size_t npos_frames;  /* frames of the parts' positions written there     */
     mcs_xdmf_opts opts;
 } xw;
 
@@ -254,8 +258,10 @@ static mcs_status read_part(mcs_results *r, int stage, const char *name, const c
     return st;
 }
 
+/* one part at output row step; pos (NULL: none) names the deformed positions [nf, nn, 3] of
+ * the outlines file (frame k of them) */
 static void put_part(xw *w, int ind, const fe_part *p, const char *disp, const size_t *ddims,
-                     size_t step)
+                     size_t step, const char *pos, size_t k)
 {
     FILE *f = w->f;
     size_t de[2] = {p->ne, p->k}, dn[2] = {p->nn, 3};
@@ -273,7 +279,13 @@ static void put_part(xw *w, int ind, const fe_part *p, const char *disp, const s
     put_indent(f, ind + 1);
     fputs("<Geometry GeometryType=\"XYZ\">\n", f);
     size_t start[3] = {step, (size_t)p->offset, 0}, count[3] = {1, p->nn, 3};
-    if (disp && w->opts.legacy) {
+    if (pos) { /* deformed geometry from the outlines file (a stage with bodies) */
+        size_t pd[3] = {ddims[0], ddims[1], 3}, ps[3] = {k, (size_t)p->offset, 0};
+        pd[0] = w->npos_frames;
+        w->cur = w->side_name;
+        item_slab(w, ind + 2, pos, 3, pd, ps, count, 2, dn);
+        w->cur = w->h5;
+    } else if (disp && w->opts.legacy) {
         /* deformed geometry: reference nodes + displacement at this output time (the legacy
          * reader evaluates functions; ParaView 5.11's Xdmf3 readers do not, so XDMF 3 gets the
          * reference geometry and the displacement for Warp By Vector) */
@@ -298,6 +310,38 @@ static void put_part(xw *w, int ind, const fe_part *p, const char *disp, const s
     }
     put_indent(f, ind);
     fputs("</Grid>\n", f);
+}
+
+/* x0 + u of every node at the frames shown into the outlines file at pos [nf, nnode, 3]
+ * (reads the whole displacement field) */
+static mcs_status write_positions(xw *w, const fe_part *parts, int np, const char *disp,
+                                  const size_t *dd, const char *pos, mcs_error *err)
+{
+    const size_t nn = dd[1], s = frame_stride(w, dd[0]);
+    size_t nf = 0;
+    for (int i = 0; i >= 0; i = next_frame((size_t)i, s, dd[0])) nf++;
+    double *x0 = calloc(3 * nn + 1, sizeof *x0), *x = malloc(sizeof *x * (3 * nn * nf + 1));
+    mcs_array u = {0};
+    mcs_status st = x0 && x ? MCS_OK : MCS_ERR(err, MCS_ERR_NOMEM, "export: out of memory");
+    for (int p = 0; p < np && !st; p++) { /* reference nodes at their offsets */
+        mcs_array a = {0};
+        st = mcs_results_read(w->r, parts[p].nodes, &a, err);
+        for (size_t j = 0; !st && j < 3 * parts[p].nn; j++)
+            x0[3 * (size_t)parts[p].offset + j] = a.v[j];
+        mcs_array_free(&a);
+    }
+    if (!st) st = mcs_results_read(w->r, disp, &u, err);
+    size_t k = 0;
+    for (int i = 0; !st && i >= 0; i = next_frame((size_t)i, s, dd[0]), k++)
+        for (size_t j = 0; j < 3 * nn; j++) x[3 * nn * k + j] = x0[j] + u.v[3 * nn * (size_t)i + j];
+    if (!st && !w->sw) st = mcs_results_create(&w->sw, w->side, NULL, err);
+    size_t dims[3] = {nf, nn, 3};
+    if (!st) st = mcs_results_write(w->sw, pos, 3, dims, x, "m", err);
+    w->npos_frames = nf;
+    mcs_array_free(&u);
+    free(x0);
+    free(x);
+    return st;
 }
 
 static mcs_status fe_stage(xw *w, int stage, int *ngrids, mcs_error *err)
@@ -348,24 +392,34 @@ static mcs_status fe_stage(xw *w, int stage, int *ngrids, mcs_error *err)
     double *t = NULL;
     const char *cands[] = {ft, st_t, NULL};
     if (!st && has_disp) st = read_times(w->r, cands, dd[0], &t, err);
+    /* a stage with bodies (a coupled stage 1): the parts' deformed positions go to the outlines
+     * file, so that parts and bodies move together without a filter (XDMF 3 readers do not
+     * evaluate x0 + u); the displacement stays an attribute */
+    char bodies[64], pos[64];
+    snprintf(bodies, sizeof bodies, "/stage%d/bodies", stage);
+    snprintf(pos, sizeof pos, "/stage%d/positions", stage);
+    int deformed = !st && has_disp && dd[0] > 0 && !w->opts.legacy &&
+                   mcs_results_kind(w->r, bodies) == MCS_RES_GROUP;
+    if (deformed) st = write_positions(w, parts, np, disp, dd, pos, err);
     if (!st) {
         FILE *f = w->f;
         if (has_disp && dd[0] > 0) {
             fprintf(f, "    <Grid Name=\"stage%d_fe\" GridType=\"Collection\" "
                        "CollectionType=\"Temporal\">\n", stage);
-            size_t s = frame_stride(w, dd[0]);
-            for (int i = 0; i >= 0; i = next_frame((size_t)i, s, dd[0])) {
+            size_t s = frame_stride(w, dd[0]), k = 0;
+            for (int i = 0; i >= 0; i = next_frame((size_t)i, s, dd[0]), k++) {
                 fprintf(f, "      <Grid Name=\"stage%d_fe_%d\" GridType=\"Collection\" "
                            "CollectionType=\"Spatial\">\n", stage, i);
                 fprintf(f, "        <Time Value=\"%.17g\"/>\n", t[i]);
-                for (int p = 0; p < np; p++) put_part(w, 4, &parts[p], disp, dd, (size_t)i);
+                for (int p = 0; p < np; p++)
+                    put_part(w, 4, &parts[p], disp, dd, (size_t)i, deformed ? pos : NULL, k);
                 fputs("      </Grid>\n", f);
             }
             fputs("    </Grid>\n", f);
         } else {
             fprintf(f, "    <Grid Name=\"stage%d_fe\" GridType=\"Collection\" "
                        "CollectionType=\"Spatial\">\n", stage);
-            for (int p = 0; p < np; p++) put_part(w, 3, &parts[p], NULL, NULL, 0);
+            for (int p = 0; p < np; p++) put_part(w, 3, &parts[p], NULL, NULL, 0, NULL, 0);
             fputs("    </Grid>\n", f);
         }
         (*ngrids)++;
@@ -620,10 +674,11 @@ mcs_status mcs_results_export_xdmf(mcs_results *r, const char *xmf_path,
     xw w = {.r = r, .opts = opts ? *opts : mcs_xdmf_opts_default()};
     w.cur = w.h5;
     if (!xmf_path || !*xmf_path) return MCS_ERR(err, MCS_ERR_USAGE, "export --xdmf: no file");
-    /* the bodies' outlines go to <xmf>.bodies.h5 beside it (named by its base name) */
+    /* the bodies' outlines and the positions of a coupled stage's parts go to <xmf>.h5 beside
+     * it (named by its base name) */
     const char *xb = strrchr(xmf_path, '/') ? strrchr(xmf_path, '/') + 1 : xmf_path;
-    snprintf(w.side, sizeof w.side, "%s.bodies.h5", xmf_path);
-    snprintf(w.side_name, sizeof w.side_name, "%s.bodies.h5", xb);
+    snprintf(w.side, sizeof w.side, "%s.h5", xmf_path);
+    snprintf(w.side_name, sizeof w.side_name, "%s.h5", xb);
     if (relative_name(mcs_results_path(r), xmf_path, w.h5, sizeof w.h5))
         return MCS_ERR(err, MCS_ERR_IO, "%s: cannot resolve the directory: %s", xmf_path,
                        strerror(errno));

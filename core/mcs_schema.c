@@ -791,8 +791,20 @@ static const mcs_smap mass_scaling_map = {.what = "mass scaling", .keys = mass_s
 #define MASSFLOW MCS_D(0, 1, -1, 0, 0)
 #define GASCONST MCS_D(2, 0, -2, -1, 0) /* J/(kg K) */
 
+/* fire on a stage-1 contact (stage1_mb/mb_couple_trigger.c): t_fire = the first time the
+ * contact's normal force exceeds `force`, plus `delay` */
+static const mcs_skey trigger_keys[] = {
+    S("contact", REQ | NE, "stage-1 contact (contacts[].name, or <a>-<b> when unnamed)"),
+    Q("force", FRC, GE, 0, 0, "normal force that fires it [N] (default: any force > 0)"),
+    Q("delay", MCS_DIM_TIME, GE, 0, 0, "firing delay after that [s] (default 0)"),
+    END,
+};
+static const mcs_smap trigger_map = {.what = "trigger", .keys = trigger_keys};
+
 static const mcs_skey inflator_keys[] = {
     Q("fire_time", MCS_DIM_TIME, 0, 0, 0, "firing time [s] (default 0)"),
+    M("trigger", trigger_map, 0, "fire on a stage-1 contact instead of at fire_time (coupled "
+                                 "stage-1 runs)"),
     C("mass_flow", MCS_DIM_TIME, MASSFLOW, 1, REQ | GE, 0, "[[time since firing s, kg/s], ...]"),
     C("temperature", MCS_DIM_TIME, MCS_DIM_TEMP, 1, REQ | GE, 0, "[[time s, gas temperature K], ...]"),
     END,
@@ -834,9 +846,12 @@ static const mcs_skey retractor_keys[] = {
     S("name", REQ | UNIQ | NE, "retractor name (results /stage3/retractor/<name>)"),
     R("part", PART, REQ, "belt part (truss) whose end node is pulled"),
     E("where", "x_min|x_max|y_min|y_max|z_min|z_max", REQ, "the belt end (one node)"),
-    V("anchor", LEN, 3, 3, REQ, 0, "retractor position (fixed) [m]"),
+    V("anchor", LEN, 3, 3, REQ, 0, "retractor position (world, t = 0) [m]"),
+    R("anchor_body", BODY, 0, "stage-1 body carrying the anchor (default: fixed in the world)"),
     Q("stiffness", MCS_DIM_STIFFNESS, GT, 0, 0, "webbing to the anchor [N/m] (default E A / l0)"),
     Q("fire_time", MCS_DIM_TIME, 0, 0, 0, "pretensioner firing time [s] (default 12 ms)"),
+    M("trigger", trigger_map, 0, "fire on a stage-1 contact instead of at fire_time (coupled "
+                                 "stage-1 runs)"),
     C("payin", MCS_DIM_TIME, LEN, 1, 0, 0, "[[time since firing s, payout <= 0 m], ...] (Eq. 3)"),
     Q("pretensioner_max_force", FRC, GE, 0, 0, "stall force [N] (default none)"),
     Q("load_limit", FRC, GE, 0, 0, "load-limiter force [N] (default 2 kN; 0 none)"),
@@ -852,6 +867,7 @@ static const mcs_skey slipring_keys[] = {
     S("name", REQ | UNIQ | NE, "slip ring name (results /stage3/slipring/<name>)"),
     R("part", PART, REQ, "belt part (truss) holding the ring node"),
     V("point", LEN, 3, 3, REQ, 0, "ring position; the part's nearest node is the ring node [m]"),
+    R("body", BODY, 0, "stage-1 body carrying the ring node (default: the node is free)"),
     Q("friction", NONE, GE, 0, 0, "Coulomb coefficient round the ring (LS-DYNA FC; default 0)"),
     Q("lock_time", MCS_DIM_TIME, GE, 0, 0, "no slip from this time on (LS-DYNA LTIME)"),
     Q("min_length", LEN, GT, 0, 0, "smallest unstretched side length; the run stops there "

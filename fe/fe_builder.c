@@ -350,6 +350,24 @@ void fe_builder_part_nodes(const fe_builder *b, int part, unsigned char *mark)
                 for (int i = 0; i < kind_nnode[k]; i++) mark[b->conn[k][kind_nnode[k] * e + i]] = 1;
 }
 
+int fe_builder_nearest(const fe_builder *b, int part, const double p[3])
+{
+    if (part < 0 || part >= b->npart || b->nnode == 0) return -1;
+    unsigned char *mark = malloc((size_t)b->nnode);
+    if (!mark) return -1;
+    fe_builder_part_nodes(b, part, mark);
+    int best = -1;
+    double dbest = INFINITY;
+    for (int n = 0; n < b->nnode; n++) {
+        if (!mark[n]) continue;
+        double d2 = 0;
+        for (int i = 0; i < 3; i++) d2 += (b->x[3 * n + i] - p[i]) * (b->x[3 * n + i] - p[i]);
+        if (d2 < dbest) dbest = d2, best = n;
+    }
+    free(mark);
+    return best;
+}
+
 int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, int cap)
 {
     if (part < 0 || part >= b->npart || b->nnode == 0) return 0;

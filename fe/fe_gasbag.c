@@ -177,6 +177,7 @@ double fe_gasbag_orifice_flow(const fe_gasbag_model *m, double cd_area, double p
 
 /* gas and totals being advanced (a copy of the state's, committed on success) */
 typedef struct {
+    double tf; /* firing time of this state [s] */
     double mass, energy;
     double mass_in, energy_in, mass_vent, energy_vent, mass_leak, energy_leak;
 } gb_work;
@@ -195,27 +196,28 @@ void fe_gasbag_outflow_(const fe_gasbag_model *m, unsigned open, double area, do
 }
 
 /* inflator mass flow [kg/s] and inflow temperature [K] at absolute time t */
-void fe_gasbag_inflow_(const fe_gasbag_model *m, double t, double *mdot, double *Tin)
+void fe_gasbag_inflow_(const fe_gasbag_model *m, double tf, double t, double *mdot, double *Tin)
 {
     *mdot = 0.0;
     *Tin = m->ambient_temperature;
-    if (!m->mass_flow || t < m->fire_time) return;
-    *mdot = mcs_curve_eval(m->mass_flow, t - m->fire_time);
-    *Tin = mcs_curve_eval(m->temperature, t - m->fire_time);
+    if (!m->mass_flow || t < tf) return;
+    *mdot = mcs_curve_eval(m->mass_flow, t - tf);
+    *Tin = mcs_curve_eval(m->temperature, t - tf);
 }
 
 /* inflator mass [kg] and enthalpy [J] over [a, b]: the mass exactly (integral of the
  * piecewise-linear table), the enthalpy by Simpson's rule (exact for linear m_dot and T) */
-static void inflow_amounts(const fe_gasbag_model *m, double a, double b, double *dm, double *dh)
+static void inflow_amounts(const fe_gasbag_model *m, double tf, double a, double b, double *dm,
+                           double *dh)
 {
     *dm = *dh = 0.0;
-    if (!m->mass_flow || b <= m->fire_time) return;
-    if (a < m->fire_time) a = m->fire_time;
-    *dm = mcs_curve_integral(m->mass_flow, a - m->fire_time, b - m->fire_time);
+    if (!m->mass_flow || b <= tf) return;
+    if (a < tf) a = tf;
+    *dm = mcs_curve_integral(m->mass_flow, a - tf, b - tf);
     double q[3];
     for (int k = 0; k < 3; k++) {
         double md, T;
-        fe_gasbag_inflow_(m, a + 0.5 * k * (b - a), &md, &T);
+        fe_gasbag_inflow_(m, tf, a + 0.5 * k * (b - a), &md, &T);
         q[k] = md * m->cp * T;
     }
     *dh = (b - a) / 6.0 * (q[0] + 4.0 * q[1] + q[2]);
@@ -226,7 +228,7 @@ static int heun(const fe_gasbag_model *m, unsigned open, double area, double V, 
                 gb_work *w)
 {
     double dm_in, dh_in, mv0, ml0, mv1, ml1;
-    inflow_amounts(m, t, t + h, &dm_in, &dh_in);
+    inflow_amounts(m, w->tf, t, t + h, &dm_in, &dh_in);
     double T0 = w->energy / (w->mass * m->cv);
     fe_gasbag_outflow_(m, open, area, w->mass, w->energy, V, &mv0, &ml0);
     double m1 = w->mass + dm_in - h * (mv0 + ml0);
@@ -252,8 +254,8 @@ static int substeps(const fe_gasbag_model *m, unsigned open, double area, double
                     double h, const gb_work *w)
 {
     double md0, md1, T, mv, ml;
-    fe_gasbag_inflow_(m, t, &md0, &T);
-    fe_gasbag_inflow_(m, t + h, &md1, &T);
+    fe_gasbag_inflow_(m, w->tf, t, &md0, &T);
+    fe_gasbag_inflow_(m, w->tf, t + h, &md1, &T);
     fe_gasbag_outflow_(m, open, area, w->mass, w->energy, V, &mv, &ml);
     /* inflow enters exactly; it sets the scale through the mass it brings within h */
     double mdi = fmax(md0, md1), rate = (mdi + mv + ml) / (w->mass + mdi * h); /* 1/s */
@@ -316,11 +318,12 @@ mcs_status fe_gasbag_state_init_gas(const fe_gasbag_model *m, fe_gasbag_state *s
     s->energy = s->mass * m->cv * temperature;
     s->mass0 = s->mass;
     s->energy0 = s->energy;
+    s->fire_time = m->fire_time;
     s->vent_open = fe_gasbag_latch_vents_(m, 0, s->pressure);
     fe_gasbag_outflow_(m, s->vent_open, area, s->mass, s->energy, volume, &s->mass_flow_vent,
                        &s->mass_flow_leak);
     double Tin;
-    fe_gasbag_inflow_(m, t, &s->mass_flow_in, &Tin);
+    fe_gasbag_inflow_(m, s->fire_time, t, &s->mass_flow_in, &Tin);
     return MCS_OK;
 }
 
@@ -340,7 +343,7 @@ mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, doubl
                        "%s: at t = %.9g s: step %g s, volume %g m^3, area %g m^2 (volume must "
                        "stay > 0)",
                        m->name, s->time, dt, volume, area);
-    gb_work w = {s->mass,      s->energy,      s->mass_in,   s->energy_in,
+    gb_work w = {s->fire_time, s->mass,      s->energy,      s->mass_in,  s->energy_in,
                  s->mass_vent, s->energy_vent, s->mass_leak, s->energy_leak};
     unsigned open = fe_gasbag_latch_vents_(m, s->vent_open, s->pressure);
     int nsub = 0;
@@ -368,7 +371,7 @@ mcs_status fe_gasbag_advance(const fe_gasbag_model *m, fe_gasbag_state *s, doubl
     s->vent_open = fe_gasbag_latch_vents_(m, open, s->pressure);
     s->nsub = nsub;
     double Tin;
-    fe_gasbag_inflow_(m, s->time, &s->mass_flow_in, &Tin);
+    fe_gasbag_inflow_(m, s->fire_time, s->time, &s->mass_flow_in, &Tin);
     fe_gasbag_outflow_(m, s->vent_open, area, s->mass, s->energy, volume, &s->mass_flow_vent,
                        &s->mass_flow_leak);
     return MCS_OK;

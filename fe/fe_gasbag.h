@@ -38,7 +38,7 @@ typedef struct {
     double molar_mass;   /* if > 0: R = R_u / molar_mass, overriding gas_constant [kg/mol] */
     double cp, cv;       /* if both > 0: gamma = cp/cv and R = cp - cv (Mayer), overriding
                             gamma and gas_constant [J/(kg K)]                      */
-    double fire_time;    /* inflator firing time [s] (0)                           */
+    double fire_time;    /* inflator firing time [s] (0); the state's copy is the one used */
     int ninflator;       /* points in the inflator tables (>= 1; 0 = no inflator)  */
     double inflator_time[FE_GASBAG_TABLE_MAX];        /* time since firing [s] (ninflator)     */
     double inflator_mass_flow[FE_GASBAG_TABLE_MAX];   /* mass flow into the bag [kg/s]         */
@@ -104,6 +104,9 @@ typedef struct {
 #undef FE_GASBAG_X_DECL
     unsigned vent_open; /* bit i set: vent i is open [-]           */
     int nsub;           /* sub-steps taken by the last advance [-] */
+    double fire_time;   /* inflator firing time of this run: the model's at init; a coupling
+                           may set it before the run reaches it (a trigger, INFINITY until it
+                           fires; stage1_mb/mb_couple_trigger.c) [s] */
 } fe_gasbag_state;
 
 /* the scalar fields as result channels: count, name, unit, value */

@@ -26,6 +26,7 @@ typedef struct {
     void *user;
     double area;   /* fabric area [m^2] */
     unsigned open; /* vents open */
+    double tf;     /* firing time of the state [s] */
     int vol_failed;
 } gb_ode;
 
@@ -42,7 +43,7 @@ static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *ud)
     double mass = Y[Y_M], U = Y[Y_U];
     if (!(mass > 0.0 && U > 0.0)) return 1; /* recoverable: CVODE retries a smaller step */
     double T = U / (mass * m->cv), p = (m->gamma - 1.0) * U / V, mdi, Tin, mv, ml;
-    fe_gasbag_inflow_(m, t, &mdi, &Tin);
+    fe_gasbag_inflow_(m, o->tf, t, &mdi, &Tin);
     fe_gasbag_outflow_(m, o->open, o->area, mass, U, V, &mv, &ml);
     D[Y_M] = mdi - mv - ml;
     D[Y_U] = mdi * m->cp * Tin - (mv + ml) * m->cp * T - p * dV;
@@ -79,13 +80,13 @@ static void err_handler(int code, const char *module, const char *function, char
 }
 
 /* next stop time after t: firing, a table breakpoint, or t_end (kinks restart the BDF) */
-static double next_stop(const fe_gasbag_model *m, double t, double t_end)
+static double next_stop(const fe_gasbag_model *m, double tf, double t, double t_end)
 {
     double ts = t_end;
     if (m->mass_flow) {
-        if (m->fire_time > t && m->fire_time < ts) ts = m->fire_time;
+        if (tf > t && tf < ts) ts = tf;
         for (int i = 0; i < m->mass_flow->n; i++) {
-            double tb = m->fire_time + m->mass_flow->x[i];
+            double tb = tf + m->mass_flow->x[i];
             if (tb > t * (1.0 + 1e-14) + 1e-15 && tb < ts) ts = tb;
         }
     }
@@ -109,7 +110,7 @@ static void commit(const fe_gasbag_model *m, fe_gasbag_state *s, const gb_ode *o
     s->work = Y[Y_W];
     s->vent_open = o->open;
     double Tin;
-    fe_gasbag_inflow_(m, t, &s->mass_flow_in, &Tin);
+    fe_gasbag_inflow_(m, o->tf, t, &s->mass_flow_in, &Tin);
     fe_gasbag_outflow_(m, o->open, s->area, s->mass, s->energy, V, &s->mass_flow_vent,
                        &s->mass_flow_leak);
 }
@@ -120,7 +121,7 @@ static mcs_status run(const fe_gasbag_model *m, fe_gasbag_state *s, double t_end
 {
     double *Y = N_VGetArrayPointer(y), t = s->time;
     while (t < t_end) {
-        double ts = next_stop(m, t, t_end);
+        double ts = next_stop(m, o->tf, t, t_end);
         if (CVodeSetStopTime(cv, ts) != CV_SUCCESS)
             return MCS_ERR(err, MCS_ERR_NUMERIC, "%s: CVodeSetStopTime failed", m->name);
         int flag = CVode(cv, ts, y, &t, CV_NORMAL);
@@ -149,7 +150,7 @@ mcs_status fe_gasbag_integrate_cvode(const fe_gasbag_model *m, fe_gasbag_state *
         return MCS_ERR(err, MCS_ERR_USAGE, "%s: integrate to %g s from %g s, rtol %g", m->name,
                        t_end, s->time, rtol);
     if (t_end == s->time) return MCS_OK;
-    gb_ode o = {m, vol, user, s->area, s->vent_open, 0};
+    gb_ode o = {m, vol, user, s->area, s->vent_open, s->fire_time, 0};
     SUNContext ctx = NULL;
     N_Vector y = NULL, atol = NULL;
     SUNMatrix A = NULL;

@@ -262,6 +262,7 @@ typedef struct {
 #define FE_MODEL_ARRAYS(X)                                                                         \
     X(double, node_x0, nnode, 3, "m", "initial position")                                          \
     X(double, node_v0, nnode, 3, "m/s", "initial velocity")                                        \
+    X(double, node_w0, nnode, 3, "rad/s", "initial angular velocity (carried shell nodes)")        \
     X(double, node_mass, nnode, 1, "kg", "lumped mass")                                            \
     X(double, node_inertia, nnode, 1, "kg m^2", "lumped rotary inertia (shell nodes)")             \
     X(unsigned, node_fix, nnode, 1, "-", "FE_DOF_* mask of constrained dofs")                      \
@@ -386,6 +387,8 @@ int fe_builder_nnode(const fe_builder *b);
 int fe_builder_find_part(const fe_builder *b, const char *name);
 /* nodes of a part on its bounding-box side `where`, written to idx (capacity cap); count returned */
 int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, int cap);
+/* the node of a part nearest to p [m] (the first of equals), -1 if the part has none */
+int fe_builder_nearest(const fe_builder *b, int part, const double p[3]);
 
 /* validate and freeze; opts NULL takes fe_opts_default() */
 mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **out,

@@ -291,13 +291,16 @@ mcs_status fe_restraint_state_create(const fe_model *m, struct fe_restraint_stat
         s->retractor = calloc((size_t)(r->nretractor ? r->nretractor : 1), sizeof *s->retractor);
         s->retractor_length = calloc((size_t)(r->nretractor ? r->nretractor : 1), sizeof(double));
         s->retractor_ring = calloc((size_t)(r->nretractor ? r->nretractor : 1), sizeof(double));
+        s->retractor_anchor = calloc(3 * (size_t)(r->nretractor ? r->nretractor : 1), sizeof(double));
+        s->retractor_fanchor = calloc(3 * (size_t)(r->nretractor ? r->nretractor : 1), sizeof(double));
     }
-    if (!s || !s->bag || !s->retractor || !s->retractor_length || !s->retractor_ring) {
+    if (!s || !s->bag || !s->retractor || !s->retractor_length || !s->retractor_ring ||
+        !s->retractor_anchor || !s->retractor_fanchor) {
         fe_restraint_state_destroy(&s);
         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (restraint state)");
     }
     *bytes += sizeof *s + sizeof *s->bag * (size_t)r->nbag +
-              (sizeof *s->retractor + 2 * sizeof(double)) * (size_t)r->nretractor;
+              (sizeof *s->retractor + 8 * sizeof(double)) * (size_t)r->nretractor;
     *out = s;
     return MCS_OK;
 }
@@ -309,6 +312,8 @@ void fe_restraint_state_destroy(struct fe_restraint_state **p)
     free((*p)->retractor);
     free((*p)->retractor_length);
     free((*p)->retractor_ring);
+    free((*p)->retractor_anchor);
+    free((*p)->retractor_fanchor);
     free(*p);
     *p = NULL;
 }
@@ -330,6 +335,10 @@ void fe_restraint_state_reset(const fe_model *m, fe_state *s)
         fe_retractor_state_init(r->retractor[i].model, &rs->retractor[i], 0.0);
         rs->retractor_length[i] = r->retractor[i].l0;
         rs->retractor_ring[i] = 0;
+        for (int j = 0; j < 3; j++) {
+            rs->retractor_anchor[3 * i + j] = r->retractor[i].anchor[j];
+            rs->retractor_fanchor[3 * i + j] = 0;
+        }
     }
 }
 

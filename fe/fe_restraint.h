@@ -18,7 +18,10 @@
  * of the belt part, l0 = initial node-anchor distance). The retractor (fe_retractor: Eq. 3
  * pretensioner pay-in after firing, locking, load limiter) sets the payout L; the segment pulls
  * the node towards the anchor with F = retractor force from the trial k (l - l0 - L). Its work
- * is external work. The segment's own stable step, 2 sqrt(m_node / 2k), caps opts.dt_max. */
+ * is external work. The segment's own stable step, 2 sqrt(m_node / 2k), caps opts.dt_max.
+ * The anchor is the model's (fixed) unless a coupling moves the state's copy
+ * (retractor_anchor) before each step; the segment's reaction on it is kept
+ * (retractor_fanchor) so the coupling can load what carries the anchor. */
 #ifndef FE_RESTRAINT_H
 #define FE_RESTRAINT_H
 
@@ -91,6 +94,12 @@ struct fe_restraint_state {
     double *retractor_length;      /* (nretractor) segment length at the last force [m]     */
     double *retractor_ring;        /* (nretractor) unstretched length a slip ring moved into
                                       the segment (fe_slipring.h) [m]                       */
+    double *retractor_anchor;      /* (nretractor x 3) anchor position now: the model's at
+                                      reset; a coupling moves it (a retractor on a stage-1
+                                      body, stage1_mb/mb_couple_anchor.c) [m]               */
+    double *retractor_fanchor;     /* (nretractor x 3) force of the segment on its anchor at
+                                      the last force evaluation (t_n), after the slip rings
+                                      (minus the force on the belt node) [N]                */
 };
 
 /* model build (fe_model_create) and teardown */

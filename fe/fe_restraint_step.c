@@ -2,7 +2,8 @@
  * Called at the end of fe_external_forces with x = x(t_n), s->time = t_n and
  * s->dt_prev = t_n - t_n-1 (0 on the first step): the bag gases and the retractors are
  * advanced to t_n, so the forces they add into node_fext are those of t_n, as central
- * differences want. No allocation. */
+ * differences want. The retractor anchors are the state's (a coupling may move them); the
+ * segment's reaction on each anchor is recorded. No allocation. */
 #include "fe/fe_restraint.h"
 
 #include <math.h>
@@ -30,7 +31,9 @@ static void retractors(const fe_model *m, fe_state *s)
         const fe_belt_retractor *b = &r->retractor[i];
         fe_retractor_state *rs = &s->restraint->retractor[i];
         double d[3], *x = s->node_x + 3 * b->node;
-        for (int j = 0; j < 3; j++) d[j] = x[j] - b->anchor[j];
+        const double *anchor = s->restraint->retractor_anchor + 3 * i;
+        double *fa = s->restraint->retractor_fanchor + 3 * i;
+        for (int j = 0; j < 3; j++) d[j] = x[j] - anchor[j], fa[j] = 0;
         double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         s->restraint->retractor_length[i] = l;
         if (s->dt_prev > 0) {
@@ -46,7 +49,10 @@ static void retractors(const fe_model *m, fe_state *s)
         }
         if (!(l > 0)) continue; /* on the anchor: no direction to pull along */
         double f = rs->force / l;
-        for (int j = 0; j < 3; j++) s->node_fext[3 * b->node + j] -= f * d[j];
+        for (int j = 0; j < 3; j++) {
+            s->node_fext[3 * b->node + j] -= f * d[j];
+            fa[j] = f * d[j]; /* the reaction on the anchor */
+        }
     }
 }
 

@@ -90,14 +90,20 @@ void fe_retractor_state_init(const fe_retractor_model *m, fe_retractor_state *s,
     memset(s, 0, sizeof(*s));
     s->time = t;
     s->force = m->spool_force;
+    s->fire_time = m->fire_time;
     s->fired = t >= m->fire_time;
     s->locked = s->fired || (m->lock_time >= 0.0 && t >= m->lock_time);
 }
 
-double fe_retractor_payin(const fe_retractor_model *m, double t)
+double fe_retractor_payin_at(const fe_retractor_model *m, double tf, double t)
 {
     /* the table's first point is taken at firing; nothing before (Eq. 3, first case) */
-    return t < m->fire_time ? 0.0 : mcs_curve_eval(m->payin, t - m->fire_time);
+    return t < tf ? 0.0 : mcs_curve_eval(m->payin, t - tf);
+}
+
+double fe_retractor_payin(const fe_retractor_model *m, double t)
+{
+    return fe_retractor_payin_at(m, m->fire_time, t);
 }
 
 /* locked spool: pretensioner, film spool in series, load limiter; F is the trial tension */
@@ -105,7 +111,7 @@ static void advance_locked(const fe_retractor_model *m, fe_retractor_state *s, d
                            double F, double kb)
 {
     /* pretensioner: the prescribed increment, stalled at its maximum force */
-    double dlp = fe_retractor_payin(m, t1) - fe_retractor_payin(m, t0);
+    double dlp = fe_retractor_payin_at(m, s->fire_time, t1) - fe_retractor_payin_at(m, s->fire_time, t0);
     s->stalled = 0;
     if (dlp < 0.0 && m->pretensioner_max_force > 0.0 && F - kb * dlp > m->pretensioner_max_force) {
         dlp = fmin(0.0, (F - m->pretensioner_max_force) / kb);
@@ -147,7 +153,7 @@ mcs_status fe_retractor_advance(const fe_retractor_model *m, fe_retractor_state 
                        "(step and stiffness must be > 0, all finite)",
                        m->name, s->time, dt, force_trial, k_belt);
     double t0 = s->time, t1 = t0 + dt, L0 = s->payout;
-    if (!s->fired && t1 >= m->fire_time) s->fired = s->locked = 1;
+    if (!s->fired && t1 >= s->fire_time) s->fired = s->locked = 1;
     if (!s->locked && m->lock_time >= 0.0 && t1 >= m->lock_time) s->locked = 1;
     if (!s->locked) {
         /* the spool keeps its comfort tension; the webbing sensor locks on a fast pull-out */

@@ -73,9 +73,12 @@ typedef struct {
 #define FE_RETRACTOR_X_DECL(name, unit, what) double name;
     FE_RETRACTOR_STATE_FIELDS(FE_RETRACTOR_X_DECL)
 #undef FE_RETRACTOR_X_DECL
-    int locked;  /* spool locked [-]                          */
-    int fired;   /* pretensioner fired [-]                    */
-    int stalled; /* pretensioner stalled in the last step [-] */
+    int locked;       /* spool locked [-]                          */
+    int fired;        /* pretensioner fired [-]                    */
+    int stalled;      /* pretensioner stalled in the last step [-] */
+    double fire_time; /* pretensioner firing time of this run: the model's at init; a coupling
+                         may set it while not fired (a trigger, INFINITY until it fires;
+                         stage1_mb/mb_couple_trigger.c) [s] */
 } fe_retractor_state;
 
 enum {
@@ -94,8 +97,10 @@ void fe_retractor_model_destroy(fe_retractor_model **p);
 
 void fe_retractor_state_init(const fe_retractor_model *m, fe_retractor_state *s, double t);
 
-/* pretensioner payout (<= 0) prescribed at absolute time t [m] (Eq. 3 by default) */
+/* pretensioner payout (<= 0) prescribed at absolute time t [m] (Eq. 3 by default), for the
+ * model's firing time; fe_retractor_payin_at for a firing time tf [s] */
 double fe_retractor_payin(const fe_retractor_model *m, double t);
+double fe_retractor_payin_at(const fe_retractor_model *m, double tf, double t);
 
 /* advance from s->time to s->time + dt. force_trial: tension of the adjacent segment at the
  * new positions with the current payout, signed (slack < 0) [N]; k_belt: its axial stiffness

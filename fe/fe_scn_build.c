@@ -283,6 +283,34 @@ static mcs_status add_attach(fe_builder *b, const mcs_node *parts, fe_problem *o
     return MCS_OK;
 }
 
+/* fe.sliprings[].body: the ring node (the part's node nearest to `point`, as the kernel picks
+ * it) is carried by the body like an attached node; its reactions (the belt tensions on both
+ * sides) load the body */
+static mcs_status add_ring_bodies(fe_builder *b, const mcs_node *rings, fe_problem *out,
+                                  mcs_error *err)
+{
+    for (int i = 0; i < mcs_node_len(rings); i++) {
+        const mcs_node *r = mcs_node_at(rings, i);
+        if (!fe_scn_given(r, "body")) continue;
+        double p[3];
+        mcs_status st = mcs_node_vec3(fe_scn_get(r, "point"), p, err);
+        if (st) return st;
+        int part = fe_builder_find_part(b, mcs_node_str(fe_scn_get(r, "part")));
+        int node = fe_builder_nearest(b, part, p);
+        if (node < 0)
+            return mcs_node_error(fe_scn_get(r, "part"), err, MCS_ERR_KEY, "part has no node");
+        fe_attach *na = realloc(out->att, (size_t)(out->natt + 1) * sizeof *na);
+        if (!na) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
+        out->att = na;
+        const double v0[3] = {0, 0, 0};
+        mcs_error kerr = {0};
+        st = fe_builder_fix_node(b, node, FE_DOF_TRANS, v0, &kerr);
+        if (st) return fe_scn_relocate(st, r, &kerr, err);
+        out->att[out->natt++] = (fe_attach){.node = node, .attach = r};
+    }
+    return MCS_OK;
+}
+
 static mcs_status wall_motion(const mcs_node *mo, fe_wall_desc *d, mcs_error *err)
 {
     const char *type = mcs_node_str(fe_scn_get(mo, "type"));
@@ -412,6 +440,7 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     if (st) return fe_scn_relocate(st, fe, &kerr, err);
     st = add_parts(b, fe_scn_get(fe, "parts"), err);
     if (!st) st = add_attach(b, fe_scn_get(fe, "parts"), out, err);
+    if (!st) st = add_ring_bodies(b, fe_scn_get(fe, "sliprings"), out, err);
     if (!st) st = add_boundaries(b, fe_scn_get(fe, "boundary"), err);
     if (!st) st = add_loads(b, fe_scn_get(fe, "loads"), err);
     if (!st) st = add_walls(b, fe_scn_get(fe, "rigid_walls"), err);

@@ -24,10 +24,12 @@
 #include "core/mcs_scenario.h"
 #include "fe/fe_model.h"
 
-/* one FE node carried by a stage-1 body (fe.parts[].attach; stage1_mb/mb_couple.c) */
+/* one FE node carried by a stage-1 body (fe.parts[].attach, fe.sliprings[].body;
+ * stage1_mb/mb_couple.c) */
 typedef struct {
     int node;              /* FE node index [-]                                      */
-    const mcs_node *attach; /* the part's attach: map (scenario-owned)               */
+    const mcs_node *attach; /* a map with key `body`: the part's attach: or the slip
+                               ring (scenario-owned)                                  */
 } fe_attach;
 
 /* a rigid placement of stage-1 bodies, applied to the FE parts they carry (stage 1's impact:

@@ -280,3 +280,22 @@ void fe_out_restraint_free(fe_out_restraint *o)
     free(o->retractor);
     memset(o, 0, sizeof *o);
 }
+
+const mcs_node *fe_scn_stage1_key(const mcs_node *fe)
+{
+    const mcs_node *l = fe_scn_get(fe, "airbags");
+    for (int i = 0; i < mcs_node_len(l); i++) {
+        const mcs_node *t = fe_scn_get(fe_scn_get(mcs_node_at(l, i), "inflator"), "trigger");
+        if (mcs_node_kind(t) != MCS_NODE_NULL) return t;
+    }
+    l = fe_scn_get(fe, "retractors");
+    for (int i = 0; i < mcs_node_len(l); i++) {
+        const mcs_node *r = mcs_node_at(l, i);
+        if (fe_scn_given(r, "trigger")) return fe_scn_get(r, "trigger");
+        if (fe_scn_given(r, "anchor_body")) return fe_scn_get(r, "anchor_body");
+    }
+    l = fe_scn_get(fe, "sliprings");
+    for (int i = 0; i < mcs_node_len(l); i++)
+        if (fe_scn_given(mcs_node_at(l, i), "body")) return fe_scn_get(mcs_node_at(l, i), "body");
+    return NULL;
+}

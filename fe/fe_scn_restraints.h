@@ -20,6 +20,11 @@ mcs_status fe_scn_add_restraints(fe_builder *b, const mcs_node *fe, mcs_error *e
  * 'x'"), else fe itself: where to locate a model-build error */
 const mcs_node *fe_scn_restraint_node(const mcs_node *fe, const char *msg);
 
+/* the first key of the fe: block that needs stage-1 bodies (an inflator or retractor
+ * trigger, a retractor's anchor_body, a slip ring's body), NULL none: a stage-3 run refuses
+ * it rather than drop it */
+const mcs_node *fe_scn_stage1_key(const mcs_node *fe);
+
 /* result series of every bag and retractor of the model */
 #define FE_OUT_BAG_CHANNELS 4
 #define FE_OUT_RETRACTOR_CHANNELS 5

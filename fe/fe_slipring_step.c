@@ -79,7 +79,7 @@ static void read_side(const fe_model *m, const fe_state *s, const fe_slipring *r
         q->truss = 0;
         q->F = rs->force;
         q->k = rs->locked ? b->k : 0; /* unlocked: the spool takes the webbing */
-        xf = b->anchor;
+        xf = s->restraint->retractor_anchor + 3 * r->retractor;
     }
     double d2 = 0;
     for (int i = 0; i < 3; i++) {
@@ -98,14 +98,19 @@ static double apply_side(const fe_model *m, fe_state *s, const fe_slipring *r, i
     fe_slipring_ring_state *g = &s->slipring->ring[r - m->sliprings->ring];
     double *xr = s->node_x + 3 * r->node;
     if (r->elem[k] < 0) {
-        const fe_belt_retractor *b = &m->restraints->retractor[r->retractor];
         fe_retractor_state *rs = &s->restraint->retractor[r->retractor];
+        const double *anchor = s->restraint->retractor_anchor + 3 * r->retractor;
+        double *fa = s->restraint->retractor_fanchor + 3 * r->retractor;
         double F1 = fmax(q->F - q->k * dl, 0), dF = F1 - rs->force;
         s->restraint->retractor_ring[r->retractor] += dl;
         rs->force = F1;
-        /* the segment pulls the ring node towards the anchor */
+        /* the segment pulls the ring node towards the anchor, the anchor towards the node */
         for (int i = 0; i < 3; i++)
-            if (q->len > 0) s->node_fext[3 * r->node + i] -= dF * (xr[i] - b->anchor[i]) / q->len;
+            if (q->len > 0) {
+                double df = dF * (xr[i] - anchor[i]) / q->len;
+                s->node_fext[3 * r->node + i] -= df;
+                fa[i] += df;
+            }
         return 0.5 * (q->F + F1) * dl;
     }
     const int e = r->elem[k], ip = m->truss_part[e];

@@ -80,6 +80,7 @@ void fe_state_reset(const fe_model *m, fe_state *s)
 #undef FE_X_ZERO
     memcpy(s->node_x, m->node_x0, sizeof(double) * 3 * (size_t)m->nnode);
     memcpy(s->node_v, m->node_v0, sizeof(double) * 3 * (size_t)m->nnode);
+    memcpy(s->node_w, m->node_w0, sizeof(double) * 3 * (size_t)m->nnode);
     for (int ip = 0; ip < m->npart; ip++) s->part_bad_elem[ip] = -1;
     s->time = s->dt_prev = s->energy_time = 0;
     s->dt = m->dt_initial;
@@ -105,6 +106,16 @@ void fe_state_reset(const fe_model *m, fe_state *s)
 double fe_part_energy(const fe_model *m, const fe_state *s, int part, fe_energy_kind k)
 {
     if (part < 0 || part >= m->npart || k < 0 || k >= FE_NENERGY) return NAN;
+    if (k == FE_E_kinetic && s->nstep == 0) { /* before the first step: the initial velocities' */
+        double e = 0;
+        for (int n = 0; n < m->nnode; n++) {
+            if (m->node_part[n] != part) continue;
+            const double *v = s->node_v + 3 * n, *w = s->node_w + 3 * n;
+            e += 0.5 * m->node_mass[n] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            e += 0.5 * m->node_inertia[n] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        }
+        return e;
+    }
     return s->part_energy[FE_NENERGY * part + k];
 }
 

@@ -6,6 +6,7 @@
  * on the straight line between their body points at t and t + h (velocity prescribed through
  * fe_state.node_vkin), and the constraint impulse r dth of every step is summed. */
 #include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_couple_rx.h"
 #include "stage1_mb/mb_couple_contact.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
@@ -22,11 +23,29 @@ static int body_group(void *ctx, const char *name)
     return b < 0 ? -1 : m->body_group ? m->body_group[b] : MB_GROUP_NONE;
 }
 
+/* the velocity field v + w x r of body b at node n, into node_v0 (the fixed translations
+ * too when all); with spin, a shell node's free rotations take w (node_w0) */
+static void start_with_body(const mb_model *m, fe_model *fm, int b, int n, int all, int spin)
+{
+    const mb_body_desc *d = &m->body[b];
+    double r[3], wr[3];
+    for (int i = 0; i < 3; i++) r[i] = fm->node_x0[3 * n + i] - d->pos[i];
+    mb_cross(d->angvel, r, wr);
+    for (int i = 0; i < 3; i++) {
+        if (all || !(fm->node_fix[n] & (1u << i))) fm->node_v0[3 * n + i] = d->vel[i] + wr[i];
+        if (spin && fm->node_inertia[n] > 0 && !(fm->node_fix[n] & (8u << i)))
+            fm->node_w0[3 * n + i] = d->angvel[i];
+    }
+}
+
 /* the nodes of a part carried by a body start with the body's velocity field v + w x r
- * (attached nodes, and the rest of the part, whose fixed translations keep theirs) */
+ * (attached nodes, and the rest of the part, whose fixed translations keep theirs); attached
+ * nodes always do, with or without impact: (else the first subcycle jerks them to it: an
+ * impulse m v on the body and a spurious energy loss) */
 static void carried_velocities(const mb_model *m, mb_couple *c)
 {
     fe_model *fm = c->fe.model;
+    for (int a = 0; a < c->natt; a++) start_with_body(m, fm, c->body[a], c->node[a], 1, 0);
     if (!c->fe.part_carrier) return;
     unsigned char *att = calloc((size_t)fm->nnode + 1, 1);
     if (!att) return; /* only the start velocities of carried nodes are lost: never here */
@@ -35,14 +54,7 @@ static void carried_velocities(const mb_model *m, mb_couple *c)
         const int ip = fm->node_part[n];
         const mcs_node *bn = ip >= 0 ? c->fe.part_carrier[ip] : NULL;
         const int b = bn ? mb_model_body(m, mcs_node_str(bn)) : -1;
-        if (b < 0) continue;
-        const mb_body_desc *d = &m->body[b];
-        double r[3], wr[3];
-        for (int i = 0; i < 3; i++) r[i] = fm->node_x0[3 * n + i] - d->pos[i];
-        mb_cross(d->angvel, r, wr);
-        for (int i = 0; i < 3; i++)
-            if (att[n] || !(fm->node_fix[n] & (1u << i)))
-                fm->node_v0[3 * n + i] = d->vel[i] + wr[i];
+        if (b >= 0) start_with_body(m, fm, b, n, att[n], 1);
     }
     free(att);
 }
@@ -92,13 +104,14 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
         c->body[a] = b;
     }
     carried_velocities(m, c);
-    return MCS_OK;
+    return mb_couple_rx_build(scn, m, err); /* triggers, anchors on bodies */
 }
 
 void mb_couple_destroy(mb_couple **pc)
 {
     mb_couple *c = pc ? *pc : NULL;
     if (!c) return;
+    mb_couple_rx_destroy(&c->rx);
     fe_problem_free(&c->fe);
     mb_couple_contact_destroy(&c->contact);
     free(c->node), free(c->body), free(c->local);
@@ -135,6 +148,7 @@ mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_
     if (!cs->vkin || !cs->react || !cs->imp || !cs->force || !cs->xa || !cs->vold || !cs->fmean)
         st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     if (!st) st = fe_state_create(c->fe.model, &cs->fe, err);
+    if (!st) st = mb_couple_rx_state_create(m, cs, err);
     if (!st && c->contact) st = mb_couple_contact_state_create(c->contact, &cs->contact, err);
     if (st) {
         mb_couple_state_destroy(&cs);
@@ -151,6 +165,7 @@ void mb_couple_state_destroy(mb_couple_state **p)
 {
     mb_couple_state *cs = p ? *p : NULL;
     if (!cs) return;
+    mb_couple_rx_state_destroy(&cs->rx);
     fe_state_destroy(&cs->fe);
     mb_couple_contact_state_destroy(&cs->contact);
     free(cs->vkin), free(cs->react), free(cs->imp), free(cs->force), free(cs->xa), free(cs->vold);
@@ -167,6 +182,7 @@ void mb_couple_apply(const mb_model *m, mb_state *s)
         point_now(m, s, a, cs->xa + 3 * a);
         mb_body_add_force_at_pos(s->world, c->body[a], cs->force + 3 * a, cs->xa + 3 * a);
     }
+    mb_couple_anchor_apply(m, s);
     if (c->contact) mb_couple_contact_apply(m, s);
 }
 
@@ -177,6 +193,8 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
     fe_state *f = cs->fe;
     const fe_model *fm = c->fe.model;
     const double t0 = f->time, t1 = s->t, h = t1 - t0;
+    mb_couple_trigger_check(m, s); /* the contact forces of t fire inflators, retractors */
+    mb_couple_anchor_begin(m, s);
     double *x1 = cs->force; /* scratch: body points at t + h, then the forces */
     for (int a = 0; a < c->natt; a++) {
         double x[3];
@@ -208,11 +226,13 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         for (int a = 0; a < c->natt; a++)
             for (int i = 0; i < 3; i++)
                 vold[3 * a + i] = f->node_v[3 * c->node[a] + i];
+        mb_couple_anchor_move(m, s, (f->time - t0) / h); /* anchors on bodies at t_j */
         mcs_status st = fe_step(fm, f);
         if (st) {
             *err = f->err;
             return st;
         }
+        mb_couple_anchor_collect(m, s, dth);
         cs->substeps++;
         if (c->contact) mb_couple_contact_sum(m, s, tau0, dth);
         for (int a = 0; a < c->natt; a++) {
@@ -239,6 +259,7 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
             cs->fmean[3 * a + i] = fm;
         }
     }
+    mb_couple_anchor_end(m, s, h, alpha, cs->started);
     if (c->contact) mb_couple_contact_end(m, s, h, alpha, cs->started);
     cs->started = 1;
     return MCS_OK;
@@ -263,7 +284,8 @@ double mb_couple_energy(const mb_model *m, const mb_state *s, double e[7])
     e[2] = E[FE_E_internal] + E[FE_E_hourglass];
     e[3] = E[FE_E_contact];
     e[4] = E[FE_E_dissipated];
-    e[5] = E[FE_E_external_work] - cs->w_fe; /* loads other than the bodies' */
+    /* loads other than the bodies', and the retractors' on the bodies carrying their anchors */
+    e[5] = E[FE_E_external_work] - cs->w_fe + cs->rx->w_anchor;
     if (m->couple->contact) e[5] -= mb_couple_contact_work(m, s); /* bodies' surfaces */
     e[6] = e[0] + e[1] + e[2] + e[3] + e[4] - e[5];
     return e[6];

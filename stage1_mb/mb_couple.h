@@ -17,6 +17,7 @@ typedef struct mb_couple {
     int *node;          /* FE node of each (natt)                                        */
     int *body;          /* carrying body (natt)                                          */
     double *local;      /* node position in the body frame, about the CG (natt x 3) [m]  */
+    struct mb_couple_rx *rx; /* triggers and body-carried anchors (mb_couple_rx.h)        */
     struct mb_couple_contact *contact; /* type: bodies contacts (mb_couple_contact.h), NULL none */
 } mb_couple;
 
@@ -35,6 +36,7 @@ typedef struct mb_couple_state {
     double w_body;      /* work of the coupling forces on the bodies [J]                  */
     double w_fe;        /* work of the bodies on the attached nodes [J]                    */
     long substeps;      /* FE steps taken [-]                                             */
+    struct mb_couple_rx_state *rx; /* triggers and anchors (mb_couple_rx.h)               */
     struct mb_couple_contact_state *contact; /* of m->couple->contact, NULL none          */
 } mb_couple_state;
 

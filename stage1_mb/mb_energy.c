@@ -138,7 +138,9 @@ mcs_status mb_energy_check(const mb_model *m, mb_state *s, mcs_error *err)
 
 /* the total from running sums, cheap enough for every step: each hysteresis element's work
  * (= stored + dissipated) as committed at the current poses by the force stages, plus the
- * dampers' and friction's running sums; kinetic and potential from s->kin (the same poses) */
+ * dampers' and friction's running sums; kinetic and potential from s->kin (the same poses).
+ * *kin: the bodies' kinetic energy plus the coupled FE parts' kinetic, internal and contact
+ * energy (the reference of the growth check) */
 static double running_total(const mb_model *m, const mb_state *s, double *kin)
 {
     double e = 0;
@@ -165,11 +167,14 @@ static double running_total(const mb_model *m, const mb_state *s, double *kin)
     }
     for (int i = 0; i < m->nattach; i++)
         e += mb_attach_stored(&m->attach[i], &s->att[i]) + s->att[i].e_damp + s->att[i].e_lost;
-    if (m->couple) { /* the coupled FE parts (mb_couple.h) */
+    double k = *kin;
+    if (m->couple) { /* the coupled FE parts (mb_couple.h); their live energy joins the
+                        reference, as in mb_energy_update */
         double f[MB_NENERGY];
         e += mb_couple_energy(m, s, f);
+        *kin += f[0] + f[2] + f[3];
     }
-    return e + *kin + potential(m, s);
+    return e + k + potential(m, s);
 }
 
 mcs_status mb_energy_check_step(const mb_model *m, mb_state *s, mcs_error *err)

@@ -7,6 +7,7 @@
  * Attributes of /stage1: time_step [s], steps, output_rate [Hz], energy_drift [-]. */
 #include "analysis/an_cfc.h"
 #include "core/mcs_results.h"
+#include "stage1_mb/mb_couple_rx.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
 
@@ -95,6 +96,8 @@ mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r,
     if (!st) st = mcs_results_set_attr_double(r, "/stage1", "output_rate", m->output_rate, err);
     if (!st) st = mcs_results_set_attr_int(r, "/stage1", "steps", (int)s->step, err);
     if (!st) st = mcs_results_set_attr_double(r, "/stage1", "energy_drift", mb_energy_drift(m, s), err);
+    /* fire_time of the coupled bags and retractors (their groups: mb_couple_out.c) */
+    if (!st) st = mb_couple_trigger_write(m, s, r, err);
     free(buf);
     return st;
 }

@@ -248,6 +248,40 @@ static void test_opponent_part(void)
     free(y);
 }
 
+/* a carried shell part: its nodes also take the body's spin w (rotations of a rigid motion) */
+static void test_shell_nodes_spin(void)
+{
+    char *y = malloc(8192);
+    strcpy(y, box("1 ms"));
+    strcat(y, "    - name: plate\n"
+              "      mesh: {generate: plate, origin: [0.2, -0.1, 0.9], size: [0.2, 0.2],\n"
+              "             divisions: [2, 2], axis: z}\n"
+              "      section: {type: shell, thickness: 1 mm}\n"
+              "      material: {model: elastic, density: 2700, youngs_modulus: 70 GPa, "
+              "poisson: 0.3}\n"
+              "      attach: {body: moto_frame, where: x_min}\n");
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("shell.yaml", y, &err);
+    CHECK(m != NULL);
+    if (!m) fprintf(stderr, "%s\n", err.msg);
+    const fe_model *fm = m ? m->couple->fe.model : NULL;
+    double R[9], w1[3], ew = 0;
+    rot(R);
+    apply(R, w0, w1);
+    int nshell = 0;
+    for (int n = NDIV + 1; fm && n < fm->nnode; n++, nshell++)
+        for (int i = 0; i < 3; i++)
+            ew = fmax(ew, fabs(fm->node_w0[3 * n + i] - w1[i]));
+    CHECK(nshell == 9);
+    CHECK(ew == 0);
+    mb_state *s = NULL;
+    if (m && !mb_state_create(m, &s, &err)) /* the state starts from them */
+        CHECK(s->couple->fe->node_w[3 * (NDIV + 1) + 2] == w1[2]);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+    free(y);
+}
+
 /* what the placement refuses, at FILE:LINE:COL */
 static void expect_error(const char *what, const char *from, const char *to, const char *loc,
                          const char *msg)
@@ -295,6 +329,7 @@ int main(void)
     RUN(test_short_run_drift);
     RUN(test_free_part_stays);
     RUN(test_opponent_part);
+    RUN(test_shell_nodes_spin);
     RUN(test_refusals);
     TEST_END();
 }

@@ -376,7 +376,7 @@ static int parse_dims(const char *s, size_t *d, int max)
     return n;
 }
 
-/* every HDF DataItem of the .xmf names a dataset of h (or, for "<xmf>.bodies.h5:", of the
+/* every HDF DataItem of the .xmf names a dataset of h (or, for "<xmf>.h5:", of the
  * outlines file hs) with the shape it states (a block: the dataset's full shape and a block
  * inside it); returns the number checked */
 static int check_items(mcs_results *h, mcs_results *hs, const char *xmf)
@@ -401,7 +401,7 @@ static int check_items(mcs_results *h, mcs_results *hs, const char *xmf)
         if (bar) *bar = 0;
         const char *path = colon + 1;
         *colon = 0;
-        mcs_results *in = strcmp(ref, "sled.xmf.bodies.h5") == 0 ? hs : h;
+        mcs_results *in = strcmp(ref, "sled.xmf.h5") == 0 ? hs : h;
         int rk = 0;
         mcs_error err = {0};
         CHECK(in && mcs_results_shape(in, path, &rk, ds, &err) == MCS_OK);
@@ -469,7 +469,7 @@ static void test_xdmf_shows_parts_and_bodies(void)
         return;
     }
     char side[160];
-    snprintf(side, sizeof side, "%s.bodies.h5", xmf);
+    snprintf(side, sizeof side, "%s.h5", xmf);
     mcs_results *hs = NULL;
     CHECK(mcs_results_open(&hs, side, &err) == MCS_OK);
     int items = check_items(h, hs, x);
@@ -507,7 +507,20 @@ static void test_xdmf_shows_parts_and_bodies(void)
             worst = fmax(worst, fabs(e - 1));
         }
     }
-    printf("  sled outline on its ellipsoid within %.1e (x^2/a^2 + ... - 1)\n", worst);
+    /* the parts' geometry is x0 + u (their positions in the same file): no filter needed */
+    mcs_array xp = {0}, x0 = {0}, u = {0};
+    CHECK(rd(hs, "/stage1/positions", &xp) && rd(h, "/stage1/mesh/fabric/nodes", &x0) &&
+          rd(h, "/stage1/fields/displacement", &u));
+    CHECK(xp.rank == 3 && xp.dims[0] == t.n && u.rank == 3 && xp.dims[1] == u.dims[1]);
+    size_t bad = 0;
+    for (size_t k = 0; xp.rank == 3 && xp.dims[1] == u.dims[1] && k < xp.dims[0]; k++)
+        for (size_t j = 0; j < 3 * x0.dims[0]; j++) /* the fabric: node_offset 0 */
+            bad += xp.v[3 * xp.dims[1] * k + j] != x0.v[j] + u.v[3 * u.dims[1] * k + j];
+    CHECK(bad == 0);
+    CHECK(strstr(x, "sled.xmf.h5:/stage1/positions|") != NULL);
+    mcs_array_free(&xp), mcs_array_free(&x0), mcs_array_free(&u);
+    printf("  sled outline on its ellipsoid within %.1e (x^2/a^2 + ... - 1); parts at x0 + u\n",
+           worst);
     CHECK(worst < 1e-12);
     mcs_array_free(&xo), mcs_array_free(&pos), mcs_array_free(&ori);
     mcs_results_close(&hs);

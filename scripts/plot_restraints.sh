@@ -1,0 +1,24 @@
+#!/bin/sh
+# plot_restraints.sh: the plots of docs/validation_restraints.md. Runs the coupled stage-1
+# verification scenarios (scenarios/verification/coupled_*.yaml) with `mcrash run` and draws
+# from their results files with gnuplot (apt-get install gnuplot-nox) through
+# scripts/validation_restraints.py (h5dump, hdf5-tools):
+#   docs/img/restraints_bag.png           force on the plate against the stroke, closed bag
+#   docs/img/restraints_limiter.png       body velocity through the load limiter
+#   docs/img/restraints_pretensioner.png  body pulled by the pretensioner, Eq. 3
+#   docs/img/restraints_foam.png          foam block force against deflection, two rates
+#   docs/img/restraints_energy.png        energy balance of each run
+# The figures the doc states come from tests/test_validation_restraints.c (`make figures`).
+# Usage: scripts/plot_restraints.sh [bin/mcrash] [output directory for the PNGs]
+set -eu
+MCRASH=${1:-bin/mcrash}
+IMG=${2:-docs/img}
+WORK=${TMPDIR:-/tmp}/mcrash_restraints.$$
+mkdir -p "$WORK" "$IMG"
+trap 'rm -rf "$WORK"' EXIT
+command -v gnuplot >/dev/null || { echo "plot_restraints: gnuplot not found (apt-get install gnuplot-nox)" >&2; exit 2; }
+for c in bag_piston belt_limiter belt_pretensioner foam_block foam_impact momentum; do
+    "$MCRASH" run scenarios/verification/coupled_$c.yaml --stage 1 --quiet -o "$WORK/coupled_$c.h5" >/dev/null
+done
+python3 scripts/validation_restraints.py "$WORK" "$IMG"
+echo "plot_restraints: $IMG/restraints_{bag,limiter,pretensioner,foam,energy}.png"

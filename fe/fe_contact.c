@@ -388,6 +388,7 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
         const double *C = cs->ell_c + 3 * i, *R = cs->ell_R + 9 * i, *V = cs->ell_v + 3 * i;
         const double *W = cs->ell_w + 3 * i;
         const double amax = fmax(E->semi[0], fmax(E->semi[1], E->semi[2]));
+        const double amin = fmin(E->semi[0], fmin(E->semi[1], E->semi[2]));
         double *F = cs->ell_force + 3 * i, *M = cs->ell_moment + 3 * i;
         F[0] = F[1] = F[2] = M[0] = M[1] = M[2] = 0;
         for (int jc = 0; jc < cs->ell_ncand[i]; jc++) {
@@ -398,11 +399,11 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
             const double ht = c->ell_ht[j]; /* shell nodes meet it at t/2, solids at 0 */
             if (fe_dot(r, r) > (amax + ht) * (amax + ht)) goto release;
             for (int k = 0; k < 3; k++) pb[k] = R[k] * r[0] + R[3 + k] * r[1] + R[6 + k] * r[2];
-            /* outside the bounding box in the body frame: outside (long, flat ellipsoids, as a
-             * car's side zones, leave most nodes inside the sphere of their longest axis) */
-            if (fabs(pb[0]) > E->semi[0] + ht || fabs(pb[1]) > E->semi[1] + ht ||
-                fabs(pb[2]) > E->semi[2] + ht)
-                goto release;
+            /* outside at level s = |p|_a > 1 the distance is at least (s - 1) a_min: most nodes
+             * near but off the surface need no nearest-point solve */
+            double s2 = 0;
+            for (int k = 0; k < 3; k++) s2 += pb[k] * pb[k] / (E->semi[k] * E->semi[k]);
+            if (s2 > 1 && (sqrt(s2) - 1) * amin > ht) goto release;
             double g = fe_ellipsoid_nearest(E->semi, pb, qb) - ht;
             if (g >= 0) goto release;
             {

@@ -124,6 +124,11 @@ static void test_ball_drop_on_fixed_plate(void)
             hi = mid;
     }
     double fref = lattice_force(fm, R, c.scale, lo, &w);
+    /* the contact's frequency at the peak, omega = sqrt(dF/ddelta / M), times the ODE step */
+    const double dd = 1e-3 * lo, kf = (lattice_force(fm, R, c.scale, lo + dd, &w) -
+                                       lattice_force(fm, R, c.scale, lo - dd, &w)) /
+                                      (2 * dd);
+    FIG("stage1_engine.contact_drop_omega_h", "%.2f", sqrt(kf / 1.0) * c.h);
     const double drift = mb_energy_drift(m, s), perr = 100 * (fpeak / fref - 1);
     const double verr = 100 * (vend / v0 - 1);
     printf("drop: rebound %.5f m/s (v0 = %.5f, %+.3f %%), peak force %.2f N (closed form %.2f N, "
@@ -206,8 +211,10 @@ static void test_ball_drop_on_fixed_hex_block(void)
     for (int i = 0; i < 200; i++) {
         double mid = 0.5 * (lo + hi);
         lattice_force(fm, R, scale, mid, &w);
-        if (w < 0.5 * v0 * v0) lo = mid;
-        else hi = mid;
+        if (w < 0.5 * v0 * v0)
+            lo = mid;
+        else
+            hi = mid;
     }
     const double fref = lattice_force(fm, R, scale, lo, &w);
     const double perr = 100 * (fpeak / fref - 1), verr = 100 * (k.vel[2] / v0 - 1);
@@ -466,12 +473,14 @@ static void test_contact_output(void)
     mcs_array cf = {0}, ff = {0};
     CHECK(mcs_results_open(&h, path, &err) == MCS_OK);
     CHECK(h && mcs_results_read(h, "/stage1/contact/contact0/force", &cf, &err) == MCS_OK);
-    CHECK(h && mcs_results_read(h, "/stage1/facets/contact0:block.surfaces[0]/force", &ff,
-                                &err) == MCS_OK);
+    CHECK(h && mcs_results_read(h, "/stage1/facets/contact0:block.surfaces[0]/force", &ff, &err) ==
+                   MCS_OK);
     if (err.status) fprintf(stderr, "%s\n", err.msg);
     double worst = 0, peak = 0;
-    for (size_t i = 0; i < cf.n && i < ff.n; i++) worst = fmax(worst, fabs(cf.v[i] + ff.v[i]));
-    for (size_t i = 2; i < cf.n; i += 3) peak = fmax(peak, -cf.v[i]);
+    for (size_t i = 0; i < cf.n && i < ff.n; i++)
+        worst = fmax(worst, fabs(cf.v[i] + ff.v[i]));
+    for (size_t i = 2; i < cf.n; i += 3)
+        peak = fmax(peak, -cf.v[i]);
     const double fref = 0.3 * sqrt(1.0 * K);
     printf("output: %zu rows, contact + facets force %.3g N, peak %.2f N (v0 sqrt(M K) %.2f)\n",
            cf.n / 3, worst, peak, fref);

@@ -103,6 +103,12 @@ static const bad_case cases[] = {
     {"boundary on a slip ring's node", 0, "{part: belt, where: x_max, fix: all}",
      "{part: belt, where: all, fix: z}", "all, fix: z", "fe.boundary[0].where",
      "nodes of part 'belt' that body 'moto_frame' carries"},
+    {"attach on a rigid part", 0, "membrane, thickness: 0.5 mm}\n      material: {model: fabric,",
+     "shell, thickness: 0.5 mm}\n      material: {model: rigid,",
+     "{body: moto_frame, where: z_min}", "fe.parts[0].attach", "part 'fabric' is rigid"},
+    {"slip ring on an attached node", 0, "poisson: 0}\n    - name: plate",
+     "poisson: 0}\n      attach: {body: ball, where: all}\n    - name: plate", "moto_frame}]",
+     "fe.sliprings[0].body", "that body 'ball' carries already"},
     /* fe.contacts[] of type: bodies */
     {"bodies contact: unknown body", 0, "bodies: [ball]", "bodies: [bal1]", "bal1",
      "fe.contacts[0].bodies[0]", "unknown body 'bal1'"},
@@ -155,7 +161,7 @@ static const bad_case cases[] = {
     {"slip ring body: unknown", 0, "body: moto_frame}]", "body: motoframe}]", "motoframe",
      "fe.sliprings[0].body", "unknown body 'motoframe'"},
     {"two slip rings on one element", 0, "body: moto_frame}]",
-     "body: moto_frame}, {name: ring2, part: belt, point: [1.25, 1, 0.5], body: ball}]",
+     "body: moto_frame}, {name: ring2, part: belt, point: [1.375, 1, 0.5], body: ball}]",
      "{name: ring2", "fe.sliprings[1]", "share a belt element"},
     /* impact placement */
     {"impact: part carried by two groups", 1, "body: moto_frame}]", "body: ball}]", "ball}]",

@@ -136,6 +136,10 @@ mcs_status mcs_results_read(mcs_results *r, const char *path, mcs_array *out, mc
 mcs_status mcs_results_read_int(mcs_results *r, const char *path, mcs_array *out,
                                 mcs_error *err);
 
+/* row `row` (first axis) of a double dataset of rank 1..3 into v (n values: the row's length) */
+mcs_status mcs_results_read_row(mcs_results *r, const char *path, size_t row, double *v,
+                                size_t n, mcs_error *err);
+
 /* attributes: has, string (newly allocated, free()), number (any numeric type) */
 int mcs_results_has_attr(mcs_results *r, const char *path, const char *name);
 mcs_status mcs_results_attr_str(mcs_results *r, const char *path, const char *name, char **out,

@@ -288,6 +288,35 @@ mcs_status mcs_results_read_int(mcs_results *r, const char *path, mcs_array *out
     return read_any(r, path, out, 1, err);
 }
 
+mcs_status mcs_results_read_row(mcs_results *r, const char *path, size_t row, double *v,
+                                size_t n, mcs_error *err)
+{
+    hid_t d;
+    mcs_status st = open_dataset(r, path, &d, err);
+    if (st) return st;
+    int rank = 0;
+    size_t dims[MCS_RESULTS_MAXRANK] = {1, 1, 1};
+    st = dataset_shape(r, path, d, &rank, dims, err);
+    if (!st && (rank < 1 || row >= dims[0] || n != dims[1] * dims[2]))
+        st = MCS_ERR(err, MCS_ERR_RANGE, "%s:%s: no row %zu of %zu values", r->path, path, row,
+                     n);
+    hid_t fs = -1, ms = -1;
+    herr_t h = 0;
+    if (!st) {
+        hsize_t start[3] = {row, 0, 0}, count[3] = {1, dims[1], dims[2]}, mn = n;
+        fs = H5Dget_space(d);
+        ms = H5Screate_simple(1, &mn, NULL);
+        h = fs < 0 || ms < 0 ? -1
+                             : H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL);
+        if (h >= 0) h = H5Dread(d, H5T_NATIVE_DOUBLE, ms, fs, H5P_DEFAULT, v);
+        if (h < 0) st = mcs_res_h5err(err, r, path, "cannot read a row");
+    }
+    if (fs >= 0) H5Sclose(fs);
+    if (ms >= 0) H5Sclose(ms);
+    H5Dclose(d);
+    return st;
+}
+
 /* ---- reading attributes ---- */
 
 int mcs_results_has_attr(mcs_results *r, const char *path, const char *name)

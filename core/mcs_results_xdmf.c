@@ -312,16 +312,13 @@ static void put_part(xw *w, int ind, const fe_part *p, const char *disp, const s
     fputs("</Grid>\n", f);
 }
 
-/* x0 + u of every node at the frames shown into the outlines file at pos [nf, nnode, 3]
- * (reads the whole displacement field) */
+/* x0 + u of every node at the frames shown into the outlines file at pos [nf, nnode, 3],
+ * a frame at a time */
 static mcs_status write_positions(xw *w, const fe_part *parts, int np, const char *disp,
                                   const size_t *dd, const char *pos, mcs_error *err)
 {
     const size_t nn = dd[1], s = frame_stride(w, dd[0]);
-    size_t nf = 0;
-    for (int i = 0; i >= 0; i = next_frame((size_t)i, s, dd[0])) nf++;
-    double *x0 = calloc(3 * nn + 1, sizeof *x0), *x = malloc(sizeof *x * (3 * nn * nf + 1));
-    mcs_array u = {0};
+    double *x0 = calloc(3 * nn + 1, sizeof *x0), *x = malloc(sizeof *x * (3 * nn + 1));
     mcs_status st = x0 && x ? MCS_OK : MCS_ERR(err, MCS_ERR_NOMEM, "export: out of memory");
     for (int p = 0; p < np && !st; p++) { /* reference nodes at their offsets */
         mcs_array a = {0};
@@ -330,15 +327,17 @@ static mcs_status write_positions(xw *w, const fe_part *parts, int np, const cha
             x0[3 * (size_t)parts[p].offset + j] = a.v[j];
         mcs_array_free(&a);
     }
-    if (!st) st = mcs_results_read(w->r, disp, &u, err);
-    size_t k = 0;
-    for (int i = 0; !st && i >= 0; i = next_frame((size_t)i, s, dd[0]), k++)
-        for (size_t j = 0; j < 3 * nn; j++) x[3 * nn * k + j] = x0[j] + u.v[3 * nn * (size_t)i + j];
     if (!st && !w->sw) st = mcs_results_create(&w->sw, w->side, NULL, err);
-    size_t dims[3] = {nf, nn, 3};
-    if (!st) st = mcs_results_write(w->sw, pos, 3, dims, x, "m", err);
+    mcs_results_series *ser = NULL;
+    const size_t row[2] = {nn, 3};
+    if (!st) st = mcs_results_series_create(w->sw, pos, 3, row, "m", 0, &ser, err);
+    size_t nf = 0;
+    for (int i = 0; !st && i >= 0; i = next_frame((size_t)i, s, dd[0]), nf++) {
+        st = mcs_results_read_row(w->r, disp, (size_t)i, x, 3 * nn, err);
+        for (size_t j = 0; !st && j < 3 * nn; j++) x[j] += x0[j];
+        if (!st) st = mcs_results_series_append(ser, x, err);
+    }
     w->npos_frames = nf;
-    mcs_array_free(&u);
     free(x0);
     free(x);
     return st;

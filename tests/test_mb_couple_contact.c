@@ -447,6 +447,55 @@ static void test_facet_block_on_membrane(void)
     mb_model_destroy(&m);
 }
 
+/* The block half over the membrane's edge (the sheet from x = 0 on, heavy inertia so that it
+ * stays level): the sheet pushes only on the nodes under the face with x >= 0, so the moment
+ * the block receives about its CG is r_c x J, r_c the stiffness-weighted centroid of those
+ * nodes (k_n = s m_n / dt0^2: the edge column has half the mass) at the face's depth -20 mm
+ * and J the impulse (the force acts at the contact points, DESIGN.md "Coupling bodies and FE
+ * parts"). */
+static void test_facet_moment_off_centre(void)
+{
+    char y[4096];
+    snprintf(y, sizeof y, "%s", FACET_YAML);
+    char *p = strstr(y, "inertia: [0.01, 0.01, 0.01]");
+    memcpy(p, "inertia: [1e3, 1e3, 1e3]   ", 27);
+    p = strstr(y, "origin: [-0.05, -0.05, 0]");
+    memcpy(p, "origin: [0.000, -0.05, 0]", 25);
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("edge.yaml", y, &err);
+    CHECK(m != NULL);
+    if (!m) {
+        fprintf(stderr, "%s\n", err.msg);
+        return;
+    }
+    const fe_model *fm = m->couple->fe.model;
+    double sk = 0, skx = 0, sky = 0;
+    for (int n = 0; n < fm->nnode; n++) {
+        const double *x = fm->node_x0 + 3 * n;
+        if (fabs(x[0]) < 0.01125 && fabs(x[1]) < 0.01125)
+            sk += fm->node_mass[n], skx += fm->node_mass[n] * x[0], sky += fm->node_mass[n] * x[1];
+    }
+    const double rc[3] = {skx / sk, sky / sk, -0.02};
+    mb_state *s = NULL;
+    mcs_status st = mt_run(m, &s, &err);
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    double jfe[6], jb[6], mref[3];
+    CHECK(mb_couple_contact_impulse(m, s, 0, jfe, jb) == 0);
+    mb_cross(rc, jb, mref);
+    double merr = 0;
+    for (int i = 0; i < 3; i++)
+        merr = fmax(merr, fabs(jb[3 + i] - mref[i]));
+    const double rel = merr / fabs(mref[1]);
+    printf("off centre: centroid x %.4f mm, impulse %.6f N s, moment impulse %.6g %.6g %.6g "
+           "(r_c x J %.6g %.6g %.6g), error %.2g of it\n",
+           1e3 * rc[0], jb[2], jb[3], jb[4], jb[5], mref[0], mref[1], mref[2], rel);
+    FIG("stage1_engine.contact_facet_moment_err", "%.0e", rel);
+    CHECK(jb[2] > 0.5 && rel < 6e-8);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 /* the facet block's run written to a results file: /stage1/contact/<name>/force (on the
  * parts' nodes) is minus /stage1/facets/<surface>/force (on the block) row by row, and its
  * peak over the 10 kHz rows is the closed form's v0 sqrt(M K) of the run above */
@@ -549,6 +598,7 @@ int main(void)
     RUN(test_ball_slides_then_rolls);
     RUN(test_momentum_ball_on_free_plate);
     RUN(test_facet_block_on_membrane);
+    RUN(test_facet_moment_off_centre);
     RUN(test_contact_output);
     RUN(test_bodies_contact_errors_are_located);
     TEST_END();

@@ -11,6 +11,8 @@
  * - the bar's nodes start with the body's velocity field v + w x (x' - p'), v = V h, w = R w0;
  * - the energy at t = 0: M V^2 / 2 + w0.I w0 / 2 (I in body axes) + sum of m_n |v_n|^2 / 2
  *   with the bar's lumped masses rho A l_e (half at the two ends). */
+#include "fe/fe_restraint.h"
+#include "fe/fe_slipring.h"
 #include "fe/fe_state.h"
 #include "stage1_mb/mb_couple.h"
 #include "tests/harness.h"
@@ -282,6 +284,51 @@ static void test_shell_nodes_spin(void)
     free(y);
 }
 
+/* retractor anchors and slip-ring points on a body of the motorcycle group move with it (the
+ * model's anchor = R a + t exactly; the ring picks the node nearest to the moved point); a
+ * retractor anchored on an opponent body while its part rides on moto_frame is refused */
+static void test_anchor_and_ring_on_moved_body(void)
+{
+    char *y = malloc(8192);
+    strcpy(y, box("1 ms"));
+    strcat(y, "  retractors:\n"
+              "    - {name: ret, part: bar, where: x_max, anchor: [1.1, 0.1, 0.8],\n"
+              "       anchor_body: moto_frame}\n"
+              "  sliprings:\n"
+              "    - {name: ring, part: bar, point: [0.8, 0.1, 0.8], body: moto_frame}\n");
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("anchor.yaml", y, &err);
+    CHECK(m != NULL);
+    if (!m) fprintf(stderr, "%s\n", err.msg);
+    const fe_model *fm = m ? m->couple->fe.model : NULL;
+    if (fm) {
+        double R[9], a1[3];
+        const double a0[3] = {1.1, 0.1, 0.8};
+        rot(R);
+        place(R, a0, a1);
+        CHECK(fm->restraints && fm->restraints->nretractor == 1);
+        CHECK(fm->sliprings && fm->sliprings->n == 1);
+        double ea = 0;
+        for (int i = 0; fm->restraints && i < 3; i++)
+            ea = fmax(ea, fabs(fm->restraints->retractor[0].anchor[i] - a1[i]));
+        printf("moved anchor: error %.3g m; ring node %d (node 4 at x = 0.8 before the move)\n", ea,
+               fm->sliprings ? fm->sliprings->ring[0].node : -1);
+        CHECK(ea == 0);
+        CHECK(fm->sliprings && fm->sliprings->ring[0].node == 4);
+        /* the body-frame anchor is taken from the placed poses: a run starts balanced */
+        mb_state *s = NULL;
+        mcs_status st = mt_run(m, &s, &err);
+        CHECK(st == MCS_OK);
+        if (st) fprintf(stderr, "%s\n", err.msg);
+        double drift = s ? mb_energy_drift(m, s) : 1;
+        printf("moved anchor and ring, 1 ms: energy drift %.3g\n", drift);
+        CHECK(drift < 1e-3);
+        mb_state_destroy(&s);
+    }
+    mb_model_destroy(&m);
+    free(y);
+}
+
 /* what the placement refuses, at FILE:LINE:COL */
 static void expect_error(const char *what, const char *from, const char *to, const char *loc,
                          const char *msg)
@@ -309,6 +356,30 @@ static void expect_error(const char *what, const char *from, const char *to, con
 
 static void test_refusals(void)
 {
+    /* carried by bodies of two groups: the bar on moto_frame, its retractor on the car */
+    {
+        char *y = malloc(8192);
+        strcpy(y, box("1 ms"));
+        char *p = strstr(y, "impact: {");
+        char tail[4096];
+        snprintf(tail, sizeof tail, "%s", p);
+        snprintf(p, 8192 - (size_t)(p - y),
+                 "  - {name: car, mass: 1000, inertia: [300, 1000, 1000], position: [5, 0, 0.5],\n"
+                 "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0]}\n%s",
+                 tail);
+        strcat(y, "  retractors:\n"
+                  "    - {name: ret, part: bar, where: x_max, anchor: [1.1, 0.1, 0.8],\n"
+                  "       anchor_body: car}\n");
+        mcs_error err = {0};
+        mb_model *m = mt_model_text("two.yaml", y, &err);
+        printf("two groups: %s\n", err.msg);
+        CHECK(m == NULL);
+        CHECK(mcs_status_exit_code(err.status) == 2);
+        CHECK_STR_CONTAINS(err.msg, "two.yaml:22:");
+        CHECK_STR_CONTAINS(err.msg, "bodies of two groups");
+        mb_model_destroy(&m);
+        free(y);
+    }
     /* a translation held in the world on a moved part */
     expect_error("boundary", "x_min}\n", "x_min}\n  boundary: [{part: bar, where: x_max}]\n",
                  "bad.yaml:18:14", "moves with the impact placement");
@@ -330,6 +401,7 @@ int main(void)
     RUN(test_free_part_stays);
     RUN(test_opponent_part);
     RUN(test_shell_nodes_spin);
+    RUN(test_anchor_and_ring_on_moved_body);
     RUN(test_refusals);
     TEST_END();
 }

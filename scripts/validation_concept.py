@@ -133,13 +133,15 @@ plot "{d}/airbag.dat" using 1:2 with lines lw 2 title "gauge pressure [kPa]", \\
 unset y2tics; unset y2label; set ytics mirror
 set output "{img}/concept_trajectory.png"
 set title "Side view, 0-300 ms: head and pelvis paths (world x along the heading, z up)"
-set xlabel "x [m]"; set ylabel "z [m]"; set autoscale x; set size ratio -1
+set xlabel "x [m]"; set ylabel "z [m]"; set xrange [0.4:2.8]; set yrange [0.4:1.9]
 plot "{d}/path_conv.dat" using 2:3 with lines lw 2 lc rgb "red" title "head, conventional", \\
      "{d}/path_conv.dat" using 4:5 with lines lw 2 dt 2 lc rgb "red" title "pelvis, conventional", \\
+     "{d}/path_conv.dat" using 6:7 with lines lw 1 dt 3 lc rgb "red" title "frame CG, conventional", \\
      "{d}/path_conc.dat" using 2:3 with lines lw 2 lc rgb "blue" title "head, concept", \\
      "{d}/path_conc.dat" using 4:5 with lines lw 2 dt 2 lc rgb "blue" title "pelvis, concept", \\
+     "{d}/path_conc.dat" using 6:7 with lines lw 1 dt 3 lc rgb "blue" title "frame CG, concept", \\
      1.41 with lines dt 3 lc rgb "black" title "sedan roof height 1.41 m"
-set size noratio
+set autoscale y
 set output "{img}/concept_velocity.png"
 set title "Velocity along the heading (paper Fig. 21): conventional (dashed), concept (solid)"
 set xlabel "time [ms]"; set ylabel "velocity [m/s]"; set xrange [0:300]
@@ -149,7 +151,7 @@ plot for [c=2:6] "{d}/vel_conc.dat" using 1:c with lines lw 2 lc c-1 \\
 set output "{img}/concept_criteria.png"
 set title "Injury criteria / limit (paper Fig. 22): conventional and concept, 413-0/13.4"
 set style data histograms; set style histogram clustered gap 1; set style fill solid 0.8
-set xtics rotate by -40; set ylabel "value / limit"; set autoscale x; set yrange [0:*]
+set xtics rotate by -40; set xlabel ""; set ylabel "value / limit"; set autoscale x; set yrange [0:*]
 plot "{d}/criteria.dat" using 3:xtic(2) title "conventional", "" using 4 title "concept", \\
      1 with lines dt 2 lc rgb "black" title "limit"
 """

@@ -1,12 +1,15 @@
 /* bench_stage1: steps per second of the stage-1 engine.
  * 1. The ISO 13232 413-0/13.4 scenario (scenarios/iso13232_413-0_13.4_sedan.yaml, 300 ms,
- *    30 000 steps; issue 4 item 9: at most 2 s on one core) and its version with the seated
- *    rider (..._rider.yaml; a stand-in built here when there is none), no results file.
+ *    30 000 steps; issue 4 item 9: at most 2 s on one core), its version with the seated
+ *    rider (..._rider.yaml; a stand-in built here when there is none) and with the rider
+ *    restraint concept (..._rider_concept.yaml, coupled FE parts; issue 12: at most 10 s on
+ *    one core; the FE runs on one thread here), no results file.
  * 2. A chain of N ellipsoid bodies (each slightly non-spherical so the ellipsoid-ellipsoid
  *    Newton runs) linked by restrained spherical joints, falling onto the ground with a contact
  *    to the ground per body and one between neighbours; 50 ms at 10 us, output at 10 kHz.
  * Prints wall and CPU time (this machine is shared: CPU time is the one-core figure), steps/s,
  * microseconds per step and the share of each sub-stage. Never fails on time. */
+#include "fe/fe_parallel.h"
 #include "stage1_mb/mb_model.h"
 
 #include <stdio.h>
@@ -16,6 +19,9 @@
 
 #define SCN_413 "scenarios/iso13232_413-0_13.4_sedan.yaml"
 #define SCN_413R "scenarios/iso13232_413-0_13.4_sedan_rider.yaml" /* with the seated rider */
+/* the same with the rider restraint concept (thigh belts, front airbag, leg protectors: FE
+ * parts coupled to the bodies; issue 12: at most 10 s on one core) */
+#define SCN_413C "scenarios/iso13232_413-0_13.4_sedan_rider_concept.yaml"
 
 static double cpu_now(void)
 {
@@ -103,6 +109,31 @@ static void bench_413_rider(void)
     mcs_scenario_destroy(&scn);
 }
 
+/* the coupling's overhead (issue 12: at most 10 % over the bodies-only run): the 413 rider
+ * scenario with one FE truss carried by the frame and nothing in contact with it -- the FE step,
+ * the attached nodes and the exchange every ODE step, next to no element work */
+static void bench_413_coupled_idle(void)
+{
+    static const char y[] =
+        "mcrash: 1\n"
+        "include: [" SCN_413R "]\n"
+        "fe:\n  parts:\n    - name: idle_bar\n"
+        "      mesh: {generate: line, origin: [0.3, 0, 0.9], end: [0.4, 0, 0.9], divisions: 1}\n"
+        "      section: {type: truss, area: 1e-4}\n"
+        "      material: {model: elastic, density: 1000, youngs_modulus: 1 GPa, poisson: 0}\n"
+        "      attach: {body: moto_frame, where: x_min}\n";
+    mcs_scenario *scn = NULL;
+    mb_model *m = NULL;
+    mcs_error err = {0};
+    if (mcs_scenario_load_text("bench_413_idle.yaml", y, sizeof y - 1, &scn, &err) ||
+        mb_model_build(scn, NULL, &m, &err))
+        printf("bench_stage1: 413 + idle FE part: %s\n", err.msg);
+    else
+        run_print("413-0/13.4 + rider + one idle FE truss (coupling overhead)", m);
+    mb_model_destroy(&m);
+    mcs_scenario_destroy(&scn);
+}
+
 static char *scenario(int n)
 {
     size_t cap = 4096 + (size_t)n * 900;
@@ -163,10 +194,15 @@ done:
 int main(void)
 {
     mcs_log_set_level(MCS_LOG_WARN); /* not the rider positioning's info line */
+    fe_set_threads(1);               /* one core: the coupled FE parts too */
     int rider = bench_file(SCN_413);
     FILE *f = fopen(SCN_413R, "rb");
     if (f) fclose(f);
     if (f) rider |= bench_file(SCN_413R);
+    f = fopen(SCN_413C, "rb");
+    if (f) fclose(f);
+    if (f) bench_file(SCN_413C);
+    if (rider) bench_413_coupled_idle();
     if (!rider) bench_413_rider();
     int ns[] = {1, 8, 32};
     for (int i = 0; i < 3; i++) bench(ns[i]);

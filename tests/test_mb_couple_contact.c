@@ -565,7 +565,7 @@ static void test_angular_momentum_spinning_paddle(void)
     const double rel = e / Ls[2];
     printf("spin: error %.2g of the angular momentum exchanged\n", rel);
     CHECK(Ls[2] > 1e-3 * L0); /* the sheet was turned */
-    FIG("stage1_engine.contact_spin_L_err", "%.0e", rel);
+    FIG("stage1_engine.contact_spin_angmom_err", "%.0e", rel);
     CHECK(rel < 2e-3);
     mb_state_destroy(&s);
     mb_model_destroy(&m);

@@ -6,6 +6,7 @@
 #include <stddef.h>
 
 #include "core/mcs_scenario.h"
+#include "fe/fe_scn_build.h"
 
 /* "SCENARIO [-o OUT.h5] [--quiet] [--json] [--stage 1|2|3|all]" */
 typedef struct {
@@ -34,5 +35,9 @@ void cli_json_string(const char *s);
  * the summary object on stdout; return the exit status (0, 1 numerical, 2 bad input) */
 int cli_stage1_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
 int cli_stage3_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
+
+/* the stage-3 model of a scenario as `mcrash stage3` builds it (a stage-1-only key of the fe:
+ * block refused at its FILE:LINE:COL); `mcrash check` builds it too */
+mcs_status cli_stage3_build(const mcs_scenario *scn, fe_problem *p, mcs_error *err);
 
 #endif

@@ -1,10 +1,36 @@
 /* cmd_check.c: `mcrash check [--json] SCENARIO.yaml...` — validate scenarios; with --json print
- * one resolved (includes merged, every quantity in SI); `--schema` prints the key reference */
+ * one resolved (includes merged, every quantity in SI); `--schema` prints the key reference.
+ * A scenario with a simulation: block is also built into the model `mcrash run` would run
+ * (stage 1, or stage 3 for an fe: block without bodies), so what run refuses at load, check
+ * refuses with the same message; nothing is simulated or written. */
 #include "cli/cli.h"
+#include "cli/cli_common.h"
 #include "core/mcs_scenario.h"
+#include "stage1_mb/mb_model.h"
 
 #include <stdio.h>
 #include <string.h>
+
+/* build (and free) the model `mcrash run` would run of a runnable scenario */
+static mcs_status build_model(const mcs_scenario *scn, mcs_error *err)
+{
+    const mcs_node *root = mcs_scenario_root(scn);
+    if (!mcs_node_get(root, "simulation")) return MCS_OK; /* a model or include file */
+    mcs_status st;
+    mcs_log_set_level(MCS_LOG_WARN); /* the build's notes (a seated rider) are run's to show */
+    if (mcs_node_kind(mcs_node_get(root, "fe")) == MCS_NODE_MAP &&
+        mcs_node_len(mcs_node_get(root, "bodies")) == 0) {
+        fe_problem p = {0};
+        st = cli_stage3_build(scn, &p, err);
+        fe_problem_free(&p);
+    } else {
+        mb_model *m = NULL;
+        st = mb_model_build(scn, NULL, &m, err);
+        mb_model_destroy(&m);
+    }
+    mcs_log_set_level(MCS_LOG_INFO);
+    return st;
+}
 
 /* check one file; 0 ok, else the exit status */
 static int check_one(const char *path, int json)
@@ -12,7 +38,9 @@ static int check_one(const char *path, int json)
     mcs_scenario *scn = NULL;
     mcs_error err = {0};
     mcs_status st = mcs_scenario_load(path, &scn, &err);
+    if (!st) st = build_model(scn, &err);
     if (st) {
+        mcs_scenario_destroy(&scn);
         fprintf(stderr, "%s\n", err.msg);
         return mcs_status_exit_code(st);
     }

@@ -11,17 +11,22 @@
 #include <stdio.h>
 #include <string.h>
 
+mcs_status cli_stage3_build(const mcs_scenario *scn, fe_problem *p, mcs_error *err)
+{
+    const mcs_node *k1 = fe_scn_stage1_key(mcs_node_get(mcs_scenario_root(scn), "fe"));
+    if (k1)
+        return mcs_node_error(k1, err, MCS_ERR_UNSUPPORTED,
+                              "needs the stage-1 bodies (a coupled stage-1 run): not in a "
+                              "stage-3 run");
+    return fe_scn_build(scn, p, err);
+}
+
 int cli_stage3_scenario(const mcs_scenario *scn, const char *out, int quiet, int json)
 {
     mcs_error err = {0};
     fe_problem p = {0};
     s3_summary sum = {0};
-    const mcs_node *k1 = fe_scn_stage1_key(mcs_node_get(mcs_scenario_root(scn), "fe"));
-    mcs_status st = k1 ? mcs_node_error(k1, &err, MCS_ERR_UNSUPPORTED,
-                                        "needs the stage-1 bodies (a coupled stage-1 run): not "
-                                        "in a stage-3 run")
-                       : MCS_OK;
-    if (!st) st = fe_scn_build(scn, &p, &err);
+    mcs_status st = cli_stage3_build(scn, &p, &err);
     if (!st) {
         s3_run_opts o = {.out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = quiet};
         st = s3_run(&p, &o, &sum, &err);

@@ -75,6 +75,11 @@ int fe_builder_find_part(const fe_builder *b, const char *name)
     return -1;
 }
 
+int fe_builder_part_rigid(const fe_builder *b, int part)
+{
+    return part >= 0 && part < b->npart && b->part[part].material.model == FE_MAT_RIGID;
+}
+
 fe_part_desc fe_part_desc_default(void)
 {
     fe_part_desc d;

@@ -385,6 +385,8 @@ mcs_status fe_builder_add_wall(fe_builder *b, const fe_wall_desc *d, mcs_error *
 int fe_builder_nnode(const fe_builder *b);
 /* index of a part by name, -1 if none */
 int fe_builder_find_part(const fe_builder *b, const char *name);
+/* 1 when part (an index from fe_builder_find_part) is rigid (material model rigid) */
+int fe_builder_part_rigid(const fe_builder *b, int part);
 /* nodes of a part on its bounding-box side `where`, written to idx (capacity cap); count returned */
 int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, int cap);
 /* the node of a part nearest to p [m] (the first of equals), -1 if the part has none */

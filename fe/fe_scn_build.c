@@ -226,7 +226,40 @@ static fe_where where_of(const char *s)
     return FE_WHERE_ALL;
 }
 
-static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error *err)
+/* the attach/slip-ring node carrying FE node `node` already, NULL none */
+static const mcs_node *carried_by(const fe_problem *out, int node)
+{
+    for (int a = 0; a < out->natt; a++)
+        if (out->att[a].node == node) return out->att[a].attach;
+    return NULL;
+}
+
+/* a boundary holding a translation of a node a body carries (attach, slip ring): the two
+ * prescribe the same node's motion differently */
+static mcs_status boundary_on_attached(fe_builder *b, const mcs_node *c, const fe_boundary_desc *d,
+                                       const fe_problem *out, mcs_error *err)
+{
+    int part = fe_builder_find_part(b, d->part);
+    int n = (d->fix & FE_DOF_TRANS) && out->natt ? fe_builder_select(b, part, d->where, NULL, 0)
+                                                 : 0;
+    if (n <= 0) return MCS_OK;
+    int *idx = malloc((size_t)n * sizeof *idx);
+    if (!idx) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
+    fe_builder_select(b, part, d->where, idx, n);
+    const mcs_node *hit = NULL;
+    for (int k = 0; k < n && !hit; k++)
+        hit = carried_by(out, idx[k]);
+    free(idx);
+    if (!hit) return MCS_OK;
+    const mcs_node *body = fe_scn_get(hit, "body");
+    return mcs_node_error(fe_scn_get(c, "where"), err, MCS_ERR_KEY,
+                          "holds translations of nodes of part '%s' that body '%s' carries (line "
+                          "%d): a node is either held in the world or carried by a body",
+                          d->part, mcs_node_str(body), mcs_node_line(body));
+}
+
+static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, const fe_problem *out,
+                                 mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(list); i++) {
         const mcs_node *c = mcs_node_at(list, i);
@@ -235,6 +268,8 @@ static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error 
         fe_boundary_desc d = {.where = where_of(mcs_node_str(fe_scn_get(c, "where"))),
                               .fix = fix_mask(mcs_node_str(fe_scn_get(c, "fix")))};
         snprintf(d.part, sizeof d.part, "%s", mcs_node_str(fe_scn_get(c, "part")));
+        mcs_status bs = boundary_on_attached(b, c, &d, out, err);
+        if (bs) return bs;
         if (fe_scn_given(c, "velocity")) {
             mcs_status vs = mcs_node_vec3(fe_scn_get(c, "velocity"), d.velocity, err);
             if (vs) return vs;
@@ -246,6 +281,17 @@ static mcs_status add_boundaries(fe_builder *b, const mcs_node *list, mcs_error 
     return MCS_OK;
 }
 
+/* a node carried twice (a slip ring on an attached node, parts sharing nodes): its reaction
+ * would load the bodies twice */
+static mcs_status carried_twice(const mcs_node *key, const mcs_node *by, mcs_error *err)
+{
+    const mcs_node *body = fe_scn_get(by, "body");
+    return mcs_node_error(key, err, MCS_ERR_KEY,
+                          "would carry a node that body '%s' carries already (line %d): a node "
+                          "moves with one body, once",
+                          mcs_node_str(body), mcs_node_line(body));
+}
+
 /* fe.parts[].attach: the selected nodes get their translations fixed (stage 1 prescribes
  * their velocity, mb_couple.c) and are recorded in out->att */
 static mcs_status add_attach(fe_builder *b, const mcs_node *parts, fe_problem *out,
@@ -255,6 +301,13 @@ static mcs_status add_attach(fe_builder *b, const mcs_node *parts, fe_problem *o
         const mcs_node *p = mcs_node_at(parts, i), *a = fe_scn_get(p, "attach");
         if (!fe_scn_given(p, "attach")) continue;
         int part = fe_builder_find_part(b, mcs_node_str(fe_scn_get(p, "name")));
+        /* a rigid part's nodes move with its FE rigid body, which takes the prescribed velocity
+         * of a fixed node but gives the coupling no reaction: the body would drag it for free */
+        if (fe_builder_part_rigid(b, part))
+            return mcs_node_error(a, err, MCS_ERR_UNSUPPORTED,
+                                  "part '%s' is rigid: its reaction would not reach the body; "
+                                  "give it a deformable material, or make it a surface of the body",
+                                  mcs_node_str(fe_scn_get(p, "name")));
         fe_where w = where_of(mcs_node_str(fe_scn_get(a, "where")));
         int n = part < 0 ? 0 : fe_builder_select(b, part, w, NULL, 0);
         if (n <= 0)
@@ -270,6 +323,11 @@ static mcs_status add_attach(fe_builder *b, const mcs_node *parts, fe_problem *o
         fe_builder_select(b, part, w, idx, n);
         const double v0[3] = {0, 0, 0};
         for (int k = 0; k < n; k++) {
+            const mcs_node *by = carried_by(out, idx[k]);
+            if (by) {
+                free(idx);
+                return carried_twice(fe_scn_get(a, "body"), by, err);
+            }
             mcs_error kerr = {0};
             mcs_status st = fe_builder_fix_node(b, idx[k], FE_DOF_TRANS, v0, &kerr);
             if (st) {
@@ -299,6 +357,8 @@ static mcs_status add_ring_bodies(fe_builder *b, const mcs_node *rings, fe_probl
         int node = fe_builder_nearest(b, part, p);
         if (node < 0)
             return mcs_node_error(fe_scn_get(r, "part"), err, MCS_ERR_KEY, "part has no node");
+        const mcs_node *by = carried_by(out, node);
+        if (by) return carried_twice(fe_scn_get(r, "body"), by, err);
         fe_attach *na = realloc(out->att, (size_t)(out->natt + 1) * sizeof *na);
         if (!na) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
         out->att = na;
@@ -441,7 +501,7 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     st = add_parts(b, fe_scn_get(fe, "parts"), err);
     if (!st) st = add_attach(b, fe_scn_get(fe, "parts"), out, err);
     if (!st) st = add_ring_bodies(b, fe_scn_get(fe, "sliprings"), out, err);
-    if (!st) st = add_boundaries(b, fe_scn_get(fe, "boundary"), err);
+    if (!st) st = add_boundaries(b, fe_scn_get(fe, "boundary"), out, err);
     if (!st) st = add_loads(b, fe_scn_get(fe, "loads"), err);
     if (!st) st = add_walls(b, fe_scn_get(fe, "rigid_walls"), err);
     if (!st) st = fe_scn_solid_add(b, fe, err); /* springs, point masses */

@@ -176,13 +176,35 @@ static mcs_status read_retractor(const mcs_node *r, fe_belt_retractor_desc *d, m
     return st;
 }
 
+/* a part in airbag i that an earlier airbag (or bag i itself) already holds: one bag per closed
+ * surface, bags sharing fabric are not modelled (docs/gasbag.md) */
+static mcs_status shared_bag_part(const mcs_node *bags, int i, mcs_error *err)
+{
+    const mcs_node *parts = fe_scn_get(mcs_node_at(bags, i), "parts");
+    for (int k = 0; k < mcs_node_len(parts); k++) {
+        const char *name = mcs_node_str(mcs_node_at(parts, k));
+        for (int j = 0; j <= i; j++) {
+            const mcs_node *bj = mcs_node_at(bags, j), *pj = fe_scn_get(bj, "parts");
+            int n = j < i ? mcs_node_len(pj) : k;
+            for (int l = 0; l < n; l++)
+                if (strcmp(name, mcs_node_str(mcs_node_at(pj, l))) == 0)
+                    return mcs_node_error(mcs_node_at(parts, k), err, MCS_ERR_KEY,
+                                          "part '%s' is already in airbag '%s': one bag per "
+                                          "closed surface (bags sharing fabric are not modelled)",
+                                          name, mcs_node_str(fe_scn_get(bj, "name")));
+        }
+    }
+    return MCS_OK;
+}
+
 mcs_status fe_scn_add_restraints(fe_builder *b, const mcs_node *fe, mcs_error *err)
 {
     const mcs_node *bags = fe_scn_get(fe, "airbags"), *rets = fe_scn_get(fe, "retractors");
     for (int i = 0; i < mcs_node_len(bags); i++) {
         const mcs_node *a = mcs_node_at(bags, i);
         fe_airbag_desc d = fe_airbag_desc_default();
-        mcs_status st = read_airbag(a, &d, err);
+        mcs_status st = shared_bag_part(bags, i, err);
+        if (!st) st = read_airbag(a, &d, err);
         if (st) return st;
         mcs_error kerr = {0};
         st = fe_builder_add_airbag(b, &d, &kerr);
@@ -210,7 +232,11 @@ const mcs_node *fe_scn_restraint_node(const mcs_node *fe, const char *msg)
             const mcs_node *it = mcs_node_at(l, i);
             char needle[FE_NAME_MAX + 32];
             snprintf(needle, sizeof needle, "%s '%s'", what[k], mcs_node_str(fe_scn_get(it, "name")));
-            if (strstr(msg, needle)) return it;
+            if (!strstr(msg, needle)) continue;
+            /* a gas bag's surface (not shells, not closed, not oriented, no volume): its parts */
+            if (k == 0 && !strstr(msg, "initial pressure") && !strstr(msg, "defined twice"))
+                return fe_scn_get(it, "parts");
+            return it;
         }
     }
     return fe;

@@ -48,6 +48,13 @@ mcs_status fe_scn_add_sliprings(fe_builder *b, const mcs_node *fe, mcs_error *er
 const mcs_node *fe_scn_slipring_node(const mcs_node *fe, const char *msg, const mcs_node *fallback)
 {
     const mcs_node *l = fe_scn_get(fe, "sliprings");
+    /* "slip rings 'a' and 'b' ...": the second, the one that came in conflict */
+    for (int i = 0; i < mcs_node_len(l) && strstr(msg, "slip rings '"); i++) {
+        const mcs_node *it = mcs_node_at(l, i);
+        char needle[FE_NAME_MAX + 32];
+        snprintf(needle, sizeof needle, "' and '%s'", mcs_node_str(fe_scn_get(it, "name")));
+        if (strstr(msg, needle)) return it;
+    }
     for (int i = 0; i < mcs_node_len(l); i++) {
         const mcs_node *it = mcs_node_at(l, i);
         char needle[FE_NAME_MAX + 32];

@@ -63,10 +63,9 @@ def airbag(h, out):
     t = h5(h, "/stage1/time")
     g = "/stage1/airbag/front/"
     p, V, m = h5(h, g + "pressure"), h5(h, g + "volume"), h5(h, g + "mass")
-    # the bag's contacts in fe.contacts order (the concept scenario's: belts l, r, bag-rider,
-    # bag-car, foam l, r); unnamed ones are contact<i>
-    rider = contact_norm(h, "contact2") or [0] * len(t)
-    car = contact_norm(h, "contact3") or [0] * len(t)
+    # the bag's contacts, named in the concept scenario
+    rider = contact_norm(h, "bag_rider") or [0] * len(t)
+    car = contact_norm(h, "bag_car") or [0] * len(t)
     n = min(len(t), len(p), len(rider), len(car))
     write(os.path.join(out, "airbag.dat"),
           [(1e3 * t[i], (p[i] - 101325) / 1e3, 1e3 * V[i], 1e3 * m[i], rider[i] / 1e3, car[i] / 1e3)

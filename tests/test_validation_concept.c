@@ -188,7 +188,7 @@ static void test_413_phases(void)
     double bfire = NAN;
     mcs_results_attr_double(h, "/stage1/airbag/front", "fire_time", &bfire, &err);
     CHECK(rd(h, "/stage1/airbag/front/pressure", &p) && rd(h, "/stage1/airbag/front/volume", &V) &&
-          rd(h, "/stage1/airbag/front/mass", &m) && rd(h, "/stage1/contact/contact2/force", &cr));
+          rd(h, "/stage1/airbag/front/mass", &m) && rd(h, "/stage1/contact/bag_rider/force", &cr));
     double vmax = 0, vmax_t = NAN, ppk = 0, ppk_t = NAN, c_on = NAN, mpk = 0, m100 = NAN;
     double defl = NAN, m0 = m.v[0];
     for (size_t i = 0; i < t.n && i < p.n; i++) {

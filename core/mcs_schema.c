@@ -235,7 +235,7 @@ static const mcs_skey body_keys[] = {
 static const mcs_smap body_map = {.what = "body", .keys = body_keys, .check = mcs_rule_body};
 
 static const mcs_skey contact_keys[] = {
-    S("name", 0, "contact name"),
+    S("name", UNIQ, "contact name"),
     R("a", BODY_G, REQ, "first body (or ground)"),
     R("b", BODY_G, REQ, "second body (or ground)"),
     R("characteristic", CHR, REQ, "contact characteristic"),
@@ -731,7 +731,7 @@ static const mcs_svariant fe_contact_variants[] = {{"single_surface", &single_su
                                                    {0}};
 static const mcs_skey fe_contact_keys[] = {
     D("type", "contact type"),
-    S("name", 0, "contact name"),
+    S("name", UNIQ, "contact name"),
     Q("friction", NONE, GE, 0, 0, "Coulomb friction coefficient"),
     /* penalty stiffness scale (LS-DYNA SLSFAC), default 0.1 */
     Q("penalty_scale", NONE, GT, 0, 0, "penalty stiffness scale factor"),

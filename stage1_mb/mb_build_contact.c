@@ -265,6 +265,14 @@ static mcs_status build_contact(const mcs_node *cn, mb_model *m, int ic, mcs_err
         snprintf(c->name, MB_NAME, "%s", nm);
     else
         snprintf(c->name, MB_NAME, "%.30s-%.30s", mcs_node_str(na), mcs_node_str(nb));
+    /* the name keys the channels <name>_fn ... and triggers: one contact per name (two unnamed
+     * contacts of one pair, or a name equal to another's <a>-<b>) */
+    for (int j = 0; j < ic; j++)
+        if (strcmp(m->contact[j].name, c->name) == 0)
+            return mcs_node_error(nm ? mcs_node_get(cn, "name") : cn, err, MCS_ERR_KEY,
+                                  "contact name '%s' is also contacts[%d]'s (named, or <a>-<b> "
+                                  "when unnamed): give each a name of its own",
+                                  c->name, j);
     if (c->body_b == MB_GROUND && m->ground_surf < 0)
         return mcs_node_error(nb, err, MCS_ERR_KEY,
                               "a contact with the ground needs environment.ground");

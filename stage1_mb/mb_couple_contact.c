@@ -73,11 +73,6 @@ static int push_surf(mb_couple_contact *c, cc_surf v)
     return 0;
 }
 
-static void body_quat(const mb_body_desc *d, double q[4])
-{
-    mb_quat_unit(d->quat, q);
-}
-
 /* one kernel surface for stage-1 surface k of body b, in contact `name` with parts */
 static mcs_status add_surface(fe_builder *fb, const mb_model *m, int k, const char *name,
                               const char (*parts)[FE_NAME_MAX], int nparts, double mu, double scale,
@@ -86,7 +81,7 @@ static mcs_status add_surface(fe_builder *fb, const mb_model *m, int k, const ch
     const mb_surface *sf = &m->surf[k];
     const mb_body_desc *d = &m->body[sf->body];
     double q[4], R[9];
-    body_quat(d, q);
+    mb_quat_unit(d->quat, q);
     mb_quat_to_rot(q, R);
     char nm[FE_NAME_MAX];
     snprintf(nm, sizeof nm, "%.20s:%.41s", name, sf->name);
@@ -161,8 +156,7 @@ static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc
             int kind = 0;
             mcs_status st = add_surface(fb, m, k, name, parts, np, mu, scale, &kind, &kerr);
             if (st) return mcs_node_error(bn, err, st, "%s", kerr.msg);
-            cc_surf v = {kind, 0, slot, k, cc->ncontact - 1};
-            v.index = -1;
+            cc_surf v = {kind, -1, slot, k, cc->ncontact - 1}; /* index: set below */
             if (push_surf(cc, v)) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
             found = 1;
         }

@@ -109,6 +109,20 @@ static const bad_case cases[] = {
     {"slip ring on an attached node", 0, "poisson: 0}\n    - name: plate",
      "poisson: 0}\n      attach: {body: ball, where: all}\n    - name: plate", "moto_frame}]",
      "fe.sliprings[0].body", "that body 'ball' carries already"},
+    /* contact names (they key the channels and the triggers) */
+    {"stage-1 contact named twice", 0, "characteristic: pad}\n",
+     "characteristic: pad}\n  - {name: ball_ground, a: moto_frame, b: ground, characteristic: "
+     "pad}\n",
+     "ball_ground, a: moto_frame", "contacts[1].name", "duplicate name 'ball_ground'"},
+    {"two unnamed contacts of one pair", 0, "characteristic: pad}\n",
+     "characteristic: pad}\n  - {a: moto_frame, b: ground, characteristic: pad}\n"
+     "  - {a: ground, b: moto_frame, characteristic: pad}\n",
+     "{a: ground, b: moto_frame", "contacts[2]", "'moto_frame-ground' is also contacts[1]'s"},
+    {"FE contact named twice", 0, "    - {type: bodies, parts: [plate], bodies: [ball]",
+     "    - {name: c1, type: bodies, parts: [plate], bodies: [moto_frame]}\n"
+     "    - {name: c1, type: bodies, parts: [plate], bodies: [ball]",
+     "c1, type: bodies, parts: [plate], bodies: [ball]", "fe.contacts[1].name",
+     "duplicate name 'c1'"},
     /* fe.contacts[] of type: bodies */
     {"bodies contact: unknown body", 0, "bodies: [ball]", "bodies: [bal1]", "bal1",
      "fe.contacts[0].bodies[0]", "unknown body 'bal1'"},

@@ -21,7 +21,7 @@ mkdir -p "$WORK" "$IMG"
 trap 'rm -rf "$WORK"' EXIT
 command -v gnuplot >/dev/null || { echo "plot_restraints: gnuplot not found (apt-get install gnuplot-nox)" >&2; exit 2; }
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-1} # one thread: a 2-thread team waits badly on busy cores
-for c in bag_piston belt_limiter belt_pretensioner foam_block foam_impact momentum; do
+for c in bag_piston belt_limiter belt_pretensioner foam_block foam_impact foam_contact momentum; do
     "$MCRASH" run scenarios/verification/coupled_$c.yaml --stage 1 --quiet -o "$WORK/coupled_$c.h5" >/dev/null
 done
 python3 scripts/validation_restraints.py "$WORK" "$IMG"

@@ -9,6 +9,7 @@
 #include "stage1_mb/mb_couple_rx.h"
 #include "stage1_mb/mb_couple_contact.h"
 #include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_prescribe.h"
 #include "stage1_mb/mb_vec.h"
 
 #include <math.h>
@@ -237,12 +238,15 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         if (c->contact) mb_couple_contact_sum(m, s, tau0, dth);
         for (int a = 0; a < c->natt; a++) {
             const int n = c->node[a];
+            double w = 0;
             for (int i = 0; i < 3; i++) {
                 double v0 = vold[3 * a + i], vn = f->node_v[3 * n + i];
                 double r = cs->react[3 * n + i]; /* constraint force on the node (fe_integrate) */
                 cs->imp[3 * a + i] += r * dth;
-                cs->w_fe += r * dth * 0.5 * (v0 + vn);
+                w += r * dth * 0.5 * (v0 + vn);
             }
+            cs->w_fe += w;
+            if (mb_body_prescribed(m, c->body[a])) cs->w_fe_presc += w;
         }
     }
     /* the mean force is centred at tc (the impulses' interval, a half FE step before t + h/2):

@@ -8,6 +8,7 @@
  * ODE step, extrapolated with the attached nodes' factor. */
 #include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_couple_rx.h"
+#include "stage1_mb/mb_prescribe.h"
 #include "stage1_mb/mb_vec.h"
 #include "fe/fe_restraint.h"
 
@@ -76,7 +77,10 @@ void mb_couple_anchor_begin(const mb_model *m, mb_state *s)
         double *x1 = q->x1 + 3 * a;
         anchor_now(rx, s, a, x1);
         /* the body's work of the last force over this step's displacement of the anchor */
-        for (int i = 0; i < 3; i++) q->w_anchor += q->force[3 * a + i] * (x1[i] - q->xa[3 * a + i]);
+        double w = 0;
+        for (int i = 0; i < 3; i++) w += q->force[3 * a + i] * (x1[i] - q->xa[3 * a + i]);
+        q->w_anchor += w;
+        if (mb_body_prescribed(m, rx->anchor_body[a])) q->w_anchor_presc += w;
     }
     memset(q->imp, 0, 3 * (size_t)rx->nanchor * sizeof *q->imp);
 }

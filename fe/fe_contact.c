@@ -511,6 +511,11 @@ static void keep_velocities(const fe_contact_model *c, fe_contact_state *cs)
  * summed per node chunk and added in chunk order; the scatter to the nodes is serial in live
  * order: results do not depend on the number of threads (tests/test_fe_parallel.c). */
 
+long fe_contact_omp_work(const fe_model *m)
+{
+    return m->contact && m->contact->nent > FE_CONTACT_OMP_MIN ? m->contact->nent : 0;
+}
+
 static int contact_team(const fe_model *m, const fe_state *s)
 {
     const int nt = s->par_nt > 1 ? s->par_nt : 1;

@@ -264,6 +264,9 @@ void fe_contact_live(const fe_model *m, struct fe_state *s, int t);
 void fe_contact_finish(const fe_model *m, struct fe_state *s);
 /* contact energy at t (elastic + dissipated) and the contact work included in work_ext [J] */
 double fe_contact_energy(const fe_model *m, const struct fe_state *s);
+/* the slave entries a threaded contact shares among the threads, 0 when it runs on one
+ * (fe_par_team counts them as work) */
+long fe_contact_omp_work(const fe_model *m);
 double fe_contact_work(const fe_model *m, const struct fe_state *s);
 
 /* move an ellipsoid (stage-1 coupling): centre [m], rotation body -> world (row major) [-],

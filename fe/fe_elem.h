@@ -139,6 +139,9 @@ void fe_truss_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
 void fe_chunk_commit(fe_state *s, int ip, const fe_chunk_acc *acc);
 /* element chunks of the model (fe_model_create, after the elements are sorted by part) */
 void fe_build_chunks(fe_model *m);
+/* m->nelem_chunked: the elements of the parts in the chunk loops (fe_part_chunked; after the
+ * rigid parts are known, fe_solid_build) */
+void fe_count_chunked(fe_model *m);
 /* add the partial sums of the next chunk of the same part (chunk order) */
 void fe_chunk_merge(fe_chunk_acc *into, const fe_chunk_acc *a);
 /* partial sums of a node chunk in fe_integrate: kinetic energy, works before and after t of
@@ -205,6 +208,16 @@ static inline void fe_jaumann(double sg[6], const double W[3][3])
         }
     sg[0] = R[0][0], sg[1] = R[1][1], sg[2] = R[2][2], sg[3] = R[0][1], sg[4] = R[1][2],
     sg[5] = R[2][0];
+}
+
+/* a part whose elements run in the threaded chunk loops (fe_stages.c); membranes, rigid parts
+ * and parts without elements run whole, on one thread */
+static inline int fe_part_chunked(const fe_part *p)
+{
+    if (p->body >= 0) return 0; /* rigid part: no element work (fe_rigid.c) */
+    return p->elem_kind == FE_KIND_HEX || p->elem_kind == FE_KIND_TRUSS ||
+           p->elem_kind == FE_KIND_TET10 ||
+           (p->elem_kind == FE_KIND_SHELL && p->section.type != FE_SECTION_MEMBRANE);
 }
 
 #endif

@@ -419,6 +419,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
         fe_membrane_references(m); /* t = 0 geometry of the membranes */
     }
     if (st == MCS_OK) st = fe_solid_build(b, m, err); /* point masses, springs, rigid bodies */
+    if (st == MCS_OK) fe_count_chunked(m);            /* rigid parts known: the threaded work */
     if (st == MCS_OK) {
         build_gather(m);
         /* initial velocities by part, then prescribed velocities of fixed dofs */

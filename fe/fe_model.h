@@ -333,6 +333,7 @@ typedef struct fe_model {
     /* threaded loops (fe_parallel.c): elements in chunks of FE_CHUNK_ELEMS within a part and
      * nodes in chunks of FE_CHUNK_NODES, each reduced in chunk order (thread-count independent) */
     int nchunk;            /* element chunks [-]                                           */
+    int nelem_chunked;     /* elements of the parts in the threaded chunk loops [-]        */
     int nnode_chunk;       /* node chunks [-]                                              */
     int node_acc_stride;   /* partial sums per node chunk: FE_NACC_FIXED + npart + 3 FE_WALL_MAX */
     int nnode_acc;         /* nnode_chunk x node_acc_stride [-]                            */
@@ -357,6 +358,10 @@ typedef struct fe_model {
 /* smaller models run their loops on one thread (a parallel region costs microseconds) */
 #define FE_PAR_MIN_CHUNKS 8      /* element chunks [-]                                   */
 #define FE_PAR_MIN_NODE_CHUNKS 4 /* node chunks [-]                                      */
+/* and each thread gets at least this many threaded elements or contact entries: a step opens
+ * 4-6 parallel regions, and a tiny model stepped in short subcycles (a stage-1 coupling) paid
+ * more for them than its loops took (docs/fe.md "Threads and speed") */
+#define FE_PAR_MIN_WORK 512 /* [-] */
 #define FE_PAR_MAX 64            /* threads used at most by the FE loops [-]             */
 #define FE_PAR_WINDOW 64         /* steps between two balances of the thread shares [-]  */
 

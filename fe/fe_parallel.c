@@ -6,6 +6,7 @@
  * thread. The chunks do not depend on the number of threads, so a run gives the same result
  * to the last bit with any OMP_NUM_THREADS (tests/test_fe_parallel.c). */
 #include "fe/fe_builder_impl.h" /* fe_kind_nnode */
+#include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
 #include "fe/fe_parallel.h"
 
@@ -47,6 +48,14 @@ void fe_build_chunks(fe_model *m)
         if (k > 0 && nc < m->chunk_nc[k - 1]) nc = m->chunk_nc[k - 1];
         m->chunk_nc[k] = nc < m->nnode_chunk ? nc : m->nnode_chunk;
     }
+}
+
+void fe_count_chunked(fe_model *m)
+{
+    m->nelem_chunked = 0;
+    for (int ip = 0; ip < m->npart; ip++)
+        if (fe_part_chunked(m->part + ip))
+            m->nelem_chunked += m->part[ip].elem_end - m->part[ip].elem_begin;
 }
 
 void fe_chunk_commit(fe_state *s, int ip, const fe_chunk_acc *acc)
@@ -182,6 +191,11 @@ int fe_par_team(const fe_model *m, fe_state *s)
     if (nt > FE_PAR_MAX) nt = FE_PAR_MAX;
     if (nt > m->nchunk) nt = m->nchunk;
     if (m->nchunk < FE_PAR_MIN_CHUNKS || nt < 1) nt = 1;
+    /* FE_PAR_MIN_WORK per thread: the elements of the chunk loops and, when the contact is
+     * threaded (fe_contact_omp_work), its entries; membranes and the rest run on one thread */
+    const long work = (long)m->nelem_chunked + fe_contact_omp_work(m);
+    const long most = work / FE_PAR_MIN_WORK;
+    if (nt > most) nt = most > 1 ? (int)most : 1;
     if (nt != s->par_nt) {
         /* a new team: equal numbers of chunks */
         for (int t = 0; t <= nt; t++) s->par_cut[t] = (int)((long)m->nchunk * t / nt);

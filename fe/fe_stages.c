@@ -16,10 +16,7 @@
 /* parts whose elements run in threaded chunks (fe_*_range) */
 static int chunked_part(const fe_part *p)
 {
-    if (p->body >= 0) return 0; /* rigid part: no element work (fe_rigid.c) */
-    return p->elem_kind == FE_KIND_HEX || p->elem_kind == FE_KIND_TRUSS ||
-           p->elem_kind == FE_KIND_TET10 ||
-           (p->elem_kind == FE_KIND_SHELL && p->section.type != FE_SECTION_MEMBRANE);
+    return fe_part_chunked(p);
 }
 
 /* the element chunks of share t: stresses, slot forces, partial sums; each chunk's time

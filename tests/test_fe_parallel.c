@@ -92,6 +92,8 @@ static void test_threads_bitwise(void)
     const int steps = 300;
     fe_state *s1 = run_with(m, 1, steps), *s2 = run_with(m, 2, steps);
     if (s1 && s2) {
+        /* the second run was threaded (when built with OpenMP: fe_threads() is then 2) */
+        CHECK(s1->par_nt == 1 && s2->par_nt == (fe_threads() >= 2 ? 2 : 1));
         SAME_ARRAY(s1, s2, node_x, 3 * m->nnode);
         SAME_ARRAY(s1, s2, node_v, 3 * m->nnode);
         SAME_ARRAY(s1, s2, node_w, 3 * m->nnode);
@@ -172,6 +174,8 @@ static void test_contact_threads_bitwise(void)
     const int steps = 400;
     fe_state *s1 = run_with(m, 1, steps), *s2 = run_with(m, 2, steps);
     if (s1 && s2 && c) {
+        /* the second run was threaded (when built with OpenMP: fe_threads() is then 2) */
+        CHECK(s1->par_nt == 1 && s2->par_nt == (fe_threads() >= 2 ? 2 : 1));
         SAME_ARRAY(s1, s2, node_x, 3 * m->nnode);
         SAME_ARRAY(s1, s2, node_v, 3 * m->nnode);
         SAME_ARRAY(s1, s2, node_w, 3 * m->nnode);
@@ -275,10 +279,66 @@ static void test_plane_stress_return(void)
     CHECK(worst_n < 6e-15); /* 2e-15 stated */
 }
 
+/* the team size (fe_par_team): a model like the stage-1 concept's restraints -- a 1058-triangle
+ * membrane bag (not in the chunk loops: one thread) and two 10-truss belts, 11 element chunks
+ * -- runs on one thread when 2 are offered, as its 20 threaded elements are below
+ * FE_PAR_MIN_WORK per thread (fe_model.h); a 1024-hex block (2 x FE_PAR_MIN_WORK) on two */
+static void test_team_size(void)
+{
+    mcs_error err = {0};
+    fe_builder *b = NULL;
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc bag = ft_part("bag", FE_SECTION_MEMBRANE, 5e8, 0.3, 1000);
+    bag.material.model = FE_MAT_FABRIC;
+    bag.section.thickness = 5e-4;
+    bag.mesh.generate = FE_MESH_PLATE;
+    bag.mesh.size[0] = bag.mesh.size[1] = 0.5;
+    bag.mesh.divisions[0] = 23, bag.mesh.divisions[1] = 23; /* 529 quads, 1058 triangles */
+    bag.mesh.axis = 2;
+    CHECK(fe_builder_add_part(b, &bag, NULL, &err) == MCS_OK);
+    for (int i = 0; i < 2; i++) {
+        fe_part_desc r = ft_part(i ? "belt_r" : "belt_l", FE_SECTION_TRUSS, 2.33e9, 0, 1000);
+        r.section.area = 6e-5;
+        r.mesh.generate = FE_MESH_LINE;
+        r.mesh.origin[0] = 1, r.mesh.origin[1] = i, r.mesh.end[0] = 1.3, r.mesh.end[1] = i;
+        r.mesh.divisions[0] = 10;
+        CHECK(fe_builder_add_part(b, &r, NULL, &err) == MCS_OK);
+    }
+    fe_model *m = NULL;
+    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+    fe_builder_destroy(&b);
+    if (!m) return;
+    CHECK(m->nchunk >= FE_PAR_MIN_CHUNKS && m->nelem_chunked == 20);
+    fe_state *s = run_with(m, 2, 3);
+    CHECK(s && s->par_nt == 1);
+    printf("team: %d elements in %d chunks, %d in the chunk loops: %d thread(s) of 2\n",
+           m->nelem, m->nchunk, m->nelem_chunked, s ? s->par_nt : -1);
+    fe_state_destroy(&s);
+    fe_model_destroy(&m);
+    /* the block: 16 x 16 x 4 hexes */
+    CHECK(fe_builder_create(&b, &err) == MCS_OK);
+    fe_part_desc h = ft_part("block", FE_SECTION_SOLID, 210e9, 0.3, 7850);
+    h.mesh.generate = FE_MESH_BOX;
+    h.mesh.size[0] = h.mesh.size[1] = 0.16, h.mesh.size[2] = 0.04;
+    h.mesh.divisions[0] = h.mesh.divisions[1] = 16, h.mesh.divisions[2] = 4;
+    CHECK(fe_builder_add_part(b, &h, NULL, &err) == MCS_OK);
+    m = NULL;
+    CHECK(fe_model_create(b, NULL, &m, &err) == MCS_OK);
+    fe_builder_destroy(&b);
+    if (!m) return;
+    CHECK(m->nelem_chunked == 2 * FE_PAR_MIN_WORK);
+    s = run_with(m, 2, 3);
+    CHECK(s && s->par_nt == (fe_threads() >= 2 ? 2 : 1));
+    fe_state_destroy(&s);
+    fe_set_threads(1);
+    fe_model_destroy(&m);
+}
+
 int main(void)
 {
     RUN(test_plane_stress_return);
     RUN(test_threads_bitwise);
     RUN(test_contact_threads_bitwise);
+    RUN(test_team_size);
     TEST_END();
 }

@@ -25,7 +25,7 @@ void mb_couple_pt_end_pos(const mb_state *s, int n, const int *body, const doubl
 /* n force components from their impulses imp over the step h: the mean sg imp / h (sg = -1
  * for a reaction on the node that loads the body), force = mean + alpha (mean - last mean)
  * (fmean: the last mean, then this one; no extrapolation until started) */
-void mb_couple_mean_force(int n, const double *imp, double sg, double h, double alpha,
-                          int started, double *fmean, double *force);
+void mb_couple_mean_force(int n, const double *imp, double sg, double h, double alpha, int started,
+                          double *fmean, double *force);
 
 #endif

@@ -1,5 +1,5 @@
 /* fe_scn_restraints.c: scenario keys -> membrane meshes, fabric, gas bags and retractors, and
- * their /stage3 results (see fe_scn_restraints.h). The kernel's descriptors carry the key names
+ * their /stage<N> results (see fe_scn_restraints.h). The kernel's descriptors carry the key names
  * (docs/fe.md, docs/gasbag.md); kernel errors are relocated to the scenario node. */
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_node.h"
@@ -258,7 +258,8 @@ mcs_status fe_out_restraint_open(mcs_results *r, int stage, const fe_model *m,
     if (!rs) return MCS_OK;
     o->bag = calloc((size_t)rs->nbag * FE_OUT_BAG_CHANNELS + 1, sizeof *o->bag);
     o->retractor = calloc((size_t)rs->nretractor * FE_OUT_RETRACTOR_CHANNELS + 1, sizeof *o->retractor);
-    if (!o->bag || !o->retractor) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
+    if (!o->bag || !o->retractor)
+        return MCS_ERR(err, MCS_ERR_NOMEM, "stage %d: out of memory", stage);
     o->nbag = rs->nbag;
     o->nretractor = rs->nretractor;
     char path[256];

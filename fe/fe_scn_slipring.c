@@ -1,6 +1,6 @@
-/* fe_scn_slipring.c: scenario keys -> slip rings, and their /stage3 results (fe_scn_slipring.h). The
- * kernel's descriptor carries the key names (docs/fe.md); kernel errors are relocated to the
- * scenario node. */
+/* fe_scn_slipring.c: scenario keys -> slip rings, and their /stage<N> results
+ * (fe_scn_slipring.h). The kernel's descriptor carries the key names (docs/fe.md); kernel
+ * errors are relocated to the scenario node. */
 #include "fe/fe_scn_slipring.h"
 #include "fe/fe_scn_node.h"
 
@@ -71,7 +71,7 @@ mcs_status fe_out_slipring_open(mcs_results *r, int stage, const fe_model *m, fe
     const struct fe_sliprings *rs = m->sliprings;
     if (!rs) return MCS_OK;
     o->ch = calloc((size_t)rs->n * FE_SLIPRING_NCHANNEL, sizeof *o->ch);
-    if (!o->ch) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
+    if (!o->ch) return MCS_ERR(err, MCS_ERR_NOMEM, "stage %d: out of memory", stage);
     o->n = rs->n;
     char path[256];
     mcs_status st = MCS_OK;

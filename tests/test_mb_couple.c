@@ -17,6 +17,7 @@
 #include "stage1_mb/mb_couple.h"
 #include "tests/harness.h"
 #include "tests/figures.h"
+#include "tests/mb_couple_test_util.h"
 #include "tests/mb_test_util.h"
 
 #define L_BAR 1.0
@@ -64,12 +65,8 @@ static double end_mass_root(double r)
 static void test_body_hanging_on_a_bar(void)
 {
     mcs_error err = {0};
-    mb_model *m = mt_model_text("hang.yaml", hang(G, 0), &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("hang.yaml", hang(G, 0));
+    if (!m) return;
     CHECK(m->couple != NULL && m->couple->natt == 1);
     mb_state *s = NULL;
     mcs_status st = mb_state_create(m, &s, &err);
@@ -168,12 +165,8 @@ static void test_moment_on_a_hinged_body(void)
         "      attach: {body: lever, where: x_min}\n"
         "  boundary: [{part: bar, where: x_max, fix: all}]\n";
     mcs_error err = {0};
-    mb_model *m = mt_model_text("lever.yaml", y, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("lever.yaml", y);
+    if (!m) return;
     mb_state *s = NULL;
     mcs_status st = mb_state_create(m, &s, &err);
     double prev = 0, t_first = -1, t_last = -1, amax = 0;

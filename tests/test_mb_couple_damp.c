@@ -21,6 +21,7 @@
 #include "stage1_mb/mb_couple.h"
 #include "tests/harness.h"
 #include "tests/figures.h"
+#include "tests/mb_couple_test_util.h"
 #include "tests/mb_test_util.h"
 
 #define L_BAR 1.0
@@ -81,10 +82,7 @@ static void test_static_deflection_with_damping(void)
     if (!m) return;
     CHECK(m->couple->fe.model->opts.damping == 30000);
     mb_state *s = NULL;
-    mcs_error err = {0};
-    mcs_status st = mt_run(m, &s, &err);
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    mc_run(m, &s);
     if (!s) return;
     mb_body_kin k;
     mb_body_get(s->world, 0, &k);

@@ -5,7 +5,7 @@ results files (scripts/plot_restraints.sh runs the scenarios and calls this).
   python3 scripts/validation_restraints.py RESULTS_DIR IMG_DIR
 
 RESULTS_DIR holds coupled_<case>.h5 of scenarios/verification/coupled_<case>.yaml (bag_piston,
-belt_limiter, belt_pretensioner, foam_block, foam_impact, momentum). Writes the gnuplot data
+belt_limiter, belt_pretensioner, foam_block, foam_impact, foam_contact, momentum). Writes the gnuplot data
 and script to RESULTS_DIR and runs gnuplot: IMG_DIR/restraints_{bag,limiter,pretensioner,foam,
 energy}.png. The closed forms drawn are the ones tests/test_validation_restraints.c checks
 (its figures are the numbers the doc states; this script only draws). Reads the HDF5 files
@@ -131,7 +131,10 @@ def foam(res, out):
     the impact's reference A S(d/h, |v|/h) (log-rate interpolation)"""
     (r_lo, lo), (r_hi, hi) = foam_curves()
     A, H = 0.01, 0.05
-    for case, M in (("foam_block", 300.0), ("foam_impact", 5.0)):
+    # the body's CG when it meets the block: attached at once (0.05 m), through contact when
+    # its face (0.02 m below the CG) reaches the top (0.07 m)
+    for case, M, z0 in (("foam_block", 300.0, 0.05), ("foam_impact", 5.0, 0.05),
+                        ("foam_contact", 5.0, 0.07)):
         h = os.path.join(res, "coupled_%s.h5" % case)
         t, z = h5(h, "/stage1/time"), h5(h, "/stage1/bodies/mass/position")
         v = h5(h, "/stage1/bodies/mass/velocity")
@@ -141,7 +144,9 @@ def foam(res, out):
             vm = 0.5 * (v[i][2] + v[i - 1][2])
             if vm >= 0:  # loading only (unloading follows the hysteresis branch)
                 break
-            d, rate = 0.05 - 0.5 * (z[i][2] + z[i - 1][2]), -vm / H
+            d, rate = z0 - 0.5 * (z[i][2] + z[i - 1][2]), -vm / H
+            if d < 0:
+                continue
             s_lo, s_hi = curve_at(lo, d / H), curve_at(hi, d / H)
             wgt = min(max(math.log(max(rate, 1e-9) / r_lo) / math.log(r_hi / r_lo), 0), 1)
             rows.append((1e3 * d, M * a[i - 1], A * (s_lo + wgt * (s_hi - s_lo))))
@@ -154,7 +159,7 @@ def foam(res, out):
 def energy(res, out):
     """(total - total(0)) / the largest kinetic + internal energy, every case"""
     for case in ("bag_piston", "belt_limiter", "belt_pretensioner", "foam_block", "foam_impact",
-                 "momentum"):
+                 "foam_contact", "momentum"):
         h = os.path.join(res, "coupled_%s.h5" % case)
         t, tot = h5(h, "/stage1/time"), h5(h, "/stage1/energy/total")
         kin, inn = h5(h, "/stage1/energy/kinetic"), h5(h, "/stage1/energy/internal")
@@ -195,13 +200,14 @@ set xrange [0:25]
 plot "{d}/foam_block.dat" using 1:2 with lines lw 2 title "300 kg at 0.3 m/s (quasi-static)", \\
      "{d}/foam_impact.dat" using 1:2 with lines lw 2 title "5 kg at 5 m/s (impact)", \\
      "{d}/foam_impact.dat" using 1:3 with lines dt 2 lc rgb "black" title "A S(d/h, |v|/h), impact", \\
+     "{d}/foam_contact.dat" using 1:2 with lines lw 1 title "5 kg at 5 m/s through contact", \\
      "{d}/foam_curves.dat" using 1:2 with lines dt 3 lc rgb "gray40" title "A S at 10 /s", \\
      "{d}/foam_curves.dat" using 1:3 with lines dt 4 lc rgb "gray40" title "A S at 1000 /s"
 set autoscale x
 set output "{img}/restraints_energy.png"
 set title "Energy balance of the coupled runs"
 set xlabel "time [ms]"; set ylabel "(total - total(0)) / largest kinetic + internal"
-plot for [c in "bag_piston belt_limiter belt_pretensioner foam_block foam_impact momentum"] \\
+plot for [c in "bag_piston belt_limiter belt_pretensioner foam_block foam_impact foam_contact momentum"] \\
      "{d}/energy_".c.".dat" using 1:2 with lines lw 2 title c
 """
 

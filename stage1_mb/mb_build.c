@@ -250,6 +250,7 @@ void mb_model_destroy(mb_model **pm)
     free(m->loadcell);
     mb_couple_destroy(&m->couple);
     free(m->body_group);
+    free(m->presc);
     free(m);
     *pm = NULL;
 }

@@ -10,6 +10,7 @@
 #include "stage1_mb/mb_couple_contact.h"
 #include "stage1_mb/mb_couple_pt.h"
 #include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_prescribe.h"
 #include "stage1_mb/mb_vec.h"
 
 #include <math.h>
@@ -176,7 +177,14 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
     mb_couple_trigger_check(m, s); /* the contact forces of t fire inflators, retractors */
     mb_couple_anchor_begin(m, s);
     double *x1 = cs->force; /* scratch: body points at t + h, then the forces */
-    mb_couple_pt_end_pos(s, c->natt, c->body, c->local, cs->force, cs->xa, x1, &cs->w_body);
+    for (int a = 0; a < c->natt; a++) {
+        double x[3];
+        mb_couple_pt_now(s, c->body[a], c->local + 3 * a, x);
+        /* the body's work of the last forces over this step's displacement */
+        for (int i = 0; i < 3; i++)
+            cs->w_body += cs->force[3 * a + i] * (x[i] - cs->xa[3 * a + i]);
+        mb_copy(x, x1 + 3 * a);
+    }
     memset(cs->imp, 0, 3 * (size_t)c->natt * sizeof *cs->imp);
     if (c->contact) mb_couple_contact_begin(m, s);
     /* the impulses r dth of the FE steps at t_j span [t_j - dt_prev/2, t_j + dt/2] */
@@ -210,12 +218,15 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
         if (c->contact) mb_couple_contact_sum(m, s, tau0, dth);
         for (int a = 0; a < c->natt; a++) {
             const int n = c->node[a];
+            double w = 0;
             for (int i = 0; i < 3; i++) {
                 double v0 = vold[3 * a + i], vn = f->node_v[3 * n + i];
                 double r = cs->react[3 * n + i]; /* constraint force on the node (fe_integrate) */
                 cs->imp[3 * a + i] += r * dth;
-                cs->w_fe += r * dth * 0.5 * (v0 + vn);
+                w += r * dth * 0.5 * (v0 + vn);
             }
+            cs->w_fe += w;
+            if (mb_body_prescribed(m, c->body[a])) cs->w_fe_presc += w;
         }
     }
     /* the mean force is centred at tc (the impulses' interval, a half FE step before t + h/2):

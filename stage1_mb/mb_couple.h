@@ -35,6 +35,7 @@ typedef struct mb_couple_state {
     double *vold;       /* scratch: attached node velocities before an FE step (natt x 3) */
     double w_body;      /* work of the coupling forces on the bodies [J]                  */
     double w_fe;        /* work of the bodies on the attached nodes [J]                    */
+    double w_fe_presc;  /* the part of it of prescribed bodies (mb_prescribe.h) [J]        */
     long substeps;      /* FE steps taken [-]                                             */
     struct mb_couple_rx_state *rx; /* triggers and anchors (mb_couple_rx.h)               */
     struct mb_couple_contact_state *contact; /* of m->couple->contact, NULL none          */

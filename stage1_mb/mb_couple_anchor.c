@@ -9,6 +9,7 @@
 #include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_couple_pt.h"
 #include "stage1_mb/mb_couple_rx.h"
+#include "stage1_mb/mb_prescribe.h"
 #include "stage1_mb/mb_vec.h"
 #include "fe/fe_restraint.h"
 
@@ -53,8 +54,15 @@ void mb_couple_anchor_begin(const mb_model *m, mb_state *s)
 {
     const mb_couple_rx *rx = m->couple->rx;
     mb_couple_rx_state *q = s->couple->rx;
-    mb_couple_pt_end_pos(s, rx->nanchor, rx->anchor_body, rx->anchor_local, q->force, q->xa, q->x1,
-                         &q->w_anchor);
+    for (int a = 0; a < rx->nanchor; a++) {
+        double *x1 = q->x1 + 3 * a;
+        mb_couple_pt_now(s, rx->anchor_body[a], rx->anchor_local + 3 * a, x1);
+        /* the body's work of the last force over this step's displacement of the anchor */
+        double w = 0;
+        for (int i = 0; i < 3; i++) w += q->force[3 * a + i] * (x1[i] - q->xa[3 * a + i]);
+        q->w_anchor += w;
+        if (mb_body_prescribed(m, rx->anchor_body[a])) q->w_anchor_presc += w;
+    }
     memset(q->imp, 0, 3 * (size_t)rx->nanchor * sizeof *q->imp);
 }
 

@@ -10,6 +10,7 @@
  * the CG and a moment about it (the kernel's moment about the surface's reference point plus
  * (reference point - CG) x force, both at tau_j). */
 #include "stage1_mb/mb_couple_contact.h"
+#include "stage1_mb/mb_prescribe.h"
 #include "fe/fe_contact.h"
 #include "fe/fe_state.h"
 #include "stage1_mb/mb_couple.h"
@@ -406,6 +407,19 @@ double mb_couple_contact_work(const mb_model *m, const mb_state *s)
     for (int k = 0; k < c->nsurf; k++) {
         const cc_surf *v = &c->s[k];
         w += (v->facets ? ks->fac_work : ks->ell_work)[v->index];
+    }
+    return w;
+}
+
+double mb_couple_contact_work_prescribed(const mb_model *m, const mb_state *s)
+{
+    const mb_couple_contact *c = m->couple->contact;
+    const fe_contact_state *ks = s->couple->fe->contact;
+    double w = 0;
+    for (int k = 0; k < c->nsurf; k++) {
+        const cc_surf *v = &c->s[k];
+        if (mb_body_prescribed(m, c->body[v->body]))
+            w += (v->facets ? ks->fac_work : ks->ell_work)[v->index];
     }
     return w;
 }

@@ -39,6 +39,8 @@ double mb_couple_contact_work(const mb_model *m, const mb_state *s);
 /* the contact impulse on body `body` so far: as the structure gave it (the sum over the FE
  * subcycles) and as the body received it in its ODE steps (force and moment about the CG,
  * world) [N s, N m s]; -1 when no bodies contact names the body */
+/* the same, of the surfaces on prescribed bodies only (mb_prescribe.h) [J] */
+double mb_couple_contact_work_prescribed(const mb_model *m, const mb_state *s);
 int mb_couple_contact_impulse(const mb_model *m, const mb_state *s, int body, double fe[6],
                               double onbody[6]);
 /* a bodies contact by name (`name`, default contact<i> as the FE contacts): its index, -1 if

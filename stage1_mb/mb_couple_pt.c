@@ -29,19 +29,6 @@ void mb_couple_pt_apply(mb_state *s, int n, const int *body, const double *local
     }
 }
 
-void mb_couple_pt_end_pos(const mb_state *s, int n, const int *body, const double *local,
-                          const double *force, const double *xa, double *x1, double *w)
-{
-    for (int a = 0; a < n; a++) {
-        double x[3];
-        mb_couple_pt_now(s, body[a], local + 3 * a, x);
-        /* the body's work of the last force over this step's displacement of the point */
-        for (int i = 0; i < 3; i++)
-            *w += force[3 * a + i] * (x[i] - xa[3 * a + i]);
-        mb_copy(x, x1 + 3 * a);
-    }
-}
-
 void mb_couple_mean_force(int n, const double *imp, double sg, double h, double alpha, int started,
                           double *fmean, double *force)
 {

@@ -18,10 +18,6 @@ void mb_couple_pt_now(const mb_state *s, int b, const double l[3], double x[3]);
  * (before the ODE step) */
 void mb_couple_pt_apply(mb_state *s, int n, const int *body, const double *local,
                         const double *force, double *xa);
-/* n points: their world positions now into x1 (after the ODE step; x1 may be force itself)
- * and the work of force over x1 - xa added to *w [J] */
-void mb_couple_pt_end_pos(const mb_state *s, int n, const int *body, const double *local,
-                          const double *force, const double *xa, double *x1, double *w);
 /* n force components from their impulses imp over the step h: the mean sg imp / h (sg = -1
  * for a reaction on the node that loads the body), force = mean + alpha (mean - last mean)
  * (fmean: the last mean, then this one; no extrapolation until started) */

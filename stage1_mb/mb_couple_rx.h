@@ -51,6 +51,7 @@ typedef struct mb_couple_rx_state {
     double *force;        /* its mean force, applied to the body in the next step (nanchor x 3) */
     double *fmean;        /* mean force of the last subcycle (nanchor x 3) [N]              */
     double w_anchor;      /* work of the anchor reactions on the bodies [J]                 */
+    double w_anchor_presc; /* the part of it on prescribed bodies (mb_prescribe.h) [J]      */
 } mb_couple_rx_state;
 
 /* model: triggers and anchors of the scenario's fe: block (m->couple built, its FE model

@@ -8,6 +8,7 @@
  * than opts.energy_tol of the reference energy (largest kinetic + stored so far). */
 #include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_prescribe.h"
 #include "stage1_mb/mb_vec.h"
 
 #include <math.h>
@@ -16,6 +17,7 @@ static double kinetic(const mb_model *m, const mb_state *s)
 {
     double e = 0;
     for (int b = 0; b < m->nbody; b++) {
+        if (mb_body_prescribed(m, b)) continue; /* moved from outside: external_work's */
         const mb_body_kin *k = &s->kin[b];
         const double *I = m->body[b].inertia; /* Ixx Iyy Izz Ixy Ixz Iyz, body axes */
         double w[3], Iw[3];
@@ -31,7 +33,8 @@ static double kinetic(const mb_model *m, const mb_state *s)
 static double potential(const mb_model *m, const mb_state *s)
 {
     double e = 0;
-    for (int b = 0; b < m->nbody; b++) e -= m->body[b].mass * mb_dot(m->gravity, s->kin[b].pos);
+    for (int b = 0; b < m->nbody; b++)
+        if (!mb_body_prescribed(m, b)) e -= m->body[b].mass * mb_dot(m->gravity, s->kin[b].pos);
     return e;
 }
 
@@ -81,7 +84,8 @@ void mb_energy_update(const mb_model *m, mb_state *s)
     e->contact = e->internal = e->dissipated = 0;
     contact_energy(m, s, &e->contact, &e->dissipated);
     restraint_energy(m, s, &e->internal, &e->dissipated);
-    e->external_work = 0; /* no prescribed loads or motions on the bodies */
+    /* the prescribed bodies' on the rest (mb_prescribe.c) */
+    e->external_work = s->w_presc + mb_prescribe_couple_work(m, s);
     if (m->couple) { /* the coupled FE parts (mb_couple.h) */
         double f[MB_NENERGY];
         mb_couple_energy(m, s, f);
@@ -174,7 +178,7 @@ static double running_total(const mb_model *m, const mb_state *s, double *kin)
         e += mb_couple_energy(m, s, f);
         *kin += f[0] + f[2] + f[3];
     }
-    return e + k + potential(m, s);
+    return e + k + potential(m, s) - s->w_presc - mb_prescribe_couple_work(m, s);
 }
 
 mcs_status mb_energy_check_step(const mb_model *m, mb_state *s, mcs_error *err)

@@ -11,7 +11,7 @@
  * Energies [J] (DESIGN.md /stageN/energy): kinetic, potential (gravity, zero at z = 0),
  * contact (elastic energy stored in contacts), internal (stored in restraints and attachments),
  * dissipated (hysteresis, damping, friction, broken attachments), external_work (work of
- * prescribed loads: none in stage 1 yet, 0), total = kinetic + potential + contact + internal +
+ * prescribed bodies on the rest, mb_prescribe.h, and of loads on the coupled FE parts), total = kinetic + potential + contact + internal +
  * dissipated - external_work. Its drift is the energy error. */
 #ifndef MB_MODEL_H
 #define MB_MODEL_H
@@ -152,6 +152,7 @@ typedef struct {
     int nloadcell;          /* load-cell sensors (mb_loadcell.h)                              */
     struct mb_loadcell *loadcell; /* (nloadcell)                                              */
     struct mb_couple *couple;     /* FE parts coupled to the bodies (mb_couple.h), NULL none */
+    struct mb_presc *presc;       /* prescribed bodies (mb_prescribe.h) (nbody), NULL none    */
     /* the impact: placement (mb_impact.c) of the motorcycle group, x' = R x + t; the FE parts
      * carried by its bodies move with it (mb_couple.c, fe/fe_scn_place.c) */
     double place_R[9], place_t[3]; /* rotation (row-major) [-], translation [m]             */
@@ -259,6 +260,9 @@ struct mb_state {
     double *rec_loadcell;     /* (nout x nloadcell x 6), SAE J211, N and N m (mb_loadcell.h) */
     mb_ellipsoid *surf_ell;   /* ellipsoid surfaces placed in the world this step (nsurf)    */
     struct mb_couple_state *couple; /* FE state of m->couple (mb_couple.h), NULL none         */
+    double *presc_next;       /* prescribed bodies: pose and velocities at t + h, pose at t
+                                 (nbody x 20) (mb_prescribe.c), NULL none                   */
+    double w_presc;           /* work of the prescribed bodies on the rest [J]              */
 };
 
 #define MB_NENERGY 7

@@ -275,6 +275,31 @@ void mb_body_get(const mb_world *w, int b, mb_body_kin *out)
             out->rot[3 * i + j] = R[4 * i + j];
 }
 
+void mb_body_set_kinematic(mb_world *w, int b)
+{
+    dBodySetKinematic(w->body[b]);
+}
+
+void mb_body_set_state(mb_world *w, int b, const double pos[3], const double quat[4],
+                       const double vel[3], const double angvel[3])
+{
+    dBodyID id = w->body[b];
+    double q[4];
+    mb_quat_unit(quat, q);
+    dQuaternion dq = {q[0], q[1], q[2], q[3]};
+    dBodySetPosition(id, pos[0], pos[1], pos[2]);
+    dBodySetQuaternion(id, dq);
+    dBodySetLinearVel(id, vel[0], vel[1], vel[2]);
+    dBodySetAngularVel(id, angvel[0], angvel[1], angvel[2]);
+}
+
+void mb_body_get_load(const mb_world *w, int b, double force[3], double torque[3])
+{
+    const dReal *f = dBodyGetForce(w->body[b]), *t = dBodyGetTorque(w->body[b]);
+    for (int k = 0; k < 3; k++)
+        force[k] = f[k], torque[k] = t[k];
+}
+
 void mb_body_point_vel(const mb_world *w, int b, const double p[3], double out[3])
 {
     dVector3 v;
@@ -439,6 +464,14 @@ void mb_joint_reaction(const mb_world *w, int j, double force[3], double torque[
     const dJointFeedback *fb = &w->joint_fb[j];
     for (int k = 0; k < 3; k++)
         force[k] = fb->f1[k], torque[k] = fb->t1[k];
+}
+
+void mb_joint_reaction_parent(const mb_world *w, int j, double force[3], double torque[3])
+{
+    const dJointFeedback *fb = &w->joint_fb[j];
+    const int world = w->joint_bodies[j][0] < 0;
+    for (int k = 0; k < 3; k++)
+        force[k] = world ? 0 : fb->f2[k], torque[k] = world ? 0 : fb->t2[k];
 }
 
 int mb_joint_add_load(mb_world *w, int j, double load)

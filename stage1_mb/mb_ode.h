@@ -54,6 +54,13 @@ void mb_body_add_force(mb_world *w, int b, const double f[3]);  /* at the CG [N]
 void mb_body_add_torque(mb_world *w, int b, const double t[3]); /* world [N m]   */
 
 void mb_body_get(const mb_world *w, int b, mb_body_kin *out);
+/* prescribed (kinematic) bodies, mb_prescribe.h: infinite mass, moved by their velocity in
+ * the step, not by forces; the pose and velocities set here */
+void mb_body_set_kinematic(mb_world *w, int b);
+void mb_body_set_state(mb_world *w, int b, const double pos[3], const double quat[4],
+                       const double vel[3], const double angvel[3]);
+/* force [N] and torque about the CG [N m] added for the next step so far (world) */
+void mb_body_get_load(const mb_world *w, int b, double force[3], double torque[3]);
 void mb_body_point_vel(const mb_world *w, int b, const double p[3], double out[3]);
 const char *mb_body_name(const mb_world *w, int b);
 
@@ -97,5 +104,7 @@ void mb_joint_axis(const mb_world *w, int j, double axis[3]);
 /* constraint force and torque the joint applied to the child at the last step, world [N, N m]
  * (torque about the child's CG) */
 void mb_joint_reaction(const mb_world *w, int j, double force[3], double torque[3]);
+/* the same on the parent (torque about the parent's CG); zero when the parent is the world */
+void mb_joint_reaction_parent(const mb_world *w, int j, double force[3], double torque[3]);
 
 #endif

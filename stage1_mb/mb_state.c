@@ -2,6 +2,7 @@
  * the scratch and the output records, all allocated here once (none in the time loop). */
 #include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_prescribe.h"
 #include "stage1_mb/mb_vec.h"
 
 #include <math.h>
@@ -75,6 +76,7 @@ mcs_status mb_state_create(const mb_model *m, mb_state **out, mcs_error *err)
     }
     for (int i = 0; i < m->npair; i++) mcs_hyst_reset(&m->pair[i].hyst, &s->pair[i].h);
     mcs_status st = build_world(m, s, err);
+    if (!st) st = mb_prescribe_init(m, s, err);
     if (!st && m->couple) st = mb_couple_state_create(m, &s->couple, err);
     if (st) {
         mb_state_destroy(&s);
@@ -109,6 +111,7 @@ void mb_state_destroy(mb_state **ps)
     free(s->rec_t), free(s->rec_body), free(s->rec_sensor), free(s->rec_energy);
     free(s->rec_chan), free(s->surf_ell);
     free(s->rec_loadcell);
+    free(s->presc_next);
     free(s);
     *ps = NULL;
 }

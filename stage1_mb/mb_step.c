@@ -3,6 +3,7 @@
  * the same geometry (mb_state_create detects once before the first step). */
 #include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_model.h"
+#include "stage1_mb/mb_prescribe.h"
 
 #include <time.h>
 
@@ -34,17 +35,22 @@ mcs_status mb_step(const mb_model *m, mb_state *s, mcs_error *err)
     lap(s, MB_T_restraint, &t0);
     /* external: gravity is ODE's world gravity (model gravity); the mean reactions of the
      * coupled FE parts' last subcycle (mb_couple.c) */
+    if (m->presc) mb_prescribe_loads(m, s); /* the prescribed bodies' before the FE parts' */
     if (m->couple) mb_couple_apply(m, s);
     lap(s, MB_T_external, &t0);
     /* energy check: the committed works and s->kin -> growth or NaN stops the run (each step) */
     mcs_status st = mb_energy_check_step(m, s, err);
     if (st) return st;
     lap(s, MB_T_energy, &t0);
+    /* prescribed bodies: callback at t + h -> secant velocities, the loads' work on them */
+    if (m->presc && (st = mb_prescribe_begin(m, s, err))) return st;
     /* integrate: forces -> new velocities and poses (dWorldStep, checked for NaN) */
     st = mb_world_step(s->world, m->h, err);
     if (st) return st;
     s->step++;
     s->t = (double)s->step * m->h;
+    /* prescribed bodies: exactly on the callback's pose and velocities at the new time */
+    if (m->presc) mb_prescribe_end(m, s);
     /* FE parts: subcycle to the new time with the attached nodes on the bodies' motion */
     if (m->couple && (st = mb_couple_advance(m, s, err))) return st;
     lap(s, MB_T_integrate, &t0);

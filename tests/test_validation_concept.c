@@ -138,6 +138,14 @@ static void test_413_phases(void)
     CHECK(mcs_results_open(&h, conc, &err) == MCS_OK);
     CHECK(mcs_results_open(&hv, conv, &err) == MCS_OK);
     if (!h || !hv) return;
+    /* one energy balance of bodies, FE parts and their exchange, each run */
+    double drift_v = NAN, drift_c = NAN;
+    mcs_results_attr_double(hv, "/stage1", "energy_drift", &drift_v, &err);
+    mcs_results_attr_double(h, "/stage1", "energy_drift", &drift_c, &err);
+    printf("energy drift: conventional %.2e, concept %.2e\n", drift_v, drift_c);
+    FIG_TOL("validation_restraints.p413_drift_conv", "%.1e", drift_v, 5e-5);
+    FIG_TOL("validation_restraints.p413_drift_conc", "%.1e", drift_c, 5e-5);
+    CHECK(drift_v < 2e-3 && drift_c < 2e-3);
     mcs_array t = {0}, f = {0}, pre = {0}, lim = {0}, p = {0}, V = {0}, m = {0}, cr = {0};
     CHECK(rd(h, "/stage1/time", &t));
     const double dt = t.v[1] - t.v[0];

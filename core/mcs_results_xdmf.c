@@ -246,8 +246,9 @@ static mcs_status read_part(mcs_results *r, int stage, const char *name, const c
         return st;
     p->topo = topology(type, p->k);
     if (!p->topo)
-        st = MCS_ERR(err, MCS_ERR_UNSUPPORTED, "%s: part %s: %zu-node elements%s%s%s: XDMF "
-                                               "export knows line2, tri3, quad4, tet4, wedge6, hex8, tet10",
+        st = MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                     "%s: part %s: %zu-node elements%s%s%s: XDMF "
+                     "export knows line2, tri3, quad4, tet4, wedge6, hex8, tet10",
                      mcs_results_path(r), p->name, p->k, type ? " of type \"" : "",
                      type ? type : "", type ? "\"" : "");
     free(type);

@@ -22,7 +22,8 @@ static mcs_status read_ring(const mcs_node *r, fe_slipring_desc *d, mcs_error *e
 {
     mcs_status st = name_into(fe_scn_get(r, "name"), d->name, err);
     if (!st) st = name_into(fe_scn_get(r, "part"), d->part, err);
-    if (!st && fe_scn_given(r, "retractor")) st = name_into(fe_scn_get(r, "retractor"), d->retractor, err);
+    if (!st && fe_scn_given(r, "retractor"))
+        st = name_into(fe_scn_get(r, "retractor"), d->retractor, err);
     if (!st) st = mcs_node_vec3(fe_scn_get(r, "point"), d->point, err);
     d->friction = mcs_node_num_or(r, "friction", 0);
     d->lock_time = mcs_node_num_or(r, "lock_time", -1);

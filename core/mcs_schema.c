@@ -914,6 +914,26 @@ static const mcs_skey fe_keys[] = {
 };
 static const mcs_smap fe_map = {.what = "fe block", .keys = fe_keys};
 
+/* ---- stage 2: vehicles prescribed from a stage-1 results file (DESIGN.md "Stage 2") ---- */
+
+static const mcs_skey stage2_presc_keys[] = {
+    R("body", BODY, REQ | UNIQ, "body moved as the file's body"),
+    S("from", NE, "the file's body it moves as (default the same name)"),
+    END,
+};
+static const mcs_smap stage2_presc_map = {.what = "prescribed body", .keys = stage2_presc_keys};
+
+static const mcs_skey stage2_keys[] = {
+    /* relative to the working directory, as -o; `--motion FILE` wins */
+    S("motion", NE, "stage-1 results file the motion is read from"),
+    E("method", "pose|pulse", 0,
+      "pose: written poses interpolated; pulse: velocity and acceleration histories integrated "
+      "(default pose)"),
+    L("prescribed", stage2_presc_map, REQ | NE, "bodies moved as in the file (others free)"),
+    END,
+};
+static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys};
+
 /* ---- the root ---- */
 
 static const mcs_skey root_keys[] = {
@@ -934,6 +954,7 @@ static const mcs_skey root_keys[] = {
     M("fe", fe_map, 0, "FE block"),
     L("mount_points", mount_map, 0, "named points on bodies"),
     M("rider", rider_map, 0, "seat the rider on the motorcycle"),
+    M("stage2", stage2_map, 0, "stage 2: bodies prescribed from a stage-1 results file"),
     END,
 };
 const mcs_smap mcs_schema_root = {.what = "scenario", .keys = root_keys, .check = mcs_rule_root};

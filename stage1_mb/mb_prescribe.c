@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define NEXT 13 /* pos 3, quat 4, vel 3, angvel 3 */
+#define NEXT 13             /* pos 3, quat 4, vel 3, angvel 3 */
 #define SLOT (NEXT + 7 + 6) /* then the pose at t (7), the loads before the coupling's (6) */
 
 int mb_body_prescribed(const mb_model *m, int body)
@@ -142,8 +142,10 @@ void mb_prescribe_end(const mb_model *m, mb_state *s)
             if (!mb_body_prescribed(m, b)) continue;
             const double *n = s->presc_next + (size_t)b * SLOT, *start = n + NEXT;
             double f[3], tq[3], dx[3], th[3];
-            if (e == 0) mb_joint_reaction(s->world, j, f, tq);
-            else mb_joint_reaction_parent(s->world, j, f, tq);
+            if (e == 0)
+                mb_joint_reaction(s->world, j, f, tq);
+            else
+                mb_joint_reaction_parent(s->world, j, f, tq);
             mb_sub(n, start, dx);
             quat_delta(start + 3, n + 3, th);
             s->w_presc += work_on_rest(f, tq, dx, th);

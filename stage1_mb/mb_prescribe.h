@@ -26,8 +26,7 @@ typedef struct mb_presc {
 /* mark `body` prescribed by fn (after mb_model_build, before any state is created). The
  * callback's pose at t = 0 must be the body's initial pose (within 1 um and 1 urad: the FE
  * parts attached to it were placed with that); its initial velocities replace the model's. */
-mcs_status mb_model_prescribe(mb_model *m, int body, mb_motion_fn fn, void *ctx,
-                              mcs_error *err);
+mcs_status mb_model_prescribe(mb_model *m, int body, mb_motion_fn fn, void *ctx, mcs_error *err);
 int mb_body_prescribed(const mb_model *m, int body); /* 1 when prescribed */
 
 /* in mb_state_create: the prescribed bodies made kinematic */

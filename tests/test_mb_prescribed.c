@@ -40,7 +40,8 @@ static int analytic(void *ctx, int body, double t, double pos[3], double quat[4]
     double wn = mb_norm(mo->w), ang = wn * t, e[4] = {1, 0, 0, 0};
     if (wn > 0) {
         e[0] = cos(0.5 * ang);
-        for (int i = 0; i < 3; i++) e[i + 1] = sin(0.5 * ang) * mo->w[i] / wn;
+        for (int i = 0; i < 3; i++)
+            e[i + 1] = sin(0.5 * ang) * mo->w[i] / wn;
     }
     quat_mul(e, mo->q0, quat);
     for (int i = 0; i < 3; i++) {
@@ -63,7 +64,8 @@ static void compare(const mb_model *m, const mb_state *s, int b, const motion *m
     mb_body_kin k;
     mb_body_get(s->world, b, &k);
     double dq = 0, sg = k.quat[0] * q[0] < 0 ? -1 : 1;
-    for (int i = 0; i < 4; i++) dq = fmax(dq, fabs(k.quat[i] - sg * q[i]));
+    for (int i = 0; i < 4; i++)
+        dq = fmax(dq, fabs(k.quat[i] - sg * q[i]));
     for (int i = 0; i < 3; i++) {
         d->pos = fmax(d->pos, fabs(k.pos[i] - p[i]));
         d->vel = fmax(d->vel, fabs(k.vel[i] - v[i]));
@@ -76,15 +78,15 @@ static void compare(const mb_model *m, const mb_state *s, int b, const motion *m
 
 #define BOX_YAML                                                                                   \
     "mcrash: 1\nname: presc\n"                                                                     \
-    "simulation: {end_time: 0.2 s, time_step: 50 us, output_rate: 1 kHz}\n"                       \
+    "simulation: {end_time: 0.2 s, time_step: 50 us, output_rate: 1 kHz}\n"                        \
     "environment: {gravity: 9.81}\n"                                                               \
     "bodies:\n"                                                                                    \
     "  - {name: carrier, mass: 50, inertia: [2, 3, 4], position: [0.1, 0.2, 0.3],\n"               \
-    "     orientation: [0.3, -0.2, 0.5], velocity: [5, -1, 0.5],\n"                              \
+    "     orientation: [0.3, -0.2, 0.5], velocity: [5, -1, 0.5],\n"                                \
     "     angular_velocity: [1, -2, 12]}\n"                                                        \
     "  - {name: rider, mass: 2, inertia: [0.1, 0.1, 0.1], position: [0.1, 0.2, 0.3],\n"            \
     "     velocity: [5, -1, 0.5]}\n"                                                               \
-    "joints:\n  - {name: hip, type: spherical, parent: carrier, child: rider, anchor: [0.1, 0.2, "   \
+    "joints:\n  - {name: hip, type: spherical, parent: carrier, child: rider, anchor: [0.1, 0.2, " \
     "0.3]}\n"
 
 static void test_analytic_motion_exact(void)
@@ -136,7 +138,8 @@ static void test_analytic_motion_exact(void)
     /* the carrier's work on the rider: its kinetic energy gain plus its potential energy
      * change, from the closed-form motion (x(t), v(t) of the carrier; gravity on the rider) */
     double v1[3], ke0 = 0.5 * 2 * mb_dot(mo.v0, mo.v0);
-    for (int i = 0; i < 3; i++) v1[i] = mo.v0[i] + mo.a[i] * s->t;
+    for (int i = 0; i < 3; i++)
+        v1[i] = mo.v0[i] + mo.a[i] * s->t;
     double gain = 0.5 * 2 * mb_dot(v1, v1) - ke0;
     gain += 2 * 9.81 * (mo.v0[2] * s->t + 0.5 * mo.a[2] * s->t * s->t);
     mb_energy_update(m, s);
@@ -190,7 +193,8 @@ static int run_wall(double mass, double V, double v, int prescribed, wall_run *r
     r->offset = 0;
     while (!st && s->step < m->nsteps) {
         st = mb_step(m, s, &err);
-        if (s->step % m->out_every == 0) r->offset = fmax(r->offset, fabs(s->e.total - s->e_total0));
+        if (s->step % m->out_every == 0)
+            r->offset = fmax(r->offset, fabs(s->e.total - s->e_total0));
     }
     if (st) fprintf(stderr, "%s\n", err.msg);
     if (!st) {
@@ -236,7 +240,7 @@ static void test_ball_on_moving_wall(void)
     "environment: {gravity: 0}\n"                                                                  \
     "bodies:\n"                                                                                    \
     "  - {name: carrier, mass: 10, inertia: [0.1, 0.1, 0.1], position: [%g, 0, 0],\n"              \
-    "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0]}\n"                                    \
+    "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0]}\n"                                     \
     "fe:\n  parts:\n    - name: bar\n"                                                             \
     "      mesh: {generate: line, origin: [0, 0, 0], end: [0, 0, 1], divisions: 50}\n"             \
     "      section: {type: truss, area: 1e-4}\n"                                                   \
@@ -277,7 +281,8 @@ static void test_fe_part_follows_prescribed_body(void)
         mb_quat_to_rot(q, R);
         mb_mat_vec(R, l, r);
         const double *x = s->couple->fe->node_x + 3 * n;
-        for (int i = 0; i < 3; i++) dmax = fmax(dmax, fabs(x[i] - p[i] - r[i]));
+        for (int i = 0; i < 3; i++)
+            dmax = fmax(dmax, fabs(x[i] - p[i] - r[i]));
     }
     CHECK(st == MCS_OK);
     if (st) fprintf(stderr, "%s\n", err.msg);

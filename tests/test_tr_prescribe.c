@@ -10,6 +10,7 @@
 #include "tests/mb_test_util.h"
 #include "stage1_mb/mb_prescribe.h"
 #include "translators/tr_prescribe.h"
+#include "translators/tr_stage2_motion.h"
 
 #include <unistd.h>
 
@@ -99,6 +100,83 @@ done:
     mb_model_destroy(&m);
 }
 
+/* the scenario text of two_spheres.yaml followed by `extra` (malloc'ed) */
+static char *scenario_with(const char *extra)
+{
+    FILE *f = fopen(SCN, "rb");
+    if (!f) return NULL;
+    char *t = calloc(8192, 1);
+    size_t n = t ? fread(t, 1, 4096, f) : 0;
+    fclose(f);
+    if (t) snprintf(t + n, 8192 - n, "%s", extra);
+    return t;
+}
+
+/* a (the scenario's) stage2: block drives the same replay: the same numbers as the direct
+ * use of tr_prescribe (pulse); a missing block and a body the file lacks are refused */
+static void test_stage2_block(void)
+{
+    char blk[512];
+    snprintf(blk, sizeof blk, "stage2: {motion: %s, method: pulse, prescribed: [{body: a}]}\n", h5);
+    char *y = scenario_with(blk);
+    mcs_error err = {0};
+    mb_model *m = y ? mt_model_text(SCN, y, &err) : NULL;
+    mcs_scenario *scn = NULL;
+    CHECK(m && mcs_scenario_load_text(SCN, y, strlen(y), &scn, &err) == MCS_OK);
+    tr_stage2_motion *sm = NULL;
+    mb_state *s = NULL;
+    mcs_status st = m && scn ? tr_stage2_motion_create(&sm, scn, m, NULL, &err) : MCS_ERR_IO;
+    CHECK(st == MCS_OK);
+    if (!st) st = mt_run(m, &s, &err);
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    double qp, qv, qr, d[3];
+    CHECK(replay(TR_MOTION_PULSE, &qp, &qv, &qr));
+    if (!st) { /* the final state of b: the same run as the direct replay's */
+        tr_motion *ref = NULL;
+        const char *b[] = {"b"};
+        tr_motion_kin k;
+        mb_body_kin x;
+        CHECK(tr_motion_open(&ref, h5, b, 1, TR_MOTION_POSE, &err) == MCS_OK);
+        CHECK(ref && tr_motion_eval(ref, 0, s->t, &k, &err) == MCS_OK);
+        mb_body_get(s->world, 1, &x);
+        mb_sub(x.vel, k.vel, d);
+        CHECK_NEAR(mb_norm(d), qv, 1e-15);
+        tr_motion_destroy(&ref);
+    }
+    mb_state_destroy(&s);
+    tr_stage2_motion_destroy(&sm);
+    mb_model_destroy(&m);
+    mcs_scenario_destroy(&scn);
+    free(y);
+    /* a body the file lacks (from:) */
+    snprintf(blk, sizeof blk, "stage2: {motion: %s, prescribed: [{body: a, from: zz}]}\n", h5);
+    y = scenario_with(blk);
+    mcs_error_clear(&err);
+    m = y ? mt_model_text(SCN, y, &err) : NULL;
+    CHECK(m && mcs_scenario_load_text(SCN, y, strlen(y), &scn, &err) == MCS_OK);
+    if (m && scn) {
+        CHECK(tr_stage2_motion_create(&sm, scn, m, NULL, &err) != MCS_OK);
+        CHECK_STR_CONTAINS(err.msg, "zz");
+        CHECK(sm == NULL && !mb_body_prescribed(m, 0));
+    }
+    mb_model_destroy(&m);
+    mcs_scenario_destroy(&scn);
+    free(y);
+    /* no stage2: block */
+    y = scenario_with("");
+    mcs_error_clear(&err);
+    m = y ? mt_model_text(SCN, y, &err) : NULL;
+    CHECK(m && mcs_scenario_load_text(SCN, y, strlen(y), &scn, &err) == MCS_OK);
+    if (m && scn) {
+        CHECK(tr_stage2_motion_create(&sm, scn, m, h5, &err) == MCS_ERR_KEY);
+        CHECK_STR_CONTAINS(err.msg, "stage2");
+    }
+    mb_model_destroy(&m);
+    mcs_scenario_destroy(&scn);
+    free(y);
+}
+
 int main(void)
 {
     snprintf(tdir, sizeof tdir, "/tmp/mcs_presc_XXXXXX");
@@ -111,6 +189,7 @@ int main(void)
     mb_model_destroy(&m);
     RUN(test_replay_two_spheres);
     RUN(test_refusals);
+    RUN(test_stage2_block);
     unlink(h5);
     rmdir(tdir);
     TEST_END();

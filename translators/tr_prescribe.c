@@ -12,8 +12,8 @@ struct tr_prescribe {
     mcs_error err;    /* the last callback failure                            */
 };
 
-static int motion_cb(void *ctx, int body, double t, double pos[3], double quat[4],
-                     double vel[3], double omega[3])
+static int motion_cb(void *ctx, int body, double t, double pos[3], double quat[4], double vel[3],
+                     double omega[3])
 {
     tr_prescribe *p = ctx;
     tr_motion_kin k;
@@ -37,7 +37,8 @@ mcs_status tr_prescribe_create(tr_prescribe **out, mb_model *m, const tr_motion 
         return MCS_ERR(err, MCS_ERR_NOMEM, "stage 2: out of memory");
     }
     p->mo = mo, p->nbody = m->nbody;
-    for (int b = 0; b < m->nbody; b++) p->motion_body[b] = -1;
+    for (int b = 0; b < m->nbody; b++)
+        p->motion_body[b] = -1;
     double t0, t1;
     int nt;
     tr_motion_span(mo, &t0, &t1, &nt);
@@ -45,8 +46,8 @@ mcs_status tr_prescribe_create(tr_prescribe **out, mb_model *m, const tr_motion 
     for (int i = 0; i < n && !st; i++) {
         const char *src = from && from[i] ? from[i] : bodies[i];
         int b = mb_model_body(m, bodies[i]), k = tr_motion_body(mo, src);
-        if (b < 0) st = MCS_ERR(err, MCS_ERR_KEY, "stage 2: prescribed body %s: no such body",
-                                bodies[i]);
+        if (b < 0)
+            st = MCS_ERR(err, MCS_ERR_KEY, "stage 2: prescribed body %s: no such body", bodies[i]);
         else if (k < 0)
             st = MCS_ERR(err, MCS_ERR_KEY, "stage 2: prescribed body %s: the motion has no body %s",
                          bodies[i], src);

@@ -246,8 +246,9 @@ static mcs_status read_part(mcs_results *r, int stage, const char *name, const c
         return st;
     p->topo = topology(type, p->k);
     if (!p->topo)
-        st = MCS_ERR(err, MCS_ERR_UNSUPPORTED, "%s: part %s: %zu-node elements%s%s%s: XDMF "
-                                               "export knows line2, tri3, quad4, tet4, wedge6, hex8, tet10",
+        st = MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                     "%s: part %s: %zu-node elements%s%s%s: XDMF "
+                     "export knows line2, tri3, quad4, tet4, wedge6, hex8, tet10",
                      mcs_results_path(r), p->name, p->k, type ? " of type \"" : "",
                      type ? type : "", type ? "\"" : "");
     free(type);
@@ -258,6 +259,28 @@ static mcs_status read_part(mcs_results *r, int stage, const char *name, const c
     return st;
 }
 
+/* <Grid Name="name" GridType="Uniform"> at indent ind */
+static void put_grid_open(FILE *f, int ind, const char *name)
+{
+    put_indent(f, ind);
+    fputs("<Grid Name=\"", f);
+    put_esc(f, name);
+    fputs("\" GridType=\"Uniform\">\n", f);
+}
+
+/* a body's grid ends: its index as the attribute body_id (center Node or Grid), </Grid> */
+static void put_body_id_close(FILE *f, int ind, const char *center, int id)
+{
+    put_indent(f, ind + 1);
+    fprintf(f, "<Attribute Name=\"body_id\" AttributeType=\"Scalar\" Center=\"%s\">\n", center);
+    put_indent(f, ind + 2);
+    fprintf(f, "<DataItem Dimensions=\"1\" NumberType=\"Int\" Format=\"XML\">%d</DataItem>\n", id);
+    put_indent(f, ind + 1);
+    fputs("</Attribute>\n", f);
+    put_indent(f, ind);
+    fputs("</Grid>\n", f);
+}
+
 /* one part at output row step; pos (NULL: none) names the deformed positions [nf, nn, 3] of
  * the outlines file (frame k of them) */
 static void put_part(xw *w, int ind, const fe_part *p, const char *disp, const size_t *ddims,
@@ -265,10 +288,7 @@ static void put_part(xw *w, int ind, const fe_part *p, const char *disp, const s
 {
     FILE *f = w->f;
     size_t de[2] = {p->ne, p->k}, dn[2] = {p->nn, 3};
-    put_indent(f, ind);
-    fputs("<Grid Name=\"", f);
-    put_esc(f, p->name);
-    fputs("\" GridType=\"Uniform\">\n", f);
+    put_grid_open(f, ind, p->name);
     put_indent(f, ind + 1);
     fprintf(f, "<Topology TopologyType=\"%s\" NumberOfElements=\"%zu\"", p->topo, p->ne);
     if (strcmp(p->topo, "Polyline") == 0) fputs(" NodesPerElement=\"2\"", f);
@@ -441,10 +461,7 @@ static void put_body(xw *w, int ind, const rb_body *b, int id, size_t nt, size_t
     FILE *f = w->f;
     size_t dp[2] = {nt, 3}, dq[2] = {nt, 4}, start[2] = {step, 0};
     size_t cp[2] = {1, 3}, cq[2] = {1, 4};
-    put_indent(f, ind);
-    fputs("<Grid Name=\"", f);
-    put_esc(f, b->name);
-    fputs("\" GridType=\"Uniform\">\n", f);
+    put_grid_open(f, ind, b->name);
     put_indent(f, ind + 1);
     /* the connectivity spelled out: without it the Xdmf3 readers make no vertex cell */
     fputs("<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"1\" "
@@ -466,14 +483,7 @@ static void put_body(xw *w, int ind, const rb_body *b, int id, size_t nt, size_t
         put_indent(f, ind + 1);
         fputs("</Attribute>\n", f);
     }
-    put_indent(f, ind + 1);
-    fputs("<Attribute Name=\"body_id\" AttributeType=\"Scalar\" Center=\"Node\">\n", f);
-    put_indent(f, ind + 2);
-    fprintf(f, "<DataItem Dimensions=\"1\" NumberType=\"Int\" Format=\"XML\">%d</DataItem>\n", id);
-    put_indent(f, ind + 1);
-    fputs("</Attribute>\n", f);
-    put_indent(f, ind);
-    fputs("</Grid>\n", f);
+    put_body_id_close(f, ind, "Node", id);
 }
 
 /* a body's outline at frame k of the outlines file: triangles on its world nodes */
@@ -487,10 +497,7 @@ static void put_outline(xw *w, int ind, int stage, const rb_body *b, int id, siz
     size_t de[2] = {b->neout, 3}, dn[3] = {nf, b->nout, 3}, start[3] = {k, 0, 0};
     size_t count[3] = {1, b->nout, 3}, out[2] = {b->nout, 3};
     w->cur = w->side_name;
-    put_indent(f, ind);
-    fputs("<Grid Name=\"", f);
-    put_esc(f, b->name);
-    fputs("\" GridType=\"Uniform\">\n", f);
+    put_grid_open(f, ind, b->name);
     put_indent(f, ind + 1);
     fprintf(f, "<Topology TopologyType=\"Triangle\" NumberOfElements=\"%zu\">\n", b->neout);
     item_hdf(w, ind + 2, pe, 2, de, 1);
@@ -501,14 +508,7 @@ static void put_outline(xw *w, int ind, int stage, const rb_body *b, int id, siz
     item_slab(w, ind + 2, pn, 3, dn, start, count, 2, out);
     put_indent(f, ind + 1);
     fputs("</Geometry>\n", f);
-    put_indent(f, ind + 1);
-    fputs("<Attribute Name=\"body_id\" AttributeType=\"Scalar\" Center=\"Grid\">\n", f);
-    put_indent(f, ind + 2);
-    fprintf(f, "<DataItem Dimensions=\"1\" NumberType=\"Int\" Format=\"XML\">%d</DataItem>\n", id);
-    put_indent(f, ind + 1);
-    fputs("</Attribute>\n", f);
-    put_indent(f, ind);
-    fputs("</Grid>\n", f);
+    put_body_id_close(f, ind, "Grid", id);
     w->cur = w->h5;
 }
 

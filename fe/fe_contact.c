@@ -378,11 +378,59 @@ static void entry_forces(const fe_model *m, fe_state *s, int e, fe_contact_slot 
 
 /* ---- phase 3: rigid ellipsoids ---------------------------------------------------------- */
 
+void fe_contact_rigid_node(const fe_model *m, fe_state *s, int n, double g, const double dir[3],
+                           const double qw[3], double scale, double mu, const double V[3],
+                           const double W[3], double ft[3], double *et, double F[3], double M[3])
+{
+    fe_contact_state *cs = s->contact;
+    const double dt0 = m->contact->dt0, dtp = s->dt_prev;
+    double kp = scale * m->node_mass[n] / (dt0 * dt0), fn = -kp * g;
+    double f[3], el = 0.5 * kp * g * g, d = 0;
+    for (int k = 0; k < 3; k++) f[k] = fn * dir[k];
+    if (mu > 0) {
+        /* slip against the surface point q, moving at V + W x (q - c) */
+        const double *v = s->node_v + 3 * n;
+        double wr[3], du[3], taken;
+        fe_cross(W, qw, wr);
+        double vr[3];
+        for (int k = 0; k < 3; k++) vr[k] = v[k] - V[k] - wr[k];
+        double vn = fe_dot(vr, dir);
+        for (int k = 0; k < 3; k++) du[k] = (vr[k] - vn * dir[k]) * dtp;
+        double e1 = fe_friction_update(ft, dir, du, kp, mu * fn, &taken);
+        d = taken - (e1 - *et);
+        *et = e1;
+        el += e1;
+        for (int k = 0; k < 3; k++) f[k] += ft[k];
+    }
+    /* on the surface at its point q: the moment about the reference point */
+    double mq[3];
+    for (int k = 0; k < 3; k++) {
+        cs->node_fc[3 * n + k] += f[k];
+        F[k] -= f[k];
+    }
+    fe_cross(qw, f, mq);
+    for (int k = 0; k < 3; k++) M[k] -= mq[k];
+    int ip = m->node_part[n];
+    if (ip >= 0) {
+        cs->part_elastic[ip] += el;
+        cs->part_fric[ip] += d;
+    }
+    cs->pen_max = fmax(cs->pen_max, -g);
+}
+
+void fe_contact_rigid_release(const fe_model *m, fe_state *s, int n, double ft[3], double *et)
+{
+    fe_contact_state *cs = s->contact;
+    if (*et > 0 && m->node_part[n] >= 0) cs->part_fric[m->node_part[n]] += *et;
+    *et = 0;
+    ft[0] = ft[1] = ft[2] = 0;
+}
+
+
 static void ellipsoid_forces(const fe_model *m, fe_state *s)
 {
     const fe_contact_model *c = m->contact;
     fe_contact_state *cs = s->contact;
-    const double dt0 = c->dt0, dtp = s->dt_prev;
     for (int i = 0; i < c->nell; i++) {
         const fe_contact_ellipsoid *E = &c->ell[i];
         const double *C = cs->ell_c + 3 * i, *R = cs->ell_R + 9 * i, *V = cs->ell_v + 3 * i;
@@ -421,44 +469,12 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
                 double qw[3]; /* the nearest surface point q - c, world */
                 for (int k = 0; k < 3; k++)
                     qw[k] = R[3 * k] * qb[0] + R[3 * k + 1] * qb[1] + R[3 * k + 2] * qb[2];
-                double kp = E->scale * m->node_mass[n] / (dt0 * dt0), fn = -kp * g;
-                double f[3], el = 0.5 * kp * g * g, d = 0;
-                for (int k = 0; k < 3; k++) f[k] = fn * dir[k];
-                if (E->mu > 0) {
-                    /* slip against the surface point q, moving at V + W x (q - c) */
-                    const double *v = s->node_v + 3 * n;
-                    double wr[3], du[3], taken;
-                    fe_cross(W, qw, wr);
-                    double vr[3];
-                    for (int k = 0; k < 3; k++) vr[k] = v[k] - V[k] - wr[k];
-                    double vn = fe_dot(vr, dir);
-                    for (int k = 0; k < 3; k++) du[k] = (vr[k] - vn * dir[k]) * dtp;
-                    double et = fe_friction_update(ft, dir, du, kp, E->mu * fn, &taken);
-                    d = taken - (et - cs->ell_et[j]);
-                    cs->ell_et[j] = et;
-                    el += et;
-                    for (int k = 0; k < 3; k++) f[k] += ft[k];
-                }
-                /* on the ellipsoid at its surface point q: the moment about the centre */
-                double mq[3];
-                for (int k = 0; k < 3; k++) {
-                    cs->node_fc[3 * n + k] += f[k];
-                    F[k] -= f[k];
-                }
-                fe_cross(qw, f, mq);
-                for (int k = 0; k < 3; k++) M[k] -= mq[k];
-                int ip = m->node_part[n];
-                if (ip >= 0) {
-                    cs->part_elastic[ip] += el;
-                    cs->part_fric[ip] += d;
-                }
-                cs->pen_max = fmax(cs->pen_max, -g);
+                fe_contact_rigid_node(m, s, n, g, dir, qw, E->scale, E->mu, V, W, ft,
+                                      &cs->ell_et[j], F, M);
                 continue;
             }
         release:
-            if (cs->ell_et[j] > 0 && m->node_part[n] >= 0) cs->part_fric[m->node_part[n]] += cs->ell_et[j];
-            cs->ell_et[j] = 0;
-            ft[0] = ft[1] = ft[2] = 0;
+            fe_contact_rigid_release(m, s, n, ft, &cs->ell_et[j]);
         }
     }
 }

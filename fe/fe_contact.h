@@ -39,7 +39,7 @@ typedef enum {
 } fe_contact_type;
 
 typedef struct {
-    char name[FE_NAME_MAX];                   /* results: /stage3/contact/<name>            */
+    char name[FE_NAME_MAX];                   /* results: /stage<N>/contact/<name>          */
     fe_contact_type type;
     int nslave;                               /* slave parts (single surface: the parts) [-] */
     char slave[FE_CONTACT_PARTS][FE_NAME_MAX];

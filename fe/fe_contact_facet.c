@@ -220,7 +220,6 @@ void fe_contact_facets_forces(const fe_model *m, fe_state *s)
 {
     const fe_contact_model *c = m->contact;
     fe_contact_state *cs = s->contact;
-    const double dt0 = c->dt0, dtp = s->dt_prev;
     for (int i = 0; i < c->nfac; i++) {
         const fe_contact_facets *F = &c->fac[i];
         const double *C = cs->fac_c + 3 * i, *R = cs->fac_R + 9 * i, *V = cs->fac_v + 3 * i;
@@ -270,47 +269,12 @@ void fe_contact_facets_forces(const fe_model *m, fe_state *s)
                     dir[k] = R[3 * k] * db[0] + R[3 * k + 1] * db[1] + R[3 * k + 2] * db[2];
                     qw[k] = R[3 * k] * qb[0] + R[3 * k + 1] * qb[1] + R[3 * k + 2] * qb[2];
                 }
-                double kp = F->scale * m->node_mass[n] / (dt0 * dt0), fn = -kp * g;
-                double f[3], el = 0.5 * kp * g * g, d = 0;
-                for (int k = 0; k < 3; k++)
-                    f[k] = fn * dir[k];
-                if (F->mu > 0) {
-                    /* slip against the mesh's point q, moving at V + W x (q - c) */
-                    const double *v = s->node_v + 3 * n;
-                    double wr[3], du[3], taken;
-                    fe_cross(W, qw, wr);
-                    double vr[3] = {v[0] - V[0] - wr[0], v[1] - V[1] - wr[1], v[2] - V[2] - wr[2]};
-                    double vn = fe_dot(vr, dir);
-                    for (int k = 0; k < 3; k++)
-                        du[k] = (vr[k] - vn * dir[k]) * dtp;
-                    double et = fe_friction_update(ft, dir, du, kp, F->mu * fn, &taken);
-                    d = taken - (et - cs->fac_et[j]);
-                    cs->fac_et[j] = et;
-                    el += et;
-                    for (int k = 0; k < 3; k++)
-                        f[k] += ft[k];
-                }
-                double mq[3];
-                for (int k = 0; k < 3; k++) {
-                    cs->node_fc[3 * n + k] += f[k];
-                    Ft[k] -= f[k];
-                }
-                fe_cross(qw, f, mq);
-                for (int k = 0; k < 3; k++)
-                    M[k] -= mq[k];
-                int ip = m->node_part[n];
-                if (ip >= 0) {
-                    cs->part_elastic[ip] += el;
-                    cs->part_fric[ip] += d;
-                }
-                cs->pen_max = fmax(cs->pen_max, -g);
+                fe_contact_rigid_node(m, s, n, g, dir, qw, F->scale, F->mu, V, W, ft,
+                                      &cs->fac_et[j], Ft, M);
                 continue;
             }
         release:
-            if (cs->fac_et[j] > 0 && m->node_part[n] >= 0)
-                cs->part_fric[m->node_part[n]] += cs->fac_et[j];
-            cs->fac_et[j] = 0;
-            ft[0] = ft[1] = ft[2] = 0;
+            fe_contact_rigid_release(m, s, n, ft, &cs->fac_et[j]);
         }
     }
 }

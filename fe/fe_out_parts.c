@@ -1,4 +1,4 @@
-/* fe_out_parts: per-part energies (element parts and spring parts) into /stage3 (fe_out_parts.h). */
+/* fe_out_parts: per-part energies (element and spring parts) into /stage<N> (fe_out_parts.h) */
 #include "fe/fe_out_parts.h"
 
 #include <stdio.h>
@@ -12,7 +12,8 @@ mcs_status fe_out_parts_open(mcs_results *r, int stage, const fe_model *m, fe_ou
 {
     o->n = m->npart + m->nspring_part;
     o->ser = calloc((size_t)(o->n > 0 ? o->n : 1) * FE_OUT_PART_KINDS, sizeof *o->ser);
-    if (!o->ser) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory (part energies)");
+    if (!o->ser)
+        return MCS_ERR(err, MCS_ERR_NOMEM, "stage %d: out of memory (part energies)", stage);
     mcs_status st = MCS_OK;
     if (m->nms_elem) {
         char ma[32];

@@ -1,8 +1,8 @@
-/* fe_out_parts: per-part energies in the stage-3 results: /stage3/parts/<part>/energy/<kind>
+/* fe_out_parts: per-part energies in the results: /stage<N>/parts/<part>/energy/<kind>
  * [nt] J for kind kinetic, internal, contact, hourglass, dissipated, for every element part and
  * every spring part (discrete springs and dampers: internal = elastic, dissipated = dampers;
- * fe/fe_discrete.c). The parts' sums plus what belongs to no part equal /stage3/energy.
- * With mass scaling during the run, also /stage3/mass_added [nt] kg: the mass added so far
+ * fe/fe_discrete.c). The parts' sums plus what belongs to no part equal /stage<N>/energy.
+ * With mass scaling during the run, also /stage<N>/mass_added [nt] kg: the mass added so far
  * (at t = 0 and since). */
 #ifndef FE_OUT_PARTS_H
 #define FE_OUT_PARTS_H
@@ -14,7 +14,7 @@
 typedef struct {
     int n;                    /* element parts + spring parts                        */
     mcs_results_series **ser; /* (n x FE_OUT_PART_KINDS)                                 */
-    mcs_results_series *mass_added; /* /stage3/mass_added [nt] kg (run-time mass scaling) */
+    mcs_results_series *mass_added; /* /stage<N>/mass_added [nt] kg (run-time mass scaling) */
 } fe_out_parts;
 
 /* into /stage<stage>/parts (and /stage<stage>/mass_added) */

@@ -33,7 +33,7 @@
 #define FE_RESTRAINT_PARTS_MAX 8 /* most parts forming one gas bag */
 
 typedef struct {
-    char name[FE_NAME_MAX];                          /* results: /stage3/airbag/<name>      */
+    char name[FE_NAME_MAX];                          /* results: /stage<N>/airbag/<name>    */
     int nparts;                                      /* parts forming the closed surface    */
     char parts[FE_RESTRAINT_PARTS_MAX][FE_NAME_MAX]; /* shell or membrane parts             */
     fe_gasbag_desc gas;                              /* the gas, inflator, vents, leakage   */
@@ -42,7 +42,7 @@ typedef struct {
 } fe_airbag_desc;
 
 typedef struct {
-    char name[FE_NAME_MAX];  /* results: /stage3/retractor/<name>                           */
+    char name[FE_NAME_MAX];  /* results: /stage<N>/retractor/<name>                         */
     char part[FE_NAME_MAX];  /* belt part whose node at `where` is pulled (one node)         */
     fe_where where;          /* which end                                                    */
     int node;                /* >= 0: this node instead of part/where [-]                   */

@@ -1,6 +1,6 @@
-/* fe_scn_build.c: scenario `fe:` block -> fe_model (see fe_scn_build.h). The kernel's descriptors carry
- * the scenario's key names (docs/fe.md), so this file copies keys, converts the few that differ
- * (axis names, tangent_modulus -> a hardening table) and locates every kernel error at the
+/* fe_scn_build.c: scenario `fe:` block -> fe_model (see fe_scn_build.h). The kernel's descriptors
+ * carry the scenario's key names (docs/fe.md), so this file copies keys, converts the few that
+ * differ (axis names, tangent_modulus -> a hardening table) and locates every kernel error at the
  * scenario node it came from. */
 #include "fe/fe_scn_build.h"
 #include "fe/fe_scn_node.h"
@@ -128,7 +128,8 @@ static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_er
     d->poisson = mcs_node_num(fe_scn_get(mat, "poisson"));
     if (!plastic) return MCS_OK;
     if (fe_scn_given(mat, "failure_strain"))
-        return unsupported(fe_scn_get(mat, "failure_strain"), err, "failure_strain (element erosion)");
+        return unsupported(fe_scn_get(mat, "failure_strain"), err,
+                           "failure_strain (element erosion)");
     d->yield_stress = mcs_node_num(fe_scn_get(mat, "yield_stress"));
     d->cowper_symonds_c = mcs_node_num_or(mat, "cowper_symonds_c", 0);
     d->cowper_symonds_p = mcs_node_num_or(mat, "cowper_symonds_p", 0);
@@ -312,7 +313,8 @@ static mcs_status add_attach(fe_builder *b, const mcs_node *parts, fe_problem *o
         int n = part < 0 ? 0 : fe_builder_select(b, part, w, NULL, 0);
         if (n <= 0)
             return mcs_node_error(fe_scn_get(a, "where"), err, MCS_ERR_KEY,
-                                  "selects no node of part '%s'", mcs_node_str(fe_scn_get(p, "name")));
+                                  "selects no node of part '%s'",
+                                  mcs_node_str(fe_scn_get(p, "name")));
         fe_attach *na = realloc(out->att, (size_t)(out->natt + n) * sizeof *na);
         int *idx = malloc((size_t)n * sizeof *idx);
         if (na) out->att = na;
@@ -379,8 +381,9 @@ static mcs_status wall_motion(const mcs_node *mo, fe_wall_desc *d, mcs_error *er
               : strcmp(type, "acceleration") == 0 ? FE_MOTION_ACCELERATION
                                                   : FE_MOTION_DISPLACEMENT;
     memcpy(k->direction, d->normal, sizeof k->direction);
-    mcs_status st = fe_scn_given(mo, "direction") ? mcs_node_vec3(fe_scn_get(mo, "direction"), k->direction, err)
-                                              : MCS_OK;
+    mcs_status st = fe_scn_given(mo, "direction")
+                        ? mcs_node_vec3(fe_scn_get(mo, "direction"), k->direction, err)
+                        : MCS_OK;
     const mcs_node *c = fe_scn_get(mo, "curve");
     int n = mcs_node_curve_len(c);
     if (!st && n > FE_CURVE_MAX)
@@ -464,12 +467,6 @@ mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err
     return fe_scn_build_with(scn, NULL, NULL, NULL, out, err);
 }
 
-mcs_status fe_scn_build_placed(const mcs_scenario *scn, const fe_scn_place *place,
-                               fe_problem *out, mcs_error *err)
-{
-    return fe_scn_build_with(scn, place, NULL, NULL, out, err);
-}
-
 mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
                              fe_scn_hook hook, void *ctx, fe_problem *out, mcs_error *err)
 {
@@ -513,8 +510,9 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
         if (st)
-            fe_scn_relocate(st, fe_scn_slipring_node(fe, kerr.msg, fe_scn_restraint_node(fe, kerr.msg)),
-                        &kerr, err);
+            fe_scn_relocate(st,
+                            fe_scn_slipring_node(fe, kerr.msg, fe_scn_restraint_node(fe, kerr.msg)),
+                            &kerr, err);
     }
     fe_builder_destroy(&b);
     return st;

@@ -63,12 +63,10 @@ typedef struct {
 /* build the model of a validated scenario; errors name FILE:LINE:COL and the key. A contact of
  * `type: bodies` (FE nodes against stage-1 bodies) needs the coupling: refused here */
 mcs_status fe_scn_build(const mcs_scenario *scn, fe_problem *out, mcs_error *err);
-/* the same with the parts carried by bodies placed by `place` (NULL: fe_scn_build) */
-mcs_status fe_scn_build_placed(const mcs_scenario *scn, const fe_scn_place *place,
-                               fe_problem *out, mcs_error *err);
-/* the same with a hook that adds to the builder what the scenario's fe: block refers to
- * outside it (the stage-1 coupling's `type: bodies` contacts: stage1_mb/mb_couple_contact.c),
- * called after every other descriptor, before the model is frozen (NULL: none) */
+/* the same with the parts carried by bodies placed by `place` (NULL: none) and a hook that adds
+ * to the builder what the scenario's fe: block refers to outside it (the stage-1 coupling's
+ * `type: bodies` contacts: stage1_mb/mb_couple_contact.c), called after every other
+ * descriptor, before the model is frozen (NULL: none) */
 typedef mcs_status (*fe_scn_hook)(fe_builder *b, const mcs_node *fe, void *ctx, mcs_error *err);
 mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
                              fe_scn_hook hook, void *ctx, fe_problem *out, mcs_error *err);

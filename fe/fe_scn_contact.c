@@ -28,12 +28,13 @@ static mcs_status read_parts(const mcs_node *list, char (*names)[FE_NAME_MAX], i
 static mcs_status add_contact(fe_builder *b, const mcs_node *c, int index, mcs_error *err)
 {
     fe_contact_desc d = fe_contact_desc_default();
-    const char *type = mcs_node_str(fe_scn_get(c, "type")), *name = mcs_node_str(fe_scn_get(c, "name"));
+    const char *type = mcs_node_str(fe_scn_get(c, "type")),
+               *name = mcs_node_str(fe_scn_get(c, "name"));
     snprintf(d.name, sizeof d.name, "%s", name ? name : "");
     if (!name) snprintf(d.name, sizeof d.name, "contact%d", index);
     if (name && strlen(name) >= FE_NAME_MAX)
-        return mcs_node_error(fe_scn_get(c, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
-                              FE_NAME_MAX - 1);
+        return mcs_node_error(fe_scn_get(c, "name"), err, MCS_ERR_RANGE,
+                              "longer than %d characters", FE_NAME_MAX - 1);
     const char *ks = "a", *km = "b";
     mcs_status st = MCS_OK;
     if (type && strcmp(type, "single_surface") == 0) {
@@ -73,15 +74,17 @@ static mcs_status add_ellipsoid(fe_builder *b, const mcs_node *e, mcs_error *err
     memset(&d, 0, sizeof d);
     const char *name = mcs_node_str(fe_scn_get(e, "name"));
     if (!name || strlen(name) >= FE_NAME_MAX)
-        return mcs_node_error(fe_scn_given(e, "name") ? fe_scn_get(e, "name") : e, err, MCS_ERR_RANGE,
-                              "a name shorter than %d characters", FE_NAME_MAX);
+        return mcs_node_error(fe_scn_given(e, "name") ? fe_scn_get(e, "name") : e, err,
+                              MCS_ERR_RANGE, "a name shorter than %d characters", FE_NAME_MAX);
     snprintf(d.name, sizeof d.name, "%s", name);
     mcs_status st = mcs_node_vec3(fe_scn_get(e, "center"), d.center, err);
     if (!st) st = mcs_node_vec3(fe_scn_get(e, "semi_axes"), d.semi_axes, err);
     if (!st && fe_scn_given(e, "orientation"))
         st = mcs_node_vec(fe_scn_get(e, "orientation"), d.orientation, 4, err);
-    if (!st && fe_scn_given(e, "velocity")) st = mcs_node_vec3(fe_scn_get(e, "velocity"), d.velocity, err);
-    if (!st && fe_scn_given(e, "parts")) st = read_parts(fe_scn_get(e, "parts"), d.parts, &d.nparts, err);
+    if (!st && fe_scn_given(e, "velocity"))
+        st = mcs_node_vec3(fe_scn_get(e, "velocity"), d.velocity, err);
+    if (!st && fe_scn_given(e, "parts"))
+        st = read_parts(fe_scn_get(e, "parts"), d.parts, &d.nparts, err);
     if (st) return st;
     d.friction = mcs_node_num_or(e, "friction", 0);
     d.penalty_scale = mcs_node_num_or(e, "penalty_scale", 0);

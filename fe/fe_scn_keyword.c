@@ -47,7 +47,7 @@ static mcs_status deck_of(fe_scn_kw_cache **cache, const mcs_node *mesh, fe_scn_
         snprintf(path, sizeof path, "%.*s/%s", (int)(slash - from), from, name);
     if (!units) units = "m-s-kg";
     if (!*cache && !(*cache = calloc(1, sizeof **cache)))
-        return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
     fe_scn_kw_cache *c = *cache;
     for (int i = 0; i < c->n; i++)
         if (strcmp(c->e[i].path, path) == 0 && strcmp(c->e[i].units, units) == 0) {
@@ -68,7 +68,7 @@ static mcs_status deck_of(fe_scn_kw_cache **cache, const mcs_node *mesh, fe_scn_
     e->node_map = malloc(sizeof(int) * (size_t)(d->nnode ? d->nnode : 1));
     if (!e->node_map) {
         fe_kw_deck_destroy(&d);
-        return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
     }
     for (int i = 0; i < d->nnode; i++) e->node_map[i] = -1;
     snprintf(e->path, sizeof e->path, "%s", path);

@@ -17,16 +17,7 @@ typedef struct {
     const mcs_node **carrier; /* body-name node carrying each part (npart)  */
 } placing;
 
-static void move_point(const fe_scn_place *pl, double x[3])
-{
-    const double *R = pl->R;
-    double y[3];
-    for (int i = 0; i < 3; i++)
-        y[i] = R[3 * i] * x[0] + R[3 * i + 1] * x[1] + R[3 * i + 2] * x[2];
-    for (int i = 0; i < 3; i++)
-        x[i] = y[i] + pl->t[i];
-}
-
+/* x <- R x (a direction) */
 static void rotate_vec(const fe_scn_place *pl, double x[3])
 {
     const double *R = pl->R;
@@ -34,6 +25,14 @@ static void rotate_vec(const fe_scn_place *pl, double x[3])
     for (int i = 0; i < 3; i++)
         y[i] = R[3 * i] * x[0] + R[3 * i + 1] * x[1] + R[3 * i + 2] * x[2];
     memcpy(x, y, sizeof y);
+}
+
+/* x <- R x + t (a point) */
+static void move_point(const fe_scn_place *pl, double x[3])
+{
+    rotate_vec(pl, x);
+    for (int i = 0; i < 3; i++)
+        x[i] += pl->t[i];
 }
 
 /* part `pname` (named at pnode) is carried by the body named at bnode */

@@ -1,5 +1,5 @@
 /* fe_scn_restraints.c: scenario keys -> membrane meshes, fabric, gas bags and retractors, and
- * their /stage3 results (see fe_scn_restraints.h). The kernel's descriptors carry the key names
+ * their /stage<N> results (see fe_scn_restraints.h). The kernel's descriptors carry the key names
  * (docs/fe.md, docs/gasbag.md); kernel errors are relocated to the scenario node. */
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_node.h"
@@ -14,7 +14,8 @@ mcs_status fe_scn_read_shell_mesh(const mcs_node *mesh, const char *gen, fe_mesh
 {
     mcs_status st = MCS_OK;
     d->element_size = mcs_node_num(fe_scn_get(mesh, "element_size"));
-    if (fe_scn_given(mesh, "origin")) st = mcs_node_vec3(fe_scn_get(mesh, "origin"), d->origin, err);
+    if (fe_scn_given(mesh, "origin"))
+        st = mcs_node_vec3(fe_scn_get(mesh, "origin"), d->origin, err);
     if (strcmp(gen, "sphere_shell") == 0) {
         d->generate = FE_MESH_SPHERE_SHELL;
         d->radius = mcs_node_num(fe_scn_get(mesh, "radius"));
@@ -101,8 +102,8 @@ static mcs_status read_airbag(const mcs_node *a, fe_airbag_desc *d, mcs_error *e
 {
     snprintf(d->name, sizeof d->name, "%s", mcs_node_str(fe_scn_get(a, "name")));
     if (strlen(mcs_node_str(fe_scn_get(a, "name"))) >= sizeof d->name)
-        return mcs_node_error(fe_scn_get(a, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
-                              FE_NAME_MAX - 1);
+        return mcs_node_error(fe_scn_get(a, "name"), err, MCS_ERR_RANGE,
+                              "longer than %d characters", FE_NAME_MAX - 1);
     const mcs_node *parts = fe_scn_get(a, "parts"), *vents = fe_scn_get(a, "vents");
     if (mcs_node_len(parts) > FE_RESTRAINT_PARTS_MAX)
         return mcs_node_error(parts, err, MCS_ERR_RANGE, "at most %d parts",
@@ -144,8 +145,8 @@ static mcs_status read_retractor(const mcs_node *r, fe_belt_retractor_desc *d, m
     static const char *names[] = {"all", "x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
     snprintf(d->name, sizeof d->name, "%s", mcs_node_str(fe_scn_get(r, "name")));
     if (strlen(mcs_node_str(fe_scn_get(r, "name"))) >= sizeof d->name)
-        return mcs_node_error(fe_scn_get(r, "name"), err, MCS_ERR_RANGE, "longer than %d characters",
-                              FE_NAME_MAX - 1);
+        return mcs_node_error(fe_scn_get(r, "name"), err, MCS_ERR_RANGE,
+                              "longer than %d characters", FE_NAME_MAX - 1);
     snprintf(d->part, sizeof d->part, "%s", mcs_node_str(fe_scn_get(r, "part")));
     const char *w = mcs_node_str(fe_scn_get(r, "where"));
     for (int i = 0; i < 7; i++)
@@ -231,7 +232,8 @@ const mcs_node *fe_scn_restraint_node(const mcs_node *fe, const char *msg)
         for (int i = 0; i < mcs_node_len(l); i++) {
             const mcs_node *it = mcs_node_at(l, i);
             char needle[FE_NAME_MAX + 32];
-            snprintf(needle, sizeof needle, "%s '%s'", what[k], mcs_node_str(fe_scn_get(it, "name")));
+            snprintf(needle, sizeof needle, "%s '%s'", what[k],
+                     mcs_node_str(fe_scn_get(it, "name")));
             if (!strstr(msg, needle)) continue;
             /* a gas bag's surface (not shells, not closed, not oriented, no volume): its parts */
             if (k == 0 && !strstr(msg, "initial pressure") && !strstr(msg, "defined twice"))
@@ -244,7 +246,8 @@ const mcs_node *fe_scn_restraint_node(const mcs_node *fe, const char *msg)
 
 /* ---- results ----------------------------------------------------------------------------- */
 
-static const char *const bag_ch[FE_OUT_BAG_CHANNELS] = {"pressure", "volume", "temperature", "mass"};
+static const char *const bag_ch[FE_OUT_BAG_CHANNELS] = {"pressure", "volume", "temperature",
+                                                        "mass"};
 static const char *const bag_unit[FE_OUT_BAG_CHANNELS] = {"Pa", "m^3", "K", "kg"};
 static const char *const ret_ch[FE_OUT_RETRACTOR_CHANNELS] = {
     "payout", "force", "payout_pretensioner", "payout_limiter", "energy_limiter"};
@@ -257,8 +260,10 @@ mcs_status fe_out_restraint_open(mcs_results *r, int stage, const fe_model *m,
     const struct fe_restraints *rs = m->restraints;
     if (!rs) return MCS_OK;
     o->bag = calloc((size_t)rs->nbag * FE_OUT_BAG_CHANNELS + 1, sizeof *o->bag);
-    o->retractor = calloc((size_t)rs->nretractor * FE_OUT_RETRACTOR_CHANNELS + 1, sizeof *o->retractor);
-    if (!o->bag || !o->retractor) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
+    o->retractor =
+        calloc((size_t)rs->nretractor * FE_OUT_RETRACTOR_CHANNELS + 1, sizeof *o->retractor);
+    if (!o->bag || !o->retractor)
+        return MCS_ERR(err, MCS_ERR_NOMEM, "stage %d: out of memory", stage);
     o->nbag = rs->nbag;
     o->nretractor = rs->nretractor;
     char path[256];

@@ -1,7 +1,8 @@
-/* fe_scn_restraints: the scenario keys of membranes and restraints for stage 3 — sphere_shell and
- * cylinder_shell meshes, fabric materials, fe.airbags and fe.retractors (fe/fe_restraint.h),
- * and their /stage3 results: /stage3/airbag/<name>/{pressure, volume, temperature, mass} and
- * /stage3/retractor/<name>/{payout, force, payout_pretensioner, payout_limiter,
+/* fe_scn_restraints: the scenario keys of membranes and restraints of an fe: block (stage 3, or
+ * coupled to stage 1) — sphere_shell and cylinder_shell meshes, fabric materials, fe.airbags and
+ * fe.retractors (fe/fe_restraint.h), and their results under /stage<N> (3, or 1):
+ * /stage<N>/airbag/<name>/{pressure, volume, temperature, mass} and
+ * /stage<N>/retractor/<name>/{payout, force, payout_pretensioner, payout_limiter,
  * energy_limiter} (docs/contracts.md). */
 #ifndef FE_SCN_RESTRAINTS_H
 #define FE_SCN_RESTRAINTS_H

@@ -1,6 +1,6 @@
-/* fe_scn_slipring.c: scenario keys -> slip rings, and their /stage3 results (fe_scn_slipring.h). The
- * kernel's descriptor carries the key names (docs/fe.md); kernel errors are relocated to the
- * scenario node. */
+/* fe_scn_slipring.c: scenario keys -> slip rings, and their /stage<N> results
+ * (fe_scn_slipring.h). The kernel's descriptor carries the key names (docs/fe.md); kernel
+ * errors are relocated to the scenario node. */
 #include "fe/fe_scn_slipring.h"
 #include "fe/fe_scn_node.h"
 
@@ -22,7 +22,8 @@ static mcs_status read_ring(const mcs_node *r, fe_slipring_desc *d, mcs_error *e
 {
     mcs_status st = name_into(fe_scn_get(r, "name"), d->name, err);
     if (!st) st = name_into(fe_scn_get(r, "part"), d->part, err);
-    if (!st && fe_scn_given(r, "retractor")) st = name_into(fe_scn_get(r, "retractor"), d->retractor, err);
+    if (!st && fe_scn_given(r, "retractor"))
+        st = name_into(fe_scn_get(r, "retractor"), d->retractor, err);
     if (!st) st = mcs_node_vec3(fe_scn_get(r, "point"), d->point, err);
     d->friction = mcs_node_num_or(r, "friction", 0);
     d->lock_time = mcs_node_num_or(r, "lock_time", -1);
@@ -71,7 +72,7 @@ mcs_status fe_out_slipring_open(mcs_results *r, int stage, const fe_model *m, fe
     const struct fe_sliprings *rs = m->sliprings;
     if (!rs) return MCS_OK;
     o->ch = calloc((size_t)rs->n * FE_SLIPRING_NCHANNEL, sizeof *o->ch);
-    if (!o->ch) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
+    if (!o->ch) return MCS_ERR(err, MCS_ERR_NOMEM, "stage %d: out of memory", stage);
     o->n = rs->n;
     char path[256];
     mcs_status st = MCS_OK;

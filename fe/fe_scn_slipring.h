@@ -1,5 +1,5 @@
 /* fe_scn_slipring: the scenario's fe.sliprings (fe/fe_slipring.h) into the builder, and their
- * /stage3 results: /stage3/slipring/<name>/{slip, slip_rate, force0, force1, wrap_angle,
+ * results: /stage<N>/slipring/<name>/{slip, slip_rate, force0, force1, wrap_angle,
  * length0, length1, energy_friction} (the channels of fe_slipring.h, at t_n). */
 #ifndef FE_SCN_SLIPRING_H
 #define FE_SCN_SLIPRING_H

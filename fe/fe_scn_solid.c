@@ -20,8 +20,8 @@ void fe_scn_solid_opts(const mcs_node *root, fe_opts *opts)
     opts->gravity[2] = -mcs_node_num_or(fe_scn_get(root, "environment"), "gravity", 0);
     opts->mass_scaling_dt =
         mcs_node_num_or(fe_scn_get(fe_scn_get(root, "fe"), "mass_scaling"), "time_step", 0);
-    opts->mass_scaling_interval =
-        (int)mcs_node_num_or(fe_scn_get(fe_scn_get(root, "fe"), "mass_scaling"), "check_interval", 0);
+    opts->mass_scaling_interval = (int)mcs_node_num_or(
+        fe_scn_get(fe_scn_get(root, "fe"), "mass_scaling"), "check_interval", 0);
 }
 
 /* a table [[x, y], ...] of at most FE_CURVE_MAX points into c */
@@ -56,7 +56,8 @@ static mcs_status add_springs(fe_builder *b, const mcs_node *list, mcs_error *er
         const char *name = mcs_node_str(fe_scn_get(n, "name"));
         snprintf(d.name, sizeof d.name, "%s", name ? name : "");
         if (!name) snprintf(d.name, sizeof d.name, "springs[%d]", i);
-        if (!fe_scn_given(n, "stiffness") && !fe_scn_given(n, "curve") && !fe_scn_given(n, "damping"))
+        if (!fe_scn_given(n, "stiffness") && !fe_scn_given(n, "curve") &&
+            !fe_scn_given(n, "damping"))
             return mcs_node_error(n, err, MCS_ERR_KEY,
                                   "a spring needs stiffness, curve or damping");
         if (fe_scn_given(n, "stiffness") && fe_scn_given(n, "curve"))
@@ -127,7 +128,8 @@ static mcs_status read_foam(const mcs_node *mat, fe_material_desc *d, mcs_error 
     d->foam_tension_cutoff = mcs_node_num_or(mat, "tension_cutoff", 0);
     if (fe_scn_given(mat, "stress_strain")) {
         d->nfoam_curve = 1;
-        return read_table(fe_scn_get(mat, "stress_strain"), d->foam_curve[0], &d->foam_npoint[0], err);
+        return read_table(fe_scn_get(mat, "stress_strain"), d->foam_curve[0], &d->foam_npoint[0],
+                          err);
     }
     const mcs_node *list = fe_scn_get(mat, "curves");
     int n = mcs_node_len(list);
@@ -142,7 +144,8 @@ static mcs_status read_foam(const mcs_node *mat, fe_material_desc *d, mcs_error 
                                   "rates must increase from curve to curve");
         if (n > 1 && !(d->foam_rate[c] > 0))
             return mcs_node_error(fe_scn_get(cv, "rate"), err, MCS_ERR_RANGE, "must be > 0");
-        mcs_status st = read_table(fe_scn_get(cv, "points"), d->foam_curve[c], &d->foam_npoint[c], err);
+        mcs_status st =
+            read_table(fe_scn_get(cv, "points"), d->foam_curve[c], &d->foam_npoint[c], err);
         if (st) return st;
     }
     return MCS_OK;

@@ -39,7 +39,7 @@
 #include "fe/fe_state.h"
 
 typedef struct {
-    char name[FE_NAME_MAX];      /* results: /stage3/slipring/<name>                        */
+    char name[FE_NAME_MAX];      /* results: /stage<N>/slipring/<name>                      */
     int node;                    /* ring node; -1: the node of `part` nearest to `point` [-] */
     char part[FE_NAME_MAX];      /* belt part holding the ring node                         */
     double point[3];             /* ring position [m]                                       */

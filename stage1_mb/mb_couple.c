@@ -8,6 +8,7 @@
 #include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_couple_rx.h"
 #include "stage1_mb/mb_couple_contact.h"
+#include "stage1_mb/mb_couple_pt.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_prescribe.h"
 #include "stage1_mb/mb_vec.h"
@@ -93,14 +94,7 @@ mcs_status mb_couple_build(const mcs_scenario *scn, mb_model *m, mcs_error *err)
         const mcs_node *bn = mcs_node_get(c->fe.att[a].attach, "body");
         int b = mb_model_body(m, mcs_node_str(bn));
         if (b < 0) return mcs_node_error(bn, err, MCS_ERR_KEY, "no body of that name");
-        const mb_body_desc *d = &m->body[b];
-        double R[9], q[4];
-        mb_quat_unit(d->quat, q);
-        mb_quat_to_rot(q, R);
-        const double *x = fm->node_x0 + 3 * c->fe.att[a].node;
-        double r[3] = {x[0] - d->pos[0], x[1] - d->pos[1], x[2] - d->pos[2]};
-        for (int i = 0; i < 3; i++) /* R^T r */
-            c->local[3 * a + i] = R[i] * r[0] + R[3 + i] * r[1] + R[6 + i] * r[2];
+        mb_couple_pt_local(&m->body[b], fm->node_x0 + 3 * c->fe.att[a].node, c->local + 3 * a);
         c->node[a] = c->fe.att[a].node;
         c->body[a] = b;
     }
@@ -118,17 +112,6 @@ void mb_couple_destroy(mb_couple **pc)
     free(c->node), free(c->body), free(c->local);
     free(c);
     *pc = NULL;
-}
-
-/* world position of attached node a on its body now */
-static void point_now(const mb_model *m, const mb_state *s, int a, double x[3])
-{
-    const mb_couple *c = m->couple;
-    mb_body_kin k;
-    mb_body_get(s->world, c->body[a], &k);
-    const double *l = c->local + 3 * a;
-    for (int i = 0; i < 3; i++)
-        x[i] = k.pos[i] + k.rot[3 * i] * l[0] + k.rot[3 * i + 1] * l[1] + k.rot[3 * i + 2] * l[2];
 }
 
 mcs_status mb_couple_state_create(const mb_model *m, mb_couple_state **out, mcs_error *err)
@@ -179,10 +162,7 @@ void mb_couple_apply(const mb_model *m, mb_state *s)
 {
     const mb_couple *c = m->couple;
     mb_couple_state *cs = s->couple;
-    for (int a = 0; a < c->natt; a++) {
-        point_now(m, s, a, cs->xa + 3 * a);
-        mb_body_add_force_at_pos(s->world, c->body[a], cs->force + 3 * a, cs->xa + 3 * a);
-    }
+    mb_couple_pt_apply(s, c->natt, c->body, c->local, cs->force, cs->xa);
     mb_couple_anchor_apply(m, s);
     if (c->contact) mb_couple_contact_apply(m, s);
 }
@@ -199,7 +179,7 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
     double *x1 = cs->force; /* scratch: body points at t + h, then the forces */
     for (int a = 0; a < c->natt; a++) {
         double x[3];
-        point_now(m, s, a, x);
+        mb_couple_pt_now(s, c->body[a], c->local + 3 * a, x);
         /* the body's work of the last forces over this step's displacement */
         for (int i = 0; i < 3; i++)
             cs->w_body += cs->force[3 * a + i] * (x[i] - cs->xa[3 * a + i]);
@@ -255,14 +235,9 @@ mcs_status mb_couple_advance(const mb_model *m, mb_state *s, mcs_error *err)
     const double tc = 0.5 * (i0 + f->time - 0.5 * f->dt_prev);
     const double alpha = cs->started ? (t1 - tc) / (tc - cs->tc) : 0;
     cs->tc = tc;
-    for (int a = 0; a < c->natt; a++) {
-        mb_copy(x1 + 3 * a, cs->xa + 3 * a);
-        for (int i = 0; i < 3; i++) {
-            double fm = -cs->imp[3 * a + i] / h, fp = cs->started ? cs->fmean[3 * a + i] : fm;
-            cs->force[3 * a + i] = fm + alpha * (fm - fp);
-            cs->fmean[3 * a + i] = fm;
-        }
-    }
+    memcpy(cs->xa, x1, 3 * (size_t)c->natt * sizeof *cs->xa);
+    /* the reaction on the node loads the body with the opposite sign */
+    mb_couple_mean_force(3 * c->natt, cs->imp, -1, h, alpha, cs->started, cs->fmean, cs->force);
     mb_couple_anchor_end(m, s, h, alpha, cs->started);
     if (c->contact) mb_couple_contact_end(m, s, h, alpha, cs->started);
     cs->started = 1;

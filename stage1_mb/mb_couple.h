@@ -1,8 +1,8 @@
 /* mb_couple.h: stage-1 bodies coupled to the FE kernel (issue 12, DESIGN.md "Coupling bodies
- * and FE parts"): the scenario's fe: block is built by the shared FE builder (fe/fe_scn_build.h) and
- * stepped inside the ODE step; the nodes of fe.parts[].attach move rigidly with their body
- * and their constraint reactions load it. The step scheme is in docs/stage1_engine.md
- * ("Coupling to FE parts"). */
+ * and FE parts"): the scenario's fe: block is built by the shared FE builder
+ * (fe/fe_scn_build.h) and stepped inside the ODE step; the nodes of fe.parts[].attach move
+ * rigidly with their body and their constraint reactions load it. The step scheme is in
+ * docs/stage1_engine.md ("Coupling to FE parts"). */
 #ifndef MB_COUPLE_H
 #define MB_COUPLE_H
 

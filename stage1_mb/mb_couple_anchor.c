@@ -7,6 +7,7 @@
  * the subcycle divided by h is the mean force on the body, applied at the anchor in the next
  * ODE step, extrapolated with the attached nodes' factor. */
 #include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_couple_pt.h"
 #include "stage1_mb/mb_couple_rx.h"
 #include "stage1_mb/mb_prescribe.h"
 #include "stage1_mb/mb_vec.h"
@@ -34,39 +35,19 @@ mcs_status mb_couple_anchor_build(const mcs_node *fe, mb_model *m, mb_couple_rx 
         int k = fe_retractor_find(fm, mcs_node_str(mcs_node_get(r, "name")));
         if (k < 0) continue;
         /* the anchor in the body frame from the t = 0 pose */
-        const mb_body_desc *d = &m->body[b];
-        double R[9], q[4];
-        mb_quat_unit(d->quat, q);
-        mb_quat_to_rot(q, R);
-        const double *x = fm->restraints->retractor[k].anchor;
-        double v[3] = {x[0] - d->pos[0], x[1] - d->pos[1], x[2] - d->pos[2]};
-        double *l = rx->anchor_local + 3 * rx->nanchor;
-        for (int j = 0; j < 3; j++) /* R^T v */
-            l[j] = R[j] * v[0] + R[3 + j] * v[1] + R[6 + j] * v[2];
+        mb_couple_pt_local(&m->body[b], fm->restraints->retractor[k].anchor,
+                           rx->anchor_local + 3 * rx->nanchor);
         rx->anchor_ret[rx->nanchor] = k;
         rx->anchor_body[rx->nanchor++] = b;
     }
     return MCS_OK;
 }
 
-/* world position of anchor a on its body now */
-static void anchor_now(const mb_couple_rx *rx, const mb_state *s, int a, double x[3])
-{
-    mb_body_kin k;
-    mb_body_get(s->world, rx->anchor_body[a], &k);
-    const double *l = rx->anchor_local + 3 * a;
-    for (int i = 0; i < 3; i++)
-        x[i] = k.pos[i] + k.rot[3 * i] * l[0] + k.rot[3 * i + 1] * l[1] + k.rot[3 * i + 2] * l[2];
-}
-
 void mb_couple_anchor_apply(const mb_model *m, mb_state *s)
 {
     const mb_couple_rx *rx = m->couple->rx;
     mb_couple_rx_state *q = s->couple->rx;
-    for (int a = 0; a < rx->nanchor; a++) {
-        anchor_now(rx, s, a, q->xa + 3 * a);
-        mb_body_add_force_at_pos(s->world, rx->anchor_body[a], q->force + 3 * a, q->xa + 3 * a);
-    }
+    mb_couple_pt_apply(s, rx->nanchor, rx->anchor_body, rx->anchor_local, q->force, q->xa);
 }
 
 void mb_couple_anchor_begin(const mb_model *m, mb_state *s)
@@ -75,7 +56,7 @@ void mb_couple_anchor_begin(const mb_model *m, mb_state *s)
     mb_couple_rx_state *q = s->couple->rx;
     for (int a = 0; a < rx->nanchor; a++) {
         double *x1 = q->x1 + 3 * a;
-        anchor_now(rx, s, a, x1);
+        mb_couple_pt_now(s, rx->anchor_body[a], rx->anchor_local + 3 * a, x1);
         /* the body's work of the last force over this step's displacement of the anchor */
         double w = 0;
         for (int i = 0; i < 3; i++) w += q->force[3 * a + i] * (x1[i] - q->xa[3 * a + i]);
@@ -111,9 +92,5 @@ void mb_couple_anchor_end(const mb_model *m, mb_state *s, double h, double alpha
 {
     const mb_couple_rx *rx = m->couple->rx;
     mb_couple_rx_state *q = s->couple->rx;
-    for (int a = 0; a < 3 * rx->nanchor; a++) {
-        double fm = q->imp[a] / h, fp = started ? q->fmean[a] : fm;
-        q->force[a] = fm + alpha * (fm - fp);
-        q->fmean[a] = fm;
-    }
+    mb_couple_mean_force(3 * rx->nanchor, q->imp, 1, h, alpha, started, q->fmean, q->force);
 }

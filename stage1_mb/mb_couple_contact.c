@@ -14,6 +14,7 @@
 #include "fe/fe_contact.h"
 #include "fe/fe_state.h"
 #include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_couple_pt.h"
 #include "stage1_mb/mb_vec.h"
 
 #include <math.h>
@@ -389,12 +390,9 @@ void mb_couple_contact_end(const mb_model *m, mb_state *s, double h, double alph
 {
     const mb_couple_contact *c = m->couple->contact;
     mb_couple_contact_state *cs = s->couple->contact;
-    for (int i = 0; i < 6 * c->nbody; i++) {
-        double fm = cs->imp[i] / h, fp = started ? cs->fmean[i] : fm;
-        cs->force[i] = fm + alpha * (fm - fp);
-        cs->fmean[i] = fm;
+    mb_couple_mean_force(6 * c->nbody, cs->imp, 1, h, alpha, started, cs->fmean, cs->force);
+    for (int i = 0; i < 6 * c->nbody; i++)
         cs->jfe[i] += cs->imp[i];
-    }
     for (int i = 0; i < c->nbody; i++) {
         mb_copy(cs->x1 + 3 * i, cs->x0 + 3 * i);
         memcpy(cs->q0 + 4 * i, cs->q1 + 4 * i, 4 * sizeof(double));

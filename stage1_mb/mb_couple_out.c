@@ -1,11 +1,7 @@
 /* mb_couple_out.c: the coupled FE parts' /stage1 output (mb_couple_out.h), written as a
- * stage-3 run writes /stage3 (stage3_fe/s3_run.c) with the fe/fe_out_* writers and stage 1. */
+ * stage-3 run writes /stage3 (stage3_fe/s3_run.c): with fe/fe_out.h and stage 1. */
 #include "stage1_mb/mb_couple_out.h"
-#include "fe/fe_out_contact.h"
-#include "fe/fe_out_mesh.h"
-#include "fe/fe_out_parts.h"
-#include "fe/fe_scn_restraints.h"
-#include "fe/fe_scn_slipring.h"
+#include "fe/fe_out.h"
 #include "stage1_mb/mb_couple.h"
 
 #include <math.h>
@@ -16,11 +12,7 @@
 struct mb_couple_out {
     long rows;              /* stage-1 output rows sampled so far             */
     long field_every;       /* a field at every k-th row (simulation.field_rate) */
-    fe_out_field field;     /* /stage1/mesh, /stage1/fields                   */
-    fe_out_parts parts;     /* /stage1/parts/<part>/energy                    */
-    fe_out_restraint rest;  /* /stage1/airbag, /stage1/retractor              */
-    fe_out_slipring rings;  /* /stage1/slipring                               */
-    fe_out_contact contact; /* /stage1/contact, /stage1/ellipsoid, /stage1/facets */
+    fe_out fe;              /* fields, contacts, restraints, slip rings, parts (fe/fe_out.h) */
     /* bodies contacts: /stage1/contact/<name>/force, the sum over their kernel surfaces */
     int ngroup;
     mcs_results_series *gforce[FE_ELLIPSOID_MAX + FE_FACETS_MAX];
@@ -100,12 +92,8 @@ mcs_status mb_couple_out_open(const mb_model *m, mcs_results *r, mb_couple_out *
     if (p->field_rate != p->output_rate && p->field_rate > 0)
         o->field_every = lround(fmax(1.0, m->output_rate / p->field_rate));
     mcs_status st = fe_out_meshes(r, 1, fm, err);
-    if (!st) st = fe_out_field_open(r, 1, fm, &o->field, err);
-    if (!st) st = fe_out_restraint_open(r, 1, fm, &o->rest, err);
-    if (!st) st = fe_out_slipring_open(r, 1, fm, &o->rings, err);
-    if (!st) st = fe_out_contact_open(r, 1, fm, &o->contact, err);
+    if (!st) st = fe_out_open(r, 1, fm, &o->fe, err);
     if (!st) st = open_groups(r, fm, o, err);
-    if (!st) st = fe_out_parts_open(r, 1, fm, &o->parts, err);
     return st;
 }
 
@@ -119,12 +107,9 @@ mcs_status mb_couple_out_sample(const mb_model *m, const mb_state *s, mb_couple_
     /* the FE state is that of the last recorded row: a row per step at most */
     for (; o->rows < s->nrec && !st; o->rows++) {
         if (o->rows % o->field_every == 0)
-            st = fe_out_field_sample(fm, f, s->rec_t[o->rows], &o->field, err);
-        if (!st) st = fe_out_restraint_sample(f, &o->rest, err);
-        if (!st) st = fe_out_slipring_sample(f, &o->rings, err);
-        if (!st) st = fe_out_contact_sample(fm, f, &o->contact, err);
+            st = fe_out_field_sample(fm, f, s->rec_t[o->rows], &o->fe.field, err);
+        if (!st) st = fe_out_sample(fm, f, &o->fe, err);
         if (!st) st = sample_groups(fm, f, o, err);
-        if (!st) st = fe_out_parts_sample(fm, f, &o->parts, err);
     }
     return st;
 }
@@ -133,10 +118,7 @@ void mb_couple_out_free(mb_couple_out **po)
 {
     mb_couple_out *o = po ? *po : NULL;
     if (!o) return;
-    fe_out_field_free(&o->field);
-    fe_out_parts_free(&o->parts);
-    fe_out_restraint_free(&o->rest);
-    fe_out_slipring_free(&o->rings);
+    fe_out_free(&o->fe);
     free(o);
     *po = NULL;
 }

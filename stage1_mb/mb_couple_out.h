@@ -5,7 +5,7 @@
  *   /stage1/airbag/<name>/{pressure, volume, temperature, mass},
  *   /stage1/retractor/<name>/{payout, force, payout_pretensioner, payout_limiter,
  *   energy_limiter}, /stage1/slipring/<name>/{slip, ...}, /stage1/contact/<name>/{force,
- *   energy}, /stage1/ellipsoid/<name>/force.
+ *   energy}, /stage1/ellipsoid/<name>/force, /stage1/facets/<name>/force.
  * One row per stage-1 output row, at the times of /stage1/time: the FE state is the one at the
  * end of the ODE step (mb_couple_advance has subcycled it to s->t); energies, bag, retractor,
  * ring and contact values are those of its last FE step (fe_state.energy_time, one FE step

@@ -96,7 +96,8 @@ mcs_status mb_couple_rx_state_create(const mb_model *m, mb_couple_state *cs, mcs
     mb_couple_rx_state *q = calloc(1, sizeof *q);
     if (!q) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     cs->rx = q;
-    size_t nt = (size_t)(rx->ntrig ? rx->ntrig : 1), na = 3 * (size_t)(rx->nanchor ? rx->nanchor : 1);
+    size_t nt = (size_t)(rx->ntrig ? rx->ntrig : 1),
+           na = 3 * (size_t)(rx->nanchor ? rx->nanchor : 1);
     q->trig_time = calloc(nt, sizeof *q->trig_time);
     q->xa = calloc(na, sizeof *q->xa);
     q->x1 = calloc(na, sizeof *q->x1);

@@ -2,11 +2,7 @@
  * allocated before the loop; the loop calls fe_step and appends rows to results series at
  * the output rate. */
 #include "stage3_fe/s3_run.h"
-#include "fe/fe_out_contact.h"
-#include "fe/fe_out_mesh.h"
-#include "fe/fe_out_parts.h"
-#include "fe/fe_scn_restraints.h"
-#include "fe/fe_scn_slipring.h"
+#include "fe/fe_out.h"
 
 #include "core/mcs_progress.h"
 #include "core/mcs_results.h"
@@ -28,11 +24,7 @@ static double now_s(void)
 
 typedef struct {
     mcs_results_series *time, *energy[FE_NENERGY], *wall_f[FE_WALL_MAX], *wall_d[FE_WALL_MAX];
-    fe_out_field field;     /* /stage3/fields (fe_out_mesh.c) */
-    fe_out_contact contact; /* /stage3/contact, /stage3/ellipsoid (fe_out_contact.c) */
-    fe_out_restraint rest; /* airbags and retractors (fe_scn_restraints.c) */
-    fe_out_slipring rings; /* slip rings (fe_scn_slipring.c) */
-    fe_out_parts parts;     /* per-part energies (fe_out_parts.c) */
+    fe_out fe; /* fields, contacts, restraints, slip rings, parts (fe/fe_out.h) */
 } s3_out;
 
 static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_error *err)
@@ -49,11 +41,7 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
         snprintf(path, sizeof path, "/stage3/rigidwall/%s/displacement", m->wall[w].name);
         if (!st) st = mcs_results_series_create(r, path, 1, NULL, "m", 0, &o->wall_d[w], err);
     }
-    if (!st) st = fe_out_contact_open(r, 3, m, &o->contact, err);
-    if (!st) st = fe_out_field_open(r, 3, m, &o->field, err);
-    if (!st) st = fe_out_restraint_open(r, 3, m, &o->rest, err);
-    if (!st) st = fe_out_slipring_open(r, 3, m, &o->rings, err);
-    if (!st) st = fe_out_parts_open(r, 3, m, &o->parts, err);
+    if (!st) st = fe_out_open(r, 3, m, &o->fe, err);
     return st;
 }
 
@@ -66,16 +54,13 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
         st = mcs_results_series_append(o->wall_f[w], &s->wall_normal[w], err);
         if (!st) st = mcs_results_series_append(o->wall_d[w], &s->wall_disp[w], err);
     }
-    if (!st) st = fe_out_restraint_sample(s, &o->rest, err);
-    if (!st) st = fe_out_slipring_sample(s, &o->rings, err);
-    if (!st) st = fe_out_contact_sample(m, s, &o->contact, err);
-    if (!st) st = fe_out_parts_sample(m, s, &o->parts, err);
+    if (!st) st = fe_out_sample(m, s, &o->fe, err);
     return st;
 }
 
 static mcs_status sample_field(const fe_model *m, const fe_state *s, s3_out *o, mcs_error *err)
 {
-    return fe_out_field_sample(m, s, s->time, &o->field, err);
+    return fe_out_field_sample(m, s, s->time, &o->fe.field, err);
 }
 
 /* the time loop: fe_step until end_time, sampling energies (at t_n) and fields (at t_n+1) */
@@ -151,10 +136,7 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
         if (!st) st = mcs_results_commit(&r, err);
     }
     mcs_results_abort(&r);
-    fe_out_field_free(&o.field);
-    fe_out_restraint_free(&o.rest);
-    fe_out_slipring_free(&o.rings);
-    fe_out_parts_free(&o.parts);
+    fe_out_free(&o.fe);
     fe_state_destroy(&s);
     sum->wall_time_s = now_s() - wall0;
     return st;

@@ -17,6 +17,7 @@
 #include "stage1_mb/mb_couple.h"
 #include "tests/harness.h"
 #include "tests/figures.h"
+#include "tests/mb_couple_test_util.h"
 #include "tests/mb_test_util.h"
 
 #define L_BAR 1.0
@@ -49,61 +50,38 @@ static const char *hang(double g, double vz)
     return hang_yaml;
 }
 
-/* first root of beta tan(beta) = r in (0, pi/2), by bisection */
-static double end_mass_root(double r)
+/* the body's height, and its rotation about z [rad] (a turn about the z axis only) */
+static double body_z(const mb_state *s)
 {
-    double lo = 0, hi = 1.5707963267948966;
-    for (int i = 0; i < 200; i++) {
-        double b = 0.5 * (lo + hi);
-        if (b * tan(b) < r) lo = b;
-        else hi = b;
-    }
-    return 0.5 * (lo + hi);
+    mb_body_kin k;
+    mb_body_get(s->world, 0, &k);
+    return k.pos[2];
+}
+
+static double body_angle_z(const mb_state *s)
+{
+    mb_body_kin k;
+    mb_body_get(s->world, 0, &k);
+    return 2 * atan2(k.quat[3], k.quat[0]);
 }
 
 static void test_body_hanging_on_a_bar(void)
 {
-    mcs_error err = {0};
-    mb_model *m = mt_model_text("hang.yaml", hang(G, 0), &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("hang.yaml", hang(G, 0));
+    if (!m) return;
     CHECK(m->couple != NULL && m->couple->natt == 1);
     mb_state *s = NULL;
-    mcs_status st = mb_state_create(m, &s, &err);
-    CHECK(st == MCS_OK);
-    long n = m->nsteps;
-    double *z = calloc((size_t)n + 1, sizeof *z), zmin = 0, zmax = 0;
-    z[0] = 0;
-    while (!st && s->step < n) {
-        st = mb_step(m, s, &err);
-        mb_body_kin k;
-        mb_body_get(s->world, 0, &k);
-        z[s->step] = k.pos[2];
-        zmin = fmin(zmin, k.pos[2]), zmax = fmax(zmax, k.pos[2]);
-    }
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    const long n = m->nsteps;
+    double *z = calloc((size_t)n + 1, sizeof *z), zmin, zmax;
+    mc_run_record(m, &s, body_z, z, &zmin, &zmax);
     const double mb = RHO * A_BAR * L_BAR, k = E_BAR * A_BAR / L_BAR, c = sqrt(E_BAR / RHO);
     const double delta = (M_BODY + 0.5 * mb) * G / k;
-    const double T = 2 * M_PI / (end_mass_root(mb / M_BODY) * c / L_BAR);
+    const double T = 2 * M_PI / (mc_end_mass_root(mb / M_BODY) * c / L_BAR);
     const double T_rayleigh = 2 * M_PI * sqrt((M_BODY + mb / 3) / k);
     double dmeas = -0.5 * (zmax + zmin);
     /* period: mean spacing of the upward crossings of the static position */
-    double t_first = -1, t_last = -1;
-    int ncross = 0;
-    for (long i = 1; i <= n; i++) {
-        double a = z[i - 1] + dmeas, b = z[i] + dmeas;
-        if (a < 0 && b >= 0) {
-            double t = ((double)(i - 1) + a / (a - b)) * m->h;
-            if (t_first < 0) t_first = t;
-            t_last = t;
-            ncross++;
-        }
-    }
-    double Tmeas = ncross > 1 ? (t_last - t_first) / (ncross - 1) : 0;
+    int ncross;
+    double Tmeas = mc_up_period(z, n, -dmeas, m->h, &ncross);
     double derr = 100 * (dmeas / delta - 1), terr = 100 * (Tmeas / T - 1);
     double drift = mb_energy_drift(m, s);
     printf("static deflection %.4g um (closed form %.4g um, %+.3f %%)\n", 1e6 * dmeas,
@@ -167,38 +145,18 @@ static void test_moment_on_a_hinged_body(void)
         "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, poisson: 0.3}\n"
         "      attach: {body: lever, where: x_min}\n"
         "  boundary: [{part: bar, where: x_max, fix: all}]\n";
-    mcs_error err = {0};
-    mb_model *m = mt_model_text("lever.yaml", y, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("lever.yaml", y);
+    if (!m) return;
     mb_state *s = NULL;
-    mcs_status st = mb_state_create(m, &s, &err);
-    double prev = 0, t_first = -1, t_last = -1, amax = 0;
-    int ncross = 0;
-    while (!st && s->step < m->nsteps) {
-        st = mb_step(m, s, &err);
-        mb_body_kin k;
-        mb_body_get(s->world, 0, &k);
-        double a = 2 * atan2(k.quat[3], k.quat[0]);
-        amax = fmax(amax, fabs(a));
-        if (prev < 0 && a >= 0) { /* upward crossings of zero */
-            double t = ((double)(s->step - 1) + prev / (prev - a)) * m->h;
-            if (t_first < 0) t_first = t;
-            t_last = t;
-            ncross++;
-        }
-        prev = a;
-    }
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    double *ang = calloc((size_t)m->nsteps + 1, sizeof *ang), alo, ahi;
+    mc_run_record(m, &s, body_angle_z, ang, &alo, &ahi);
+    const double amax = fmax(ahi, -alo);
+    int ncross; /* upward crossings of zero */
+    double Tmeas = mc_up_period(ang, m->nsteps, 0, m->h, &ncross);
     const double r = 0.1, I = 0.1, mb = RHO * A_BAR * L_BAR, c = sqrt(E_BAR / RHO);
     const double kt = E_BAR * A_BAR / L_BAR * r * r;
-    const double T = 2 * M_PI / (end_mass_root(mb * r * r / I) * c / L_BAR);
+    const double T = 2 * M_PI / (mc_end_mass_root(mb * r * r / I) * c / L_BAR);
     const double T_rayleigh = 2 * M_PI * sqrt((I + mb * r * r / 3) / kt);
-    double Tmeas = ncross > 1 ? (t_last - t_first) / (ncross - 1) : 0;
     double terr = 100 * (Tmeas / T - 1);
     double drift = s ? mb_energy_drift(m, s) : 1;
     printf("lever: period %.5g ms (closed form %.5g ms, Rayleigh %.5g ms, %+.3f %%), amplitude "
@@ -207,6 +165,7 @@ static void test_moment_on_a_hinged_body(void)
     CHECK(ncross >= 4);
     FIG("stage1_engine.couple_lever_period_err_pct", "%.3f", fabs(terr));
     CHECK_NEAR(terr, 0, 0.05);
+    free(ang);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
 }

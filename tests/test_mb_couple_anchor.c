@@ -26,6 +26,7 @@
 #include "stage1_mb/mb_couple_rx.h"
 #include "tests/harness.h"
 #include "tests/figures.h"
+#include "tests/mb_couple_test_util.h"
 #include "tests/mb_test_util.h"
 
 #define EA 4e5
@@ -56,12 +57,8 @@ static const char *sled_yaml =
 static void test_limiter_plateau_on_the_sled(void)
 {
     mcs_error err = {0};
-    mb_model *m = mt_model_text("sled.yaml", sled_yaml, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("sled.yaml", sled_yaml);
+    if (!m) return;
     CHECK(m->couple->rx->nanchor == 1);
     mb_state *s = NULL;
     mcs_status st = mb_state_create(m, &s, &err);
@@ -113,12 +110,8 @@ static const char *carrier_yaml =
 static void test_payin_on_a_moving_carrier(void)
 {
     mcs_error err = {0};
-    mb_model *m = mt_model_text("carrier.yaml", carrier_yaml, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("carrier.yaml", carrier_yaml);
+    if (!m) return;
     mb_state *s = NULL;
     mcs_status st = mb_state_create(m, &s, &err);
     const double M = 10, Mc = 1000, mu = M * Mc / (M + Mc), k = EA / 2.0, w = sqrt(k / mu);
@@ -200,12 +193,8 @@ static double belt_work(double l)
 static void test_ring_on_a_body(void)
 {
     mcs_error err = {0};
-    mb_model *m = mt_model_text("ring.yaml", ring_yaml, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("ring.yaml", ring_yaml);
+    if (!m) return;
     CHECK(m->couple->natt == 1);
     mb_state *s = NULL;
     mcs_status st = mb_state_create(m, &s, &err);

@@ -10,6 +10,7 @@
 #include "stage1_mb/mb_couple_contact.h"
 #include "tests/harness.h"
 #include "tests/figures.h"
+#include "tests/mb_couple_test_util.h"
 #include "tests/mb_test_util.h"
 
 /* a ball (sphere radius R, mass M) over a fixed square plate of quads in z = 0 */
@@ -89,12 +90,8 @@ static void test_ball_drop_on_fixed_plate(void)
                    .mu = 0,
                    .scale = 0.001};
     mcs_error err = {0};
-    mb_model *m = mt_model_text("drop.yaml", drop_text(&c), &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("drop.yaml", drop_text(&c));
+    if (!m) return;
     mb_state *s = NULL;
     mcs_status st = mb_state_create(m, &s, &err);
     CHECK(st == MCS_OK);
@@ -189,12 +186,8 @@ static void test_ball_drop_on_fixed_hex_block(void)
              "  contacts: [{type: bodies, parts: [block], bodies: [ball], penalty_scale: %g}]\n",
              R + 0.5e-3, -v0, R, R, R, scale);
     mcs_error err = {0};
-    mb_model *m = mt_model_text("hex.yaml", y, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("hex.yaml", y);
+    if (!m) return;
     mb_state *s = NULL;
     mcs_status st = mb_state_create(m, &s, &err);
     const fe_model *fm = m->couple->fe.model;
@@ -323,12 +316,8 @@ static void fe_momentum(const fe_model *fm, const fe_state *f, double p[3])
 static void test_momentum_ball_on_free_plate(void)
 {
     mcs_error err = {0};
-    mb_model *m = mt_model_text("free.yaml", FREE_YAML, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("free.yaml", FREE_YAML);
+    if (!m) return;
     mb_state *s = NULL;
     mcs_status st = mb_state_create(m, &s, &err);
     const fe_model *fm = m->couple->fe.model;
@@ -389,12 +378,8 @@ static void test_momentum_ball_on_free_plate(void)
 static void test_facet_block_on_membrane(void)
 {
     mcs_error err = {0};
-    mb_model *m = mt_model_text("facet.yaml", FACET_YAML, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("facet.yaml", FACET_YAML);
+    if (!m) return;
     const fe_model *fm = m->couple->fe.model;
     const double v0 = 0.3, M = 1, dt0 = fm->contact->dt0;
     double K = 0;
@@ -461,13 +446,8 @@ static void test_facet_moment_off_centre(void)
     memcpy(p, "inertia: [1e3, 1e3, 1e3]   ", 27);
     p = strstr(y, "origin: [-0.05, -0.05, 0]");
     memcpy(p, "origin: [0.000, -0.05, 0]", 25);
-    mcs_error err = {0};
-    mb_model *m = mt_model_text("edge.yaml", y, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("edge.yaml", y);
+    if (!m) return;
     const fe_model *fm = m->couple->fe.model;
     double sk = 0, skx = 0, sky = 0;
     for (int n = 0; n < fm->nnode; n++) {
@@ -477,9 +457,7 @@ static void test_facet_moment_off_centre(void)
     }
     const double rc[3] = {skx / sk, sky / sk, -0.02};
     mb_state *s = NULL;
-    mcs_status st = mt_run(m, &s, &err);
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    mc_run(m, &s);
     double jfe[6], jb[6], mref[3];
     CHECK(mb_couple_contact_impulse(m, s, 0, jfe, jb) == 0);
     mb_cross(rc, jb, mref);
@@ -519,18 +497,11 @@ static void test_facet_moment_off_centre(void)
 
 static void test_angular_momentum_spinning_paddle(void)
 {
-    mcs_error err = {0};
-    mb_model *m = mt_model_text("spin.yaml", SPIN_YAML, &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("spin.yaml", SPIN_YAML);
+    if (!m) return;
     const fe_model *fm = m->couple->fe.model;
     mb_state *s = NULL;
-    mcs_status st = mt_run(m, &s, &err);
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    mc_run(m, &s);
     const double *F = s->couple->fe->contact->ell_force;
     CHECK(F[0] == 0 && F[1] == 0 && F[2] == 0); /* apart at the end */
     /* the body's: I_world w + M x_cg x v_cg, I_world = R diag(I) R^T */

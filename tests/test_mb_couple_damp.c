@@ -21,6 +21,7 @@
 #include "stage1_mb/mb_couple.h"
 #include "tests/harness.h"
 #include "tests/figures.h"
+#include "tests/mb_couple_test_util.h"
 #include "tests/mb_test_util.h"
 
 #define L_BAR 1.0
@@ -58,18 +59,12 @@ static mb_model *hang(const char *end_time, const char *extra)
     return m;
 }
 
-/* first root of beta tan(beta) = r in (0, pi/2), by bisection */
-static double end_mass_root(double r)
+/* the body's height */
+static double body_z(const mb_state *s)
 {
-    double lo = 0, hi = 1.5707963267948966;
-    for (int i = 0; i < 200; i++) {
-        double b = 0.5 * (lo + hi);
-        if (b * tan(b) < r)
-            lo = b;
-        else
-            hi = b;
-    }
-    return 0.5 * (lo + hi);
+    mb_body_kin k;
+    mb_body_get(s->world, 0, &k);
+    return k.pos[2];
 }
 
 static void test_static_deflection_with_damping(void)
@@ -81,10 +76,7 @@ static void test_static_deflection_with_damping(void)
     if (!m) return;
     CHECK(m->couple->fe.model->opts.damping == 30000);
     mb_state *s = NULL;
-    mcs_error err = {0};
-    mcs_status st = mt_run(m, &s, &err);
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    mc_run(m, &s);
     if (!s) return;
     mb_body_kin k;
     mb_body_get(s->world, 0, &k);
@@ -110,38 +102,18 @@ static void test_period_with_mass_scaling(void)
     if (!m) return;
     const double c0 = sqrt(E_BAR / RHO), le = L_BAR / NDIV, dt_t = 8e-6, s_f = 0.9;
     const double f = dt_t / (s_f * le / c0), mb = RHO * A_BAR * L_BAR, mb1 = f * f * mb;
-    const double T = 2 * M_PI / (end_mass_root(mb1 / M_BODY) * (c0 / f) / L_BAR);
-    const double T0 = 2 * M_PI / (end_mass_root(mb / M_BODY) * c0 / L_BAR);
+    const double T = 2 * M_PI / (mc_end_mass_root(mb1 / M_BODY) * (c0 / f) / L_BAR);
+    const double T0 = 2 * M_PI / (mc_end_mass_root(mb / M_BODY) * c0 / L_BAR);
     const fe_model *fm = m->couple->fe.model;
     CHECK_REL(fm->mass_added, mb1 - mb, 1e-9);
     mb_state *s = NULL;
-    mcs_error err = {0};
-    mcs_status st = mb_state_create(m, &s, &err);
-    long n = m->nsteps;
-    double *z = calloc((size_t)n + 1, sizeof *z), zmin = 0, zmax = 0;
-    while (!st && s->step < n) {
-        st = mb_step(m, s, &err);
-        mb_body_kin k;
-        mb_body_get(s->world, 0, &k);
-        z[s->step] = k.pos[2];
-        zmin = fmin(zmin, k.pos[2]), zmax = fmax(zmax, k.pos[2]);
-    }
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    const long n = m->nsteps;
+    double *z = calloc((size_t)n + 1, sizeof *z), zmin, zmax;
+    mc_run_record(m, &s, body_z, z, &zmin, &zmax);
     /* period: mean spacing of the upward crossings of the mid position */
-    const double mid = 0.5 * (zmax + zmin);
-    double t_first = -1, t_last = -1;
-    int ncross = 0;
-    for (long i = 1; i <= n; i++) {
-        double a = z[i - 1] - mid, b = z[i] - mid;
-        if (a < 0 && b >= 0) {
-            double t = ((double)(i - 1) + a / (a - b)) * m->h;
-            if (t_first < 0) t_first = t;
-            t_last = t;
-            ncross++;
-        }
-    }
-    double Tm = ncross > 1 ? (t_last - t_first) / (ncross - 1) : 0, terr = 100 * (Tm / T - 1);
+    int ncross;
+    const double Tm = mc_up_period(z, n, 0.5 * (zmax + zmin), m->h, &ncross);
+    const double terr = 100 * (Tm / T - 1);
     printf("mass scaled: bar %.4g kg (was %.4g), period %.5g ms (closed form %.5g ms, %+.3f %%; "
            "unscaled %.5g ms), %d crossings, FE steps %ld\n",
            mb1, mb, 1e3 * Tm, 1e3 * T, terr, 1e3 * T0, ncross, s ? s->couple->substeps : 0);

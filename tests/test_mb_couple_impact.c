@@ -17,6 +17,7 @@
 #include "stage1_mb/mb_couple.h"
 #include "tests/harness.h"
 #include "tests/figures.h"
+#include "tests/mb_couple_test_util.h"
 #include "tests/mb_test_util.h"
 
 #define PSI (30 * M_PI / 180)
@@ -56,6 +57,41 @@ static const char *box(const char *end_time)
     return yaml;
 }
 
+/* an opponent body, in front of the impact: block */
+#define CAR_BODY                                                                                   \
+    "  - {name: car, mass: 1000, inertia: [300, 1000, 1000], position: [5, 0, 0.5],\n"             \
+    "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0]}\n"
+
+static char edited[8192];
+
+/* box("1 ms") with the first `from` replaced by `to` (from NULL: none) and `more` (fe: text
+ * after the bar) appended */
+static const char *box_edit(const char *from, const char *to, const char *more)
+{
+    const char *y = box("1 ms"), *p = from ? strstr(y, from) : NULL;
+    CHECK(!from || p);
+    if (p)
+        snprintf(edited, sizeof edited, "%.*s%s%s%s", (int)(p - y), y, to, p + strlen(from), more);
+    else
+        snprintf(edited, sizeof edited, "%s%s", y, more);
+    return edited;
+}
+
+/* the largest offsets of the part after the bar from the nodes x0 + 0.25 k (0, 1, 0) and of
+ * their start velocities from v; its node count */
+static int second_part(const fe_model *fm, const double x0[3], const double v[3], double *ex,
+                       double *ev)
+{
+    *ex = *ev = 0;
+    for (int n = NDIV + 1; fm && n < fm->nnode; n++)
+        for (int i = 0; i < 3; i++) {
+            const double x = x0[i] + (i == 1 ? 0.25 * (n - NDIV - 1) : 0);
+            *ex = fmax(*ex, fabs(fm->node_x0[3 * n + i] - x));
+            *ev = fmax(*ev, fabs(fm->node_v0[3 * n + i] - v[i]));
+        }
+    return fm ? fm->nnode - NDIV - 1 : 0;
+}
+
 /* R = Rz(psi) Rx(phi), row-major, written out */
 static void rot(double R[9])
 {
@@ -89,12 +125,8 @@ static void place(const double R[9], const double x[3], double y[3])
 static void test_placement_and_velocity_field(void)
 {
     mcs_error err = {0};
-    mb_model *m = mt_model_text("carried.yaml", box("1 ms"), &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("carried.yaml", box("1 ms"));
+    if (!m) return;
     const mb_couple *c = m->couple;
     const fe_model *fm = c->fe.model;
     CHECK(fm->nnode == NDIV + 1 && c->natt == 1);
@@ -161,17 +193,10 @@ static void test_placement_and_velocity_field(void)
 /* a short run of the placed model: one energy balance of the body and the bar */
 static void test_short_run_drift(void)
 {
-    mcs_error err = {0};
-    mb_model *m = mt_model_text("carried.yaml", box("20 ms"), &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m = mc_model("carried.yaml", box("20 ms"));
+    if (!m) return;
     mb_state *s = NULL;
-    mcs_status st = mt_run(m, &s, &err);
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    mc_run(m, &s);
     double drift = s ? mb_energy_drift(m, s) : 1;
     printf("placed bar, 20 ms: energy drift %.3g, FE steps %ld\n", drift,
            s ? s->couple->substeps : 0);
@@ -184,88 +209,57 @@ static void test_short_run_drift(void)
 /* a part attached to nothing stays where the fe: block puts it, with its initial_velocity */
 static void test_free_part_stays(void)
 {
-    char *y = malloc(8192);
-    strcpy(y, box("1 ms"));
-    strcat(y, "    - name: free\n"
-              "      mesh: {generate: line, origin: [5, 5, 1], end: [5, 6, 1], divisions: 4}\n"
-              "      section: {type: truss, area: 1e-4}\n"
-              "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, "
-              "poisson: 0.3}\n"
-              "      initial_velocity: [1, 2, 3]\n");
-    mcs_error err = {0};
-    mb_model *m = mt_model_text("free.yaml", y, &err);
-    CHECK(m != NULL);
-    if (!m) fprintf(stderr, "%s\n", err.msg);
-    const fe_model *fm = m ? m->couple->fe.model : NULL;
-    double ex = 0, ev = 0;
-    for (int n = NDIV + 1; fm && n < fm->nnode; n++) { /* the free part's nodes follow the bar's */
-        const double x[3] = {5, 5 + 0.25 * (n - NDIV - 1), 1}, v[3] = {1, 2, 3};
-        for (int i = 0; i < 3; i++) {
-            ex = fmax(ex, fabs(fm->node_x0[3 * n + i] - x[i]));
-            ev = fmax(ev, fabs(fm->node_v0[3 * n + i] - v[i]));
-        }
-    }
-    CHECK(fm && fm->nnode == NDIV + 1 + 5);
+    mb_model *m = mc_model(
+        "free.yaml",
+        box_edit(NULL, NULL,
+                 "    - name: free\n"
+                 "      mesh: {generate: line, origin: [5, 5, 1], end: [5, 6, 1], divisions: 4}\n"
+                 "      section: {type: truss, area: 1e-4}\n"
+                 "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, "
+                 "poisson: 0.3}\n"
+                 "      initial_velocity: [1, 2, 3]\n"));
+    const double x0[3] = {5, 5, 1}, v[3] = {1, 2, 3}; /* the generator's nodes, the key's v */
+    double ex, ev;
+    CHECK(second_part(m ? m->couple->fe.model : NULL, x0, v, &ex, &ev) == 5);
     CHECK(ex == 0 && ev == 0);
     mb_model_destroy(&m);
-    free(y);
 }
 
 /* a part carried by an opponent body stays in place (the opponent is not moved) and starts
  * with the opponent's speed along its heading (+x by default) */
 static void test_opponent_part(void)
 {
-    char *y = malloc(8192);
-    strcpy(y, box("1 ms"));
-    char *p = strstr(y, "impact: {");
-    char tail[4096];
-    snprintf(tail, sizeof tail, "%s", p + strlen("impact: {"));
-    snprintf(p, 8192 - (size_t)(p - y),
-             "  - {name: car, mass: 1000, inertia: [300, 1000, 1000], position: [5, 0, 0.5],\n"
-             "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0]}\n"
-             "impact: {opponent_speed: 2 m/s, %s",
-             tail);
-    strcat(y, "    - name: door\n"
-              "      mesh: {generate: line, origin: [5, 1, 0.5], end: [5, 2, 0.5], divisions: 4}\n"
-              "      section: {type: truss, area: 1e-4}\n"
-              "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, "
-              "poisson: 0.3}\n"
-              "      attach: {body: car, where: y_min}\n");
-    mcs_error err = {0};
-    mb_model *m = mt_model_text("opp.yaml", y, &err);
-    CHECK(m != NULL);
-    if (!m) fprintf(stderr, "%s\n", err.msg);
-    const fe_model *fm = m ? m->couple->fe.model : NULL;
-    double ex = 0, ev = 0;
-    for (int n = NDIV + 1; fm && n < fm->nnode; n++) {
-        const double x[3] = {5, 1 + 0.25 * (n - NDIV - 1), 0.5}, v[3] = {2, 0, 0};
-        for (int i = 0; i < 3; i++) {
-            ex = fmax(ex, fabs(fm->node_x0[3 * n + i] - x[i]));
-            ev = fmax(ev, fabs(fm->node_v0[3 * n + i] - v[i]));
-        }
-    }
-    CHECK(fm && fm->nnode == NDIV + 1 + 5);
+    mb_model *m = mc_model(
+        "opp.yaml",
+        box_edit(
+            "impact: {", CAR_BODY "impact: {opponent_speed: 2 m/s, ",
+            "    - name: door\n"
+            "      mesh: {generate: line, origin: [5, 1, 0.5], end: [5, 2, 0.5], divisions: 4}\n"
+            "      section: {type: truss, area: 1e-4}\n"
+            "      material: {model: elastic, density: 7850, youngs_modulus: 210 GPa, "
+            "poisson: 0.3}\n"
+            "      attach: {body: car, where: y_min}\n"));
+    const double x0[3] = {5, 1, 0.5}, v[3] = {2, 0, 0}; /* in place; opponent_speed along +x */
+    double ex, ev;
+    CHECK(second_part(m ? m->couple->fe.model : NULL, x0, v, &ex, &ev) == 5);
     CHECK(ex == 0 && ev == 0);
     mb_model_destroy(&m);
-    free(y);
 }
 
 /* a carried shell part: its nodes also take the body's spin w (rotations of a rigid motion) */
 static void test_shell_nodes_spin(void)
 {
-    char *y = malloc(8192);
-    strcpy(y, box("1 ms"));
-    strcat(y, "    - name: plate\n"
-              "      mesh: {generate: plate, origin: [0.2, -0.1, 0.9], size: [0.2, 0.2],\n"
-              "             divisions: [2, 2], axis: z}\n"
-              "      section: {type: shell, thickness: 1 mm}\n"
-              "      material: {model: elastic, density: 2700, youngs_modulus: 70 GPa, "
-              "poisson: 0.3}\n"
-              "      attach: {body: moto_frame, where: x_min}\n");
     mcs_error err = {0};
-    mb_model *m = mt_model_text("shell.yaml", y, &err);
-    CHECK(m != NULL);
-    if (!m) fprintf(stderr, "%s\n", err.msg);
+    mb_model *m = mc_model(
+        "shell.yaml",
+        box_edit(NULL, NULL,
+                 "    - name: plate\n"
+                 "      mesh: {generate: plate, origin: [0.2, -0.1, 0.9], size: [0.2, 0.2],\n"
+                 "             divisions: [2, 2], axis: z}\n"
+                 "      section: {type: shell, thickness: 1 mm}\n"
+                 "      material: {model: elastic, density: 2700, youngs_modulus: 70 GPa, "
+                 "poisson: 0.3}\n"
+                 "      attach: {body: moto_frame, where: x_min}\n"));
     const fe_model *fm = m ? m->couple->fe.model : NULL;
     double R[9], w1[3], ew = 0;
     rot(R);
@@ -281,7 +275,6 @@ static void test_shell_nodes_spin(void)
         CHECK(s->couple->fe->node_w[3 * (NDIV + 1) + 2] == w1[2]);
     mb_state_destroy(&s);
     mb_model_destroy(&m);
-    free(y);
 }
 
 /* retractor anchors and slip-ring points on a body of the motorcycle group move with it (the
@@ -289,17 +282,14 @@ static void test_shell_nodes_spin(void)
  * retractor anchored on an opponent body while its part rides on moto_frame is refused */
 static void test_anchor_and_ring_on_moved_body(void)
 {
-    char *y = malloc(8192);
-    strcpy(y, box("1 ms"));
-    strcat(y, "  retractors:\n"
-              "    - {name: ret, part: bar, where: x_max, anchor: [1.1, 0.1, 0.8],\n"
-              "       anchor_body: moto_frame}\n"
-              "  sliprings:\n"
-              "    - {name: ring, part: bar, point: [0.8, 0.1, 0.8], body: moto_frame}\n");
-    mcs_error err = {0};
-    mb_model *m = mt_model_text("anchor.yaml", y, &err);
-    CHECK(m != NULL);
-    if (!m) fprintf(stderr, "%s\n", err.msg);
+    mb_model *m = mc_model(
+        "anchor.yaml",
+        box_edit(NULL, NULL,
+                 "  retractors:\n"
+                 "    - {name: ret, part: bar, where: x_max, anchor: [1.1, 0.1, 0.8],\n"
+                 "       anchor_body: moto_frame}\n"
+                 "  sliprings:\n"
+                 "    - {name: ring, part: bar, point: [0.8, 0.1, 0.8], body: moto_frame}\n"));
     const fe_model *fm = m ? m->couple->fe.model : NULL;
     if (fm) {
         double R[9], a1[3];
@@ -317,33 +307,21 @@ static void test_anchor_and_ring_on_moved_body(void)
         CHECK(fm->sliprings && fm->sliprings->ring[0].node == 4);
         /* the body-frame anchor is taken from the placed poses: a run starts balanced */
         mb_state *s = NULL;
-        mcs_status st = mt_run(m, &s, &err);
-        CHECK(st == MCS_OK);
-        if (st) fprintf(stderr, "%s\n", err.msg);
+        mc_run(m, &s);
         double drift = s ? mb_energy_drift(m, s) : 1;
         printf("moved anchor and ring, 1 ms: energy drift %.3g\n", drift);
         CHECK(drift < 1e-3);
         mb_state_destroy(&s);
     }
     mb_model_destroy(&m);
-    free(y);
 }
 
 /* what the placement refuses, at FILE:LINE:COL */
 static void expect_error(const char *what, const char *from, const char *to, const char *loc,
                          const char *msg)
 {
-    char *y = malloc(8192);
-    strcpy(y, box("1 ms"));
-    char *p = strstr(y, from);
-    CHECK(p != NULL);
-    if (p) {
-        char tail[4096];
-        snprintf(tail, sizeof tail, "%s", p + strlen(from));
-        snprintf(p, 8192 - (size_t)(p - y), "%s%s", to, tail);
-    }
     mcs_error err = {0};
-    mb_model *m = mt_model_text("bad.yaml", y, &err);
+    mb_model *m = mt_model_text("bad.yaml", box_edit(from, to, ""), &err);
     printf("%s: %s\n", what, err.msg);
     CHECK(m == NULL);
     CHECK(err.status != MCS_OK);
@@ -351,25 +329,17 @@ static void expect_error(const char *what, const char *from, const char *to, con
     CHECK_STR_CONTAINS(err.msg, loc);
     CHECK_STR_CONTAINS(err.msg, msg);
     mb_model_destroy(&m);
-    free(y);
 }
 
 static void test_refusals(void)
 {
     /* carried by bodies of two groups: the bar on moto_frame, its retractor on the car */
     {
-        char *y = malloc(8192);
-        strcpy(y, box("1 ms"));
-        char *p = strstr(y, "impact: {");
-        char tail[4096];
-        snprintf(tail, sizeof tail, "%s", p);
-        snprintf(p, 8192 - (size_t)(p - y),
-                 "  - {name: car, mass: 1000, inertia: [300, 1000, 1000], position: [5, 0, 0.5],\n"
-                 "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0]}\n%s",
-                 tail);
-        strcat(y, "  retractors:\n"
-                  "    - {name: ret, part: bar, where: x_max, anchor: [1.1, 0.1, 0.8],\n"
-                  "       anchor_body: car}\n");
+        const char *y =
+            box_edit("impact: {", CAR_BODY "impact: {",
+                     "  retractors:\n"
+                     "    - {name: ret, part: bar, where: x_max, anchor: [1.1, 0.1, 0.8],\n"
+                     "       anchor_body: car}\n");
         mcs_error err = {0};
         mb_model *m = mt_model_text("two.yaml", y, &err);
         printf("two groups: %s\n", err.msg);
@@ -378,7 +348,6 @@ static void test_refusals(void)
         CHECK_STR_CONTAINS(err.msg, "two.yaml:22:");
         CHECK_STR_CONTAINS(err.msg, "bodies of two groups");
         mb_model_destroy(&m);
-        free(y);
     }
     /* a translation held in the world on a moved part */
     expect_error("boundary", "x_min}\n", "x_min}\n  boundary: [{part: bar, where: x_max}]\n",

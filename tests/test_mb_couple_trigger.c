@@ -24,6 +24,7 @@
 #include "stage1_mb/mb_couple_rx.h"
 #include "tests/harness.h"
 #include "tests/figures.h"
+#include "tests/mb_couple_test_util.h"
 #include "tests/mb_test_util.h"
 
 #define G 9.81
@@ -94,18 +95,11 @@ static void test_fires_on_first_contact(void)
 {
     const double tc = sqrt(2 * H_DROP / G), delay_bag = 0.012, delay_ret = 0.002, F_ret = 50;
     const double t_end = tc + 0.015; /* the pay-in still on its ramp */
-    mcs_error err = {0};
-    mb_model *m = mt_model_text("drop.yaml", drop(t_end, ", delay: 12 ms", ", force: 50 N, delay: 2 ms"),
-                                &err);
-    CHECK(m != NULL);
-    if (!m) {
-        fprintf(stderr, "%s\n", err.msg);
-        return;
-    }
+    mb_model *m =
+        mc_model("drop.yaml", drop(t_end, ", delay: 12 ms", ", force: 50 N, delay: 2 ms"));
+    if (!m) return;
     mb_state *s = NULL;
-    mcs_status st = mt_run(m, &s, &err);
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    mc_run(m, &s);
     if (!s) return;
     const fe_state *f = s->couple->fe;
     const fe_gasbag_state *g = &f->restraint->bag[0];

@@ -399,29 +399,29 @@ void mb_couple_contact_end(const mb_model *m, mb_state *s, double h, double alph
     }
 }
 
-double mb_couple_contact_work(const mb_model *m, const mb_state *s)
+/* the work of the bodies' surfaces on the FE nodes so far, of every surface or of those on
+ * prescribed bodies only [J] */
+static double surf_work(const mb_model *m, const mb_state *s, int prescribed_only)
 {
     const mb_couple_contact *c = m->couple->contact;
     const fe_contact_state *ks = s->couple->fe->contact;
     double w = 0;
     for (int k = 0; k < c->nsurf; k++) {
         const cc_surf *v = &c->s[k];
-        w += (v->facets ? ks->fac_work : ks->ell_work)[v->index];
+        if (!prescribed_only || mb_body_prescribed(m, c->body[v->body]))
+            w += (v->facets ? ks->fac_work : ks->ell_work)[v->index];
     }
     return w;
 }
 
+double mb_couple_contact_work(const mb_model *m, const mb_state *s)
+{
+    return surf_work(m, s, 0);
+}
+
 double mb_couple_contact_work_prescribed(const mb_model *m, const mb_state *s)
 {
-    const mb_couple_contact *c = m->couple->contact;
-    const fe_contact_state *ks = s->couple->fe->contact;
-    double w = 0;
-    for (int k = 0; k < c->nsurf; k++) {
-        const cc_surf *v = &c->s[k];
-        if (mb_body_prescribed(m, c->body[v->body]))
-            w += (v->facets ? ks->fac_work : ks->ell_work)[v->index];
-    }
-    return w;
+    return surf_work(m, s, 1);
 }
 
 int mb_couple_contact_impulse(const mb_model *m, const mb_state *s, int body, double fe[6],

@@ -378,10 +378,16 @@ static void entry_forces(const fe_model *m, fe_state *s, int e, fe_contact_slot 
 
 /* ---- phase 3: rigid ellipsoids ---------------------------------------------------------- */
 
-void fe_contact_rigid_node(const fe_model *m, fe_state *s, int n, double g, const double dir[3],
-                           const double qw[3], double scale, double mu, const double V[3],
-                           const double W[3], double ft[3], double *et, double F[3], double M[3])
+void fe_contact_rigid_node(const fe_model *m, fe_state *s, int n, double g, const double R[9],
+                           const double db[3], const double qb[3], double scale, double mu,
+                           const double V[3], const double W[3], double ft[3], double *et,
+                           double F[3], double M[3])
 {
+    double dir[3], qw[3]; /* the normal and the surface point q - c, world */
+    for (int k = 0; k < 3; k++) {
+        dir[k] = R[3 * k] * db[0] + R[3 * k + 1] * db[1] + R[3 * k + 2] * db[2];
+        qw[k] = R[3 * k] * qb[0] + R[3 * k + 1] * qb[1] + R[3 * k + 2] * qb[2];
+    }
     fe_contact_state *cs = s->contact;
     const double dt0 = m->contact->dt0, dtp = s->dt_prev;
     double kp = scale * m->node_mass[n] / (dt0 * dt0), fn = -kp * g;
@@ -443,7 +449,7 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
             const int j = cs->ell_cand[E->node_begin + jc], n = c->ell_node[j];
             const double *x = s->node_x + 3 * n;
             double *ft = cs->ell_ft + 3 * j;
-            double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]}, pb[3], qb[3], dir[3];
+            double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]}, pb[3], qb[3];
             const double ht = c->ell_ht[j]; /* shell nodes meet it at t/2, solids at 0 */
             if (fe_dot(r, r) > (amax + ht) * (amax + ht)) goto release;
             for (int k = 0; k < 3; k++) pb[k] = R[k] * r[0] + R[3 + k] * r[1] + R[6 + k] * r[2];
@@ -464,12 +470,7 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
                 }
                 len = sqrt(len);
                 for (int k = 0; k < 3; k++) db[k] = nb[k] / len;
-                for (int k = 0; k < 3; k++)
-                    dir[k] = R[3 * k] * db[0] + R[3 * k + 1] * db[1] + R[3 * k + 2] * db[2];
-                double qw[3]; /* the nearest surface point q - c, world */
-                for (int k = 0; k < 3; k++)
-                    qw[k] = R[3 * k] * qb[0] + R[3 * k + 1] * qb[1] + R[3 * k + 2] * qb[2];
-                fe_contact_rigid_node(m, s, n, g, dir, qw, E->scale, E->mu, V, W, ft,
+                fe_contact_rigid_node(m, s, n, g, R, db, qb, E->scale, E->mu, V, W, ft,
                                       &cs->ell_et[j], F, M);
                 continue;
             }

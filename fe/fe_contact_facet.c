@@ -263,16 +263,9 @@ void fe_contact_facets_forces(const fe_model *m, fe_state *s)
                     goto release;
                 }
             }
-            {
-                double dir[3], qw[3];
-                for (int k = 0; k < 3; k++) {
-                    dir[k] = R[3 * k] * db[0] + R[3 * k + 1] * db[1] + R[3 * k + 2] * db[2];
-                    qw[k] = R[3 * k] * qb[0] + R[3 * k + 1] * qb[1] + R[3 * k + 2] * qb[2];
-                }
-                fe_contact_rigid_node(m, s, n, g, dir, qw, F->scale, F->mu, V, W, ft,
-                                      &cs->fac_et[j], Ft, M);
-                continue;
-            }
+            fe_contact_rigid_node(m, s, n, g, R, db, qb, F->scale, F->mu, V, W, ft, &cs->fac_et[j],
+                                  Ft, M);
+            continue;
         release:
             fe_contact_rigid_release(m, s, n, ft, &cs->fac_et[j]);
         }

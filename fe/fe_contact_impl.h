@@ -93,13 +93,14 @@ double fe_friction_update(double ft[3], const double n[3], const double du[3], d
                           double fmax, double *taken);
 
 /* node n in contact with a moving rigid surface (phase 3, fe_contact.c): gap g < 0 along the
- * world unit normal dir at the surface point qw (about the surface's reference point), the
- * surface moving at V and spinning at W; penalty stiffness scale m_n / dt0^2 and elastic-stick
+ * unit normal db at the surface point qb (about the surface's reference point), both in the
+ * surface's frame, R its rotation body -> world (row major), the surface moving at V and
+ * spinning at W; penalty stiffness scale m_n / dt0^2 and elastic-stick
  * friction mu (ft the stick force, *et its energy): the force onto the node (node_fc), minus it
  * onto the surface's F and its moment about the reference point onto M, the part's elastic and
  * frictional energy, pen_max */
-void fe_contact_rigid_node(const fe_model *m, fe_state *s, int n, double g, const double dir[3],
-                           const double qw[3], double scale, double mu, const double V[3],
+void fe_contact_rigid_node(const fe_model *m, fe_state *s, int n, double g, const double R[9],
+                           const double db[3], const double qb[3], double scale, double mu, const double V[3],
                            const double W[3], double ft[3], double *et, double F[3], double M[3]);
 /* node n out of contact with it: the stick spring's energy *et is dissipated, ft zeroed */
 void fe_contact_rigid_release(const fe_model *m, fe_state *s, int n, double ft[3], double *et);

@@ -8,11 +8,12 @@
 #define MCS_CLI_COMMANDS(X)                                                                        \
     X(check, "mcrash check SCENARIO.yaml... | --json SCENARIO.yaml | --schema",                    \
       "validate scenarios; --json prints one resolved (includes merged, SI); --schema the keys")  \
-    X(run, "mcrash run SCENARIO.yaml [-o OUT.h5] [--stage 1|2|3|all] [--quiet] [--json]",         \
+    X(run, "mcrash run SCENARIO.yaml [-o OUT.h5] [--stage 1|2|3|all] [--motion STAGE1.h5] "        \
+           "[--quiet] [--json]",                                                                   \
       "run a scenario through its stages")                                                         \
     X(stage1, "mcrash stage1 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]",                        \
       "run the multibody model (ODE)")                                                             \
-    X(stage2, "mcrash stage2 SCENARIO.yaml [-o OUT.h5] --motion STAGE1.h5 [--quiet] [--json]",     \
+    X(stage2, "mcrash stage2 SCENARIO.yaml [-o OUT.h5] [--motion STAGE1.h5] [--quiet] [--json]",   \
       "run the FE rider-interaction model on stage-1 vehicle motion")                              \
     X(stage3, "mcrash stage3 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]",                        \
       "run the full FE vehicle model")                                                             \

@@ -924,8 +924,8 @@ static const mcs_skey stage2_presc_keys[] = {
 static const mcs_smap stage2_presc_map = {.what = "prescribed body", .keys = stage2_presc_keys};
 
 static const mcs_skey stage2_keys[] = {
-    /* relative to the working directory, as -o; `--motion FILE` wins */
-    S("motion", NE, "stage-1 results file the motion is read from"),
+    /* relative to the scenario file (as include:); `--motion FILE` (cwd) wins */
+    S("motion", NE, "stage-1 results file the motion is read from (relative to the scenario)"),
     E("method", "pose|pulse", 0,
       "pose: written poses interpolated; pulse: velocity and acceleration histories integrated "
       "(default pose)"),

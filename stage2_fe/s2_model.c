@@ -1,18 +1,10 @@
-/* s2_model.c: the stage-2 model of a scenario (s2_run.h): the scenario's stage-1 model built
- * to write /stage2, then the stage2.prescribed bodies made kinematic from the motion file */
+/* s2_model.c: the stage-2 model of a scenario (s2_run.h): the compiled stage-2 scenario
+ * (stage2.fe merged, s2_scenario.h), its stage-1 model built to write /stage2, then the
+ * stage2.prescribed bodies made kinematic from the motion file */
 #include "stage2_fe/s2_run.h"
+#include "stage2_fe/s2_scenario.h"
 
 #include <stdlib.h>
-
-/* the scenario stage 2 builds: the scenario itself. Stage-2-only FE parts (a cockpit under
- * stage2:) are merged into its fe: block here, before the model is built. */
-static mcs_status s2_scenario_parts(const mcs_scenario *scn, const mcs_scenario **out,
-                                    mcs_error *err)
-{
-    (void)err;
-    *out = scn;
-    return MCS_OK;
-}
 
 mcs_status s2_model_build(const mcs_scenario *scn, const char *motion_path, s2_model **out,
                           mcs_error *err)
@@ -23,12 +15,12 @@ mcs_status s2_model_build(const mcs_scenario *scn, const char *motion_path, s2_m
         return mcs_node_error(root, err, MCS_ERR_KEY, "stage 2 needs a stage2: block");
     s2_model *m = calloc(1, sizeof *m);
     if (!m) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 2: out of memory");
-    const mcs_scenario *s2 = NULL;
-    mcs_status st = s2_scenario_parts(scn, &s2, err);
+    /* stage2.fe (the cockpit: stage-2-only FE parts) merged into fe: (s2_scenario.h) */
+    mcs_status st = s2_scenario_compile(scn, &m->scn, err);
     mb_opts o = mb_opts_default();
     o.stage = 2;
-    if (!st) st = mb_model_build(s2, &o, &m->mb, err);
-    if (!st) st = tr_stage2_motion_create(&m->motion, scn, m->mb, motion_path, err);
+    if (!st) st = mb_model_build(m->scn, &o, &m->mb, err);
+    if (!st) st = tr_stage2_motion_create(&m->motion, m->scn, m->mb, motion_path, err);
     if (st) {
         s2_model_destroy(&m);
         return st;
@@ -43,6 +35,7 @@ void s2_model_destroy(s2_model **pm)
     if (!m) return;
     tr_stage2_motion_destroy(&m->motion);
     mb_model_destroy(&m->mb);
+    mcs_scenario_destroy(&m->scn);
     free(m);
     *pm = NULL;
 }

@@ -18,13 +18,14 @@
 #include "translators/tr_stage2_motion.h"
 
 typedef struct {
+    mcs_scenario *scn;        /* the compiled stage-2 scenario (s2_scenario.h) (owned)     */
     mb_model *mb;             /* the coupled model, writing /stage2 (owned)                */
     tr_stage2_motion *motion; /* the prescribed bodies' motion (owned)                     */
 } s2_model;
 
 /* build the stage-2 model of a scenario: motion_path overrides stage2.motion (NULL: the
- * block's, relative to the scenario file). Stage-2-only FE parts are merged here (s2_model.c,
- * s2_scenario_parts) before the model is built. */
+ * block's, relative to the scenario file). The stage-2-only FE parts (stage2.fe) are merged
+ * into fe: first (s2_scenario_compile). */
 mcs_status s2_model_build(const mcs_scenario *scn, const char *motion_path, s2_model **out,
                           mcs_error *err);
 void s2_model_destroy(s2_model **m);

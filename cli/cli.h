@@ -25,7 +25,7 @@
       "injury criteria of results files (one column per file)")                                   \
     X(signal, "mcrash signal hic|a3ms|cfc|nij|bric|vc|ti FILE.csv [--class CFC] [--window S] [--json]", \
       "filter a channel or compute one criterion from CSV")                                        \
-    X(compare, "mcrash compare REF CMP [--method iso18571|cora] [--json]",                         \
+    X(compare, "mcrash compare REF CMP | OUT.h5 --stages A,B [--method iso18571|cora] [--json]",   \
       "objective rating of one curve against another")                                             \
     X(export, "mcrash export OUT.h5 --xdmf [FILE.xmf] [--stride N] | --xdmf2 [FILE.xmf] | "         \
               "--csv DIR | --mme DIR | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long|--i10]",                                                  \

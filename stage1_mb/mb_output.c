@@ -96,6 +96,8 @@ mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r,
     if (!st) st = mcs_results_set_attr_double(r, "/stage1", "output_rate", m->output_rate, err);
     if (!st) st = mcs_results_set_attr_int(r, "/stage1", "steps", (int)s->step, err);
     if (!st) st = mcs_results_set_attr_double(r, "/stage1", "energy_drift", mb_energy_drift(m, s), err);
+    if (!st && m->rider_dummy[0])
+        st = mcs_results_set_attr_str(r, "/stage1", "dummy", m->rider_dummy, err);
     /* fire_time of the coupled bags and retractors (their groups: mb_couple_out.c) */
     if (!st) st = mb_couple_trigger_write(m, s, r, err);
     free(buf);

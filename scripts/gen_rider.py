@@ -692,8 +692,31 @@ SIZE_HEADER = """\
 # Reference posture and seating as hybrid3_50th.yaml: the same `rider:` block seats it."""
 
 
-def write_size(path, z, title, src, lam, neck_k, neck_src):
+MASS_NOTE_05F = {
+    "rider_head": "[N5] head 8.23 lb", "rider_neck": "[N5] neck 2.0 lb",
+    "rider_upper_torso": "[N5] upper torso 26.5 lb",
+    "rider_lower_torso": "[N5] lower torso 29.2 lb x de Leva's middle/lower trunk split",
+    "rider_pelvis": "[N5] lower torso 29.2 lb x de Leva's middle/lower trunk split",
+    "rider_upper_arm": "[N5] upper arms 5.2 lb / 2",
+    "rider_lower_arm": "[N5] lower arms and hands 5.2 lb / 2 x de Leva's forearm/hand split",
+    "rider_hand": "[N5] lower arms and hands 5.2 lb / 2 x de Leva's forearm/hand split",
+    "rider_thigh": "[N5] upper legs 13.8 lb / 2",
+    "rider_lower_leg": "[N5] lower legs and feet 17.9 lb / 2 x de Leva's shank/foot split",
+    "rider_foot": "[N5] lower legs and feet 17.9 lb / 2 x de Leva's shank/foot split",
+}
+
+
+def mass_note(name, table, default):
+    """the mass source of body `name`: table's entry for it or its side-less stem"""
+    stem = name[:-2] if name[-2:] in ("_l", "_r") else name
+    return table.get(name, table.get(stem, default))
+
+
+def write_size(path, z, title, src, lam, neck_k, neck_src, notes=None, default_note=""):
     md = build(False, z)
+    md.bodies = [(n, m, I, cg, sf, "geometry: %s; mass: %s" % (c, mass_note(n, notes or {},
+                                                                              default_note)))
+                 for n, m, I, cg, sf, c in md.bodies]
     mass = sum(b[1] for b in md.bodies)
     hdr = SIZE_HEADER % dict(title=title, mass=mass, src=src, kt=z.kt, ka=z.ka, kl=z.kl,
                              kw=z.kw, kh=z.kh, lam=lam, neck_k=neck_k, neck_src=neck_src)
@@ -740,7 +763,7 @@ def main():
                     "Masses: the NHTSA H3 5th female\n# assembly weights (108.03 lb = 49.00 kg); "
                     "stature 59.1 in, sitting height 31.0 in (NHTSA).",
                     H3_05_STATURE_IN / H3_50_STATURE_IN, 155.0 / 310.0,
-                    "Myc 155/310 N m, FMVSS 208")
+                    "Myc 155/310 N m, FMVSS 208", MASS_NOTE_05F)
     t95 = write_size(os.path.join(root, "hybrid3_95m.yaml"), size_95m(), "95th male",
                      "Mass 223 lb = 101.15 kg, stature 74 in\n# (188 cm) [S]; no 95th segment "
                      "table retrieved [scaled]: head %.3f kg (the 5th/50th\n# head-to-body "
@@ -748,7 +771,9 @@ def main():
                          size_95m().masses["head"], head_exponent(),
                          size_95m().masses["upt"] / masses_50th()["upt"]),
                      H3_95_STATURE_IN / H3_50_STATURE_IN,
-                     (H3_95_STATURE_IN / H3_50_STATURE_IN) ** 3, "lambda^3, no 95th Myc retrieved")
+                     (H3_95_STATURE_IN / H3_50_STATURE_IN) ** 3, "lambda^3, no 95th Myc retrieved",
+                     {"rider_head": "the 5th/50th head exponent [scaled]"},
+                     "the 50th's x %.4f [scaled]" % (size_95m().masses["upt"] / masses_50th()["upt"]))
     print("5th female: %.4f kg, 95th male: %.4f kg" % (t5, t95))
 
 

@@ -9,6 +9,7 @@
 #include "analysis/an_cfc.h"
 #include "core/mcs_results.h"
 #include "stage1_mb/mb_couple_rx.h"
+#include "stage1_mb/mb_egroup.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
 
@@ -104,6 +105,7 @@ mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r,
         st = mcs_results_set_attr_str(r, grp, "dummy", m->rider_dummy, err);
     /* fire_time of the coupled bags and retractors (their groups: mb_couple_out.c) */
     if (!st) st = mb_couple_trigger_write(m, s, r, err);
+    if (!st) st = mb_egroup_write(m, s, r, mb_out_stage(m), err); /* the rider's (mb_egroup.h) */
     free(buf);
     return st;
 }

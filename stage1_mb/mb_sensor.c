@@ -7,6 +7,7 @@
  * SAE J211 sign convention (x forward, y right, z down) from the ISO 8855 body axes
  * (x forward, y left, z up): (x, -y, -z). The first output row (t = 0) carries the
  * accelerations of the first step. */
+#include "stage1_mb/mb_egroup.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
@@ -100,5 +101,6 @@ void mb_record(const mb_model *m, mb_state *s)
         mb_loadcell_record(m, s, 0); /* t = 0 takes the first step's joint loads too */
     }
     if (s->step % m->out_every != 0 || s->nrec >= m->nout) return;
+    if (m->egroup) mb_egroup_record(m, s, s->nrec);
     record_row(m, s, s->nrec++);
 }

@@ -9,6 +9,7 @@
 #include "analysis/an_cfc.h"
 #include "core/mcs_results.h"
 #include "stage1_mb/mb_couple_rx.h"
+#include "stage1_mb/mb_egroup.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
 
@@ -101,6 +102,7 @@ mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r,
     if (!st) st = mcs_results_set_attr_double(r, grp, "energy_drift", mb_energy_drift(m, s), err);
     /* fire_time of the coupled bags and retractors (their groups: mb_couple_out.c) */
     if (!st) st = mb_couple_trigger_write(m, s, r, err);
+    if (!st) st = mb_egroup_write(m, s, r, mb_out_stage(m), err); /* the rider's (mb_egroup.h) */
     free(buf);
     return st;
 }

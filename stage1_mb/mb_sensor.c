@@ -13,6 +13,7 @@
  * alias the contact pulses, which change within a few steps, and would not integrate back to
  * the velocities (the pulse method of translators/tr_motion.h integrates these means). The
  * sensor channels are not changed by this: the step's acceleration at the row, CFC filtered. */
+#include "stage1_mb/mb_egroup.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
@@ -114,5 +115,6 @@ void mb_record(const mb_model *m, mb_state *s)
         mb_loadcell_record(m, s, 0); /* t = 0 takes the first step's joint loads too */
     }
     if (s->step % m->out_every != 0 || s->nrec >= m->nout) return;
+    if (m->egroup) mb_egroup_record(m, s, s->nrec);
     record_row(m, s, s->nrec++);
 }

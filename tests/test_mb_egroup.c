@@ -14,6 +14,7 @@
 #include "fe/fe_restraint.h"
 #include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_egroup.h"
+#include "tests/cli_util.h"
 #include "tests/harness.h"
 #include "tests/figures.h"
 #include "tests/mb_couple_test_util.h"
@@ -237,6 +238,22 @@ static void test_results_file(void)
     CHECK(n == (size_t)m->nout);
     CHECK(worst_sum == 0);
     CHECK(a[4].n && worst_total < 2e-4 * a[4].v[0]); /* test_drop_on_foam's */
+    /* `mcrash energy`: the ranking's one category is the block's, the balance the file's */
+    char args[128];
+    snprintf(args, sizeof args, "energy %s --json", path);
+    cli_result *c = cli_run(args);
+    CHECK(c->status == 0);
+    const char *key = "\"categories\": [{\"name\": \"foam\", \"energy\": ";
+    const char *cf = strstr(c->out, key);
+    CHECK(cf != NULL);
+    if (cf && a[5].n == n && n)
+        CHECK_NEAR(strtod(cf + strlen(key), NULL), a[5].v[n - 1], 1e-8 * a[4].v[0]);
+    snprintf(args, sizeof args, "energy %s --group nobody", path);
+    CHECK(cli_run(args)->status == 2);
+    snprintf(args, sizeof args, "energy %s --stage 3", path);
+    c = cli_run(args);
+    CHECK(c->status == 2);
+    CHECK_STR_CONTAINS(c->err, "no /stage3/energy_groups");
     free(cat), free(bodies);
     for (int k = 0; k < 6; k++)
         mcs_array_free(&a[k]);

@@ -369,6 +369,9 @@ static const mcs_skey rider_keys[] = {
     Q("peg_failure_force", FRC, GT, 0, 0, "foot-peg attachment failure force [N]"),
     Q("attachment_stiffness", MCS_DIM_STIFFNESS, GT, 0, 0, "attachment stiffness [N/m]"),
     Q("attachment_damping", MCS_DIM_DAMPING, GE, 0, 0, "attachment damping [N s/m]"),
+    E("dummy", "50th_male|5th_female|95th_male", 0,
+      "Hybrid III size the rider model represents (default 50th_male): selects the Nij "
+      "intercepts and injury limits of `mcrash injury` (docs/rider.md \"Sizes\")"),
     END,
 };
 static const mcs_smap rider_map = {.what = "rider block", .keys = rider_keys};
@@ -947,7 +950,7 @@ static const mcs_smap stage2_presc_map = {.what = "prescribed body", .keys = sta
 
 /* stage2.fe: FE entities of stage 2 only (cockpit foam, panels, their contacts), appended to
  * fe:'s lists when stage 2 is compiled (stage2_fe/s2_scenario.c); the names they refer to may
- * be fe:'s or these */
+ * be fe:'s or these; its settings replace fe:'s */
 static const mcs_skey stage2_fe_keys[] = {
     L("parts", part_map, 0, "FE parts of stage 2 only"),
     L("boundary", boundary_map, 0, "boundary conditions"),
@@ -959,6 +962,11 @@ static const mcs_skey stage2_fe_keys[] = {
     L("sliprings", slipring_map, 0, "belt slip rings"),
     L("springs", spring_map, 0, "discrete springs and dampers"),
     L("masses", fe_mass_map, 0, "point masses"),
+    /* settings of the stage-2 FE model: given here, they replace fe:'s */
+    Q("damping", MCS_DIM_FREQ, GE, 0, 0, "mass-proportional damping c, f = -c m v [1/s]"),
+    Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),
+    Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),
+    Q("energy_growth_limit", NONE, GE, 0, 0, "stop when total energy grows by this fraction"),
     END,
 };
 static const mcs_smap stage2_fe_map = {.what = "stage2 fe block", .keys = stage2_fe_keys};

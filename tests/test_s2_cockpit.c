@@ -58,7 +58,8 @@ static const char *merge_yaml =
     "        section: {type: solid}\n"
     "        material_from: knee\n"
     "        attach: {body: frame, where: surface}\n"
-    "    contacts: [{name: pad_knee, type: bodies, parts: [pad, knee], bodies: [frame]}]\n";
+    "    contacts: [{name: pad_knee, type: bodies, parts: [pad, knee], bodies: [frame]}]\n"
+    "    bulk_q2: 0.03\n";
 
 static void test_merge(void)
 {
@@ -81,6 +82,7 @@ static void test_merge(void)
     CHECK(strcmp(mcs_node_str(mcs_node_get(mcs_node_at(parts, 0), "name")), "knee") == 0);
     CHECK(strcmp(mcs_node_str(mcs_node_get(mcs_node_at(parts, 1), "name")), "pad") == 0);
     CHECK(strcmp(mcs_node_str(mcs_node_get(mcs_node_at(con, 1), "name")), "pad_knee") == 0);
+    CHECK_NEAR(mcs_node_num(mcs_node_get(fe, "bulk_q2")), 0.03, 1e-15); /* a setting: replaced */
     /* stage2.fe is gone (compiling again adds nothing), the rest of stage2 stays */
     const mcs_node *st2 = mcs_node_get(root, "stage2");
     CHECK(mcs_node_get(st2, "fe") == NULL);

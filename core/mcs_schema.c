@@ -369,6 +369,9 @@ static const mcs_skey rider_keys[] = {
     Q("peg_failure_force", FRC, GT, 0, 0, "foot-peg attachment failure force [N]"),
     Q("attachment_stiffness", MCS_DIM_STIFFNESS, GT, 0, 0, "attachment stiffness [N/m]"),
     Q("attachment_damping", MCS_DIM_DAMPING, GE, 0, 0, "attachment damping [N s/m]"),
+    E("dummy", "50th_male|5th_female|95th_male", 0,
+      "Hybrid III size the rider model represents (default 50th_male): selects the Nij "
+      "intercepts and injury limits of `mcrash injury` (docs/rider.md \"Sizes\")"),
     END,
 };
 static const mcs_smap rider_map = {.what = "rider block", .keys = rider_keys};

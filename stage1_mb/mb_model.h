@@ -150,6 +150,8 @@ typedef struct {
     mb_opts opts;
     double rider_residual; /* largest rider mount point to motorcycle mount point distance after
                               seating the rider (mb_position.c) [m]; -1 without a rider: block */
+    char rider_dummy[16]; /* Hybrid III size of the rider (rider: dummy:, an_dummy.h names),
+                             "" without a rider: block; written as /stage1 attribute `dummy` */
     int nloadcell;          /* load-cell sensors (mb_loadcell.h)                              */
     struct mb_loadcell *loadcell; /* (nloadcell)                                              */
     struct mb_couple *couple;     /* FE parts coupled to the bodies (mb_couple.h), NULL none */

@@ -997,6 +997,9 @@ static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys}
  * (the group "rider" of the bodies rider_* exists without it) */
 static const mcs_skey egroup_keys[] = {
     A("bodies", REQ, "bodies of the group (names or patterns); prescribed bodies are left out"),
+    /* {<partner name or pattern>: <category>}: replaces the derived category (belts, airbags,
+     * foam, fe, motorcycle, opponent, ground, bodies) of the partners it matches */
+    A("categories", 0, "partner categories by partner name or pattern (a map)"),
     END,
 };
 static const mcs_smap egroup_map = {.what = "energy group", .keys = egroup_keys};

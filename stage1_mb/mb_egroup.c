@@ -162,6 +162,31 @@ mcs_status mb_egroup_add(mb_model *m, const char *name, const char *const *patte
     return MCS_OK;
 }
 
+/* a scenario group's categories: {<partner name or pattern>: <category>}, in order (a later
+ * match wins); a key that matches no partner is an error at it */
+static mcs_status categories(const mb_model *m, eg_group *g, const mcs_node *gn, mcs_error *err)
+{
+    (void)m;
+    const mcs_node *c = mcs_node_get(gn, "categories");
+    if (mcs_node_kind(c) == MCS_NODE_NULL) return MCS_OK;
+    if (mcs_node_kind(c) != MCS_NODE_MAP)
+        return mcs_node_error(c, err, MCS_ERR_TYPE, "a map {partner or pattern: category}");
+    for (int i = 0; i < mcs_node_len(c); i++) {
+        const char *key = mcs_node_key(c, i), *cat = mcs_node_str(mcs_node_at(c, i));
+        if (!cat || !cat[0] || strlen(cat) >= MB_EGROUP_CAT)
+            return mcs_node_error(mcs_node_at(c, i), err, MCS_ERR_TYPE,
+                                  "a category name of 1 to %d characters", MB_EGROUP_CAT - 1);
+        int hit = 0;
+        for (int p = 0; p < g->npartner; p++)
+            if (fnmatch(key, g->pname[p], 0) == 0)
+                snprintf(g->pcat[p], MB_EGROUP_CAT, "%s", cat), hit = 1;
+        if (!hit)
+            return mcs_node_error(mcs_node_at(c, i), err, MCS_ERR_KEY,
+                                  "'%s' matches no partner of group '%s'", key, g->name);
+    }
+    return MCS_OK;
+}
+
 /* the scenario's energy_groups: {<name>: {bodies: name or pattern | [names or patterns]}};
  * a name or pattern that matches no body is an error at it */
 static mcs_status scenario_group(mb_model *m, const char *name, const mcs_node *g, mcs_error *err)
@@ -179,7 +204,8 @@ static mcs_status scenario_group(mb_model *m, const char *name, const mcs_node *
             hit = fnmatch(pat[k], m->body_name[b], 0) == 0;
         if (!hit) return mcs_node_error(pn, err, MCS_ERR_KEY, "no body matches '%s'", pat[k]);
     }
-    return mb_egroup_add(m, name, pat, n, err);
+    mcs_status st = mb_egroup_add(m, name, pat, n, err);
+    return st ? st : categories(m, &m->egroup->g[m->egroup->ngroup - 1], g, err);
 }
 
 mcs_status mb_egroup_build(const mcs_node *root, mb_model *m, mcs_error *err)

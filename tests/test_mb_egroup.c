@@ -217,7 +217,7 @@ static void test_belt_through_limiter(void)
     "contacts: [{name: hit, a: b1, b: b2, characteristic: pad, friction: 0.2}]\n"                  \
     "energy_groups:\n"                                                                             \
     "  pair: {bodies: [b1, b2]}\n"                                                                 \
-    "  one: {bodies: b1}\n"
+    "  one: {bodies: b1, categories: {h*: struck ball}}\n"
 
 static void test_scenario_groups(void)
 {
@@ -227,7 +227,9 @@ static void test_scenario_groups(void)
     const char *cat = NULL;
     CHECK(mb_egroup_count(m) == 2 && gp == 0 && g1 == 1 && mb_egroup_find(m, "rider") < 0);
     CHECK(mb_egroup_npartner(m, gp) == 0 && mb_egroup_npartner(m, g1) == 1);
-    CHECK(strcmp(mb_egroup_partner(m, g1, 0, &cat), "hit") == 0 && strcmp(cat, "bodies") == 0);
+    /* the category from the scenario's categories (derived: bodies) */
+    CHECK(strcmp(mb_egroup_partner(m, g1, 0, &cat), "hit") == 0 &&
+          strcmp(cat, "struck ball") == 0);
     mcs_error err = {0};
     mb_state *s = NULL;
     mcs_status st = mb_state_create(m, &s, &err);
@@ -263,6 +265,12 @@ static void test_scenario_groups(void)
     CHECK(bad == NULL);
     CHECK_STR_CONTAINS(e2.msg, "no body matches 'rider_*'");
     CHECK_STR_CONTAINS(e2.msg, "bad.yaml:");
+    mb_model_destroy(&bad);
+    snprintf(y, sizeof y, "%s  bad: {bodies: [b1], categories: {miss: x}}\n", BALLS_YAML);
+    e2 = (mcs_error){0};
+    bad = mt_model_text("bad.yaml", y, &e2);
+    CHECK(bad == NULL);
+    CHECK_STR_CONTAINS(e2.msg, "'miss' matches no partner of group 'bad'");
     mb_model_destroy(&bad);
 }
 

@@ -982,8 +982,8 @@ static const mcs_skey stage2_fe_keys[] = {
 static const mcs_smap stage2_fe_map = {.what = "stage2 fe block", .keys = stage2_fe_keys};
 
 static const mcs_skey stage2_keys[] = {
-    /* relative to the working directory, as -o; `--motion FILE` wins */
-    S("motion", NE, "stage-1 results file the motion is read from"),
+    /* relative to the scenario file (as include:); `--motion FILE` (cwd) wins */
+    S("motion", NE, "stage-1 results file the motion is read from (relative to the scenario)"),
     E("method", "pose|pulse", 0,
       "pose: written poses interpolated; pulse: velocity and acceleration histories integrated "
       "(default pose)"),

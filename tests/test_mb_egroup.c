@@ -340,6 +340,38 @@ static void test_results_file(void)
     mb_model_destroy(&m);
 }
 
+/* a model that writes stage 2 (mb_opts.stage, as a stage-2 run's): the group under /stage2,
+ * which `mcrash energy` finds without --stage */
+static void test_stage2_output(void)
+{
+    mcs_error err = {0};
+    mcs_scenario *scn = NULL;
+    mb_model *m = NULL;
+    mb_opts o = mb_opts_default();
+    o.stage = 2;
+    CHECK(mcs_scenario_load_text("s2.yaml", SHEET_YAML, strlen(SHEET_YAML), &scn, &err) == 0);
+    CHECK(mb_model_build(scn, &o, &m, &err) == MCS_OK);
+    mcs_scenario_destroy(&scn);
+    if (!m) return;
+    char path[] = "/tmp/mcrash_egroup2_XXXXXX.h5";
+    int fd = mkstemps(path, 3);
+    if (fd >= 0) close(fd);
+    mb_run_opts ro = {.out_path = path, .quiet = 1};
+    CHECK(mb_run(m, &ro, NULL, &err) == MCS_OK);
+    mcs_results *r = NULL;
+    CHECK(mcs_results_open(&r, path, &err) == MCS_OK);
+    CHECK(r && mcs_results_kind(r, "/stage2/energy_groups/rider/contact/bag") == MCS_RES_DATASET);
+    CHECK(r && mcs_results_kind(r, "/stage1/energy_groups") == MCS_RES_NONE);
+    mcs_results_close(&r);
+    char args[128];
+    snprintf(args, sizeof args, "energy %s", path);
+    cli_result *c = cli_run(args);
+    CHECK(c->status == 0);
+    CHECK_STR_CONTAINS(c->out, "stage 2, group rider");
+    unlink(path);
+    mb_model_destroy(&m);
+}
+
 int main(void)
 {
     RUN(test_drop_on_foam);
@@ -347,5 +379,6 @@ int main(void)
     RUN(test_belt_through_limiter);
     RUN(test_scenario_groups);
     RUN(test_results_file);
+    RUN(test_stage2_output);
     TEST_END();
 }

@@ -229,10 +229,39 @@ static void test_series_pad_and_body_law(void)
     mb_model_destroy(&m);
 }
 
+/* a body law on a facet surface is refused, naming the surface (the facet search reaches 10 mm
+ * behind the mesh, short of a flesh's travel) */
+static void test_body_law_errors(void)
+{
+    const char *y =
+        "mcrash: 1\nname: facet\n"
+        "simulation: {end_time: 1 ms, time_step: 20 us, output_rate: 10 kHz}\n"
+        "bodies:\n"
+        "  - {name: block, mass: 1, inertia: [0.01, 0.01, 0.01], position: [0, 0, 0.03],\n"
+        "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0],\n"
+        "     surfaces: [{name: bottom, type: facet, vertices: [[-0.01, -0.01, -0.02],\n"
+        "                 [0.01, -0.01, -0.02], [0.01, 0.01, -0.02]], triangles: [[0, 2, 1]]}]}\n"
+        "fe:\n  parts:\n    - name: sheet\n"
+        "      mesh: {generate: plate, size: [0.1, 0.1], divisions: [4, 4],\n"
+        "             origin: [-0.05, -0.05, 0]}\n"
+        "      section: {type: membrane, thickness: 0.4 mm}\n"
+        "      material: {model: fabric, density: 1e3, youngs_modulus: 0.5 GPa, poisson: 0.3}\n"
+        "  boundary: [{part: sheet, where: all, fix: all}]\n"
+        "  contacts: [{type: bodies, parts: [sheet], bodies: [block],\n"
+        "              body_characteristic: {stress: [[0, 0], [10 mm, 0.1 MPa]]}}]\n";
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("facet_law.yaml", y, &err);
+    CHECK(m == NULL);
+    printf("facet with a body law: %s\n", err.msg);
+    CHECK(strstr(err.msg, "ellipsoid surfaces only") && strstr(err.msg, "bottom"));
+    mb_model_destroy(&m);
+}
+
 int main(void)
 {
     RUN(test_flat_punch_force_is_stress_times_area);
     RUN(test_hysteresis_rebound_and_dissipation);
     RUN(test_series_pad_and_body_law);
+    RUN(test_body_law_errors);
     TEST_END();
 }

@@ -310,10 +310,10 @@ static void fig23_50th(const char *h2)
         for (int j = 0; j < 4; j++)
             rank[i] += e[j] > e[i];
     }
-    FIG("fig23.p50_s2_rank_belts", "%.0f", (double)rank[0]);
-    FIG("fig23.p50_s2_rank_airbags", "%.0f", (double)rank[1]);
-    FIG("fig23.p50_s2_rank_cockpit", "%.0f", (double)rank[2]);
-    FIG("fig23.p50_s2_rank_foam", "%.0f", (double)rank[3]);
+    FIG_TOL("fig23.p50_s2_rank_belts", "%.0f", (double)rank[0], 0.1);
+    FIG_TOL("fig23.p50_s2_rank_airbags", "%.0f", (double)rank[1], 0.1);
+    FIG_TOL("fig23.p50_s2_rank_cockpit", "%.0f", (double)rank[2], 0.1);
+    FIG_TOL("fig23.p50_s2_rank_foam", "%.0f", (double)rank[3], 0.1);
 }
 
 /* item 6 in stage 2: the 5th female's concept case, stage 1 then its stage-2 scenario on that

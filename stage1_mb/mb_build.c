@@ -15,7 +15,12 @@
 
 mb_opts mb_opts_default(void)
 {
-    return (mb_opts){.energy_tol = 0.05, .energy_floor = 1e-9, .slip_speed = 0.01};
+    return (mb_opts){.energy_tol = 0.05, .energy_floor = 1e-9, .slip_speed = 0.01, .stage = 1};
+}
+
+int mb_out_stage(const mb_model *m)
+{
+    return m->opts.stage > 0 ? m->opts.stage : 1;
 }
 
 int mb_model_body(const mb_model *m, const char *name)

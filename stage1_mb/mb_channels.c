@@ -68,7 +68,7 @@ static mcs_status put(const mb_model *m, const mb_state *s, mcs_results *r, doub
     size_t nt = (size_t)s->nrec;
     int nch = mb_channels_count(m);
     for (size_t t = 0; t < nt; t++) buf[t] = s->rec_chan[t * (size_t)nch + (size_t)col];
-    return mcs_results_put_channel(r, 1, name, nt, buf, unit, frame, 0,
+    return mcs_results_put_channel(r, mb_out_stage(m), name, nt, buf, unit, frame, 0,
                                    body >= 0 ? m->body_name[body] : "ground", err);
 }
 

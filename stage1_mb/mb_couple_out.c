@@ -1,4 +1,4 @@
-/* mb_couple_out.c: the coupled FE parts' /stage1 output (mb_couple_out.h), written as a
+/* mb_couple_out.c: the coupled FE parts' /stage1 (/stage2) output (mb_couple_out.h), written as a
  * stage-3 run writes /stage3 (stage3_fe/s3_run.c): with fe/fe_out.h and stage 1. */
 #include "stage1_mb/mb_couple_out.h"
 #include "fe/fe_out.h"
@@ -38,7 +38,7 @@ static int group_of(const char *name, char (*names)[FE_NAME_MAX], int *n)
     return (*n)++;
 }
 
-static mcs_status open_groups(mcs_results *r, const fe_model *fm, mb_couple_out *o,
+static mcs_status open_groups(mcs_results *r, int stage, const fe_model *fm, mb_couple_out *o,
                               mcs_error *err)
 {
     const fe_contact_model *c = fm->contact;
@@ -53,7 +53,8 @@ static mcs_status open_groups(mcs_results *r, const fe_model *fm, mb_couple_out 
     mcs_status st = MCS_OK;
     for (int g = 0; g < n && !st; g++) {
         char path[FE_NAME_MAX + 64];
-        snprintf(path, sizeof path, "/stage1/contact/%.*s/force", FE_NAME_MAX - 1, names[g]);
+        snprintf(path, sizeof path, "/stage%d/contact/%.*s/force", stage, FE_NAME_MAX - 1,
+                 names[g]);
         st = mcs_results_series_create(r, path, 2, &three, "N", 0, &o->gforce[g], err);
     }
     return st;
@@ -91,9 +92,10 @@ mcs_status mb_couple_out_open(const mb_model *m, mcs_results *r, mb_couple_out *
     o->field_every = 1;
     if (p->field_rate != p->output_rate && p->field_rate > 0)
         o->field_every = lround(fmax(1.0, m->output_rate / p->field_rate));
-    mcs_status st = fe_out_meshes(r, 1, fm, err);
-    if (!st) st = fe_out_open(r, 1, fm, &o->fe, err);
-    if (!st) st = open_groups(r, fm, o, err);
+    int stage = mb_out_stage(m);
+    mcs_status st = fe_out_meshes(r, stage, fm, err);
+    if (!st) st = fe_out_open(r, stage, fm, &o->fe, err);
+    if (!st) st = open_groups(r, stage, fm, o, err);
     return st;
 }
 

@@ -181,7 +181,8 @@ mcs_status mb_couple_trigger_write(const mb_model *m, const mb_state *s, mcs_res
     for (int k = 0; fr && k < 2 && !st; k++) {
         int n = k == MB_TRIG_BAG ? fr->nbag : fr->nretractor;
         for (int i = 0; i < n && !st; i++) {
-            snprintf(path, sizeof path, "/stage1/%s/%s", k == MB_TRIG_BAG ? "airbag" : "retractor",
+            snprintf(path, sizeof path, "/stage%d/%s/%s", mb_out_stage(m),
+                     k == MB_TRIG_BAG ? "airbag" : "retractor",
                      k == MB_TRIG_BAG ? fr->bag[i].name : fr->retractor[i].name);
             if (!mcs_results_exists(r, path)) continue;
             /* a firing time past the run's end (or a trigger that never came): NaN */

@@ -1,4 +1,4 @@
-/* mb_injury.c: /stage1/injury/<criterion> of a committed stage-1 results file, from its
+/* mb_injury.c: /stageN/injury/<criterion> of a committed stage-1 (2) results file, from its
  * channels (analysis/an_injury.h names them: head_ax/ay/az, neck_fx/fz/my, chest_*, ...; a
  * sensor named "head" of type acceleration gives head_ax/ay/az). Nothing is written when no
  * known channel exists. The file is reopened for append and replaced atomically. */
@@ -8,12 +8,12 @@
 
 #include <stdlib.h>
 
-mcs_status mb_injury_write(const char *path, int *ncrit, mcs_error *err)
+mcs_status mb_injury_write(const char *path, int stage, int *ncrit, mcs_error *err)
 {
     an_injury_row *rows = NULL;
     int n = 0, used = 0;
     *ncrit = 0;
-    mcs_status st = an_injury_evaluate(path, 1, &rows, &n, &used, err);
+    mcs_status st = an_injury_evaluate(path, stage, &rows, &n, &used, err);
     if (st || n == 0) {
         free(rows);
         return st;
@@ -21,7 +21,7 @@ mcs_status mb_injury_write(const char *path, int *ncrit, mcs_error *err)
     mcs_results *r = NULL;
     st = mcs_results_append(&r, path, err);
     for (int i = 0; !st && i < n; i++)
-        st = mcs_results_put_injury(r, 1, rows[i].key, rows[i].value, rows[i].unit,
+        st = mcs_results_put_injury(r, stage, rows[i].key, rows[i].value, rows[i].unit,
                                     rows[i].limit, rows[i].t1, rows[i].t2, rows[i].channel, err);
     free(rows);
     if (st) {

@@ -144,7 +144,7 @@ mcs_status mb_loadcell_write(const mb_model *m, const mb_state *s, mcs_results *
             char name[MB_NAME + 8];
             snprintf(name, sizeof name, "%s_%s", lc->name, sfx[k]);
             if (!st)
-                st = mcs_results_put_channel(r, 1, name, nt, buf, k < 3 ? "N" : "N*m",
+                st = mcs_results_put_channel(r, mb_out_stage(m), name, nt, buf, k < 3 ? "N" : "N*m",
                                              "SAE J211 local (x forward, y right, z down)",
                                              nt >= 2 ? lc->cfc : 0, m->body_name[lc->frame], err);
         }

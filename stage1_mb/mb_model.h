@@ -38,6 +38,7 @@ typedef struct {
                            reference energy (largest kinetic + stored so far) [-]          */
     double energy_floor; /* reference energy never below this [J]                           */
     double slip_speed;  /* friction reaches mu Fn at this slip speed (linear stick ramp) [m/s] */
+    int stage;          /* results group the run writes: /stage<stage> (1; stage 2: 2)      */
 } mb_opts;
 
 mb_opts mb_opts_default(void);
@@ -167,6 +168,8 @@ mcs_status mb_model_build(const mcs_scenario *scn, const mb_opts *opts, mb_model
                           mcs_error *err);
 void mb_model_destroy(mb_model **m);
 int mb_model_body(const mb_model *m, const char *name); /* index or -1 */
+/* the results stage the model writes (opts.stage, 1 when unset) */
+int mb_out_stage(const mb_model *m);
 
 /* ---- state ------------------------------------------------------------------------------- */
 
@@ -293,6 +296,7 @@ typedef struct {
     const char *out_path;      /* results file; NULL: do not write one                      */
     const char *scenario_text; /* for /meta/scenario                                        */
     int quiet;                 /* no progress line                                          */
+    int append;                /* 1: add the stage's group to the existing file out_path    */
 } mb_run_opts;
 
 typedef struct {
@@ -310,9 +314,9 @@ const char *mb_timer_name(int k);
 /* run the model to its end time and write the results (nothing is left on failure) */
 mcs_status mb_run(const mb_model *m, const mb_run_opts *o, mb_run_summary *sum, mcs_error *err);
 
-/* add /stage1/injury to a committed results file from its channels (mb_injury.c); *ncrit
+/* add /stage<stage>/injury to a committed results file from its channels (mb_injury.c); *ncrit
  * criteria written (0 when no known dummy channel exists) */
-mcs_status mb_injury_write(const char *path, int *ncrit, mcs_error *err);
+mcs_status mb_injury_write(const char *path, int stage, int *ncrit, mcs_error *err);
 
 /* contact and joint channels (mb_channels.c): per contact <contact>_fn, _ft, _pen; per joint
  * with a one-axis restraint <joint>_angle|_disp and _moment|_force (docs/contracts.md) */

@@ -152,9 +152,10 @@ mcs_status mb_outline_write(const mb_model *m, mcs_results *r, mcs_error *err)
         if (st || o.nt == 0) continue;
         char path[MB_NAME + 64];
         size_t dn[2] = {(size_t)o.n, 3}, de[2] = {(size_t)o.nt, 3};
-        snprintf(path, sizeof path, "/stage1/outlines/%s/nodes", m->body_name[b]);
+        snprintf(path, sizeof path, "/stage%d/outlines/%s/nodes", mb_out_stage(m), m->body_name[b]);
         st = mcs_results_write(r, path, 2, dn, o.x, "m", err);
-        snprintf(path, sizeof path, "/stage1/outlines/%s/elements", m->body_name[b]);
+        snprintf(path, sizeof path, "/stage%d/outlines/%s/elements", mb_out_stage(m),
+                 m->body_name[b]);
         if (!st) st = mcs_results_write_int(r, path, 2, de, o.t, "-", err);
         if (!st) st = mcs_results_set_attr_str(r, path, "type", "tri3", err);
     }

@@ -1,4 +1,5 @@
-/* mb_output.c: /stage1 of the results file (DESIGN.md) from a state's records:
+/* mb_output.c: /stage1 of the results file (DESIGN.md) from a state's records (/stage2 for a
+ * stage-2 model: mb_out_stage):
  *   /stage1/time [nt] s; /stage1/bodies/<b>/{position, orientation, velocity,
  *   angular_velocity, acceleration}; /stage1/channels/<sensor>_<q><axis> [nt] for q = a
  *   (acceleration, m/s^2), v (velocity, m/s), d (displacement, m), w (angular velocity, rad/s),
@@ -28,7 +29,7 @@ static mcs_status write_bodies(const mb_model *m, const mb_state *s, mcs_results
         for (size_t t = 0; t < nt; t++)                                                            \
             for (int k = 0; k < (width); k++)                                                      \
                 buf[t * (width) + k] = s->rec_body[(t * m->nbody + b) * MB_BODY_ROW + off + k];    \
-        mcs_status st = mcs_results_put_body(r, 1, m->body_name[b], #name, nt, buf, err);          \
+        mcs_status st = mcs_results_put_body(r, mb_out_stage(m), m->body_name[b], #name, nt, buf, err);          \
         if (st) return st;                                                                         \
         off += (width);                                                                            \
     }
@@ -54,7 +55,7 @@ static mcs_status write_channels(const mb_model *m, const mb_state *s, mcs_resul
             }
             char name[MB_NAME + 8];
             snprintf(name, sizeof name, "%s_%s%c", se->name, q_suffix[se->type], "xyz"[k]);
-            mcs_status st = mcs_results_put_channel(r, 1, name, nt, buf, q_unit[se->type],
+            mcs_status st = mcs_results_put_channel(r, mb_out_stage(m), name, nt, buf, q_unit[se->type],
                                                     "SAE J211 local (x forward, y right, z down)",
                                                     nt >= 2 ? cfc : 0, m->body_name[se->body],
                                                     err);
@@ -64,14 +65,14 @@ static mcs_status write_channels(const mb_model *m, const mb_state *s, mcs_resul
     return MCS_OK;
 }
 
-static mcs_status write_energy(const mb_state *s, mcs_results *r, double *buf, mcs_error *err)
+static mcs_status write_energy(const mb_model *m, const mb_state *s, mcs_results *r, double *buf, mcs_error *err)
 {
     size_t nt = (size_t)s->nrec;
     int j = 0;
 #define MB_X_EN(name, unit)                                                                        \
     {                                                                                              \
         for (size_t t = 0; t < nt; t++) buf[t] = s->rec_energy[t * MB_NENERGY + j];                \
-        mcs_status st = mcs_results_put_energy(r, 1, #name, nt, buf, err);                         \
+        mcs_status st = mcs_results_put_energy(r, mb_out_stage(m), #name, nt, buf, err);                         \
         if (st) return st;                                                                         \
         j++;                                                                                       \
     }
@@ -85,17 +86,19 @@ mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r,
     size_t nt = (size_t)s->nrec;
     double *buf = malloc((nt > 0 ? nt : 1) * 4 * sizeof *buf);
     if (!buf) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1 output: out of memory");
-    mcs_status st = mcs_results_put_time(r, 1, nt, s->rec_t, err);
+    char grp[32];
+    snprintf(grp, sizeof grp, "/stage%d", mb_out_stage(m));
+    mcs_status st = mcs_results_put_time(r, mb_out_stage(m), nt, s->rec_t, err);
     if (!st) st = write_bodies(m, s, r, buf, err);
     if (!st) st = mb_outline_write(m, r, err);
     if (!st) st = write_channels(m, s, r, buf, err);
     if (!st) st = mb_loadcell_write(m, s, r, err);
-    if (!st) st = write_energy(s, r, buf, err);
+    if (!st) st = write_energy(m, s, r, buf, err);
     if (!st) st = mb_channels_write(m, s, r, buf, err);
-    if (!st) st = mcs_results_set_attr_double(r, "/stage1", "time_step", m->h, err);
-    if (!st) st = mcs_results_set_attr_double(r, "/stage1", "output_rate", m->output_rate, err);
-    if (!st) st = mcs_results_set_attr_int(r, "/stage1", "steps", (int)s->step, err);
-    if (!st) st = mcs_results_set_attr_double(r, "/stage1", "energy_drift", mb_energy_drift(m, s), err);
+    if (!st) st = mcs_results_set_attr_double(r, grp, "time_step", m->h, err);
+    if (!st) st = mcs_results_set_attr_double(r, grp, "output_rate", m->output_rate, err);
+    if (!st) st = mcs_results_set_attr_int(r, grp, "steps", (int)s->step, err);
+    if (!st) st = mcs_results_set_attr_double(r, grp, "energy_drift", mb_energy_drift(m, s), err);
     /* fire_time of the coupled bags and retractors (their groups: mb_couple_out.c) */
     if (!st) st = mb_couple_trigger_write(m, s, r, err);
     free(buf);

@@ -5,6 +5,7 @@
 #include "stage1_mb/mb_couple_out.h"
 #include "stage1_mb/mb_model.h"
 
+#include <stdio.h>
 #include <time.h>
 
 static double now(void)
@@ -26,8 +27,9 @@ static mcs_status write_results(const mb_model *m, const mb_state *s, const mb_r
     /* injury criteria of the dummy channels; a failure there leaves the motion results */
     mcs_error e2 = {0};
     int n = 0;
-    if (mb_injury_write(o->out_path, &n, &e2))
-        mcs_log(MCS_LOG_WARN, "stage 1: injury criteria not written: %s", e2.msg);
+    if (mb_injury_write(o->out_path, mb_out_stage(m), &n, &e2))
+        mcs_log(MCS_LOG_WARN, "stage %d: injury criteria not written: %s", mb_out_stage(m),
+                e2.msg);
     return MCS_OK;
 }
 
@@ -53,14 +55,17 @@ mcs_status mb_run(const mb_model *m, const mb_run_opts *o, mb_run_summary *sum, 
     mcs_results *r = NULL;
     mb_couple_out *co = NULL;
     if (o && o->out_path) {
-        st = mcs_results_create(&r, o->out_path, o->scenario_text, err);
+        st = o->append ? mcs_results_append(&r, o->out_path, err)
+                       : mcs_results_create(&r, o->out_path, o->scenario_text, err);
         if (!st) st = mb_couple_out_open(m, r, &co, err);
         if (!st) st = mb_couple_out_sample(m, s, co, err); /* t = 0 */
     }
     mcs_progress p;
     mcs_progress_opts po = mcs_progress_opts_default();
     po.quiet = o && o->quiet;
-    po.label = "stage 1";
+    char label[16];
+    snprintf(label, sizeof label, "stage %d", mb_out_stage(m));
+    po.label = label;
     mcs_progress_start(&p, &po, m->t_end);
     while (!st && s->step < m->nsteps) {
         st = mb_step(m, s, err);

@@ -5,6 +5,7 @@
 #ifndef AN_CRITERIA_H
 #define AN_CRITERIA_H
 
+#include "analysis/an_dummy.h"
 #include "core/mcs_error.h"
 
 #define AN_G0 9.80665 /* standard gravity [m/s^2] */
@@ -52,6 +53,9 @@ typedef struct {
 
 an_nij_opts an_nij_opts_hybrid3_50m(void); /* 6806 / 6160 N, 310 / 135 N*m, 0.01778 m */
 an_nij_opts an_nij_opts_hybrid3_05f(void); /* 4287 / 3880 N, 155 / 67 N*m, 0.01778 m */
+an_nij_opts an_nij_opts_hybrid3_95m(void); /* 8216 / 7440 N, 415 / 179 N*m (unverified) */
+/* the intercepts of a Hybrid III size (an_dummy.h) */
+an_nij_opts an_nij_opts_dummy(an_dummy d);
 
 typedef struct {
     double nij;                       /* max over time and modes [-] */

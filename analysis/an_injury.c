@@ -15,6 +15,7 @@ typedef struct {
     const char *path;
     int stage;
     mcs_results *r;
+    an_dummy dummy; /* Hybrid III size: its Nij intercepts and limits */
     an_injury_row *rows;
     int n, cap;
     mcs_error *err;
@@ -101,7 +102,7 @@ static mcs_status add_row(inj_ctx *c, const char *key, const char *label, double
     }
     an_injury_row *r = &c->rows[c->n++];
     memset(r, 0, sizeof *r);
-    const an_limit *l = an_limit_find(key);
+    const an_limit *l = an_limit_find_dummy(key, c->dummy);
     snprintf(r->key, sizeof r->key, "%s", key);
     snprintf(r->label, sizeof r->label, "%s", label ? label : l ? l->label : key);
     snprintf(r->unit, sizeof r->unit, "%s", unit);
@@ -178,7 +179,7 @@ static mcs_status neck(inj_ctx *c)
         free3(s);
         return st;
     }
-    an_nij_opts o = an_nij_opts_hybrid3_50m();
+    an_nij_opts o = an_nij_opts_dummy(c->dummy);
     an_nij_result r;
     an_neck_peaks p;
     int n = s[0].n, cfc = s[0].cfc;
@@ -289,10 +290,33 @@ static int stage_present(mcs_results *r, int s)
     return mcs_results_kind(r, p) == MCS_RES_GROUP;
 }
 
+/* the dummy size: the `dummy` attribute of /stageN, else of /stage1, else the 50th male */
+static mcs_status file_dummy(inj_ctx *c)
+{
+    char p[32];
+    snprintf(p, sizeof p, "/stage%d", c->stage);
+    if (!mcs_results_has_attr(c->r, p, "dummy")) snprintf(p, sizeof p, "/stage1");
+    if (!mcs_results_has_attr(c->r, p, "dummy")) return MCS_OK;
+    char *s = NULL;
+    mcs_status st = mcs_results_attr_str(c->r, p, "dummy", &s, c->err);
+    if (!st && an_dummy_parse(s, &c->dummy))
+        st = MCS_ERR(c->err, MCS_ERR_FORMAT, "%s: %s attribute dummy '%s' is none of %s", c->path,
+                     p, s, AN_DUMMY_CHOICES);
+    free(s);
+    return st;
+}
+
 mcs_status an_injury_evaluate(const char *h5_path, int stage, an_injury_row **rows, int *n,
                               int *stage_used, mcs_error *err)
 {
-    *rows = NULL, *n = 0, *stage_used = stage;
+    an_dummy d;
+    return an_injury_evaluate_as(h5_path, stage, -1, rows, n, stage_used, &d, err);
+}
+
+mcs_status an_injury_evaluate_as(const char *h5_path, int stage, int dummy, an_injury_row **rows,
+                                 int *n, int *stage_used, an_dummy *dummy_used, mcs_error *err)
+{
+    *rows = NULL, *n = 0, *stage_used = stage, *dummy_used = AN_DUMMY_H3_50M;
     inj_ctx c = {.path = h5_path, .stage = stage, .err = err};
     mcs_status st = mcs_results_open(&c.r, h5_path, err);
     if (st) return st;
@@ -302,6 +326,12 @@ mcs_status an_injury_evaluate(const char *h5_path, int stage, an_injury_row **ro
     if (c.stage < 1 || c.stage > 3 || !stage_present(c.r, c.stage)) {
         st = MCS_ERR(err, MCS_ERR_KEY, "%s: no /stage%d/channels or /stage%d/bodies", h5_path,
                      stage ? stage : 1, stage ? stage : 1);
+        mcs_results_close(&c.r);
+        return st;
+    }
+    if (dummy >= 0 && dummy < AN_NDUMMY) c.dummy = (an_dummy)dummy;
+    else st = file_dummy(&c);
+    if (st) {
         mcs_results_close(&c.r);
         return st;
     }
@@ -321,6 +351,6 @@ mcs_status an_injury_evaluate(const char *h5_path, int stage, an_injury_row **ro
         free(c.rows);
         return st;
     }
-    *rows = c.rows, *n = c.n, *stage_used = c.stage;
+    *rows = c.rows, *n = c.n, *stage_used = c.stage, *dummy_used = c.dummy;
     return MCS_OK;
 }

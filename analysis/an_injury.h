@@ -18,6 +18,7 @@
 #ifndef AN_INJURY_H
 #define AN_INJURY_H
 
+#include "analysis/an_dummy.h"
 #include "core/mcs_error.h"
 
 typedef struct {
@@ -36,5 +37,12 @@ typedef struct {
  * empty when no known channel is present (not an error). *stage_used receives the stage. */
 mcs_status an_injury_evaluate(const char *h5_path, int stage, an_injury_row **rows, int *n,
                               int *stage_used, mcs_error *err);
+
+/* the same for a Hybrid III size (an_dummy.h): dummy >= 0 an an_dummy, -1 the file's (the
+ * `dummy` attribute of /stageN or /stage1, written from the scenario's rider: block; the 50th
+ * male when absent); *dummy_used receives the size used. The size selects the Nij intercepts
+ * and the limits (an_limit_find_dummy). */
+mcs_status an_injury_evaluate_as(const char *h5_path, int stage, int dummy, an_injury_row **rows,
+                                 int *n, int *stage_used, an_dummy *dummy_used, mcs_error *err);
 
 #endif

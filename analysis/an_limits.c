@@ -30,6 +30,43 @@ static const an_limit limits[] = {
     {"tibia_index", "Tibia index", 1.3, "-", "Euro NCAP lower-performance limit (unverified)", 0},
 };
 
+/* the limits that differ for the Hybrid III 5th female and 95th male (an_dummy.h); a key not
+ * listed for a size takes the 50th's row above. The 5th female's are FMVSS 208's for that
+ * dummy; the 95th male has no FMVSS 208 limits: Mertz's scaling of the 50th's (force x
+ * lambda^2, lambda = 1.099 from the Nij intercepts, an_nij.c), as in Mertz, Irwin, Prasad 2003
+ * (Stapp 47); both checked against the scaling law in tests/test_rider_sizes.c. */
+static const an_limit limits_05f[] = {
+    {"nij", "Nij", 1.0, "-",
+     "FMVSS 208 S15.3 (5th female intercepts 4287/3880 N, 155/67 N*m: REFERENCES.md)", 1},
+    {"neck_tension", "Neck tension Fz", 2620, "N", "FMVSS 208 S15.3 5th female (unverified)", 0},
+    {"neck_compression", "Neck compression Fz", 2520, "N",
+     "FMVSS 208 S15.3 5th female (unverified)", 0},
+    {"chest_deflection", "Chest deflection", 0.052, "m",
+     "FMVSS 208 S15.3 5th female sternal deflection (unverified)", 0},
+    {"femur_compression", "Femur compression", 6805, "N", "FMVSS 208 S15.3 5th female (unverified)",
+     0},
+};
+static const an_limit limits_95m[] = {
+    {"nij", "Nij", 1.0, "-", "intercepts 8216/7440 N, 415/179 N*m (unverified, an_nij.c)", 0},
+    {"neck_tension", "Neck tension Fz", 5030, "N",
+     "50th's 4170 N x lambda^2 (Mertz scaling, lambda 1.099; unverified)", 0},
+    {"neck_compression", "Neck compression Fz", 4830, "N",
+     "50th's 4000 N x lambda^2 (Mertz scaling, lambda 1.099; unverified)", 0},
+};
+
+const an_limit *an_limit_find_dummy(const char *key, an_dummy d)
+{
+    const an_limit *t = d == AN_DUMMY_H3_05F   ? limits_05f
+                        : d == AN_DUMMY_H3_95M ? limits_95m
+                                               : NULL;
+    size_t n = d == AN_DUMMY_H3_05F   ? sizeof limits_05f / sizeof limits_05f[0]
+               : d == AN_DUMMY_H3_95M ? sizeof limits_95m / sizeof limits_95m[0]
+                                      : 0;
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(t[i].key, key) == 0) return &t[i];
+    return an_limit_find(key);
+}
+
 const an_limit *an_limits_table(int *n)
 {
     *n = (int)(sizeof limits / sizeof limits[0]);

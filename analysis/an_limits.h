@@ -6,6 +6,8 @@
 #ifndef AN_LIMITS_H
 #define AN_LIMITS_H
 
+#include "analysis/an_dummy.h"
+
 typedef struct {
     const char *key;    /* criterion key: "hic15", "nij", "neck_tension", ... */
     const char *label;  /* for tables: "HIC15", "Neck tension Fz", ... */
@@ -20,6 +22,10 @@ const an_limit *an_limits_table(int *n);
 
 /* the row of a criterion key, or NULL */
 const an_limit *an_limit_find(const char *key);
+
+/* the row of a criterion key for a Hybrid III size: its own where it differs (5th female:
+ * FMVSS 208; 95th male: Mertz-scaled), else the 50th's; NULL when none */
+const an_limit *an_limit_find_dummy(const char *key, an_dummy d);
 
 /* value / limit; NaN when the key has no limit */
 double an_limit_fraction(const char *key, double value);

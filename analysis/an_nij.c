@@ -17,6 +17,23 @@ an_nij_opts an_nij_opts_hybrid3_05f(void)
                          .my_extension = 67, .condyle_offset = 0.01778};
 }
 
+/* Hybrid III 95th male in-position intercepts: UNVERIFIED (Eppinger et al., NHTSA 1999/2000,
+ * "Development of improved injury criteria ... II", as commonly cited; the primary table was not
+ * retrieved). They are the 50th's scaled by Mertz's lambda^2 (forces) and lambda^3 (moments)
+ * with lambda = 1.099 to 0.3 % (tests/test_rider_sizes.c) */
+an_nij_opts an_nij_opts_hybrid3_95m(void)
+{
+    return (an_nij_opts){.fz_tension = 8216, .fz_compression = 7440, .my_flexion = 415,
+                         .my_extension = 179, .condyle_offset = 0.01778};
+}
+
+an_nij_opts an_nij_opts_dummy(an_dummy d)
+{
+    if (d == AN_DUMMY_H3_05F) return an_nij_opts_hybrid3_05f();
+    if (d == AN_DUMMY_H3_95M) return an_nij_opts_hybrid3_95m();
+    return an_nij_opts_hybrid3_50m();
+}
+
 const char *an_nij_mode_name(an_nij_mode m)
 {
     static const char *const names[] = {"TF", "TE", "CF", "CE"};

@@ -20,8 +20,10 @@
       "turn stage-3 force-crush results into stage-1 characteristics")                             \
     X(loop, "mcrash loop SCENARIO.yaml [--max-iter N]",                                            \
       "stage 3 -> retune -> stage 1 -> stage 2 until the ratings settle")                          \
-    X(injury, "mcrash injury OUT.h5 [B.h5 ...] [--stage N] [--json]",                              \
+    X(injury, "mcrash injury OUT.h5 [B.h5 ...] [--stage N] [--dummy SIZE] [--json]",               \
       "injury criteria of results files (one column per file)")                                   \
+    X(energy, "mcrash energy OUT.h5 [--stage N] [--group NAME] [--json]",                          \
+      "the rider's energy balance and its transfer to each contact partner, ranked")              \
     X(signal, "mcrash signal hic|a3ms|cfc|nij|bric|vc|ti FILE.csv [--class CFC] [--window S] [--json]", \
       "filter a channel or compute one criterion from CSV")                                        \
     X(compare, "mcrash compare REF CMP [--method iso18571|cora] [--json]",                         \

@@ -1,5 +1,7 @@
-/* cmd_injury.c: `mcrash injury A.h5 [B.h5 ...] [--stage N] [--json]`: the injury criteria of
- * results files against their limits (the channel names are listed in analysis/an_injury.h);
+/* cmd_injury.c: `mcrash injury A.h5 [B.h5 ...] [--stage N] [--dummy SIZE] [--json]`: the
+ * injury criteria of
+ * results files against their limits (the channel names are listed in analysis/an_injury.h;
+ * the Hybrid III size, for the Nij intercepts and limits: the file's, or --dummy, an_dummy.h);
  * with several files one column per file (the ISO 13232 pairing: conventional and concept) */
 #include "analysis/an_injury.h"
 #include "cli/cli.h"
@@ -16,6 +18,7 @@
 typedef struct {
     const char *file;
     int stage;          /* the stage evaluated */
+    an_dummy dummy;     /* the Hybrid III size evaluated */
     an_injury_row *row; /* (n) */
     int n;
 } inj_file;
@@ -26,11 +29,11 @@ static void json_num(double v)
     else printf("null");
 }
 
-static void print_json(const char *file, int stage, const an_injury_row *r, int n)
+static void print_json(const char *file, int stage, an_dummy d, const an_injury_row *r, int n)
 {
     printf("{\"file\": ");
     cli_json_string(file);
-    printf(", \"stage\": %d, \"criteria\": [", stage);
+    printf(", \"stage\": %d, \"dummy\": \"%s\", \"criteria\": [", stage, an_dummy_name(d));
     for (int i = 0; i < n; i++) {
         printf("%s{\"criterion\": ", i ? ", " : "");
         cli_json_string(r[i].key);
@@ -55,9 +58,10 @@ static void print_json(const char *file, int stage, const an_injury_row *r, int 
     printf("]}");
 }
 
-static void print_table(const char *file, int stage, const an_injury_row *r, int n)
+static void print_table(const char *file, int stage, an_dummy d, const an_injury_row *r, int n)
 {
-    printf("%s, stage %d\n", file, stage);
+    if (d == AN_DUMMY_H3_50M) printf("%s, stage %d\n", file, stage);
+    else printf("%s, stage %d, Hybrid III %s\n", file, stage, an_dummy_name(d));
     printf("%-22s %11s %-4s %9s %8s  %-21s %s\n", "criterion", "value", "unit", "limit",
            "fraction", "time [s]", "channel (CFC)");
     for (int i = 0; i < n; i++) {
@@ -84,7 +88,12 @@ static const an_injury_row *find_row(const inj_file *f, const char *key)
 static void print_columns(const inj_file *f, int nf)
 {
     printf("injury criteria, one column per file (value, fraction of the limit)\n");
-    for (int k = 0; k < nf; k++) printf("  [%d] %s, stage %d\n", k + 1, f[k].file, f[k].stage);
+    for (int k = 0; k < nf; k++) {
+        printf("  [%d] %s, stage %d", k + 1, f[k].file, f[k].stage);
+        if (f[k].dummy != AN_DUMMY_H3_50M) printf(", Hybrid III %s", an_dummy_name(f[k].dummy));
+        printf("\n");
+    }
+    printf("(the limit column is file [1]'s; each fraction is of its own file's dummy's limit)\n");
     printf("%-22s %-4s %9s", "criterion", "unit", "limit");
     for (int k = 0; k < nf; k++) printf("  %18s[%d]", "", k + 1);
     printf("\n");
@@ -113,7 +122,7 @@ int cli_injury(int argc, char **argv)
 {
     if (cli_wants_help(argv[0], argc, argv)) return 0;
     const char *file[INJ_MAXFILES];
-    int nfile = 0, stage = 0, json = 0;
+    int nfile = 0, stage = 0, json = 0, dummy = -1;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--json") == 0) {
             json = 1;
@@ -125,6 +134,14 @@ int cli_injury(int argc, char **argv)
                 return 2;
             }
             stage = (int)s;
+        } else if (strcmp(argv[i], "--dummy") == 0 && i + 1 < argc) {
+            an_dummy d;
+            if (an_dummy_parse(argv[++i], &d)) {
+                fprintf(stderr, "mcrash injury: --dummy %s: one of %s\n", argv[i],
+                        AN_DUMMY_CHOICES);
+                return 2;
+            }
+            dummy = (int)d;
         } else if (argv[i][0] == '-') {
             fprintf(stderr, "mcrash injury: unexpected argument %s\n", argv[i]);
             return cli_usage(argv[0]);
@@ -141,7 +158,8 @@ int cli_injury(int argc, char **argv)
     for (k = 0; k < nfile && !rc; k++) {
         mcs_error e = {0};
         f[k].file = file[k];
-        if (an_injury_evaluate(file[k], stage, &f[k].row, &f[k].n, &f[k].stage, &e)) {
+        if (an_injury_evaluate_as(file[k], stage, dummy, &f[k].row, &f[k].n, &f[k].stage,
+                                  &f[k].dummy, &e)) {
             fprintf(stderr, "mcrash injury: %s\n", e.msg);
             rc = mcs_status_exit_code(e.status);
         } else if (f[k].n == 0) {
@@ -154,17 +172,17 @@ int cli_injury(int argc, char **argv)
         }
     }
     if (!rc && json && nfile == 1) {
-        print_json(f[0].file, f[0].stage, f[0].row, f[0].n);
+        print_json(f[0].file, f[0].stage, f[0].dummy, f[0].row, f[0].n);
         printf("\n");
     } else if (!rc && json) {
         printf("{\"files\": [");
         for (k = 0; k < nfile; k++) {
             if (k) printf(", ");
-            print_json(f[k].file, f[k].stage, f[k].row, f[k].n);
+            print_json(f[k].file, f[k].stage, f[k].dummy, f[k].row, f[k].n);
         }
         printf("]}\n");
     } else if (!rc && nfile == 1) {
-        print_table(f[0].file, f[0].stage, f[0].row, f[0].n);
+        print_table(f[0].file, f[0].stage, f[0].dummy, f[0].row, f[0].n);
     } else if (!rc) {
         print_columns(f, nfile);
     }

@@ -59,6 +59,14 @@ mcs_status mcs_scenario_load_text(const char *name, const char *text, size_t len
 
 void mcs_scenario_destroy(mcs_scenario **scn);
 
+/* a copy of scn (its own nodes: scn may be destroyed first) in which the map at the dotted path
+ * `from` (e.g. "stage2.fe") is merged on top of the root's key `into` ("fe") by the include
+ * rule above (entity lists concatenate, scn's first), `from` removed, and the whole validated
+ * again (so a name given twice fails with its file and line). A missing `from` gives a plain
+ * copy. (core/mcs_scn_merge.c; used by stage 2: stage2_fe/s2_scenario.h) */
+mcs_status mcs_scenario_merged(const mcs_scenario *scn, const char *from, const char *into,
+                               mcs_scenario **out, mcs_error *err);
+
 const mcs_node *mcs_scenario_root(const mcs_scenario *scn);
 
 /* the source texts that were read, in reading order, each preceded by a line

@@ -369,6 +369,9 @@ static const mcs_skey rider_keys[] = {
     Q("peg_failure_force", FRC, GT, 0, 0, "foot-peg attachment failure force [N]"),
     Q("attachment_stiffness", MCS_DIM_STIFFNESS, GT, 0, 0, "attachment stiffness [N/m]"),
     Q("attachment_damping", MCS_DIM_DAMPING, GE, 0, 0, "attachment damping [N s/m]"),
+    E("dummy", "50th_male|5th_female|95th_male", 0,
+      "Hybrid III size the rider model represents (default 50th_male): selects the Nij "
+      "intercepts and injury limits of `mcrash injury` (docs/rider.md \"Sizes\")"),
     END,
 };
 static const mcs_smap rider_map = {.what = "rider block", .keys = rider_keys};
@@ -455,6 +458,20 @@ static const mcs_skey line_keys[] = {
     I("divisions", REQ | GE, 1, 0, "truss elements along the line"),
     END,
 };
+/* a hex foam layer over a patch of a body's ellipsoid surface (fe/fe_scn_pad.c): the inner
+ * face on the surface, the outer one `thickness` out along its normal, at the body's pose at
+ * t = 0; the patch in the ellipsoid's frame, p = (a cos lat cos lon, b cos lat sin lon,
+ * c sin lat) */
+static const mcs_skey foam_pad_keys[] = {
+    R("body", BODY, REQ, "body whose surface the pad covers"),
+    S("surface", REQ | NE, "name of the body's ellipsoid surface (bodies[].surfaces[].name)"),
+    Q("thickness", LEN, REQ | GT, 0, 0, "pad thickness, along the surface normal [m]"),
+    Q("element_size", LEN, REQ | GT, 0, 0, "element edge length on the surface [m]"),
+    V("longitude", ANG, 2, 2, REQ, 0, "patch: azimuth range about the ellipsoid's z axis [rad]"),
+    V("latitude", ANG, 2, 2, REQ, 0, "patch: elevation range from its x-y plane, poles out [rad]"),
+    I("layers", GE | LE, 1, 16, "elements through the thickness (default 1)"),
+    END,
+};
 static const mcs_skey keyword_keys[] = {
     /* an LS-DYNA keyword file, relative to the YAML file that names it */
     S("keyword", REQ | NE, "LS-DYNA keyword file (or give generate:)"),
@@ -485,6 +502,8 @@ static const mcs_smap sphere_shell_map = {.what = "sphere_shell mesh", .keys = s
 static const mcs_smap line_map = {.what = "line mesh", .keys = line_keys};
 static const mcs_smap flat_bag_map = {.what = "flat_bag mesh", .keys = flat_bag_keys};
 static const mcs_smap keyword_map = {.what = "keyword mesh", .keys = keyword_keys};
+static const mcs_smap foam_pad_map = {
+    .what = "foam_pad mesh", .keys = foam_pad_keys, .check = mcs_rule_foam_pad};
 /* "(keyword)": chosen when generate: is absent, never by name */
 static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"circular_tube", &circular_tube_map},
@@ -494,6 +513,7 @@ static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"sphere_shell", &sphere_shell_map},
                                              {"flat_bag", &flat_bag_map},
                                              {"line", &line_map},
+                                             {"foam_pad", &foam_pad_map},
                                              {"(keyword)", &keyword_map},
                                              {0}};
 /* the initial metric method (fe/fe_imm.c, docs/gasbag.md): membrane parts only */
@@ -628,8 +648,11 @@ static const mcs_smap material_map = {
 
 static const mcs_skey attach_keys[] = {
     R("body", BODY, REQ, "stage-1 body carrying the nodes"),
-    E("where", "x_min|x_max|y_min|y_max|z_min|z_max|all", REQ,
-      "which nodes of the part (as boundary): they move rigidly with the body"),
+    /* surface: the nodes on one of the body's ellipsoid surfaces (within 0.1 mm; a foam_pad's
+     * inner face, or a keyword mesh modelled on the body), fe/fe_scn_pad.c */
+    E("where", "x_min|x_max|y_min|y_max|z_min|z_max|all|surface", REQ,
+      "which nodes of the part (as boundary, or those on the body's surfaces): they move "
+      "rigidly with the body"),
     END,
 };
 static const mcs_smap attach_map = {.what = "FE part attachment", .keys = attach_keys};
@@ -640,6 +663,8 @@ static const mcs_skey part_keys[] = {
     /* required, except with a keyword mesh: then the deck's *SECTION / *MAT (mcs_rule_fe_part) */
     M("section", section_map, 0, "section"),
     M("material", material_map, 0, "material"),
+    /* one material for several parts (the cockpit pads take the leg protectors'), no copy */
+    R("material_from", PART, 0, "the material of this other FE part (instead of material)"),
     V("initial_velocity", VEL, 3, 3, 0, 0, "initial velocity [m/s]"),
     M("attach", attach_map, 0, "nodes carried by a stage-1 body (stage1_mb/mb_couple.c)"),
     END,
@@ -935,6 +960,29 @@ static const mcs_skey stage2_presc_keys[] = {
 };
 static const mcs_smap stage2_presc_map = {.what = "prescribed body", .keys = stage2_presc_keys};
 
+/* stage2.fe: FE entities of stage 2 only (cockpit foam, panels, their contacts), appended to
+ * fe:'s lists when stage 2 is compiled (stage2_fe/s2_scenario.c); the names they refer to may
+ * be fe:'s or these; its settings replace fe:'s */
+static const mcs_skey stage2_fe_keys[] = {
+    L("parts", part_map, 0, "FE parts of stage 2 only"),
+    L("boundary", boundary_map, 0, "boundary conditions"),
+    L("contacts", fe_contact_map, 0, "FE contacts"),
+    L("rigid_ellipsoids", fe_ellipsoid_map, 0, "rigid ellipsoids"),
+    L("loads", load_map, 0, "nodal loads"),
+    L("airbags", airbag_map, 0, "gas bags"),
+    L("retractors", retractor_map, 0, "belt retractors"),
+    L("sliprings", slipring_map, 0, "belt slip rings"),
+    L("springs", spring_map, 0, "discrete springs and dampers"),
+    L("masses", fe_mass_map, 0, "point masses"),
+    /* settings of the stage-2 FE model: given here, they replace fe:'s */
+    Q("damping", MCS_DIM_FREQ, GE, 0, 0, "mass-proportional damping c, f = -c m v [1/s]"),
+    Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),
+    Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),
+    Q("energy_growth_limit", NONE, GE, 0, 0, "stop when total energy grows by this fraction"),
+    END,
+};
+static const mcs_smap stage2_fe_map = {.what = "stage2 fe block", .keys = stage2_fe_keys};
+
 static const mcs_skey stage2_keys[] = {
     /* relative to the working directory, as -o; `--motion FILE` wins */
     S("motion", NE, "stage-1 results file the motion is read from"),
@@ -942,6 +990,7 @@ static const mcs_skey stage2_keys[] = {
       "pose: written poses interpolated; pulse: velocity and acceleration histories integrated "
       "(default pose)"),
     L("prescribed", stage2_presc_map, REQ | NE, "bodies moved as in the file (others free)"),
+    M("fe", stage2_fe_map, 0, "FE parts and contacts of stage 2 only, appended to fe:"),
     END,
 };
 static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys};

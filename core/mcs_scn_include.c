@@ -249,3 +249,8 @@ const char *mcs_scenario_text(const mcs_scenario *scn)
 {
     return scn && scn->text ? scn->text : "";
 }
+
+mcs_node *scn_merge(scn_arena *a, mcs_node *base, mcs_node *over)
+{
+    return merge(a, base, over);
+}

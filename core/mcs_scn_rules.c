@@ -155,10 +155,13 @@ mcs_status mcs_rule_plastic(scn_walk *w, mcs_node *map)
 mcs_status mcs_rule_fe_part(scn_walk *w, mcs_node *map)
 {
     const mcs_node *mesh = given(map, "mesh");
+    if (given(map, "material") && given(map, "material_from"))
+        return scn_walk_fail(w, map, "material_from", MCS_ERR_KEY,
+                             "give material or material_from, not both");
     if (mesh && given(mesh, "keyword")) return MCS_OK;
     static const char *const keys[] = {"section", "material"};
     for (int i = 0; i < 2; i++)
-        if (!given(map, keys[i]))
+        if (!given(map, keys[i]) && !(i == 1 && given(map, "material_from")))
             return scn_walk_fail(w, map, keys[i], MCS_ERR_KEY,
                                  "required key is missing (only a keyword mesh may leave it out)");
     return MCS_OK;

@@ -45,9 +45,14 @@ static int ref_names(const scn_walk *w, mcs_sref ref, const char **names, int ma
     if (ref == MCS_REF_BODY || ref == MCS_REF_BODY_OR_GROUND)
         list = mcs_node_get(w->root, "bodies");
     if (ref == MCS_REF_FE_PART) list = mcs_node_get(mcs_node_get(w->root, "fe"), "parts");
-    for (int i = 0; i < mcs_node_len(list) && n < max && list->kind == MCS_NODE_SEQ; i++) {
-        const mcs_node *nm = mcs_node_get(mcs_node_at(list, i), "name");
-        if (nm && nm->text) names[n++] = nm->text;
+    for (int pass = 0; pass < 2; pass++) {
+        for (int i = 0; i < mcs_node_len(list) && n < max && list->kind == MCS_NODE_SEQ; i++) {
+            const mcs_node *nm = mcs_node_get(mcs_node_at(list, i), "name");
+            if (nm && nm->text) names[n++] = nm->text;
+        }
+        /* inside stage2: the parts of stage2.fe too (merged into fe: for stage 2) */
+        if (ref != MCS_REF_FE_PART || strncmp(w->path, "stage2.", 7) != 0) break;
+        list = mcs_node_get(mcs_node_get(mcs_node_get(w->root, "stage2"), "fe"), "parts");
     }
     return n;
 }

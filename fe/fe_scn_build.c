@@ -10,6 +10,7 @@
 #include "fe/fe_scn_slipring.h"
 #include "fe/fe_scn_keyword.h"
 #include "fe/fe_scn_place.h"
+#include "fe/fe_scn_pad.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -185,8 +186,24 @@ static mcs_status initial_mesh(fe_builder *b, const mcs_node *mesh, const char *
     return st ? fe_scn_relocate(st, in, &kerr, err) : MCS_OK;
 }
 
-static mcs_status add_parts_(fe_builder *b, const mcs_node *parts, fe_scn_kw_cache **kc,
-                             mcs_error *err)
+/* the material node of part p: its own, or material_from's (that part's own material) */
+static const mcs_node *material_of(const mcs_node *parts, const mcs_node *p, mcs_error *err)
+{
+    if (!fe_scn_given(p, "material_from")) return fe_scn_get(p, "material");
+    const mcs_node *from = fe_scn_get(p, "material_from");
+    for (int i = 0; i < mcs_node_len(parts); i++) {
+        const mcs_node *q = mcs_node_at(parts, i);
+        if (strcmp(mcs_node_str(fe_scn_get(q, "name")), mcs_node_str(from)) != 0) continue;
+        if (fe_scn_given(q, "material")) return fe_scn_get(q, "material");
+        break;
+    }
+    mcs_node_error(from, err, MCS_ERR_KEY, "part '%s' has no material: of its own to share",
+                   mcs_node_str(from));
+    return NULL;
+}
+
+static mcs_status add_parts_(fe_builder *b, const mcs_node *root, const mcs_node *parts,
+                             fe_scn_kw_cache **kc, mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(parts); i++) {
         const mcs_node *p = mcs_node_at(parts, i);
@@ -197,17 +214,21 @@ static mcs_status add_parts_(fe_builder *b, const mcs_node *parts, fe_scn_kw_cac
                                   "longer than %d characters", FE_NAME_MAX - 1);
         /* a keyword mesh (fe_scn_keyword.c) may take its section and material from the deck */
         int kw = fe_scn_given(fe_scn_get(p, "mesh"), "keyword");
-        mcs_status st = kw ? MCS_OK : read_mesh(fe_scn_get(p, "mesh"), &d.mesh, err);
+        int pad = fe_scn_pad_is(fe_scn_get(p, "mesh")); /* on a body's surface: fe_scn_pad.c */
+        mcs_status st = kw || pad ? MCS_OK : read_mesh(fe_scn_get(p, "mesh"), &d.mesh, err);
         if (!st && (!kw || fe_scn_given(p, "section")))
             st = read_section(fe_scn_get(p, "section"), &d.section, err);
-        if (!st && (!kw || fe_scn_given(p, "material")))
-            st = read_material(fe_scn_get(p, "material"), &d.material, err);
+        if (!st && (!kw || fe_scn_given(p, "material") || fe_scn_given(p, "material_from"))) {
+            const mcs_node *mat = material_of(parts, p, err);
+            st = mat ? read_material(mat, &d.material, err) : MCS_ERR_KEY;
+        }
         if (!st && fe_scn_given(p, "initial_velocity"))
             st = mcs_node_vec3(fe_scn_get(p, "initial_velocity"), d.initial_velocity, err);
         if (!st && kw) st = fe_scn_kw_add_part(kc, b, p, &d, err);
+        if (!st && pad) st = fe_scn_pad_add(b, root, fe_scn_get(p, "mesh"), &d, err);
         if (st) return st;
         mcs_error kerr = {0};
-        if (!kw && (st = fe_builder_add_part(b, &d, NULL, &kerr)))
+        if (!kw && !pad && (st = fe_builder_add_part(b, &d, NULL, &kerr)))
             return fe_scn_relocate(st, p, &kerr, err);
         st = initial_mesh(b, fe_scn_get(p, "mesh"), d.name, err);
         if (st) return st;
@@ -215,10 +236,11 @@ static mcs_status add_parts_(fe_builder *b, const mcs_node *parts, fe_scn_kw_cac
     return MCS_OK;
 }
 
-static mcs_status add_parts(fe_builder *b, const mcs_node *parts, mcs_error *err)
+static mcs_status add_parts(fe_builder *b, const mcs_node *root, const mcs_node *parts,
+                            mcs_error *err)
 {
     fe_scn_kw_cache *kc = NULL;
-    mcs_status st = add_parts_(b, parts, &kc, err);
+    mcs_status st = add_parts_(b, root, parts, &kc, err);
     fe_scn_kw_cache_free(&kc);
     return st;
 }
@@ -311,8 +333,19 @@ static mcs_status carried_twice(const mcs_node *key, const mcs_node *by, mcs_err
 
 /* fe.parts[].attach: the selected nodes get their translations fixed (stage 1 prescribes
  * their velocity, mb_couple.c) and are recorded in out->att */
-static mcs_status add_attach(fe_builder *b, const mcs_node *parts, fe_problem *out,
-                             mcs_error *err)
+/* nodes `where` selects of part: a bounding-box side or all (fe_builder_select), or those on
+ * the attach body's surfaces (fe_scn_pad.c) */
+static int attach_select(const fe_builder *b, const mcs_node *root, const mcs_node *a, int part,
+                         int *idx, int cap)
+{
+    const char *w = mcs_node_str(fe_scn_get(a, "where"));
+    if (w && strcmp(w, "surface") == 0)
+        return fe_scn_surface_nodes(b, root, part, mcs_node_str(fe_scn_get(a, "body")), idx, cap);
+    return part < 0 ? 0 : fe_builder_select(b, part, where_of(w), idx, cap);
+}
+
+static mcs_status add_attach(fe_builder *b, const mcs_node *root, const mcs_node *parts,
+                             fe_problem *out, mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(parts); i++) {
         const mcs_node *p = mcs_node_at(parts, i), *a = fe_scn_get(p, "attach");
@@ -325,8 +358,7 @@ static mcs_status add_attach(fe_builder *b, const mcs_node *parts, fe_problem *o
                                   "part '%s' is rigid: its reaction would not reach the body; "
                                   "give it a deformable material, or make it a surface of the body",
                                   mcs_node_str(fe_scn_get(p, "name")));
-        fe_where w = where_of(mcs_node_str(fe_scn_get(a, "where")));
-        int n = part < 0 ? 0 : fe_builder_select(b, part, w, NULL, 0);
+        int n = attach_select(b, root, a, part, NULL, 0);
         if (n <= 0)
             return mcs_node_error(fe_scn_get(a, "where"), err, MCS_ERR_KEY,
                                   "selects no node of part '%s'",
@@ -338,7 +370,7 @@ static mcs_status add_attach(fe_builder *b, const mcs_node *parts, fe_problem *o
             free(idx);
             return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
         }
-        fe_builder_select(b, part, w, idx, n);
+        attach_select(b, root, a, part, idx, n);
         const double v0[3] = {0, 0, 0};
         for (int k = 0; k < n; k++) {
             const mcs_node *by = carried_by(out, idx[k]);
@@ -511,8 +543,8 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     mcs_error kerr = {0};
     st = fe_builder_create(&b, &kerr);
     if (st) return fe_scn_relocate(st, fe, &kerr, err);
-    st = add_parts(b, fe_scn_get(fe, "parts"), err);
-    if (!st) st = add_attach(b, fe_scn_get(fe, "parts"), out, err);
+    st = add_parts(b, root, fe_scn_get(fe, "parts"), err);
+    if (!st) st = add_attach(b, root, fe_scn_get(fe, "parts"), out, err);
     if (!st) st = add_ring_bodies(b, fe_scn_get(fe, "sliprings"), out, err);
     if (!st) st = add_boundaries(b, fe_scn_get(fe, "boundary"), out, err);
     if (!st) st = add_loads(b, fe_scn_get(fe, "loads"), err);

@@ -246,12 +246,17 @@ const mcs_node *fe_scn_restraint_node(const mcs_node *fe, const char *msg)
 
 /* ---- results ----------------------------------------------------------------------------- */
 
-static const char *const bag_ch[FE_OUT_BAG_CHANNELS] = {"pressure", "volume", "temperature",
-                                                        "mass"};
-static const char *const bag_unit[FE_OUT_BAG_CHANNELS] = {"Pa", "m^3", "K", "kg"};
+/* the gas's energies (fe/fe_gasbag.h): internal m cv T, work on the fabric int p dV, the
+ * inflator's enthalpy in, the enthalpy out through the vents and the fabric, so far */
+static const char *const bag_ch[FE_OUT_BAG_CHANNELS] = {
+    "pressure", "volume",      "temperature", "mass",       "energy",
+    "work",     "energy_in",   "energy_vent", "energy_leak"};
+static const char *const bag_unit[FE_OUT_BAG_CHANNELS] = {"Pa", "m^3", "K", "kg", "J",
+                                                          "J",  "J",   "J", "J"};
 static const char *const ret_ch[FE_OUT_RETRACTOR_CHANNELS] = {
-    "payout", "force", "payout_pretensioner", "payout_limiter", "energy_limiter"};
-static const char *const ret_unit[FE_OUT_RETRACTOR_CHANNELS] = {"m", "N", "m", "m", "J"};
+    "payout",         "force",          "payout_pretensioner", "payout_limiter",
+    "energy_limiter", "energy_pretensioner"};
+static const char *const ret_unit[FE_OUT_RETRACTOR_CHANNELS] = {"m", "N", "m", "m", "J", "J"};
 
 mcs_status fe_out_restraint_open(mcs_results *r, int stage, const fe_model *m,
                                  fe_out_restraint *o, mcs_error *err)
@@ -290,14 +295,17 @@ mcs_status fe_out_restraint_sample(const fe_state *s, const fe_out_restraint *o,
     mcs_status st = MCS_OK;
     for (int i = 0; i < o->nbag && !st; i++) {
         const fe_gasbag_state *g = &s->restraint->bag[i];
-        const double v[FE_OUT_BAG_CHANNELS] = {g->pressure, g->volume, g->temperature, g->mass};
+        const double v[FE_OUT_BAG_CHANNELS] = {
+            g->pressure,  g->volume,    g->temperature, g->mass,       g->energy,
+            g->work,      g->energy_in, g->energy_vent, g->energy_leak};
         for (int c = 0; c < FE_OUT_BAG_CHANNELS && !st; c++)
             st = mcs_results_series_append(o->bag[FE_OUT_BAG_CHANNELS * i + c], &v[c], err);
     }
     for (int i = 0; i < o->nretractor && !st; i++) {
         const fe_retractor_state *r = &s->restraint->retractor[i];
         const double v[FE_OUT_RETRACTOR_CHANNELS] = {r->payout, r->force, r->payout_pretensioner,
-                                                 r->payout_limiter, r->energy_limiter};
+                                                 r->payout_limiter, r->energy_limiter,
+                                                 r->energy_pretensioner};
         for (int c = 0; c < FE_OUT_RETRACTOR_CHANNELS && !st; c++)
             st = mcs_results_series_append(o->retractor[FE_OUT_RETRACTOR_CHANNELS * i + c], &v[c],
                                            err);

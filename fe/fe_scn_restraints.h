@@ -27,8 +27,8 @@ const mcs_node *fe_scn_restraint_node(const mcs_node *fe, const char *msg);
 const mcs_node *fe_scn_stage1_key(const mcs_node *fe);
 
 /* result series of every bag and retractor of the model */
-#define FE_OUT_BAG_CHANNELS 4
-#define FE_OUT_RETRACTOR_CHANNELS 5
+#define FE_OUT_BAG_CHANNELS 9
+#define FE_OUT_RETRACTOR_CHANNELS 6
 typedef struct {
     int nbag, nretractor;
     mcs_results_series **bag;       /* (nbag x FE_OUT_BAG_CHANNELS)             */

@@ -19,6 +19,7 @@ joint centres) is at the sport_208kg seat point (0.52, 0, 0.955) m. The position
 (stage1_mb/mb_position.c, scenario key rider:) moves the segments onto a motorcycle."""
 import math
 import os
+import re
 
 M_TOTAL = 78.2          # H3 50th [kg]
 STATURE_K = 1.75 / 1.741  # H3 stature / de Leva male mean stature
@@ -42,6 +43,29 @@ DL = {
 HEAD_MASS = 4.54        # H3 50th head assembly (10 lb), commonly cited [S]
 HEAD_SURF_CENTER = (0.005, 0, 0)      # head ellipsoid centre from the head CG [m] [A]
 HEAD_SURF_SEMI = (0.10, 0.078, 0.115)  # head ellipsoid semi-axes [m] [A]
+
+
+class Size:
+    """a Hybrid III size: segment masses [kg] and length factors relative to the 50th model
+    (kt trunk, neck and head heights; ka arms; kl legs; kw breadths and depths; kh head)"""
+
+    def __init__(self, masses, kt=1.0, ka=1.0, kl=1.0, kw=1.0, kh=1.0,
+                 head_center=None, head_semi=None):
+        self.masses = masses
+        self.kt, self.ka, self.kl, self.kw, self.kh = kt, ka, kl, kw, kh
+        self.head_center = head_center or HEAD_SURF_CENTER
+        self.head_semi = head_semi or HEAD_SURF_SEMI
+
+    def mass(self, seg):
+        return self.masses[seg]
+
+
+def masses_50th():
+    """de Leva's fractions of 78.2 kg, the H3 head out of de Leva's head+neck"""
+    m = {k: DL[k][0] * M_TOTAL for k in DL}
+    m["head"] = HEAD_MASS
+    m["neck"] = DL["head_neck"][0] * M_TOTAL - HEAD_MASS
+    return m
 
 
 def add(a, b):
@@ -79,6 +103,88 @@ class Model:
         raise KeyError(name)
 
 
+SIZE_50TH = Size(masses_50th())
+
+# ---- the Hybrid III 5th female and 95th male (issue 13 item 6; docs/rider.md "Sizes") ------------
+# [N5] NHTSA, "Hybrid III 5th Percentile Female" physical data page (nhtsa.gov/Research):
+# weight 108.0 lb, stature 59.1 in, erect sitting height 31.0 in (50th male: 172.3 lb, 69.0 in,
+# 34.8 in); assembly weights [lb]: head 8.23, neck 2.0, upper torso 26.5, lower torso 29.2, upper
+# arms (both) 5.2, lower arms and hands (both) 5.2, upper legs (both) 13.8, lower legs and feet
+# (both) 17.9 (sum 108.03); head width 5.6 in, depth 7.2 in. The dummy is the 50th scaled down
+# (Mertz, Irwin, Melvin 1989, SAE 890756).
+# [W95] the Hybrid III 95th male: 223 lb (101.2 kg), stature 188 cm (74 in) (Wikipedia "Hybrid
+# III"; the SAE/Shaw et al. 2007 (ESV 07-0228) segment table was not retrieved) [S].
+LB = 0.45359237         # [kg/lb]
+INCH = 0.0254           # [m/in]
+H3_50_STATURE_IN, H3_50_SIT_IN = 69.0, 34.8   # [N5]
+H3_05_STATURE_IN, H3_05_SIT_IN = 59.1, 31.0   # [N5]
+H3_95_STATURE_IN, H3_95_MASS_LB = 74.0, 223.0  # [W95]
+SEAT_BELOW_H = 0.09     # the seat surface below the hip centres [m] [A] (docs/rider.md)
+
+
+def split(total, a, b):
+    """total split between de Leva segments a and b in proportion to their mass fractions"""
+    fa, fb = DL[a][0], DL[b][0]
+    return total * fa / (fa + fb), total * fb / (fa + fb)
+
+
+def masses_05f():
+    """[N5] assembly weights on the model's segments; an assembly covering two segments is
+    split in de Leva's proportions: lower torso -> middle trunk + pelvis (lower trunk), lower
+    arm and hand -> forearm + hand, lower leg and foot -> shank + foot; pairs halved"""
+    m = {"head": 8.23 * LB, "neck": 2.0 * LB, "upt": 26.5 * LB,
+         "upper_arm": 5.2 / 2 * LB, "thigh": 13.8 / 2 * LB}
+    m["mpt"], m["lpt"] = split(29.2 * LB, "mpt", "lpt")
+    m["forearm"], m["hand"] = split(5.2 / 2 * LB, "forearm", "hand")
+    m["shank"], m["foot"] = split(17.9 / 2 * LB, "shank", "foot")
+    return m
+
+
+def size_05f():
+    mass_k = 108.03 * LB / M_TOTAL                # mass ratio to the 50th (0.6266)
+    stat_k = H3_05_STATURE_IN / H3_50_STATURE_IN  # stature ratio (0.8565)
+    # arms: stature ratio [scaled]; breadths and depths: sqrt(mass ratio / stature ratio) (mass ~
+    # length x breadth^2) [scaled]; legs below
+    kw = math.sqrt(mass_k / stat_k)
+    # head: width and depth [N5], height scaled by their mean ratio to the 50th model's
+    semi = (7.2 / 2 * INCH, 5.6 / 2 * INCH, 0.0)
+    kh = (semi[0] / HEAD_SURF_SEMI[0] + semi[1] / HEAD_SURF_SEMI[1]) / 2
+    semi = (semi[0], semi[1], HEAD_SURF_SEMI[2] * kh)
+    # trunk: the seated height (head top over the seat) is [N5]'s 31.0 in
+    z50 = build(False).cg("rider_head")[2] - H[2]   # the 50th's head CG above the hips
+    kt = (H3_05_SIT_IN * INCH - SEAT_BELOW_H - semi[2]) / z50
+    # legs: standing, the hip centres are at stature - (sitting height - SEAT_BELOW_H) [N5]; the
+    # model's standing hip height is thigh + shank + the ankle 70 mm above the heel, x kl
+    leg50 = (DL["thigh"][3] + DL["shank"][3]) * STATURE_K + 0.07
+    kl = ((H3_05_STATURE_IN - H3_05_SIT_IN) * INCH + SEAT_BELOW_H) / leg50
+    return Size(masses_05f(), kt=kt, ka=stat_k, kl=kl, kw=kw, kh=kh,
+                head_center=(HEAD_SURF_CENTER[0] * kh, 0, 0), head_semi=semi)
+
+
+def head_exponent():
+    """the H3 family's head-to-body mass scaling from the 5th and 50th [N5]: head ratio =
+    (body ratio)^e; e = ln(3.733 / 4.54) / ln(49.00 / 78.2) = 0.42 (the head varies less than
+    the body)"""
+    return math.log(8.23 * LB / HEAD_MASS) / math.log(108.03 * LB / M_TOTAL)
+
+
+def size_95m():
+    """no 95th segment table was retrieved [scaled]: the head's mass from the 5th/50th head
+    exponent (head_exponent), its size x (head mass ratio)^(1/3); every other 50th segment mass
+    x the rest's ratio; lengths x the stature ratio lambda, breadths x sqrt(mass ratio /
+    lambda) (Mertz et al. 1989's geometric scaling)"""
+    mass_k = H3_95_MASS_LB * LB / M_TOTAL
+    lam = H3_95_STATURE_IN / H3_50_STATURE_IN
+    head = HEAD_MASS * mass_k ** head_exponent()
+    rest_k = (H3_95_MASS_LB * LB - head) / (M_TOTAL - HEAD_MASS)
+    m = {k: v * rest_k for k, v in masses_50th().items()}
+    m["head"] = head
+    kh = (head / HEAD_MASS) ** (1 / 3)
+    return Size(m, kt=lam, ka=lam, kl=lam, kw=math.sqrt(mass_k / lam), kh=kh,
+                head_center=tuple(c * kh for c in HEAD_SURF_CENTER),
+                head_semi=tuple(c * kh for c in HEAD_SURF_SEMI))
+
+
 def radii_inertia(m, r, L, long_axis):
     """principal inertia [Ixx, Iyy, Izz] in the reference frame from de Leva's radii
     (sagittal = anteroposterior axis, transverse = left-right, longitudinal = along the
@@ -94,11 +200,15 @@ def ellipsoid(name, center, semi, char):
         name, vec(center), vec(semi), char)
 
 
-def build(neck7=False):
+def build(neck7=False, z=None):
+    """the rider of size z (SIZE_50TH by default; Size below); neck7: MYMOSA's neck"""
+    z = z or SIZE_50TH
     md = Model()
     hz = H[2]
-    s = STATURE_K
-    t = STATURE_K * TRUNK_K
+    s = STATURE_K * z.ka
+    sl = STATURE_K * z.kl
+    t = STATURE_K * TRUNK_K * z.kt
+    kw, kt = z.kw, z.kt
     # ---- spine chain (reference: vertical through the H-point) ----
     mp, cp, rp, Lp = DL["lpt"]
     mm, cm, rm, Lm = DL["mpt"]
@@ -107,40 +217,44 @@ def build(neck7=False):
     z_omph = hz + Lp
     z_xyph = z_omph + Lm
     z_t1 = z_xyph + Lu
-    neck_len = 2 * 0.19 * math.sin(math.radians(37) / 2)   # MYMOSA neck arc chord
+    neck_len = 2 * 0.19 * math.sin(math.radians(37) / 2) * kt   # MYMOSA neck arc chord
     z_oc = z_t1 + neck_len
-    z_head = z_oc + 0.035
+    z_head = z_oc + 0.035 * kt
     x0, y0 = H[0], H[1]
-    pelvis = md.body("rider_pelvis", mp * M_TOTAL, radii_inertia(mp * M_TOTAL, rp, Lp, "z"),
-                     (x0 - 0.02, y0, z_omph - cp * Lp),
-                     [ellipsoid("rider_pelvis", (-0.02, 0, hz - 0.005 - (z_omph - cp * Lp)),
-                                (0.13, 0.17, 0.09), "rider_pelvis")],
+    # the pelvis ellipsoid keeps its bottom 95 mm below the hip centres for every size (the
+    # seat's H-point is a motorcycle mount point, sport_208kg: 91 mm above the seat top)
+    pelvis = md.body("rider_pelvis", z.mass("lpt"), radii_inertia(z.mass("lpt"), rp, Lp, "z"),
+                     (x0 - 0.02 * kw, y0, z_omph - cp * Lp),
+                     [ellipsoid("rider_pelvis", (-0.02 * kw, 0, hz - 0.005 - (z_omph - cp * Lp)),
+                                (0.13 * kw, 0.17 * kw, 0.09), "rider_pelvis")],
                      "de Leva lower trunk (omphalion to hip centres)")
-    lt = md.body("rider_lower_torso", mm * M_TOTAL, radii_inertia(mm * M_TOTAL, rm, Lm, "z"),
+    lt = md.body("rider_lower_torso", z.mass("mpt"), radii_inertia(z.mass("mpt"), rm, Lm, "z"),
                  (x0, y0, z_xyph - cm * Lm),
-                 [ellipsoid("rider_lower_torso", (0.01, 0, 0), (0.11, 0.15, 0.11), "rider_torso")],
+                 [ellipsoid("rider_lower_torso", (0.01 * kw, 0, 0), (0.11 * kw, 0.15 * kw, 0.11 * kt),
+                            "rider_torso")],
                  "de Leva middle trunk (xiphoid to omphalion)")
-    ut = md.body("rider_upper_torso", mu * M_TOTAL, radii_inertia(mu * M_TOTAL, ru, Lu, "z"),
+    ut = md.body("rider_upper_torso", z.mass("upt"), radii_inertia(z.mass("upt"), ru, Lu, "z"),
                  (x0, y0, z_t1 - cu * Lu),
-                 [ellipsoid("rider_upper_torso", (0.02, 0, 0), (0.12, 0.17, 0.13), "rider_torso")],
+                 [ellipsoid("rider_upper_torso", (0.02 * kw, 0, 0), (0.12 * kw, 0.17 * kw, 0.13 * kt),
+                            "rider_torso")],
                  "de Leva upper trunk (C7 to xiphoid)")
     md.joints.append(dict(name="rider_lumbar", type="spherical", parent="rider_pelvis",
                           child="rider_lower_torso", anchor=(x0, y0, z_omph), restraint="rider_lumbar"))
     md.joints.append(dict(name="rider_thoracic", type="spherical", parent="rider_lower_torso",
                           child="rider_upper_torso", anchor=(x0, y0, z_xyph), restraint="rider_thoracic"))
     # ---- head and neck ----
-    mhn = DL["head_neck"][0] * M_TOTAL
-    rh, Lh = DL["head_neck"][2], DL["head_neck"][3] * s
-    neck_mass = mhn - HEAD_MASS
-    md.body("rider_head", HEAD_MASS, radii_inertia(HEAD_MASS, rh, Lh, "z"), (x0, y0, z_head),
-            [ellipsoid("rider_head", HEAD_SURF_CENTER, HEAD_SURF_SEMI, "rider_head")],
+    rh, Lh = DL["head_neck"][2], DL["head_neck"][3] * STATURE_K * z.kh
+    neck_mass = z.mass("neck")
+    head_mass = z.mass("head")
+    md.body("rider_head", head_mass, radii_inertia(head_mass, rh, Lh, "z"), (x0, y0, z_head),
+            [ellipsoid("rider_head", z.head_center, z.head_semi, "rider_head")],
             "H3 head mass; de Leva head radii")
     if not neck7:
-        r, h = 0.05, neck_len
+        r, h = 0.05 * kw, neck_len
         md.body("rider_neck", neck_mass,
                 (neck_mass * (3 * r * r + h * h) / 12, neck_mass * (3 * r * r + h * h) / 12,
                  neck_mass * r * r / 2), (x0, y0, (z_t1 + z_oc) / 2),
-                [ellipsoid("rider_neck", (0, 0, 0), (0.05, 0.05, 0.065), "rider_limb")],
+                [ellipsoid("rider_neck", (0, 0, 0), (0.05 * kw, 0.05 * kw, 0.065 * kt), "rider_limb")],
                 "de Leva head+neck less the H3 head; a cylinder r 0.05 m")
         md.joints.append(dict(name="rider_lower_neck", type="spherical", parent="rider_upper_torso",
                               child="rider_neck", anchor=(x0, y0, z_t1), restraint="rider_neck"))
@@ -149,7 +263,7 @@ def build(neck7=False):
     else:
         # MYMOSA Fig. 3.2: 7 equal vertebrae on an arc of radius 190 mm over 37 deg, T1 to OC,
         # convex forward (cervical lordosis); 8 spherical joints T1-C7 ... C1-OC
-        R, span = 0.19, math.radians(37)
+        R, span = 0.19 * kt, math.radians(37)
         zc = (z_t1 + z_oc) / 2
         xc = x0 - R * math.cos(span / 2)   # arc centre behind the chord
 
@@ -179,25 +293,31 @@ def build(neck7=False):
         # the head's CG over the OC as in the single-neck model (the OC moved forward on the arc)
     # ---- arms ----
     for side, sy in (("l", 1), ("r", -1)):
-        sh = (x0, y0 + sy * 0.175, z_t1 - 0.04)
+        sh = (x0, y0 + sy * 0.175 * kw, z_t1 - 0.04 * kt)
         ma, ca, ra, La = DL["upper_arm"]
         mf, cf, rf, Lf = DL["forearm"]
         mh, ch, rhd, Lhd = DL["hand"]
         La, Lf, Lhd = La * s, Lf * s, Lhd * s
         el = (sh[0], sh[1], sh[2] - La)
         wr = (el[0] + Lf, el[1], el[2])
-        grip = (wr[0] + 0.07, wr[1], wr[2])
-        ua = md.body("rider_upper_arm_" + side, ma * M_TOTAL, radii_inertia(ma * M_TOTAL, ra, La, "z"),
+        grip = (wr[0] + 0.07 * z.ka, wr[1], wr[2])
+        ka = z.ka
+        ua = md.body("rider_upper_arm_" + side, z.mass("upper_arm"),
+                     radii_inertia(z.mass("upper_arm"), ra, La, "z"),
                      (sh[0], sh[1], sh[2] - ca * La),
-                     [ellipsoid("rider_upper_arm_" + side, (0, 0, ca * La - La / 2), (0.045, 0.045, 0.15), "rider_limb")],
+                     [ellipsoid("rider_upper_arm_" + side, (0, 0, ca * La - La / 2),
+                                (0.045 * kw, 0.045 * kw, 0.15 * ka), "rider_limb")],
                      "de Leva upper arm")
-        la = md.body("rider_lower_arm_" + side, mf * M_TOTAL, radii_inertia(mf * M_TOTAL, rf, Lf, "x"),
+        la = md.body("rider_lower_arm_" + side, z.mass("forearm"),
+                     radii_inertia(z.mass("forearm"), rf, Lf, "x"),
                      (el[0] + cf * Lf, el[1], el[2]),
-                     [ellipsoid("rider_lower_arm_" + side, (Lf / 2 - cf * Lf, 0, 0), (0.14, 0.04, 0.04), "rider_limb")],
+                     [ellipsoid("rider_lower_arm_" + side, (Lf / 2 - cf * Lf, 0, 0),
+                                (0.14 * ka, 0.04 * kw, 0.04 * kw), "rider_limb")],
                      "de Leva forearm")
-        hd = md.body("rider_hand_" + side, mh * M_TOTAL, radii_inertia(mh * M_TOTAL, rhd, Lhd, "x"),
+        hd = md.body("rider_hand_" + side, z.mass("hand"), radii_inertia(z.mass("hand"), rhd, Lhd, "x"),
                      (wr[0] + ch * Lhd, wr[1], wr[2]),
-                     [ellipsoid("rider_hand_" + side, (0, 0, 0), (0.05, 0.04, 0.045), "rider_limb")],
+                     [ellipsoid("rider_hand_" + side, (0, 0, 0), (0.05 * ka, 0.04 * kw, 0.045 * kw),
+                                "rider_limb")],
                      "de Leva hand (wrist to 3rd knuckle)")
         md.joints.append(dict(name="rider_shoulder_" + side, type="spherical", parent="rider_upper_torso",
                               child="rider_upper_arm_" + side, anchor=sh, restraint="rider_shoulder"))
@@ -210,30 +330,34 @@ def build(neck7=False):
         md.mounts.append(("rider_grip_" + side, "rider_hand_" + side, sub(grip, hd)))
     # ---- legs ----
     for side, sy in (("l", 1), ("r", -1)):
-        hip = (x0, y0 + sy * 0.085, hz)
+        hip = (x0, y0 + sy * 0.085 * kw, hz)
+        kl = z.kl
         mt, ct, rt, Lt = DL["thigh"]
         ms, cs, rs, Ls = DL["shank"]
         mft, cft, rft, Lft = DL["foot"]
-        Lt, Ls, Lft = Lt * s, Ls * s, Lft * s
+        Lt, Ls, Lft = Lt * sl, Ls * sl, Lft * sl
         kn = (hip[0] + Lt, hip[1], hip[2])
         an = (kn[0], kn[1], kn[2] - Ls)
-        heel = (an[0] - 0.05, an[1], an[2] - 0.07)
-        th = md.body("rider_thigh_" + side, mt * M_TOTAL, radii_inertia(mt * M_TOTAL, rt, Lt, "x"),
+        heel = (an[0] - 0.05 * kl, an[1], an[2] - 0.07 * kl)
+        th = md.body("rider_thigh_" + side, z.mass("thigh"), radii_inertia(z.mass("thigh"), rt, Lt, "x"),
                      (hip[0] + ct * Lt, hip[1], hip[2]),
-                     [ellipsoid("rider_thigh_" + side, (Lt / 2 - ct * Lt, 0, 0), (0.23, 0.08, 0.08), "rider_limb")],
+                     [ellipsoid("rider_thigh_" + side, (Lt / 2 - ct * Lt, 0, 0),
+                                (0.23 * kl, 0.08 * kw, 0.08 * kw), "rider_limb")],
                      "de Leva thigh")
-        sk = md.body("rider_lower_leg_" + side, ms * M_TOTAL, radii_inertia(ms * M_TOTAL, rs, Ls, "z"),
+        sk = md.body("rider_lower_leg_" + side, z.mass("shank"), radii_inertia(z.mass("shank"), rs, Ls, "z"),
                      (kn[0], kn[1], kn[2] - cs * Ls),
-                     [ellipsoid("rider_lower_leg_" + side, (0, 0, cs * Ls - Ls / 2), (0.05, 0.05, 0.23), "rider_limb")],
+                     [ellipsoid("rider_lower_leg_" + side, (0, 0, cs * Ls - Ls / 2),
+                                (0.05 * kw, 0.05 * kw, 0.23 * kl), "rider_limb")],
                      "de Leva shank")
-        ft_cg = (heel[0] + cft * Lft, heel[1], an[2] - 0.04)
-        ft = md.body("rider_foot_" + side, mft * M_TOTAL, radii_inertia(mft * M_TOTAL, rft, Lft, "x"),
+        ft_cg = (heel[0] + cft * Lft, heel[1], an[2] - 0.04 * kl)
+        ft = md.body("rider_foot_" + side, z.mass("foot"), radii_inertia(z.mass("foot"), rft, Lft, "x"),
                      ft_cg,
-                     [ellipsoid("rider_foot_" + side, sub((heel[0] + Lft / 2, heel[1], an[2] - 0.045), ft_cg),
-                                (0.13, 0.05, 0.04), "rider_limb")],
+                     [ellipsoid("rider_foot_" + side, sub((heel[0] + Lft / 2, heel[1], an[2] - 0.045 * kl),
+                                                          ft_cg),
+                                (0.13 * kl, 0.05 * kw, 0.04 * kl), "rider_limb")],
                      "de Leva foot (heel to toe tip)")
         md.cell["thigh_" + side] = (Lt / 2 - ct * Lt, 0, 0)
-        md.cell["shank_" + side] = (0, 0, cs * Ls - 0.07)
+        md.cell["shank_" + side] = (0, 0, cs * Ls - 0.07 * kl)
         md.joints.append(dict(name="rider_hip_" + side, type="spherical", parent="rider_pelvis",
                               child="rider_thigh_" + side, anchor=hip, restraint="rider_hip"))
         # flexion positive: the hinge axis +y turns the lower leg backward
@@ -242,9 +366,10 @@ def build(neck7=False):
                               restraint="rider_knee", range=("-90 deg", "50 deg")))
         md.joints.append(dict(name="rider_ankle_" + side, type="spherical", parent="rider_lower_leg_" + side,
                               child="rider_foot_" + side, anchor=an, restraint="rider_ankle"))
-        peg = (an[0] + 0.13, an[1], an[2] - 0.075)   # sole under the ball of the foot
+        peg = (an[0] + 0.13 * kl, an[1], an[2] - 0.075 * kl)   # sole under the ball of the foot
         md.mounts.append(("rider_peg_" + side, "rider_foot_" + side, sub(peg, ft)))
     md.mounts.insert(0, ("rider_h_point", "rider_pelvis", sub(H, pelvis)))
+    md.oc_below = 0.035 * kt   # the occipital condyle below the head CG [m]
     return md
 
 
@@ -316,8 +441,33 @@ NECK7_CHAR = """\
 """
 
 
-def write(md, path, title, header):
-    out = [header, "mcrash: 1", 'name: "%s"' % title, CHARS.rstrip("\n")]
+def scale_chars(lam, neck_k):
+    """CHARS scaled by Mertz's dimensional analysis (equal density and modulus; length x lam,
+    time x lam): contact deflection x lam, force x lam^2, damping [N s/m] x lam^2; restraint
+    moment x lam^3 (the neck's x neck_k: the ratio of the Nij flexion intercepts), rotational
+    damping x lam^4; angles unchanged"""
+    def num(v):
+        return "%.4g" % v
+    out, name = [], ""
+    for ln in CHARS.splitlines():
+        if ln.startswith("  ") and not ln.startswith("    ") and not ln.lstrip().startswith("#"):
+            name = ln.strip().rstrip(":")
+        if ln.lstrip().startswith("#"):
+            out.append(ln)
+            continue
+        km = neck_k if name == "rider_neck" else lam ** 3
+        ln = re.sub(r"([0-9.]+) mm", lambda g: num(float(g.group(1)) * lam) + " mm", ln)
+        ln = re.sub(r"([0-9.]+) kN", lambda g: num(float(g.group(1)) * lam ** 2) + " kN", ln)
+        ln = re.sub(r"([0-9.]+) N\*m", lambda g: num(float(g.group(1)) * km) + " N*m", ln)
+        ln = re.sub(r"([0-9.]+) N s/m", lambda g: num(float(g.group(1)) * lam ** 2) + " N s/m", ln)
+        ln = re.sub(r"([0-9.]+) N m s/rad", lambda g: num(float(g.group(1)) * lam ** 4) + " N m s/rad",
+                    ln)
+        out.append(ln)
+    return "\n".join(out) + "\n"
+
+
+def write(md, path, title, header, chars=CHARS):
+    out = [header, "mcrash: 1", 'name: "%s"' % title, chars.rstrip("\n")]
     if any(j["restraint"] == "rider_neck7" for j in md.joints):
         out.append(NECK7_CHAR.rstrip("\n"))
     out.append("bodies:")
@@ -351,7 +501,7 @@ def write(md, path, title, header):
     # upper-neck load cell: 17.78 mm above the occipital condyle (the H3's M_oc = My - 0.01778 Fx,
     # analysis/an_nij.c), the OC 35 mm below the head CG; loads on the head
     out.append("  - {name: neck, type: load_cell, body: rider_head, joint: rider_upper_neck, "
-               "point: [0, 0, %s], cfc: 600}" % f(-0.035 + 0.01778))
+               "point: [0, 0, %s], cfc: 600}" % f(-md.oc_below + 0.01778))
     for side, lr in (("l", "left"), ("r", "right")):
         th, sk = md.cell["thigh_" + side], md.cell["shank_" + side]
         # femur: loads on the thigh through the knee (the part above the cell), at mid-femur,
@@ -528,6 +678,52 @@ def scale_masses(md, k):
     return md
 
 
+SIZE_HEADER = """\
+# Hybrid III %(title)s-class rider (issue 13 item 6): 17 segments, single neck, %(mass).2f kg
+# Generated by scripts/gen_rider.py -- edit the script, not this file. Sources and every
+# scaling: docs/rider.md "Sizes". %(src)s
+# Segment CG, inertia radii and joint layout: the 50th-class rider's (hybrid3_50th.yaml, de Leva
+# 1996) with its lengths scaled: trunk, neck and head heights x %(kt).4f, arms x %(ka).4f, legs
+# x %(kl).4f, breadths and depths x %(kw).4f, head x %(kh).4f; inertias m (r L)^2 of the new
+# masses and lengths. Contact characteristics and joint restraints: the 50th's scaled by Mertz's
+# dimensional analysis with lambda = %(lam).4f (stature ratio): deflection x lambda, force and
+# contact damping x lambda^2, restraint moment x lambda^3 (the neck's x %(neck_k).4g: %(neck_src)s),
+# rotational damping x lambda^4 [scaled]; the comments below the scaling are the 50th's.
+# Reference posture and seating as hybrid3_50th.yaml: the same `rider:` block seats it."""
+
+
+MASS_NOTE_05F = {
+    "rider_head": "[N5] head 8.23 lb", "rider_neck": "[N5] neck 2.0 lb",
+    "rider_upper_torso": "[N5] upper torso 26.5 lb",
+    "rider_lower_torso": "[N5] lower torso 29.2 lb x de Leva's middle/lower trunk split",
+    "rider_pelvis": "[N5] lower torso 29.2 lb x de Leva's middle/lower trunk split",
+    "rider_upper_arm": "[N5] upper arms 5.2 lb / 2",
+    "rider_lower_arm": "[N5] lower arms and hands 5.2 lb / 2 x de Leva's forearm/hand split",
+    "rider_hand": "[N5] lower arms and hands 5.2 lb / 2 x de Leva's forearm/hand split",
+    "rider_thigh": "[N5] upper legs 13.8 lb / 2",
+    "rider_lower_leg": "[N5] lower legs and feet 17.9 lb / 2 x de Leva's shank/foot split",
+    "rider_foot": "[N5] lower legs and feet 17.9 lb / 2 x de Leva's shank/foot split",
+}
+
+
+def mass_note(name, table, default):
+    """the mass source of body `name`: table's entry for it or its side-less stem"""
+    stem = name[:-2] if name[-2:] in ("_l", "_r") else name
+    return table.get(name, table.get(stem, default))
+
+
+def write_size(path, z, title, src, lam, neck_k, neck_src, notes=None, default_note=""):
+    md = build(False, z)
+    md.bodies = [(n, m, I, cg, sf, "geometry: %s; mass: %s" % (c, mass_note(n, notes or {},
+                                                                              default_note)))
+                 for n, m, I, cg, sf, c in md.bodies]
+    mass = sum(b[1] for b in md.bodies)
+    hdr = SIZE_HEADER % dict(title=title, mass=mass, src=src, kt=z.kt, ka=z.ka, kl=z.kl,
+                             kw=z.kw, kh=z.kh, lam=lam, neck_k=neck_k, neck_src=neck_src)
+    return write(md, path, "Hybrid III %s-class rider, 17 segments, %.2f kg" % (title, mass),
+                 hdr, scale_chars(lam, neck_k))
+
+
 def write_helmet(path, base, title):
     with open(path, "w") as fh:
         fh.write(HELMET_HEADER % {"base": base} + HELMET_BODY % {"base": base, "title": title})
@@ -563,6 +759,22 @@ def main():
     with open(hp, "w") as fh:
         fh.write(txt)
     write_head_drop(os.path.join(root, "..", "..", "verification", "h3_head_drop_572_32.yaml"))
+    t5 = write_size(os.path.join(root, "hybrid3_05f.yaml"), size_05f(), "5th female",
+                    "Masses: the NHTSA H3 5th female\n# assembly weights (108.03 lb = 49.00 kg); "
+                    "stature 59.1 in, sitting height 31.0 in (NHTSA).",
+                    H3_05_STATURE_IN / H3_50_STATURE_IN, 155.0 / 310.0,
+                    "Myc 155/310 N m, FMVSS 208", MASS_NOTE_05F)
+    t95 = write_size(os.path.join(root, "hybrid3_95m.yaml"), size_95m(), "95th male",
+                     "Mass 223 lb = 101.15 kg, stature 74 in\n# (188 cm) [S]; no 95th segment "
+                     "table retrieved [scaled]: head %.3f kg (the 5th/50th\n# head-to-body "
+                     "exponent %.3f), every other 50th segment mass x %.4f." % (
+                         size_95m().masses["head"], head_exponent(),
+                         size_95m().masses["upt"] / masses_50th()["upt"]),
+                     H3_95_STATURE_IN / H3_50_STATURE_IN,
+                     (H3_95_STATURE_IN / H3_50_STATURE_IN) ** 3, "lambda^3, no 95th Myc retrieved",
+                     {"rider_head": "the 5th/50th head exponent [scaled]"},
+                     "the 50th's x %.4f [scaled]" % (size_95m().masses["upt"] / masses_50th()["upt"]))
+    print("5th female: %.4f kg, 95th male: %.4f kg" % (t5, t95))
 
 
 if __name__ == "__main__":

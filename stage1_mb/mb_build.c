@@ -4,6 +4,7 @@
  * gravity 9.81 m/s^2 along -z. */
 #include "stage1_mb/mb_build_internal.h"
 #include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_egroup.h"
 #include "stage1_mb/mb_impact.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_position.h"
@@ -229,6 +230,7 @@ mcs_status mb_model_build(const mcs_scenario *scn, const mb_opts *opts, mb_model
     if (!st) st = mb_build_loadcells(root, m, err);
     if (!st) st = mb_impact_apply(root, m, err); /* places the built motorcycle group */
     if (!st) st = mb_couple_build(scn, m, err);  /* last: FE parts placed with their bodies */
+    if (!st) st = mb_egroup_build(m, err);       /* the rider's energy balance (mb_egroup.h) */
     if (st) {
         mb_model_destroy(&m);
         return st;
@@ -254,6 +256,7 @@ void mb_model_destroy(mb_model **pm)
     free(m->sensor);
     free(m->loadcell);
     mb_couple_destroy(&m->couple);
+    mb_egroup_destroy(&m->egroup);
     free(m->body_group);
     free(m->presc);
     free(m);

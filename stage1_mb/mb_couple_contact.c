@@ -37,6 +37,8 @@ struct mb_couple_contact {
     int *body; /* their mb body index (nbody)                              */
     int ncontact;
     char (*name)[FE_NAME_MAX]; /* each bodies contact's name (ncontact)     */
+    char (*label)[FE_NAME_MAX]; /* its name if given, else its parts joined by '+' (ncontact) */
+    char (*part0)[FE_NAME_MAX]; /* its first part (ncontact)                 */
 };
 
 struct mb_couple_contact_state {
@@ -48,6 +50,8 @@ struct mb_couple_contact_state {
     double *force;       /* applied in the next ODE step (nbody x 6) [N, N m]         */
     double *jfe, *jbody; /* impulse so far the structure gave / the bodies received
                             (nbody x 6) [N s, N m s]                                  */
+    double *simp, *sfmean, *sforce; /* imp, fmean, force per kernel surface (nsurf x 6): a
+                                       body's are their sums (mb_egroup.c splits by them) */
 };
 
 /* ---- building --------------------------------------------------------------------------- */
@@ -119,6 +123,27 @@ static mcs_status add_surface(fe_builder *fb, const mb_model *m, int k, const ch
 static const char *const unsupported_keys[] = {"friction_dynamic", "friction_decay",
                                                "thickness_scale", "fabric_thickness", NULL};
 
+/* the label and first part of the contact about to be added (cc->ncontact) */
+static int label_contact(mb_couple_contact *cc, const char *nm, char (*parts)[FE_NAME_MAX],
+                         int np)
+{
+    const size_t n = (size_t)cc->ncontact + 1;
+    char(*nl)[FE_NAME_MAX] = realloc(cc->label, sizeof *nl * n);
+    if (nl) cc->label = nl;
+    char(*np0)[FE_NAME_MAX] = realloc(cc->part0, sizeof *np0 * n);
+    if (np0) cc->part0 = np0;
+    if (!nl || !np0) return -1;
+    char *l = cc->label[cc->ncontact];
+    snprintf(l, FE_NAME_MAX, "%.63s", nm ? nm : "");
+    for (int i = 0; !nm && i < np; i++) {
+        size_t k = strlen(l);
+        if (k + 2 < FE_NAME_MAX)
+            snprintf(l + k, FE_NAME_MAX - k, "%s%.62s", i ? "+" : "", parts[i]);
+    }
+    snprintf(cc->part0[cc->ncontact], FE_NAME_MAX, "%.63s", np > 0 ? parts[0] : "");
+    return 0;
+}
+
 static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc, const mcs_node *n,
                               int index, mcs_error *err)
 {
@@ -140,6 +165,8 @@ static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc
     char(*nn)[FE_NAME_MAX] = realloc(cc->name, sizeof *nn * (size_t)(cc->ncontact + 1));
     if (!nn) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     cc->name = nn;
+    if (label_contact(cc, nm, parts, np))
+        return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     memcpy(cc->name[cc->ncontact++], name, FE_NAME_MAX);
     const double mu = mcs_node_num_or(n, "friction", 0);
     const double scale = mcs_node_num_or(n, "penalty_scale", 0);
@@ -202,7 +229,7 @@ void mb_couple_contact_destroy(mb_couple_contact **p)
 {
     mb_couple_contact *c = p ? *p : NULL;
     if (!c) return;
-    free(c->s), free(c->body), free(c->name), free(c);
+    free(c->s), free(c->body), free(c->name), free(c->label), free(c->part0), free(c);
     *p = NULL;
 }
 
@@ -218,9 +245,12 @@ mcs_status mb_couple_contact_state_create(const mb_couple_contact *c, mb_couple_
         s->th = calloc(3 * n, sizeof(double)), s->imp = calloc(6 * n, sizeof(double));
         s->fmean = calloc(6 * n, sizeof(double)), s->force = calloc(6 * n, sizeof(double));
         s->jfe = calloc(6 * n, sizeof(double)), s->jbody = calloc(6 * n, sizeof(double));
+        const size_t ns = (size_t)(c->nsurf ? c->nsurf : 1);
+        s->simp = calloc(6 * ns, sizeof(double)), s->sfmean = calloc(6 * ns, sizeof(double));
+        s->sforce = calloc(6 * ns, sizeof(double));
     }
     if (!s || !s->x0 || !s->x1 || !s->q0 || !s->q1 || !s->th || !s->imp || !s->fmean || !s->force ||
-        !s->jfe || !s->jbody) {
+        !s->jfe || !s->jbody || !s->simp || !s->sfmean || !s->sforce) {
         mb_couple_contact_state_destroy(&s);
         return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     }
@@ -233,7 +263,8 @@ void mb_couple_contact_state_destroy(mb_couple_contact_state **p)
     mb_couple_contact_state *s = p ? *p : NULL;
     if (!s) return;
     free(s->x0), free(s->x1), free(s->q0), free(s->q1), free(s->th), free(s->imp);
-    free(s->fmean), free(s->force), free(s->jfe), free(s->jbody), free(s);
+    free(s->fmean), free(s->force), free(s->jfe), free(s->jbody);
+    free(s->simp), free(s->sfmean), free(s->sforce), free(s);
     *p = NULL;
 }
 
@@ -299,6 +330,7 @@ void mb_couple_contact_begin(const mb_model *m, mb_state *s)
         quat_log(dq, cs->th + 3 * i);
     }
     memset(cs->imp, 0, 6 * (size_t)c->nbody * sizeof(double));
+    memset(cs->simp, 0, 6 * (size_t)c->nsurf * sizeof(double));
 }
 
 /* body slot i at fraction tau: CG, rotation; world angular velocity over the step */
@@ -378,10 +410,12 @@ void mb_couple_contact_sum(const mb_model *m, mb_state *s, double tau, double dt
         surf_point(m, cs, v, tau, 1, cp, vel);
         mb_sub(cp, x, r);
         mb_cross(r, F, mc);
-        double *imp = cs->imp + 6 * i;
+        double *imp = cs->imp + 6 * i, *si = cs->simp + 6 * k;
         for (int j = 0; j < 3; j++) {
             imp[j] += F[j] * dth;
             imp[3 + j] += (M[j] + mc[j]) * dth;
+            si[j] += F[j] * dth;
+            si[3 + j] += (M[j] + mc[j]) * dth;
         }
     }
 }
@@ -391,6 +425,7 @@ void mb_couple_contact_end(const mb_model *m, mb_state *s, double h, double alph
     const mb_couple_contact *c = m->couple->contact;
     mb_couple_contact_state *cs = s->couple->contact;
     mb_couple_mean_force(6 * c->nbody, cs->imp, 1, h, alpha, started, cs->fmean, cs->force);
+    mb_couple_mean_force(6 * c->nsurf, cs->simp, 1, h, alpha, started, cs->sfmean, cs->sforce);
     for (int i = 0; i < 6 * c->nbody; i++)
         cs->jfe[i] += cs->imp[i];
     for (int i = 0; i < c->nbody; i++) {
@@ -457,4 +492,37 @@ void mb_couple_contact_force(const mb_model *m, const mb_state *s, int k, double
         for (int j = 0; j < 3; j++)
             f[j] += F[j];
     }
+}
+
+int mb_couple_contact_nsurf(const mb_model *m)
+{
+    const mb_couple_contact *c = m->couple ? m->couple->contact : NULL;
+    return c ? c->nsurf : 0;
+}
+
+int mb_couple_contact_surf(const mb_model *m, int k, int *contact)
+{
+    const mb_couple_contact *c = m->couple->contact;
+    *contact = c->s[k].contact;
+    return c->body[c->s[k].body];
+}
+
+double mb_couple_contact_surf_work(const mb_model *m, const mb_state *s, int k)
+{
+    const cc_surf *v = &m->couple->contact->s[k];
+    const fe_contact_state *ks = s->couple->fe->contact;
+    return (v->facets ? ks->fac_work : ks->ell_work)[v->index];
+}
+
+const char *mb_couple_contact_label(const mb_model *m, int k, const char **part0)
+{
+    const mb_couple_contact *c = m->couple->contact;
+    *part0 = c->part0[k];
+    return c->label[k];
+}
+
+const double *mb_couple_contact_surf_force(const mb_model *m, const mb_state *s, int k)
+{
+    (void)m;
+    return s->couple->contact->sforce + 6 * k;
 }

@@ -47,5 +47,15 @@ int mb_couple_contact_impulse(const mb_model *m, const mb_state *s, int body, do
  * none; its force on the bodies at the last FE step (the sum over its surfaces, world) [N] */
 int mb_couple_contact_find(const mb_model *m, const char *name);
 void mb_couple_contact_force(const mb_model *m, const mb_state *s, int k, double f[3]);
+/* the kernel surfaces of the bodies contacts (mb_egroup.c): how many; surface k's body and
+ * contact; the work it did on the FE nodes so far [J]; a contact's label (its name, else its
+ * parts joined by '+') and first part */
+int mb_couple_contact_nsurf(const mb_model *m);
+int mb_couple_contact_surf(const mb_model *m, int k, int *contact);
+double mb_couple_contact_surf_work(const mb_model *m, const mb_state *s, int k);
+const char *mb_couple_contact_label(const mb_model *m, int k, const char **part0);
+/* the force at the CG and moment about it that surface k applies to its body in this ODE step
+ * (its share of the body's, mb_couple_contact_apply) (6) [N, N m] */
+const double *mb_couple_contact_surf_force(const mb_model *m, const mb_state *s, int k);
 
 #endif

@@ -150,10 +150,13 @@ typedef struct {
     mb_opts opts;
     double rider_residual; /* largest rider mount point to motorcycle mount point distance after
                               seating the rider (mb_position.c) [m]; -1 without a rider: block */
+    char rider_dummy[16]; /* Hybrid III size of the rider (rider: dummy:, an_dummy.h names),
+                             "" without a rider: block; written as /stage1 attribute `dummy` */
     int nloadcell;          /* load-cell sensors (mb_loadcell.h)                              */
     struct mb_loadcell *loadcell; /* (nloadcell)                                              */
     struct mb_couple *couple;     /* FE parts coupled to the bodies (mb_couple.h), NULL none */
     struct mb_presc *presc;       /* prescribed bodies (mb_prescribe.h) (nbody), NULL none    */
+    struct mb_egroup *egroup;     /* energy groups (mb_egroup.h: the rider's), NULL none      */
     /* the impact: placement (mb_impact.c) of the motorcycle group, x' = R x + t; the FE parts
      * carried by its bodies move with it (mb_couple.c, fe/fe_scn_place.c) */
     double place_R[9], place_t[3]; /* rotation (row-major) [-], translation [m]             */
@@ -266,6 +269,7 @@ struct mb_state {
     double *presc_next;       /* prescribed bodies: pose and velocities at t + h, pose at t
                                  (nbody x 20) (mb_prescribe.c), NULL none                   */
     double w_presc;           /* work of the prescribed bodies on the rest [J]              */
+    struct mb_egroup_state *egroup; /* of m->egroup (mb_egroup.h), NULL none                  */
 };
 
 #define MB_NENERGY 7

@@ -9,6 +9,7 @@
 #include "analysis/an_cfc.h"
 #include "core/mcs_results.h"
 #include "stage1_mb/mb_couple_rx.h"
+#include "stage1_mb/mb_egroup.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
 
@@ -99,8 +100,12 @@ mcs_status mb_output_write(const mb_model *m, const mb_state *s, mcs_results *r,
     if (!st) st = mcs_results_set_attr_double(r, grp, "output_rate", m->output_rate, err);
     if (!st) st = mcs_results_set_attr_int(r, grp, "steps", (int)s->step, err);
     if (!st) st = mcs_results_set_attr_double(r, grp, "energy_drift", mb_energy_drift(m, s), err);
+    /* the rider's Hybrid III size (rider: dummy:): mcrash injury's intercepts and limits */
+    if (!st && m->rider_dummy[0])
+        st = mcs_results_set_attr_str(r, grp, "dummy", m->rider_dummy, err);
     /* fire_time of the coupled bags and retractors (their groups: mb_couple_out.c) */
     if (!st) st = mb_couple_trigger_write(m, s, r, err);
+    if (!st) st = mb_egroup_write(m, s, r, mb_out_stage(m), err); /* the rider's (mb_egroup.h) */
     free(buf);
     return st;
 }

@@ -544,8 +544,11 @@ static mcs_status seat(pos_ctx *c)
 mcs_status mb_position_rider(const mcs_node *root, mb_model *m, mcs_error *err)
 {
     m->rider_residual = -1;
+    m->rider_dummy[0] = 0;
     const mcs_node *block = mcs_node_get(root, "rider");
     if (mcs_node_kind(block) != MCS_NODE_MAP) return MCS_OK;
+    const char *dummy = mcs_node_str(mcs_node_get(block, "dummy"));
+    snprintf(m->rider_dummy, sizeof m->rider_dummy, "%s", dummy ? dummy : "50th_male");
     pos_ctx c = {.m = m, .root = root, .block = block, .err = err};
     size_t nb = (size_t)m->nbody, nj = (size_t)(m->njoint > 0 ? m->njoint : 1);
     c.rider = calloc(nb, sizeof *c.rider);

@@ -6,7 +6,14 @@
  * displacement = x(t) - x(0) of the point; expressed in the body's frame and turned into the
  * SAE J211 sign convention (x forward, y right, z down) from the ISO 8855 body axes
  * (x forward, y left, z up): (x, -y, -z). The first output row (t = 0) carries the
- * accelerations of the first step. */
+ * accelerations of the first step.
+ * The body record's `acceleration` (/stage1/bodies/<b>/acceleration) is the mean over the
+ * output interval that ends at the row, (v_k - v_k-1) / (t_k - t_k-1) of the recorded CG
+ * velocities (row 0: the first step's): a sample of the step's acceleration at 10 kHz would
+ * alias the contact pulses, which change within a few steps, and would not integrate back to
+ * the velocities (the pulse method of translators/tr_motion.h integrates these means). The
+ * sensor channels are not changed by this: the step's acceleration at the row, CFC filtered. */
+#include "stage1_mb/mb_egroup.h"
 #include "stage1_mb/mb_loadcell.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
@@ -70,7 +77,15 @@ static void record_row(const mb_model *m, const mb_state *s, long row)
         memcpy(r + 3, k->quat, 4 * sizeof *r);
         memcpy(r + 7, k->vel, 3 * sizeof *r);
         memcpy(r + 10, k->angvel, 3 * sizeof *r);
-        memcpy(r + 13, s->acc + 3 * b, 3 * sizeof *r);
+        if (row == 0) {
+            memcpy(r + 13, s->acc + 3 * b, 3 * sizeof *r);
+            continue;
+        }
+        /* the mean over the output interval: (v_k - v_k-1) / (t_k - t_k-1) */
+        const double *rp = r - (size_t)m->nbody * MB_BODY_ROW;
+        double dt = s->t - s->rec_t[row - 1];
+        for (int i = 0; i < 3; i++)
+            r[13 + i] = (k->vel[i] - rp[7 + i]) / dt;
     }
     for (int i = 0; i < m->nsensor; i++)
         sensor_value(s, &m->sensor[i], s->rec_sensor + ((size_t)row * m->nsensor + i) * 3);
@@ -100,5 +115,6 @@ void mb_record(const mb_model *m, mb_state *s)
         mb_loadcell_record(m, s, 0); /* t = 0 takes the first step's joint loads too */
     }
     if (s->step % m->out_every != 0 || s->nrec >= m->nout) return;
+    if (m->egroup) mb_egroup_record(m, s, s->nrec);
     record_row(m, s, s->nrec++);
 }

@@ -1,6 +1,7 @@
 /* mb_state.c: a state of a stage-1 model: the ODE world built from the model, the histories,
  * the scratch and the output records, all allocated here once (none in the time loop). */
 #include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_egroup.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_prescribe.h"
 #include "stage1_mb/mb_vec.h"
@@ -78,6 +79,7 @@ mcs_status mb_state_create(const mb_model *m, mb_state **out, mcs_error *err)
     mcs_status st = build_world(m, s, err);
     if (!st) st = mb_prescribe_init(m, s, err);
     if (!st && m->couple) st = mb_couple_state_create(m, &s->couple, err);
+    if (!st && m->egroup) st = mb_egroup_state_create(m, &s->egroup, err);
     if (st) {
         mb_state_destroy(&s);
         return st;
@@ -105,6 +107,7 @@ void mb_state_destroy(mb_state **ps)
     if (!s) return;
     mb_world_destroy(&s->world);
     mb_couple_state_destroy(&s->couple);
+    mb_egroup_state_destroy(&s->egroup);
     free(s->pair), free(s->r1), free(s->r3), free(s->att);
     free(s->kin), free(s->pc), free(s->vel_prev), free(s->angvel_prev), free(s->acc), free(s->angacc);
     free(s->pos0), free(s->rot0);

@@ -2,6 +2,7 @@
  * step, at the new poses, so that the energy of this step and the forces of the next one use
  * the same geometry (mb_state_create detects once before the first step). */
 #include "stage1_mb/mb_couple.h"
+#include "stage1_mb/mb_egroup.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_prescribe.h"
 
@@ -51,6 +52,8 @@ mcs_status mb_step(const mb_model *m, mb_state *s, mcs_error *err)
     s->t = (double)s->step * m->h;
     /* prescribed bodies: exactly on the callback's pose and velocities at the new time */
     if (m->presc) mb_prescribe_end(m, s);
+    /* energy groups: the loads of the step and the mean velocities -> the partners' work */
+    if (m->egroup) mb_egroup_step(m, s);
     /* FE parts: subcycle to the new time with the attached nodes on the bodies' motion */
     if (m->couple && (st = mb_couple_advance(m, s, err))) return st;
     lap(s, MB_T_integrate, &t0);

@@ -30,7 +30,7 @@ static double crit(const char *json, const char *key, const char *field)
  * (compression negative: V D > 0 as for a positive D), femur and tibia peaks, head angular
  * velocity, and an unfiltered pelvis body acceleration of a constant 30 g. The head pulse's
  * amplitude A [g] is the caller's. */
-static void write_run(const char *path, int nt, double h, double A)
+static void write_run_as(const char *path, int nt, double h, double A, const char *dummy)
 {
     double *t = calloc((size_t)nt, sizeof(double)), *buf = calloc((size_t)nt * 3, sizeof(double));
     double *z = calloc((size_t)nt, sizeof(double));
@@ -85,11 +85,17 @@ static void write_run(const char *path, int nt, double h, double A)
     }
     for (int i = 0; i < nt; i++) buf[3 * i] = 0, buf[3 * i + 1] = 0, buf[3 * i + 2] = 30 * G;
     mcs_results_put_body(r, 1, "pelvis", "acceleration", (size_t)nt, buf, &e);
+    if (dummy) mcs_results_set_attr_str(r, "/stage1", "dummy", dummy, &e);
     mcs_results_commit(&r, &e);
 done:
     if (e.status) fprintf(stderr, "write_run: %s\n", e.msg);
     mcs_results_abort(&r);
     free(t), free(buf), free(z);
+}
+
+static void write_run(const char *path, int nt, double h, double A)
+{
+    write_run_as(path, nt, h, A, NULL);
 }
 
 /* HIC of the half-sine: tan x = 5x/3 (see test_criteria.c); with h = 2e-5 s the run gives
@@ -230,6 +236,42 @@ static void test_injury_errors(void)
     CHECK_STR_CONTAINS(r->err, "head_ax");
 }
 
+/* the dummy size (analysis/an_dummy.h): a file whose /stage1 attribute dummy is 5th_female is
+ * rated with the Hybrid III 5th female's Nij intercepts (FMVSS 208: 4287 / 3880 N, 155 / 67
+ * N m, REFERENCES.md) and neck tension limit (2620 N, FMVSS 208 S15.3, unverified); --dummy
+ * overrides the file. Hand calculation on the four neck points of write_run: with the 5th's
+ * intercepts the largest is CE at the 4th point, 1232/3880 + (100 + 0.01778 x 500)/67 = 1.9427;
+ * with the 50th's, 1232/6160 + 108.89/135 = 1.0066 (also CE) */
+static void test_injury_dummy(void)
+{
+    char path[128], args[256];
+    snprintf(path, sizeof path, "%s/f05.h5", tmpdir);
+    write_run_as(path, 4001, 2e-5, 100, "5th_female");
+    double ce05 = 1232 / 3880.0 + (100 + 0.01778 * 500) / 67.0;
+    double ce50 = 1232 / 6160.0 + (100 + 0.01778 * 500) / 135.0;
+    snprintf(args, sizeof args, "injury %s --json", path);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "\"dummy\": \"5th_female\"");
+    CHECK_NEAR(crit(r->out, "nij", "value"), ce05, 1e-9);
+    CHECK_NEAR(crit(r->out, "neck_tension", "limit"), 2620, 0);
+    CHECK_NEAR(crit(r->out, "femur_compression", "limit"), 6805, 0);
+    CHECK_NEAR(crit(r->out, "hic15", "limit"), 700, 0); /* the same for both sizes */
+    snprintf(args, sizeof args, "injury %s --dummy 50th_male --json", path);
+    r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_NEAR(crit(r->out, "nij", "value"), ce50, 1e-9);
+    CHECK_NEAR(crit(r->out, "neck_tension", "limit"), 4170, 0);
+    snprintf(args, sizeof args, "injury %s", path);
+    r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "stage 1, Hybrid III 5th_female");
+    snprintf(args, sizeof args, "injury %s --dummy 10th_child", path);
+    r = cli_run(args);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "50th_male|5th_female|95th_male");
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_injcli_XXXXXX");
@@ -237,6 +279,7 @@ int main(void)
     RUN(test_injury_table);
     RUN(test_injury_two_files);
     RUN(test_injury_errors);
+    RUN(test_injury_dummy);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", tmpdir);

@@ -55,6 +55,52 @@ static double injury(const char *file, const char *key)
     return v ? strtod(v + 9, NULL) : NAN;
 }
 
+/* the value after "\"name\": \"<name>\", " + key in `mcrash energy FILE --json`'s output
+ * (NaN if absent) */
+static double json_after(const char *out, const char *name, const char *key)
+{
+    char pat[96];
+    snprintf(pat, sizeof pat, "\"name\": \"%s\"", name);
+    const char *p = out ? strstr(out, pat) : NULL, *v = p ? strstr(p, key) : NULL;
+    return v ? strtod(v + strlen(key), NULL) : NAN;
+}
+
+/* the rider's energy (paper Eq. 9, Fig. 24b) of the concept run through `mcrash energy`: the
+ * categories' cumulative contact energy at 300 ms, the balance's closure */
+static void energy_ranking(const char *conc)
+{
+    char args[512];
+    snprintf(args, sizeof args, "energy %s --json", conc);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    if (r->status) return;
+    const char *out = r->out, *cat = strstr(out, "\"categories\"");
+    const char *bal = strstr(out, "\"total\": [");
+    double e0 = bal ? strtod(bal + 10, NULL) : NAN, worst = NAN;
+    const char *w = strstr(out, "\"closure_max\": ");
+    if (w) worst = strtod(w + 15, NULL);
+    static const char *const cats[] = {"belts", "airbags", "motorcycle", "foam", "opponent"};
+    double e[5], sum = 0;
+    for (int k = 0; k < 5; k++) e[k] = json_after(cat, cats[k], "\"energy\": "), sum += e[k];
+    const char *ct = strstr(out, "\"contact_total\": [");
+    double total = ct ? strtod(strchr(ct, ',') + 1, NULL) : NAN;
+    printf("  rider energy at 300 ms: belts %.0f J, airbags %.0f J, motorcycle %.0f J, foam %.0f J,"
+           " opponent %.0f J (sum %.0f of contact_total %.0f J); initial %.0f J, closure %.2e\n",
+           e[0], e[1], e[2], e[3], e[4], sum, total, e0, worst / e0);
+    FIG("validation_restraints.p413_e_belts", "%.0f", e[0]);
+    FIG("validation_restraints.p413_e_airbags", "%.0f", e[1]);
+    FIG("validation_restraints.p413_e_moto", "%.0f", e[2]);
+    FIG("validation_restraints.p413_e_foam", "%.0f", e[3]);
+    FIG("validation_restraints.p413_e_opp", "%.0f", e[4]);
+    FIG("validation_restraints.p413_e_total", "%.0f", total);
+    FIG("validation_restraints.p413_e_initial", "%.0f", e0);
+    FIG_TOL("validation_restraints.p413_e_closure", "%.1e", worst / e0, 3e-6);
+    CHECK(worst / e0 < 1e-3);
+    CHECK(fabs(sum - total) < 1e-6 * total); /* no ground contact, no other category here */
+    /* the restraints (belts, bag, foam) take more than the motorcycle and the car together */
+    CHECK(e[0] + e[1] + e[3] > e[2] + e[4]);
+}
+
 /* |a(i) - b(i)| of two (n x 3) arrays' rows, in the axes of quaternion q (w, x, y, z): R^T d */
 static void rel_in_frame(const double *a, const double *b, const double *q, double r[3])
 {
@@ -313,6 +359,7 @@ static void test_413_phases(void)
     mcs_array_free(&p), mcs_array_free(&V), mcs_array_free(&m), mcs_array_free(&cr);
     mcs_results_close(&h);
     mcs_results_close(&hv);
+    energy_ranking(conc);
 }
 
 int main(void)

@@ -18,14 +18,20 @@
  *   Linear and angular acceleration jump at the samples (the curve is C1, not C2).
  * TR_MOTION_PULSE: the paper's (seed 001 Sec. 2.2.2): the initial position, orientation and
  *   velocity, then the written linear acceleration and angular velocity histories integrated.
- *   Both histories are taken piecewise linear between samples and integrated exactly in
- *   position (trapezoidal rule for the velocity, its exact cubic for the position; exact for
- *   polynomials up to cubic). Orientation: the 4th-order Magnus step of the piecewise-linear
- *   w, theta(tau) = tau w_i + tau^2/(2h) dw - tau^3/(12h) w_i x dw (dw = w_i+1 - w_i), then
- *   q = exp(theta) Q_i; exact for constant spin. Angular velocity returned is d/dt of that
- *   orientation (it differs from the linear w by the Magnus remainder, O(h^2 |w| |dw|)).
- *   Nothing ties the integral to the written positions: it drifts; tr_motion_drift() gives
- *   the largest deviation from the written position, orientation and velocity.
+ *   Linear: the file's acceleration row k > 0 is the mean over [t_k-1, t_k] (stage 1 writes
+ *   (v_k - v_k-1) / (t_k - t_k-1), stage1_mb/mb_sensor.c), row 0 is a(t_0). On each interval
+ *   a(t) is the quadratic with the interval's mean and the edge values A_k (the means
+ *   interpolated linearly to t_k between the intervals' midpoints; A_0 = a(t_0); at the end
+ *   extrapolated): continuous, exact for a linear a(t), and the velocity it integrates to
+ *   equals the written one at every sample (to round-off). Integrated exactly (position
+ *   error O(h^4) on a smooth motion). Orientation: the written w (samples of the state) taken
+ *   piecewise linear and integrated by the 4th-order Magnus step, theta(tau) = tau w_i +
+ *   tau^2/(2h) dw - tau^3/(12h) w_i x dw (dw = w_i+1 - w_i), then q = exp(theta) Q_i; exact
+ *   for constant spin, order 2 otherwise (the linear w). Angular velocity returned is d/dt of
+ *   that orientation (it differs from the linear w by the Magnus remainder,
+ *   O(h^2 |w| |dw|)). Nothing ties the integral to the written positions and orientations:
+ *   it drifts; tr_motion_get_drift() gives the largest deviation from the written position,
+ *   orientation and velocity.
  *
  * Errors (all exit-2 class): a file that is not HDF5 or is corrupt (MCS_ERR_IO/HDF5), without
  * /stage1 or /stage1/time, a time axis not strictly increasing, datasets of the wrong shape or

@@ -57,23 +57,51 @@ static void magnus(const double w0[3], const double w1[3], double h, double tau,
 void tr_motion_pulse_eval(const struct tr_motion *m, const tr_motion_body_data *b, int i, double t,
                           tr_motion_kin *k)
 {
-    double h = m->t[i + 1] - m->t[i], tau = t - m->t[i];
-    /* linear acceleration between the samples, integrated exactly from P_i, V_i */
-    const double *a0 = b->acc + 3 * i, *a1 = b->acc + 3 * (i + 1);
+    double h = m->t[i + 1] - m->t[i], s = (t - m->t[i]) / h, s2 = s * s, s3 = s2 * s;
+    /* linear acceleration: the quadratic from the edge values A_i, A_i+1 whose mean over the
+     * interval is the written mean, a(s) = A_i (1 - s) + A_i+1 s + 6 c s (1 - s),
+     * c = mean - (A_i + A_i+1) / 2; integrated exactly from P_i, V_i */
+    const double *a0 = b->aedge + 3 * i, *a1 = b->aedge + 3 * (i + 1), *am = b->acc + 3 * (i + 1);
     const double *p0 = b->ipos + 3 * i, *v0 = b->ivel + 3 * i;
     for (int j = 0; j < 3; j++) {
-        double da = (a1[j] - a0[j]) / h;
-        k->acc[j] = a0[j] + da * tau;
-        k->vel[j] = v0[j] + tau * (a0[j] + 0.5 * da * tau);
-        k->pos[j] = p0[j] + tau * (v0[j] + tau * (0.5 * a0[j] + da * tau / 6));
+        double c = am[j] - 0.5 * (a0[j] + a1[j]);
+        k->acc[j] = a0[j] * (1 - s) + a1[j] * s + 6 * c * (s - s2);
+        k->vel[j] = v0[j] + h * (a0[j] * (s - 0.5 * s2) + a1[j] * 0.5 * s2 + c * (3 * s2 - 2 * s3));
+        k->pos[j] = p0[j] + h * (v0[j] * s + h * (a0[j] * (0.5 * s2 - s3 / 6) + a1[j] * s3 / 6 +
+                                                  c * (s3 - 0.5 * s2 * s2)));
     }
     double th[3], thd[3], thdd[3];
-    magnus(b->angvel + 3 * i, b->angvel + 3 * (i + 1), h, tau, th, thd, thdd);
+    magnus(b->angvel + 3 * i, b->angvel + 3 * (i + 1), h, t - m->t[i], th, thd, thdd);
     rotate(th, thd, thdd, b->iquat + 4 * i, k);
+}
+
+/* the acceleration at the samples from the interval means M_k (row k > 0) and a(t_0) (row 0):
+ * inside, the linear interpolation of the means at the intervals' midpoints, A_k =
+ * (M_k h_k+1 + M_k+1 h_k) / (h_k + h_k+1); at the end their linear extrapolation; at t_0 the
+ * written a(t_0). Exact for a linear a(t). */
+static void accel_edges(const struct tr_motion *m, tr_motion_body_data *b)
+{
+    int n = m->nt - 1; /* intervals */
+    const double *M = b->acc;
+    memcpy(b->aedge, b->acc, 3 * sizeof(double));
+    for (int k = 1; k < n; k++) {
+        double hk = m->t[k] - m->t[k - 1], hn = m->t[k + 1] - m->t[k];
+        for (int j = 0; j < 3; j++)
+            b->aedge[3 * k + j] = (M[3 * k + j] * hn + M[3 * (k + 1) + j] * hk) / (hk + hn);
+    }
+    for (int j = 0; j < 3; j++) {
+        double e = M[3 * n + j];
+        if (n > 1) {
+            double hl = m->t[n] - m->t[n - 1], hp = m->t[n - 1] - m->t[n - 2];
+            e += (M[3 * n + j] - M[3 * (n - 1) + j]) * hl / (hl + hp);
+        }
+        b->aedge[3 * n + j] = e;
+    }
 }
 
 void tr_motion_pulse_integrate(const struct tr_motion *m, tr_motion_body_data *b)
 {
+    accel_edges(m, b);
     memcpy(b->ipos, b->pos, 3 * sizeof(double));
     memcpy(b->ivel, b->vel, 3 * sizeof(double));
     memcpy(b->iquat, b->quat, 4 * sizeof(double));

@@ -10,7 +10,9 @@ typedef struct {
     double *quat;          /* written orientation, unit, w x y z [-] (nt x 4)          */
     double *vel;           /* written velocity [m/s] (nt x 3)                          */
     double *angvel;        /* written angular velocity, world [rad/s] (nt x 3)         */
-    double *acc;           /* written acceleration [m/s^2] (nt x 3), NULL for pose     */
+    double *acc;           /* written acceleration [m/s^2] (nt x 3), NULL for pose: row 0
+                              a(t_0), row k > 0 the mean over [t_k-1, t_k]              */
+    double *aedge;         /* pulse: acceleration at the samples (nt x 3) [m/s^2]      */
     double *ipos;          /* pulse: integrated position at the samples [m] (nt x 3)   */
     double *ivel;          /* pulse: integrated velocity at the samples [m/s] (nt x 3) */
     double *iquat;         /* pulse: integrated orientation at the samples (nt x 4)    */

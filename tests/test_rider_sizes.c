@@ -9,7 +9,11 @@
 #include "analysis/an_criteria.h"
 #include "analysis/an_injury.h"
 #include "analysis/an_limits.h"
+#include "core/mcs_scenario.h"
+#include "fe/fe_model.h"
+#include "stage1_mb/mb_couple.h"
 #include "stage1_mb/mb_model.h"
+#include "stage2_fe/s2_scenario.h"
 #include "stage1_mb/mb_position.h"
 #include "stage1_mb/mb_vec.h"
 #include "tests/figures.h"
@@ -403,6 +407,79 @@ static void test_scenario_pairs(void)
     }
 }
 
+/* ---- stage 2 of the concept case with the 5th female ---- */
+
+/* distance of x from the ellipsoid surface s of the built model, to first order (as
+ * tests/test_s2_concept.c) */
+static double surf_distance(const mb_model *m, const mb_surface *s, const double x[3])
+{
+    const mb_body_desc *b = &m->body[s->body];
+    double R[9], c[3], d[3], e[3], l[3];
+    mb_quat_to_rot(b->quat, R);
+    for (int i = 0; i < 3; i++)
+        c[i] = b->pos[i] + R[3 * i] * s->center[0] + R[3 * i + 1] * s->center[1] +
+               R[3 * i + 2] * s->center[2];
+    for (int i = 0; i < 3; i++)
+        d[i] = x[i] - c[i];
+    for (int i = 0; i < 3; i++)
+        e[i] = R[i] * d[0] + R[3 + i] * d[1] + R[6 + i] * d[2];
+    for (int i = 0; i < 3; i++)
+        l[i] = s->rot[i] * e[0] + s->rot[3 + i] * e[1] + s->rot[6 + i] * e[2];
+    double f2 = 0, g2 = 0;
+    for (int i = 0; i < 3; i++) {
+        f2 += l[i] * l[i] / (s->semi[i] * s->semi[i]);
+        g2 += l[i] * l[i] / pow(s->semi[i], 4);
+    }
+    double f = sqrt(f2);
+    return (f - 1) / (sqrt(g2) / f);
+}
+
+/* iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml: compiles (stage2_fe/s2_scenario.h)
+ * and builds with the 5th female seated, her dummy size kept; the tank foam pads (placed for
+ * the 50th's thighs, 22 mm clear) clear hers at t = 0 too (thigh ellipsoid to the pads' outer
+ * nodes). The stage-2 run itself waits for `mcrash stage2`. */
+static void test_stage2_05f(void)
+{
+    mcs_scenario *s2 = NULL, *c2 = NULL;
+    mcs_error err = {0};
+    mb_model *m = NULL;
+    if (mcs_scenario_load("scenarios/iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml", &s2,
+                          &err))
+        fprintf(stderr, "%s\n", err.msg);
+    CHECK(s2 != NULL);
+    if (s2) CHECK(s2_scenario_compile(s2, &c2, &err) == MCS_OK);
+    if (c2 && mb_model_build(c2, NULL, &m, &err)) fprintf(stderr, "%s\n", err.msg);
+    CHECK(m != NULL && m->couple != NULL);
+    if (!m || !m->couple) goto done;
+    CHECK(strcmp(m->rider_dummy, "5th_female") == 0);
+    CHECK_NEAR(mt_rider_mass(m, &(int){0}), 108.03 * LB, 1e-3);
+    const fe_model *fm = m->couple->fe.model;
+    const char *pads[2] = {"pad_tank_l", "pad_tank_r"},
+               *thigh[2] = {"rider_thigh_l", "rider_thigh_r"};
+    double gap = INFINITY;
+    for (int k = 0; k < 2; k++) {
+        int ip = -1, st = -1;
+        for (int i = 0; i < fm->npart; i++)
+            if (strcmp(fm->part[i].name, pads[k]) == 0) ip = i;
+        for (int i = 0; i < m->nsurf; i++)
+            if (strcmp(m->surf[i].name, thigh[k]) == 0) st = i;
+        CHECK(ip >= 0 && st >= 0);
+        if (ip < 0 || st < 0) continue;
+        const fe_part *p = &fm->part[ip];
+        for (int e = p->elem_begin; e < p->elem_end; e++)
+            for (int j = 4; j < 8; j++)
+                gap = fmin(
+                    gap, surf_distance(m, &m->surf[st], fm->node_x0 + 3 * fm->hex_node[8 * e + j]));
+    }
+    printf("  5th female stage 2: tank pads %.1f mm from her thighs at t = 0\n", gap * 1e3);
+    FIG("rider.size_05f_pad_gap_mm", "%.0f", gap * 1e3);
+    CHECK(gap > 0);
+done:
+    mb_model_destroy(&m);
+    mcs_scenario_destroy(&c2);
+    mcs_scenario_destroy(&s2);
+}
+
 int main(void)
 {
     RUN(test_mass_and_dimensions);
@@ -410,5 +487,6 @@ int main(void)
     RUN(test_seated);
     RUN(test_limits_scaling);
     RUN(test_scenario_pairs);
+    RUN(test_stage2_05f);
     TEST_END();
 }

@@ -147,7 +147,11 @@ static double check_belt(mcs_results *h, const char *name, double t_fire, const 
                "limiter payout %.1f mm\n",
                name, before, slope_err, end_err, fpk, 1e3 * plateau, 1e3 * lim.v[lim.n - 1]);
         CHECK(before == 0);
-        CHECK(slope_err < 1e-12);
+        /* a row holds the state of the last FE step before its time (docs/contracts.md), so it
+         * lags the row by less than one ODE step (10 us); where the FE subcycle changes its
+         * number of steps (k = 1 or 2 at 10 us while the bag unfolds), a sample's increment
+         * differs from Eq. 3's by at most the pay-in over one ODE step, 100/15 mm/ms x 10 us */
+        CHECK(slope_err < 0.1 / 0.015 * 10e-6);
         CHECK(end_err < 1e-12);
         CHECK(fpk <= F_LIM * (1 + 1e-9)); /* never above the limiter */
         CHECK(lim.v[lim.n - 1] > 0);      /* it paid webbing out */

@@ -2,8 +2,9 @@
  * A scenario with an fe: block and no bodies is a stage-3 run, as is --stage 3. Otherwise
  * --stage 1 runs stage 1; --stage 2 stage 2 (as `mcrash stage2`, --motion or stage2.motion);
  * all (the default) stage 1 and, when the scenario has a stage2: block, stage 2 after it into
- * the same file (/stage1 and /stage2), its motion read from that stage-1 run. Without -o the
- * results file is <scenario basename>.h5 in the current directory. */
+ * the same file (/stage1 and /stage2), its motion read from that stage-1 run (when stage 2
+ * then fails, the file keeps the complete /stage1 and has no /stage2). Without -o the results
+ * file is <scenario basename>.h5 in the current directory. */
 #include "cli/cli.h"
 #include "cli/cli_common.h"
 

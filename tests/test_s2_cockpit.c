@@ -1,6 +1,12 @@
 /* tests for the stage-2 cockpit: stage2.fe merged into fe: (stage2_fe/s2_scenario.c,
  * core/mcs_scn_merge.c), foam pads generated on a body's ellipsoid and attached by
- * `where: surface` (fe/fe_scn_pad.c), material_from (fe/fe_scn_build.c). */
+ * `where: surface` (fe/fe_scn_pad.c), material_from (fe/fe_scn_build.c).
+ * References (docs/validation_stage2.md "The cockpit"), none a value of the code under test:
+ * the merge against the scenario text it must give (keys added, settings replaced, errors at
+ * their FILE:LINE:COL); the pads' geometry against closed forms (nodes at R and R + t on a
+ * sphere, the inscribed facets' area and frustum volume times 425 kg/m^3, the paper's foam
+ * density [2023 Sec. 2.3.3]; an ellipsoid's equation and its surface normal); a body pressed
+ * into a pad against the foam's own 100/s loading curve times the contact area, S_100(e) A. */
 #include "core/mcs_scenario.h"
 #include "fe/fe_contact.h"
 #include "fe/fe_model.h"
@@ -457,6 +463,26 @@ static void test_attach_surface(void)
     for (int i = 0; i < q.natt && q.model; i++)
         CHECK(fabs(q.model->node_x0[3 * q.att[i].node + 2]) < 1e-12);
     fe_problem_free(&q);
+    mcs_scenario_destroy(&scn);
+    /* the same keyword part as a stage-2-only part (stage2.fe): its deck is still found
+     * relative to the file that names it once merged into fe: */
+    char y2[2048];
+    const char *fe_at = strstr(y, "fe:\n  parts:\n");
+    snprintf(y2, sizeof y2,
+             "%.*sstage2:\n  prescribed: [{body: base}]\n  fe:\n    parts:\n"
+             "      - {name: cube, mesh: {keyword: spring_mass.k, part: 1, units: mm-s-t},\n"
+             "         attach: {body: base, where: surface}}\n",
+             fe_at ? (int)(fe_at - y) : 0, y);
+    mcs_scenario *c2 = NULL;
+    err = (mcs_error){0};
+    scn = load("tests/data/keyword/kw_attach2.yaml", y2, &err);
+    CHECK(scn && s2_scenario_compile(scn, &c2, &err) == MCS_OK);
+    q = (fe_problem){0};
+    CHECK(c2 && fe_scn_build(c2, &q, &err) == MCS_OK);
+    if (!q.model) fprintf(stderr, "%s\n", err.msg);
+    CHECK(q.natt == 4);
+    fe_problem_free(&q);
+    mcs_scenario_destroy(&c2);
     mcs_scenario_destroy(&scn);
 }
 

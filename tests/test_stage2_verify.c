@@ -166,6 +166,34 @@ static void test_consistency_413(void)
     y = text_with(CONCEPT_S2, NULL, NULL, "");
     CHECK(y && run_s2(CONCEPT_S2, y, h1, h2, &sum, &err) == MCS_OK);
     rate_regions(h2, foam);
+    /* what the pads change: their contact force on the rider, and the neck tension */
+    double fpk = 0, tpk = 0, nt1 = 0, nt2 = 0;
+    const char *pads[] = {"/stage2/contact/pad_tank_l_rider/force",
+                          "/stage2/contact/pad_tank_r_rider/force"};
+    for (int p = 0; p < 2; p++) {
+        size_t n = 0;
+        double *f = read_ds(h2, pads[p], &n);
+        CHECK(f && n == 3 * 3001);
+        for (size_t j = 0; f && j < n / 3; j++) {
+            double m = sqrt(f[3 * j] * f[3 * j] + f[3 * j + 1] * f[3 * j + 1] +
+                            f[3 * j + 2] * f[3 * j + 2]);
+            if (m > fpk) fpk = m, tpk = 1e-4 * (double)j;
+        }
+        free(f);
+    }
+    size_t one = 0;
+    double *a = read_ds(h1, "/stage1/injury/neck_tension", &one);
+    double *b = read_ds(h2, "/stage2/injury/neck_tension", &one);
+    CHECK(a && b);
+    if (a && b) nt1 = a[0], nt2 = b[0];
+    free(a), free(b);
+    printf("  tank pads: contact force peak %.4g N at %.4g s; neck tension %.4g N (stage 1) "
+           "-> %.4g N\n",
+           fpk, tpk, nt1, nt2);
+    FIG("stage2.foam_pad_peak_kn", "%.0f", 1e-3 * fpk);
+    FIG("stage2.foam_pad_peak_ms", "%.1f", 1e3 * tpk);
+    FIG("stage2.neck_tension_s1_kn", "%.2f", 1e-3 * nt1);
+    FIG("stage2.neck_tension_foam_kn", "%.2f", 1e-3 * nt2);
     unlink(h2);
     free(y);
     printf("413 concept, stage 2 against stage 1, resultant acceleration (ISO/TS 18571):\n"

@@ -1007,18 +1007,6 @@ static const mcs_skey stage2_fe_keys[] = {
 };
 static const mcs_smap stage2_fe_map = {.what = "stage2 fe block", .keys = stage2_fe_keys};
 
-static const mcs_skey stage2_keys[] = {
-    /* relative to the scenario file (as include:); `--motion FILE` (cwd) wins */
-    S("motion", NE, "stage-1 results file the motion is read from (relative to the scenario)"),
-    E("method", "pose|pulse", 0,
-      "pose: written poses interpolated; pulse: velocity and acceleration histories integrated "
-      "(default pose)"),
-    L("prescribed", stage2_presc_map, REQ | NE, "bodies moved as in the file (others free)"),
-    M("fe", stage2_fe_map, 0, "FE parts and contacts of stage 2 only, appended to fe:"),
-    END,
-};
-static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys};
-
 /* energy groups (stage1_mb/mb_egroup.h): a named group's bodies, names or patterns with * and ?
  * (the group "rider" of the bodies rider_* exists without it) */
 static const mcs_skey egroup_keys[] = {
@@ -1029,6 +1017,23 @@ static const mcs_skey egroup_keys[] = {
     END,
 };
 static const mcs_smap egroup_map = {.what = "energy group", .keys = egroup_keys};
+
+static const mcs_skey stage2_keys[] = {
+    /* relative to the scenario file (as include:); `--motion FILE` (cwd) wins */
+    S("motion", NE, "stage-1 results file the motion is read from (relative to the scenario)"),
+    E("method", "pose|pulse", 0,
+      "pose: written poses interpolated; pulse: velocity and acceleration histories integrated "
+      "(default pose)"),
+    L("prescribed", stage2_presc_map, REQ | NE, "bodies moved as in the file (others free)"),
+    M("fe", stage2_fe_map, 0, "FE parts and contacts of stage 2 only, appended to fe:"),
+    /* e.g. {rider: {bodies: "rider_*", categories: {"pad_*": cockpit}}}: partners that exist in
+     * stage 2 only (stage2.fe's contacts) cannot be named in the top-level block */
+    NM("energy_groups", egroup_map, 0,
+       "energy groups of stage 2 only, merged on top of energy_groups (same keys)"),
+    END,
+};
+static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys};
+
 
 /* ---- the root ---- */
 

@@ -27,7 +27,8 @@
 
 #include "core/mcs_scenario.h"
 
-/* scn with stage2.fe's lists appended to fe:'s (stage2.fe removed, the rest as loaded),
+/* scn with stage2.fe's lists appended to fe:'s and stage2.energy_groups merged on top of
+ * energy_groups (both removed, the rest as loaded),
  * validated again; *out is a new scenario (mcs_scenario_destroy), independent of scn */
 mcs_status s2_scenario_compile(const mcs_scenario *scn, mcs_scenario **out, mcs_error *err);
 

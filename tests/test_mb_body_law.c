@@ -229,6 +229,57 @@ static void test_series_pad_and_body_law(void)
     mb_model_destroy(&m);
 }
 
+/* The stable step: a law far stiffer than the penalty (c = 1e15 Pa/m: c A_n dt0^2 / m_n ~ 6,
+ * past the central difference's limit of 4 were it alone on a node) leaves the node the series
+ * stiffness k_n c A_n / (k_n + c A_n) < k_n, which the FE step admits: the run is stable, the
+ * punch rebounds at v0, and the peak force is the penalties' alone, v0 sqrt(M K) with
+ * 1/K = 1/sum k_n + 1/(c A) (penalty_scale 1e-5, k_n from the model). */
+static void test_stiff_law_keeps_the_step(void)
+{
+    const double v0 = 1, ht = 1e-3, c = 1e15, A = SIDE * SIDE;
+    char y[4096];
+    snprintf(y, sizeof y, PLATE_YAML, 0.012, SEMI_C + ht + 0.2e-3, -v0,
+             "{stress: [[0, 0], [1 mm, 1e12 Pa]]}");
+    char *ps = strstr(y, "bodies: [punch],");
+    CHECK(ps != NULL);
+    if (!ps) return;
+    /* penalty_scale 1e-5 on the contact (the template has none): omega h = 0.03 */
+    char tail[2048];
+    snprintf(tail, sizeof tail, "%s", ps + strlen("bodies: [punch],"));
+    snprintf(ps, sizeof y - (size_t)(ps - y), "bodies: [punch], penalty_scale: 1e-5,%s", tail);
+    mcs_error err = {0};
+    mb_model *m = mc_model("punch_stiff.yaml", y);
+    if (!m) return;
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    CHECK(st == MCS_OK);
+    double fpeak = 0;
+    while (!st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        fpeak = fmax(fpeak, s->couple->fe->contact->ell_force[2]);
+    }
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    const fe_model *fm = m->couple->fe.model;
+    double Kp = 0, dt0 = fm->contact->dt0, kb_max = 0;
+    for (int n = 0; n < fm->nnode; n++) {
+        Kp += 1e-5 * fm->node_mass[n] / (dt0 * dt0);
+        kb_max = fmax(kb_max, c * (A / 256) * dt0 * dt0 / fm->node_mass[n]);
+    }
+    const double K = 1 / (1 / Kp + 1 / (c * A)), fref = v0 * sqrt(K), vend = punch_vz(s);
+    const double ferr = 100 * (fpeak / fref - 1);
+    printf("stiff law: c A_n dt0^2 / m_n up to %.3g; peak %.3f N (closed form %.3f N, %+.3f %%); "
+           "rebound %.5f m/s\n",
+           kb_max, fpeak, fref, ferr, vend);
+    FIG("contact.body_law_stiff_ratio", "%.0f", kb_max);
+    FIG("contact.body_law_stiff_peak_err_pct", "%.2f", fabs(ferr));
+    CHECK(kb_max > 4);
+    CHECK_NEAR(ferr, 0, 0.5);
+    CHECK_NEAR(vend, v0, 2e-3 * v0);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+}
+
 /* a body law on a facet surface is refused, naming the surface (the facet search reaches 10 mm
  * behind the mesh, short of a flesh's travel) */
 static void test_body_law_errors(void)
@@ -262,6 +313,7 @@ int main(void)
     RUN(test_flat_punch_force_is_stress_times_area);
     RUN(test_hysteresis_rebound_and_dissipation);
     RUN(test_series_pad_and_body_law);
+    RUN(test_stiff_law_keeps_the_step);
     RUN(test_body_law_errors);
     TEST_END();
 }

@@ -10,8 +10,13 @@
  * - the block thrown at a prescribed wall: its momentum change equals the contact impulse
  *   (Newton's second law on the part: only the contact force acts), and its rebound kinetic
  *   energy plus the energy left in the block (vibration: internal + kinetic about the centre of
- *   mass) equals the impact energy (elastic material, frictionless contact). */
+ *   mass) equals the impact energy (elastic material, frictionless contact);
+ * - the block at rest struck by a wall moving at 3 m/s, the wall's motion from a stage-1 run of
+ *   it (a free body, no forces): the work the wall does, v_w x impulse, equals the energy the
+ *   block gains, and the block leaves at v_w (1 + e), e the restitution of the thrown block
+ *   (Galilean invariance: the same impact seen from the wall). */
 #include "tests/harness.h"
+#include "tests/mb_test_util.h"
 #include "tests/s2_test_util.h"
 
 #include <unistd.h>
@@ -19,6 +24,7 @@
 #define DECK_YAML "tests/data/keyword/ferider.yaml" /* name the text is read as (deck path) */
 
 static char tdir[64];
+static double restitution = NAN; /* test_wall's, for test_moving_wall */
 
 static void tpath(char *buf, size_t n, const char *name)
 {
@@ -275,9 +281,61 @@ static void test_wall(void)
         FIG_TOL("stage2.ferider_energy_err_pct", "%.2f", 100 * ee, 0.1);
         FIG("stage2.ferider_dissipated_joule", "%.0f", r.ed[e]);
         FIG("stage2.ferider_restitution", "%.2f", cor);
+        restitution = cor;
     }
     free_rider(&r);
     unlink(motion), unlink(out);
+}
+
+/* ---- a moving wall from a stage-1 run strikes the block at rest ---- */
+
+static void test_moving_wall(void)
+{
+    const double vw = 3;
+    char h1[128], h2[128], y[8192], body[2048], s1[4096];
+    tpath(h1, sizeof h1, "mwall1.h5");
+    tpath(h2, sizeof h2, "mwall2.h5");
+    const double wc[3] = {-0.21, 0, 0.225};
+    box_body(body, sizeof body, "wall", wc, (double[]){0.05, 0.5, 0.5});
+    /* stage 1: the wall alone, a free body at 3 m/s */
+    const char *sim = "simulation: {end_time: 60 ms, time_step: 20 us, output_rate: 10 kHz}";
+    snprintf(s1, sizeof s1,
+             "mcrash: 1\nname: moving wall\n%s\nenvironment: {gravity: 0}\n"
+             "bodies:\n%s",
+             sim, body);
+    char *at = strstr(s1, "velocity: [0, 0, 0]");
+    if (at) memcpy(at, "velocity: [3, 0, 0]", 19);
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("mwall.yaml", s1, &err);
+    mb_run_opts o = {.out_path = h1, .quiet = 1};
+    CHECK(m && mb_run(m, &o, NULL, &err) == MCS_OK);
+    mb_model_destroy(&m);
+    /* stage 2: the same wall prescribed from that file, the block at rest */
+    scenario(y, sizeof y, sim, "environment: {gravity: 0}", s1 + (strstr(s1, "bodies:\n") - s1) + 8,
+             "wall", 0, "");
+    s2_summary sum = {0};
+    CHECK(run_s2(DECK_YAML, y, h1, h2, &sum, &err) == MCS_OK);
+    rider_out r = {0};
+    read_rider(h2, &r);
+    CHECK(rider_ok(&r) && r.nt == 601);
+    if (rider_ok(&r) && r.nt == 601) {
+        const int e = (int)r.nt - 1;
+        double J = 0;
+        for (int i = 0; i < e; i++)
+            J += 0.5 * (r.f[3 * i] + r.f[3 * i + 3]) * (r.t[i + 1] - r.t[i]);
+        const double W = vw * J, E = r.ek[e] + r.ei[e] + r.eh[e] + r.ec[e] + r.ed[e];
+        const double v_ref = vw * (1 + restitution);
+        printf("block at rest struck by a wall at %g m/s (stage-1 motion): v_end %.4f m/s "
+               "(v_w (1 + e) = %.4f), work of the wall %.3f J, block energy %.3f J\n",
+               vw, r.v[3 * e], v_ref, W, E);
+        const double ew = fabs(E - W) / W, ev = fabs(r.v[3 * e] - v_ref) / v_ref;
+        CHECK(ew < 0.01);
+        CHECK(ev < 0.01);
+        FIG_TOL("stage2.ferider_wall_work_err_pct", "%.1f", 100 * ew, 0.3);
+        FIG_TOL("stage2.ferider_galilean_err_pct", "%.2f", 100 * ev, 0.1);
+    }
+    free_rider(&r);
+    unlink(h1), unlink(h2);
 }
 
 int main(void)
@@ -286,6 +344,7 @@ int main(void)
     if (!mkdtemp(tdir)) return perror("mkdtemp"), 1;
     RUN(test_plate);
     RUN(test_wall);
+    RUN(test_moving_wall);
     rmdir(tdir);
     TEST_END();
 }

@@ -8,11 +8,16 @@
 #include "tests/mb_test_util.h"
 #include "tests/s2_test_util.h"
 #include "analysis/an_iso18571.h"
+#include "tests/s2_fig23.h"
 
 #include <unistd.h>
 
 #define CONCEPT "scenarios/iso13232_413-0_13.4_sedan_rider_concept.yaml"
 #define CONCEPT_S2 "scenarios/iso13232_413-0_13.4_sedan_rider_concept_stage2.yaml"
+#define CONCEPT_05F "scenarios/iso13232_413-0_13.4_sedan_rider_concept_05f.yaml"
+#define CONCEPT_05F_S2 "scenarios/iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml"
+
+static void fig23_50th(const char *h2);
 
 static char tdir[64], h1[128];
 
@@ -219,6 +224,7 @@ static void test_consistency_413(void)
     rate_regions(h2, foam);
     double fpk = 0, tpk = 0, nt2 = neck_tension(h2), nt1 = 0;
     pad_peak(h2, &fpk, &tpk);
+    fig23_50th(h2); /* the shipped stage-2 run against the paper's Fig. 23/24 (s2_fig23.h) */
     unlink(h2);
     /* the same pads against a rigid thigh */
     if (y) strip_body_laws(y);
@@ -262,10 +268,120 @@ static void test_consistency_413(void)
     FIG("stage2.consistency_foam_rigid_thigh_pelvis", "%.2f", hard[2]);
 }
 
+/* ---- the paper's stage-2 figures (seed 001 Sec. 3.2, Fig. 23, Fig. 24b; s2_fig23.h) ---- */
+
+/* the 50th's stage 1 (h1) and the shipped stage-2 scenario's run (h2): kinematics and the
+ * contact energy by partner category */
+static void fig23_50th(const char *h2)
+{
+    static const char *const k1[10] = {
+        "fig23.p50_s1_slip_100_mm", "fig23.p50_s1_slip_200_mm", "fig23.p50_s1_slip_300_mm",
+        "fig23.p50_s1_up_100_mm", "fig23.p50_s1_up_200_mm", "fig23.p50_s1_up_300_mm",
+        "fig23.p50_s1_head_peak_mm", "fig23.p50_s1_head_fwd_mm", "fig23.p50_s1_pelvis_fwd_mm",
+        "fig23.p50_s1_pelvis_off_mm"};
+    static const char *const k2[10] = {
+        "fig23.p50_s2_slip_100_mm", "fig23.p50_s2_slip_200_mm", "fig23.p50_s2_slip_300_mm",
+        "fig23.p50_s2_up_100_mm", "fig23.p50_s2_up_200_mm", "fig23.p50_s2_up_300_mm",
+        "fig23.p50_s2_head_peak_mm", "fig23.p50_s2_head_fwd_mm", "fig23.p50_s2_pelvis_fwd_mm",
+        "fig23.p50_s2_pelvis_off_mm"};
+    /* the rider stays on the motorcycle: the pelvis within F23_LEAVE of its seated place */
+    CHECK(f23_fig(h1, 1, "50th, stage 1", k1) < F23_LEAVE);
+    CHECK(f23_fig(h2, 2, "50th, stage 2", k2) < F23_LEAVE);
+    /* Fig. 24b: the stage-2 scenario's stage2.energy_groups put the tank pads' contacts and the
+     * rider-motorcycle contacts in `cockpit` (the paper's "remaining cockpit surfaces") */
+    double e[5];
+    const char *cat[5] = {"belts", "airbags", "cockpit", "foam", "motorcycle"};
+    for (int i = 0; i < 5; i++) {
+        e[i] = f23_cat(h2, 2, cat[i]);
+        CHECK(isfinite(e[i]));
+    }
+    printf("Fig. 24b, 50th stage 2: belts %.0f J, airbags %.0f J, cockpit %.0f J, leg foam %.0f "
+           "J, motorcycle (grips, pegs, seat) %.0f J\n",
+           e[0], e[1], e[2], e[3], e[4]);
+    FIG("fig23.p50_s2_e_belts", "%.0f", e[0]);
+    FIG("fig23.p50_s2_e_airbags", "%.0f", e[1]);
+    FIG("fig23.p50_s2_e_cockpit", "%.0f", e[2]);
+    FIG("fig23.p50_s2_e_foam", "%.0f", e[3]);
+    FIG("fig23.p50_s2_e_moto", "%.0f", e[4]);
+    /* the place of each of the paper's four categories among them (1 = largest) */
+    int rank[4];
+    for (int i = 0; i < 4; i++) {
+        rank[i] = 1;
+        for (int j = 0; j < 4; j++)
+            rank[i] += e[j] > e[i];
+    }
+    FIG_TOL("fig23.p50_s2_rank_belts", "%.0f", (double)rank[0], 0.1);
+    FIG_TOL("fig23.p50_s2_rank_airbags", "%.0f", (double)rank[1], 0.1);
+    FIG_TOL("fig23.p50_s2_rank_cockpit", "%.0f", (double)rank[2], 0.1);
+    FIG_TOL("fig23.p50_s2_rank_foam", "%.0f", (double)rank[3], 0.1);
+}
+
+/* item 6 in stage 2: the 5th female's concept case, stage 1 then its stage-2 scenario on that
+ * run; kinematics and injury criteria of both stages */
+static void test_fig23_05f(void)
+{
+    if (!th_verify() || !tdir[0]) return;
+    char s1[128], s2[128];
+    snprintf(s1, sizeof s1, "%s/s1_05f.h5", tdir);
+    snprintf(s2, sizeof s2, "%s/s2_05f.h5", tdir);
+    mb_model *m = mt_model_file(CONCEPT_05F);
+    mcs_error err = {0};
+    mb_run_opts o = {.out_path = s1, .quiet = 1};
+    CHECK(m && mb_run(m, &o, NULL, &err) == MCS_OK);
+    mb_model_destroy(&m);
+    char *y = text_with(CONCEPT_05F_S2, NULL, NULL, "");
+    s2_summary sum = {0};
+    CHECK(y && run_s2(CONCEPT_05F_S2, y, s1, s2, &sum, &err) == MCS_OK);
+    free(y);
+    static const char *const k1[10] = {
+        "fig23.p05_s1_slip_100_mm", "fig23.p05_s1_slip_200_mm", "fig23.p05_s1_slip_300_mm",
+        "fig23.p05_s1_up_100_mm", "fig23.p05_s1_up_200_mm", "fig23.p05_s1_up_300_mm",
+        "fig23.p05_s1_head_peak_mm", "fig23.p05_s1_head_fwd_mm", "fig23.p05_s1_pelvis_fwd_mm",
+        "fig23.p05_s1_pelvis_off_mm"};
+    static const char *const k2[10] = {
+        "fig23.p05_s2_slip_100_mm", "fig23.p05_s2_slip_200_mm", "fig23.p05_s2_slip_300_mm",
+        "fig23.p05_s2_up_100_mm", "fig23.p05_s2_up_200_mm", "fig23.p05_s2_up_300_mm",
+        "fig23.p05_s2_head_peak_mm", "fig23.p05_s2_head_fwd_mm", "fig23.p05_s2_pelvis_fwd_mm",
+        "fig23.p05_s2_pelvis_off_mm"};
+    CHECK(f23_fig(s1, 1, "5th, stage 1", k1) < F23_LEAVE);
+    CHECK(f23_fig(s2, 2, "5th, stage 2", k2) < F23_LEAVE);
+    /* the criteria `mcrash injury OUT.h5 --stage N` prints (/stageN/injury/<name>) */
+    const char *crit[7] = {"hic15",       "head_a3ms",  "nij",      "neck_tension",
+                           "chest_a3ms", "pelvis_a3ms", "tibia_index"};
+    double v[2][7];
+    for (int st = 0; st < 2; st++)
+        for (int i = 0; i < 7; i++) {
+            char ds[96];
+            size_t n = 0;
+            snprintf(ds, sizeof ds, "/stage%d/injury/%s", st + 1, crit[i]);
+            double *a = read_ds(st ? s2 : s1, ds, &n);
+            CHECK(a && n == 1);
+            v[st][i] = a && n == 1 ? a[0] : NAN;
+            free(a);
+            printf("5th, stage %d, %s: %.4g\n", st + 1, crit[i], v[st][i]);
+        }
+    FIG("fig23.p05_s1_hic15", "%.0f", v[0][0]);
+    FIG("fig23.p05_s2_hic15", "%.0f", v[1][0]);
+    FIG("fig23.p05_s1_head_a3ms", "%.1f", v[0][1]);
+    FIG("fig23.p05_s2_head_a3ms", "%.1f", v[1][1]);
+    FIG("fig23.p05_s1_nij", "%.2f", v[0][2]);
+    FIG("fig23.p05_s2_nij", "%.2f", v[1][2]);
+    FIG("fig23.p05_s1_neck_tension_kn", "%.2f", 1e-3 * v[0][3]);
+    FIG("fig23.p05_s2_neck_tension_kn", "%.2f", 1e-3 * v[1][3]);
+    FIG("fig23.p05_s1_chest_a3ms", "%.1f", v[0][4]);
+    FIG("fig23.p05_s2_chest_a3ms", "%.1f", v[1][4]);
+    FIG("fig23.p05_s1_pelvis_a3ms", "%.1f", v[0][5]);
+    FIG("fig23.p05_s2_pelvis_a3ms", "%.1f", v[1][5]);
+    FIG("fig23.p05_s1_tibia_index", "%.2f", v[0][6]);
+    FIG("fig23.p05_s2_tibia_index", "%.2f", v[1][6]);
+    unlink(s1), unlink(s2);
+}
+
 int main(void)
 {
     RUN(test_replay_413);
     RUN(test_consistency_413);
+    RUN(test_fig23_05f);
     if (h1[0]) unlink(h1), rmdir(tdir);
     TEST_END();
 }

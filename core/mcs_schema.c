@@ -525,7 +525,19 @@ static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"surface_shell", &surface_shell_map},
                                              {"(keyword)", &keyword_map},
                                              {0}};
-static const mcs_skey mesh_keys[] = {D("generate", "mesh generator"), END};
+/* the initial metric method (fe/fe_imm.c, docs/gasbag.md): membrane parts only */
+static const mcs_skey mesh_initial_keys[] = {
+    V("scale", NONE, 3, 3, REQ | GT, 0, "factors along x, y, z, each in (0, 1]"),
+    V("about", LEN, 3, 3, 0, 0, "fixed point (default: the part's bounding-box middle) [m]"),
+    END,
+};
+static const mcs_smap mesh_initial_map = {.what = "initial mesh", .keys = mesh_initial_keys};
+static const mcs_skey mesh_keys[] = {
+    D("generate", "mesh generator"),
+    /* nodes start on a scaled copy of the mesh, which stays the elements' reference */
+    M("initial", mesh_initial_map, 0, "start on a scaled copy (membranes: initial metric)"),
+    END,
+};
 static const mcs_smap mesh_map = {.what = "mesh",
                                   .keys = mesh_keys,
                                   .disc = "generate",

@@ -46,6 +46,7 @@ void fe_builder_destroy(fe_builder **p)
     fe_builder *b = *p;
     free(b->x);
     free(b->x_sel);
+    free(b->xref);
     for (int k = 0; k < FE_NKIND; k++) {
         free(b->conn[k]);
         free(b->epart[k]);
@@ -97,6 +98,11 @@ mcs_status fe_builder_add_node(fe_builder *b, const double x[3], int *index, mcs
     if (grow((void **)&b->x, &b->cap_node, b->nnode + 1, 3 * sizeof(double)))
         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory adding node %d", b->nnode);
     memcpy(b->x + 3 * b->nnode, x, 3 * sizeof(double));
+    if (b->xref) { /* a part has a scaled initial mesh (fe_imm.c): a new node is its own ref */
+        mcs_status st = fe_builder_imm_grow(b, err);
+        if (st) return st;
+        memcpy(b->xref + 3 * b->nnode, x, 3 * sizeof(double));
+    }
     if (index) *index = b->nnode;
     b->nnode++;
     return MCS_OK;

@@ -21,6 +21,9 @@ struct fe_builder {
     double *x;                                    /* (nnode x 3) [m]      */
     double *x_sel;  /* positions `where` selects on, before a placement moved x (fe_scn_place.c);
                        NULL: x (nnode x 3) [m] */
+    double *xref;   /* reference (design) positions when a membrane part starts on a scaled
+                       copy of its mesh (fe_imm.c); NULL: x is the reference (nnode x 3) [m] */
+    int cap_xref;   /* nodes xref has room for [-] */
     int nelem[FE_NKIND], cap_conn[FE_NKIND], cap_epart[FE_NKIND];
     int *conn[FE_NKIND];                          /* connectivity per kind */
     int *epart[FE_NKIND];                         /* part per element      */
@@ -66,5 +69,7 @@ mcs_status fe_mesh_flat_bag(fe_builder *b, int ip, const fe_mesh_desc *m, mcs_er
 /* fabric material keys of a membrane part (fe_fabric.c) */
 mcs_status fe_fabric_check(const fe_part_desc *d, mcs_error *err);
 void fe_restraint_list_free(fe_builder *b);
+/* room in xref for every node x has room for (fe_imm.c) */
+mcs_status fe_builder_imm_grow(fe_builder *b, mcs_error *err);
 
 #endif

@@ -412,11 +412,14 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
         if (m->part[ip].section.type == FE_SECTION_MEMBRANE) m->nshell_mref = m->nshell;
     if (st == MCS_OK) st = alloc_arrays(m, err);
     if (st == MCS_OK) {
-        memcpy(m->node_x0, b->x, sizeof(double) * 3 * (size_t)m->nnode);
+        /* masses and the membranes' reference metric from the reference positions; the nodes
+         * then start where they are (a scaled initial mesh differs: fe_imm.c) */
+        memcpy(m->node_x0, b->xref ? b->xref : b->x, sizeof(double) * 3 * (size_t)m->nnode);
         sort_elements(b, m);
         fe_build_chunks(m);
         st = lump_masses(m, err);
-        fe_membrane_references(m); /* t = 0 geometry of the membranes */
+        fe_membrane_references(m); /* reference geometry of the membranes */
+        if (b->xref) memcpy(m->node_x0, b->x, sizeof(double) * 3 * (size_t)m->nnode);
     }
     if (st == MCS_OK) st = fe_solid_build(b, m, err); /* point masses, springs, rigid bodies */
     if (st == MCS_OK) fe_count_chunked(m);            /* rigid parts known: the threaded work */

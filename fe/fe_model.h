@@ -394,6 +394,12 @@ int fe_builder_find_part(const fe_builder *b, const char *name);
 int fe_builder_part_rigid(const fe_builder *b, int part);
 /* nodes of a part on its bounding-box side `where`, written to idx (capacity cap); count returned */
 int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, int cap);
+/* the initial metric method (fe_imm.c): the nodes of membrane part `part` (nodes of its own)
+ * move to about + scale (x - about) (about NULL: the middle of the part's bounding box; each
+ * scale factor in (0, 1]); the elements keep the unscaled mesh as their stress-free reference
+ * and their masses */
+mcs_status fe_builder_imm(fe_builder *b, int part, const double scale[3], const double *about,
+                          mcs_error *err);
 /* the node of a part nearest to p [m] (the first of equals), -1 if the part has none */
 int fe_builder_nearest(const fe_builder *b, int part, const double p[3]);
 

@@ -169,6 +169,23 @@ static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_er
     return MCS_OK;
 }
 
+/* mesh.initial: {scale, about}: the part starts on a scaled copy of its mesh, which stays its
+ * reference (the initial metric method, fe_imm.c) */
+static mcs_status initial_mesh(fe_builder *b, const mcs_node *mesh, const char *name,
+                               mcs_error *err)
+{
+    const mcs_node *in = fe_scn_get(mesh, "initial");
+    if (!fe_scn_given(mesh, "initial")) return MCS_OK;
+    double scale[3], about[3];
+    mcs_status st = mcs_node_vec3(fe_scn_get(in, "scale"), scale, err);
+    int has_about = fe_scn_given(in, "about");
+    if (!st && has_about) st = mcs_node_vec3(fe_scn_get(in, "about"), about, err);
+    if (st) return st;
+    mcs_error kerr = {0};
+    st = fe_builder_imm(b, fe_builder_find_part(b, name), scale, has_about ? about : NULL, &kerr);
+    return st ? fe_scn_relocate(st, in, &kerr, err) : MCS_OK;
+}
+
 /* the material node of part p: its own, or material_from's (that part's own material) */
 static const mcs_node *material_of(const mcs_node *parts, const mcs_node *p, mcs_error *err)
 {
@@ -209,13 +226,12 @@ static mcs_status add_parts_(fe_builder *b, const mcs_node *root, const mcs_node
             st = mcs_node_vec3(fe_scn_get(p, "initial_velocity"), d.initial_velocity, err);
         if (!st && kw) st = fe_scn_kw_add_part(kc, b, p, &d, err);
         if (!st && pad) st = fe_scn_pad_add(b, root, fe_scn_get(p, "mesh"), &d, err);
-        if (st || kw || pad) {
-            if (st) return st;
-            continue;
-        }
+        if (st) return st;
         mcs_error kerr = {0};
-        st = fe_builder_add_part(b, &d, NULL, &kerr);
-        if (st) return fe_scn_relocate(st, p, &kerr, err);
+        if (!kw && !pad && (st = fe_builder_add_part(b, &d, NULL, &kerr)))
+            return fe_scn_relocate(st, p, &kerr, err);
+        st = initial_mesh(b, fe_scn_get(p, "mesh"), d.name, err);
+        if (st) return st;
     }
     return MCS_OK;
 }

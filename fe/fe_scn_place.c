@@ -218,7 +218,10 @@ mcs_status fe_scn_place_apply(fe_builder *b, const mcs_node *fe, const fe_scn_pl
         /* `where` selects on the positions before the move */
         memcpy(b->x_sel, b->x, 3 * (size_t)b->nnode * sizeof *b->x_sel);
         for (int n = 0; n < b->nnode; n++)
-            if (pl->moved >= 0 && ngrp[n] == pl->moved) move_point(pl, b->x + 3 * n);
+            if (pl->moved >= 0 && ngrp[n] == pl->moved) {
+                move_point(pl, b->x + 3 * n);
+                if (b->xref) move_point(pl, b->xref + 3 * n); /* a scaled mesh's reference */
+            }
         for (int ip = 0; ip < b->npart; ip++)
             if (pl->moved >= 0 && p.grp[ip] == pl->moved)
                 rotate_vec(pl, b->part[ip].material.fabric_direction);

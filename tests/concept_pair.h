@@ -106,7 +106,11 @@ static double check_belt(mcs_results *h, const char *name, double t_fire, const 
                "limiter payout %.1f mm\n",
                name, before, slope_err, end_err, fpk, 1e3 * plateau, 1e3 * lim.v[lim.n - 1]);
         CHECK(before == 0);
-        CHECK(slope_err < 1e-12);
+        /* a row holds the state of the last FE step before its time (docs/contracts.md), so it
+         * lags the row by less than one ODE step (10 us); where the FE subcycle changes its
+         * number of steps (k = 1 or 2 at 10 us while the bag unfolds), a sample's increment
+         * differs from Eq. 3's by at most the pay-in over one ODE step, 100/15 mm/ms x 10 us */
+        CHECK(slope_err < 0.1 / 0.015 * 10e-6);
         CHECK(end_err < 1e-12);
         CHECK(fpk <= F_LIM * (1 + 1e-9)); /* never above the limiter */
         CHECK(lim.v[lim.n - 1] > 0);      /* it paid webbing out */
@@ -187,18 +191,27 @@ static void concept_pair_check(const char *conv, const char *conc, int full)
     CHECK(pl >= 0.010 && pr >= 0.010); /* measured 16 ms each */
     /* the bag: ambient until it fires, then pressurised; no more gas than the inflator gave */
     CHECK(rd(h, "/stage1/airbag/front/pressure", &p) && rd(h, "/stage1/airbag/front/mass", &m));
-    double pre_dev = 0, peak = 0, dm_max = 0;
-    for (size_t i = 0; i < p.n && i < t.n; i++) {
+    mcs_array vol = {0};
+    CHECK(rd(h, "/stage1/airbag/front/volume", &vol));
+    const double box = 0.46 * 0.57 * 0.18; /* the panels' box [m^3] (model file) */
+    double pre_dev = 0, peak = 0, dm_max = 0, t_open = INFINITY;
+    for (size_t i = 0; i < p.n && i < t.n && i < vol.n; i++) {
         if (t.v[i] < fire_bag) pre_dev = fmax(pre_dev, fabs(p.v[i] - 101325));
         peak = fmax(peak, p.v[i] - 101325);
         dm_max = fmax(dm_max, m.v[i] - m.v[0]);
+        if (vol.v[i] > 0.8 * box && !isfinite(t_open)) t_open = t.v[i];
     }
-    printf("  bag: |p - p_amb| <= %.0f Pa before firing; peak gauge %.1f kPa; gas taken in at "
-           "most %.2f g (inflator 6.0 g)\n",
-           pre_dev, 1e-3 * peak, 1e3 * dm_max);
+    printf("  bag: %.2f l at t = 0, more than 0.8 of the panels' box (%.1f l) %.1f ms after "
+           "firing; |p - p_amb| <= %.0f Pa before firing; peak gauge %.1f kPa; gas taken in at "
+           "most %.2f g (inflator 27.0 g)\n",
+           1e3 * (vol.n ? vol.v[0] : NAN), 1e3 * box, 1e3 * (t_open - fire_bag), pre_dev,
+           1e-3 * peak, 1e3 * dm_max);
+    CHECK(vol.n > 0 && vol.v[0] < 0.1 * box); /* the scaled copy */
+    CHECK(t_open - fire_bag < 0.020);          /* open (measured ~13 ms) */
     CHECK(pre_dev < 1000); /* the rider does not reach it before it fires */
-    CHECK(peak > 20e3);    /* it is pressurised (measured ~60 kPa with the rider in it) */
-    CHECK(dm_max <= 6.0e-3 * (1 + 1e-9) && dm_max > 0);
+    CHECK(peak > 20e3);    /* it is pressurised (measured ~57 kPa with the rider in it) */
+    CHECK(dm_max <= 27.0e-3 * (1 + 1e-9) && dm_max > 0);
+    mcs_array_free(&vol);
     /* the rider on the motorcycle */
     double dmax_c = 0, dmax_v = 0, tl_c = leave_time(h, &dmax_c), tl_v = leave_time(hc, &dmax_v);
     printf("  pelvis off its seated place by > %.2f m at %.1f ms (conventional), %.1f ms "

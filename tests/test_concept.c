@@ -18,8 +18,10 @@
  * - each belt reaches the load limiter's plateau, F_lim = 2 kN (paper Sec. 2.3.1), holds it
  *   (within 5 %: the belt's nodes sliding on the thigh) for at least 10 ms, never exceeds it,
  *   and the limiter pays webbing out (the paper's Fig. 13 phases);
- * - the bag stays at ambient pressure until it fires, is pressurised, and takes in no more gas
- *   than the inflator table's integral (0.4 kg/s x (1 + 13 + 1) ms = 6.0 g; model file);
+ * - the bag starts on its scaled copy (x scaled by 0.1: less than a tenth of the panels' box,
+ *   0.46 x 0.57 x 0.18 m = 47.2 l), stays at ambient pressure until it fires, opens to more
+ *   than 0.8 of that box within 20 ms of firing, is pressurised, and takes in no more gas than
+ *   the inflator table's integral (1.8 kg/s x (1 + 13 + 1) ms = 27.0 g; model file);
  * - the rider stays on the motorcycle longer: the pelvis leaves its seated place in the
  *   frame's coordinates (by more than 0.25 m, the seat's half length) later than in the
  *   conventional run, or not at all;

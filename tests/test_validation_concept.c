@@ -300,8 +300,16 @@ static void test_413_phases(void)
         mpk = fmax(mpk, m.v[i]);
         if (isnan(m100) && t.v[i] >= 0.1 - 1e-9) m100 = m.v[i];
     }
-    for (size_t i = 0; i < t.n && i < p.n; i++)
+    double open = NAN; /* opened from the scaled copy: 90 % of the volume it reaches */
+    for (size_t i = 0; i < t.n && i < p.n; i++) {
         if (isnan(defl) && t.v[i] > ppk_t && p.v[i] - 101325 < 1e3) defl = t.v[i];
+        if (isnan(open) && V.v[i] >= 0.9 * vmax) open = t.v[i];
+    }
+    printf("bag: %.2f l at t = 0 (the scaled copy), 90 %% of full at %.1f ms\n", 1e3 * V.v[0],
+           1e3 * open);
+    FIG("validation_restraints.p413_bag_v0_l", "%.1f", 1e3 * V.v[0]);
+    FIG("validation_restraints.p413_bag_open_ms", "%.0f", 1e3 * open);
+    CHECK(V.v[0] < 0.15 * vmax && bfire < open && open <= vmax_t);
     printf("bag: fired %.2f ms, full %.1f l at %.1f ms, rider contact from %.1f ms, peak %.1f "
            "kPa gauge at %.1f ms, gas %.1f g at first, %.1f g at most, %.1f g vented by 100 ms, "
            "below 1 kPa from %.1f ms\n",

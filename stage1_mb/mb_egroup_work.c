@@ -139,17 +139,8 @@ void mb_egroup_step(const mb_model *m, mb_state *s)
 static double kinetic(const mb_model *m, const mb_state *s, const eg_group *g)
 {
     double e = 0;
-    for (int b = 0; b < m->nbody; b++) {
-        if (!g->in[b]) continue;
-        const mb_body_kin *k = &s->kin[b];
-        const double *I = m->body[b].inertia; /* Ixx Iyy Izz Ixy Ixz Iyz, body axes */
-        double w[3], Iw[3];
-        mb_mat_tvec(k->rot, k->angvel, w);
-        Iw[0] = I[0] * w[0] + I[3] * w[1] + I[4] * w[2];
-        Iw[1] = I[3] * w[0] + I[1] * w[1] + I[5] * w[2];
-        Iw[2] = I[4] * w[0] + I[5] * w[1] + I[2] * w[2];
-        e += 0.5 * m->body[b].mass * mb_dot(k->vel, k->vel) + 0.5 * mb_dot(w, Iw);
-    }
+    for (int b = 0; b < m->nbody; b++)
+        if (g->in[b]) e += mb_body_kinetic(m, s, b);
     return e;
 }
 

@@ -286,6 +286,8 @@ void mb_contact_detect(const mb_model *m, mb_state *s);
 void mb_contact_forces(const mb_model *m, mb_state *s);
 void mb_restraints_apply(const mb_model *m, mb_state *s);
 void mb_energy_update(const mb_model *m, mb_state *s);
+/* body b's kinetic energy (translation + rotation) at s->kin [J] (mb_energy.c) */
+double mb_body_kinetic(const mb_model *m, const mb_state *s, int b);
 mcs_status mb_energy_check(const mb_model *m, mb_state *s, mcs_error *err);
 /* every step, after the force stages: growth or NaN of the total from running sums */
 mcs_status mb_energy_check_step(const mb_model *m, mb_state *s, mcs_error *err);

@@ -136,4 +136,29 @@ static inline double mt_helmet_coupling_force(const mb_model *m, const mb_state 
     return f;
 }
 
+/* distance of x from the ellipsoid surface s of the built model (at its initial poses), to
+ * first order: (f - 1) / |grad f|, f the ellipsoid's normalised radius [m] */
+static inline double mt_surf_distance(const mb_model *m, const mb_surface *s, const double x[3])
+{
+    const mb_body_desc *b = &m->body[s->body];
+    double R[9], c[3], d[3], e[3], l[3];
+    mb_quat_to_rot(b->quat, R);
+    for (int i = 0; i < 3; i++)
+        c[i] = b->pos[i] + R[3 * i] * s->center[0] + R[3 * i + 1] * s->center[1] +
+               R[3 * i + 2] * s->center[2];
+    for (int i = 0; i < 3; i++)
+        d[i] = x[i] - c[i];
+    for (int i = 0; i < 3; i++)
+        e[i] = R[i] * d[0] + R[3 + i] * d[1] + R[6 + i] * d[2];
+    for (int i = 0; i < 3; i++)
+        l[i] = s->rot[i] * e[0] + s->rot[3 + i] * e[1] + s->rot[6 + i] * e[2];
+    double f2 = 0, g2 = 0;
+    for (int i = 0; i < 3; i++) {
+        f2 += l[i] * l[i] / (s->semi[i] * s->semi[i]);
+        g2 += l[i] * l[i] / pow(s->semi[i], 4);
+    }
+    double f = sqrt(f2);
+    return (f - 1) / (sqrt(g2) / f);
+}
+
 #endif

@@ -113,4 +113,65 @@ done:
     free(t1), free(t2), free(p1), free(q1), free(p2), free(q2);
 }
 
+/* body `body`'s motion at t: position p, orientation q (w, x, y, z), velocity v, angular
+ * velocity om, acceleration a, all zeroed (q identity) on entry */
+typedef void (*s1_motion_fn)(const void *ctx, int body, double t, double p[3], double q[4],
+                             double v[3], double om[3], double a[3]);
+
+/* a stage-1 file of the bodies names[0..nbody) moved by fn, sampled at 1 kHz over [0, t_end];
+ * 1 when written */
+static inline int write_s1_motion(const char *path, double t_end, int nbody,
+                                  const char *const *names, s1_motion_fn fn, const void *ctx)
+{
+    const int nt = (int)lround(t_end / 1e-3) + 1;
+    double *t = malloc(nt * sizeof *t), *b = malloc(nt * 4 * sizeof *b);
+    mcs_results *r = NULL;
+    mcs_error e = {0};
+    mcs_status st = mcs_results_create(&r, path, NULL, &e);
+    for (int i = 0; i < nt; i++)
+        t[i] = i * 1e-3;
+    if (!st) st = mcs_results_put_time(r, 1, nt, t, &e);
+    const char *qty[] = {"position", "orientation", "velocity", "angular_velocity", "acceleration"};
+    for (int body = 0; body < nbody && !st; body++)
+        for (int k = 0; k < 5 && !st; k++) {
+            int w = k == 1 ? 4 : 3;
+            for (int i = 0; i < nt; i++) {
+                double p[3] = {0}, v[3] = {0}, q[4] = {1, 0, 0, 0}, om[3] = {0}, a[3] = {0};
+                fn(ctx, body, t[i], p, q, v, om, a);
+                const double *src = k == 0 ? p : k == 1 ? q : k == 2 ? v : k == 3 ? om : a;
+                memcpy(b + w * i, src, w * sizeof *b);
+            }
+            st = mcs_results_put_body(r, 1, names[body], qty[k], nt, b, &e);
+        }
+    if (!st) st = mcs_results_commit(&r, &e);
+    mcs_results_abort(&r);
+    if (st) fprintf(stderr, "%s\n", e.msg);
+    free(t), free(b);
+    return st == MCS_OK;
+}
+
+typedef struct {
+    const double *p0;
+    double a;
+} s1_sled;
+
+static inline void s1_sled_at(const void *ctx, int body, double t, double p[3], double q[4],
+                              double v[3], double om[3], double a[3])
+{
+    const s1_sled *c = ctx;
+    (void)body, (void)q, (void)om;
+    for (int j = 0; j < 3; j++)
+        p[j] = c->p0[j] + (j == 0 ? 0.5 * c->a * t * t : 0);
+    v[0] = c->a * t;
+    a[0] = c->a;
+}
+
+/* a stage-1 file of one body `name` at p0 + (0.5 a t^2, 0, 0) from rest, 1 kHz over [0, t_end] */
+static inline int write_sled(const char *path, const char *name, const double *p0, double a,
+                             double t_end)
+{
+    const s1_sled c = {p0, a};
+    return write_s1_motion(path, t_end, 1, &name, s1_sled_at, &c);
+}
+
 #endif

@@ -46,6 +46,23 @@ static double punch_vz(const mb_state *s)
     return k.vel[2];
 }
 
+/* m run to its end (the status CHECKed, an error printed); *fpeak (NULL: none) raised to the
+ * largest z force of the punch's contact at the ends of the FE steps */
+static mb_state *run_punch(const mb_model *m, double *fpeak)
+{
+    mcs_error err = {0};
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    CHECK(st == MCS_OK);
+    while (!st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        if (fpeak) *fpeak = fmax(*fpeak, s->couple->fe->contact->ell_force[2]);
+    }
+    CHECK(st == MCS_OK);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    return s;
+}
+
 /* the stress curve of the first test, sigma(delta) [Pa] (linear between its points) */
 static const double law_x[] = {0, 1e-3, 3e-3, 10e-3}, law_y[] = {0, 20e3, 150e3, 1.5e6};
 static double sigma(double d)
@@ -135,15 +152,9 @@ static void test_hysteresis_rebound_and_dissipation(void)
     /* c = 10 MPa/m: delta_m = v0 sqrt(M / (c A)) = 3.95 mm */
     snprintf(y, sizeof y, PLATE_YAML, 0.02, SEMI_C + ht + 0.2e-3, -v0,
              "{stress: [[0, 0], [10 mm, 100 kPa]], unloading_slope: 40 MPa/m}");
-    mcs_error err = {0};
     mb_model *m = mc_model("punch_h.yaml", y);
     if (!m) return;
-    mb_state *s = NULL;
-    mcs_status st = mb_state_create(m, &s, &err);
-    CHECK(st == MCS_OK);
-    while (!st && s->step < m->nsteps) st = mb_step(m, s, &err);
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    mb_state *s = run_punch(m, NULL);
     const fe_model *fm = m->couple->fe.model;
     const double vend = punch_vz(s), ec = fe_contact_energy(fm, s->couple->fe);
     const double eref = 0.5 * v0 * v0 * (1 - 0.25), drift = mb_energy_drift(m, s);
@@ -192,19 +203,10 @@ static void test_series_pad_and_body_law(void)
              "              body_characteristic: {stress: [[0, 0], [10 mm, 1 MPa]],\n"
              "                                    unloading_slope: 400 MPa/m}}]\n",
              SEMI_C + 0.2e-3, -v0);
-    mcs_error err = {0};
     mb_model *m = mc_model("pad.yaml", y);
     if (!m) return;
-    mb_state *s = NULL;
-    mcs_status st = mb_state_create(m, &s, &err);
-    CHECK(st == MCS_OK);
     double fpeak = 0;
-    while (!st && s->step < m->nsteps) {
-        st = mb_step(m, s, &err);
-        fpeak = fmax(fpeak, s->couple->fe->contact->ell_force[2]);
-    }
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    mb_state *s = run_punch(m, &fpeak);
     /* the penalties of the top face's nodes (z = 0) */
     const fe_model *fm = m->couple->fe.model;
     double Kp = 0, dt0 = fm->contact->dt0;
@@ -247,19 +249,10 @@ static void test_stiff_law_keeps_the_step(void)
     char tail[2048];
     snprintf(tail, sizeof tail, "%s", ps + strlen("bodies: [punch],"));
     snprintf(ps, sizeof y - (size_t)(ps - y), "bodies: [punch], penalty_scale: 1e-5,%s", tail);
-    mcs_error err = {0};
     mb_model *m = mc_model("punch_stiff.yaml", y);
     if (!m) return;
-    mb_state *s = NULL;
-    mcs_status st = mb_state_create(m, &s, &err);
-    CHECK(st == MCS_OK);
     double fpeak = 0;
-    while (!st && s->step < m->nsteps) {
-        st = mb_step(m, s, &err);
-        fpeak = fmax(fpeak, s->couple->fe->contact->ell_force[2]);
-    }
-    CHECK(st == MCS_OK);
-    if (st) fprintf(stderr, "%s\n", err.msg);
+    mb_state *s = run_punch(m, &fpeak);
     const fe_model *fm = m->couple->fe.model;
     double Kp = 0, dt0 = fm->contact->dt0, kb_max = 0;
     for (int n = 0; n < fm->nnode; n++) {

@@ -409,31 +409,6 @@ static void test_scenario_pairs(void)
 
 /* ---- stage 2 of the concept case with the 5th female ---- */
 
-/* distance of x from the ellipsoid surface s of the built model, to first order (as
- * tests/test_s2_concept.c) */
-static double surf_distance(const mb_model *m, const mb_surface *s, const double x[3])
-{
-    const mb_body_desc *b = &m->body[s->body];
-    double R[9], c[3], d[3], e[3], l[3];
-    mb_quat_to_rot(b->quat, R);
-    for (int i = 0; i < 3; i++)
-        c[i] = b->pos[i] + R[3 * i] * s->center[0] + R[3 * i + 1] * s->center[1] +
-               R[3 * i + 2] * s->center[2];
-    for (int i = 0; i < 3; i++)
-        d[i] = x[i] - c[i];
-    for (int i = 0; i < 3; i++)
-        e[i] = R[i] * d[0] + R[3 + i] * d[1] + R[6 + i] * d[2];
-    for (int i = 0; i < 3; i++)
-        l[i] = s->rot[i] * e[0] + s->rot[3 + i] * e[1] + s->rot[6 + i] * e[2];
-    double f2 = 0, g2 = 0;
-    for (int i = 0; i < 3; i++) {
-        f2 += l[i] * l[i] / (s->semi[i] * s->semi[i]);
-        g2 += l[i] * l[i] / pow(s->semi[i], 4);
-    }
-    double f = sqrt(f2);
-    return (f - 1) / (sqrt(g2) / f);
-}
-
 /* iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml: compiles (stage2_fe/s2_scenario.h)
  * and builds with the 5th female seated, her dummy size kept; the tank foam pads (placed for
  * the 50th's thighs, 22 mm clear) clear hers at t = 0 too (thigh ellipsoid to the pads' outer
@@ -468,8 +443,8 @@ static void test_stage2_05f(void)
         const fe_part *p = &fm->part[ip];
         for (int e = p->elem_begin; e < p->elem_end; e++)
             for (int j = 4; j < 8; j++)
-                gap = fmin(
-                    gap, surf_distance(m, &m->surf[st], fm->node_x0 + 3 * fm->hex_node[8 * e + j]));
+                gap = fmin(gap, mt_surf_distance(m, &m->surf[st],
+                                                 fm->node_x0 + 3 * fm->hex_node[8 * e + j]));
     }
     printf("  5th female stage 2: tank pads %.1f mm from her thighs at t = 0\n", gap * 1e3);
     FIG("rider.size_05f_pad_gap_mm", "%.0f", gap * 1e3);

@@ -111,37 +111,21 @@ static void sled_at(double t, double *p, double *v)
     }
 }
 
+static void analytic_at(const void *ctx, int body, double t, double p[3], double q[4],
+                        double v[3], double om[3], double a[3])
+{
+    (void)ctx;
+    if (body == 0) spin_at(t, q, om);
+    if (body == 1) sled_at(t, p, v);
+    if (body == 1) memcpy(a, SLED_A, 3 * sizeof *a);
+    if (body == 0) memcpy(p, SLED_P0, 3 * sizeof *p), p[1] += 1;
+}
+
 /* a stage-1 file of the two closed-form bodies sampled at 1 kHz over [0, t_end] */
 static int write_analytic(const char *path, double t_end)
 {
-    const int nt = (int)lround(t_end / 1e-3) + 1;
-    double *t = malloc(nt * sizeof *t), *b = malloc(nt * 4 * sizeof *b);
-    mcs_results *r = NULL;
-    mcs_error e = {0};
-    mcs_status st = mcs_results_create(&r, path, NULL, &e);
-    for (int i = 0; i < nt; i++)
-        t[i] = i * 1e-3;
-    if (!st) st = mcs_results_put_time(r, 1, nt, t, &e);
-    const char *qty[] = {"position", "orientation", "velocity", "angular_velocity", "acceleration"};
-    for (int body = 0; body < 2 && !st; body++)
-        for (int k = 0; k < 5 && !st; k++) {
-            int w = k == 1 ? 4 : 3;
-            for (int i = 0; i < nt; i++) {
-                double p[3] = {0}, v[3] = {0}, q[4] = {1, 0, 0, 0}, om[3] = {0}, a[3] = {0};
-                if (body == 0) spin_at(t[i], q, om);
-                if (body == 1) sled_at(t[i], p, v);
-                if (body == 1) memcpy(a, SLED_A, sizeof a);
-                if (body == 0) memcpy(p, SLED_P0, sizeof p), p[1] += 1;
-                const double *src = k == 0 ? p : k == 1 ? q : k == 2 ? v : k == 3 ? om : a;
-                memcpy(b + w * i, src, w * sizeof *b);
-            }
-            st = mcs_results_put_body(r, 1, body ? "sled" : "spin", qty[k], nt, b, &e);
-        }
-    if (!st) st = mcs_results_commit(&r, &e);
-    mcs_results_abort(&r);
-    if (st) fprintf(stderr, "%s\n", e.msg);
-    free(t), free(b);
-    return st == MCS_OK;
+    const char *names[] = {"spin", "sled"};
+    return write_s1_motion(path, t_end, 2, names, analytic_at, NULL);
 }
 
 static const char ANALYTIC[] =
@@ -206,43 +190,13 @@ static void test_analytic(void)
 
 /* ---- a free ball sliding on a prescribed plate ---- */
 
-/* plate: the x-acceleration a from rest; the stage-1 file at 1 kHz over [0, t_end] */
-static int write_plate(const char *path, double a, double t_end)
-{
-    const int nt = (int)lround(t_end / 1e-3) + 1;
-    double *t = malloc(nt * sizeof *t), *b = malloc(nt * 4 * sizeof *b);
-    mcs_results *r = NULL;
-    mcs_error e = {0};
-    mcs_status st = mcs_results_create(&r, path, NULL, &e);
-    for (int i = 0; i < nt; i++)
-        t[i] = i * 1e-3;
-    if (!st) st = mcs_results_put_time(r, 1, nt, t, &e);
-    const char *qty[] = {"position", "orientation", "velocity", "angular_velocity", "acceleration"};
-    for (int k = 0; k < 5 && !st; k++) {
-        int w = k == 1 ? 4 : 3;
-        for (int i = 0; i < nt; i++) {
-            double v[4] = {0};
-            if (k == 0) v[0] = 0.5 * a * t[i] * t[i];
-            if (k == 1) v[0] = 1;
-            if (k == 2) v[0] = a * t[i];
-            if (k == 4) v[0] = a;
-            memcpy(b + w * i, v, w * sizeof *b);
-        }
-        st = mcs_results_put_body(r, 1, "plate", qty[k], nt, b, &e);
-    }
-    if (!st) st = mcs_results_commit(&r, &e);
-    mcs_results_abort(&r);
-    free(t), free(b);
-    return st == MCS_OK;
-}
-
 static void test_ball_on_plate(void)
 {
     const double a = 20, mu = 0.2, g = 9.80665, r = 0.05, t_end = 0.2, slip_ramp = 0.01;
     char motion[128], out[128], y[2048];
     tpath(motion, sizeof motion, "plate1.h5");
     tpath(out, sizeof out, "plate2.h5");
-    CHECK(write_plate(motion, a, t_end));
+    CHECK(write_sled(motion, "plate", (const double[3]){0, 0, 0}, a, t_end)); /* from rest at 0 */
     /* linear contact 1e7 N/m (1 um static sink of the 1 kg ball), damped */
     snprintf(y, sizeof y,
              "mcrash: 1\nname: ball on an accelerating plate\n"

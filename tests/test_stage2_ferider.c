@@ -31,39 +31,6 @@ static void tpath(char *buf, size_t n, const char *name)
     snprintf(buf, n, "%s/%s", tdir, name);
 }
 
-/* a stage-1 file of one body `name` at p0 + (0.5 a t^2, 0, 0) from rest, 1 kHz over [0, t_end] */
-static int write_sled(const char *path, const char *name, const double *p0, double a, double t_end)
-{
-    const int nt = (int)lround(t_end / 1e-3) + 1;
-    double *t = malloc(nt * sizeof *t), *b = malloc(nt * 4 * sizeof *b);
-    mcs_results *r = NULL;
-    mcs_error e = {0};
-    mcs_status st = mcs_results_create(&r, path, NULL, &e);
-    for (int i = 0; i < nt; i++)
-        t[i] = i * 1e-3;
-    if (!st) st = mcs_results_put_time(r, 1, nt, t, &e);
-    const char *qty[] = {"position", "orientation", "velocity", "angular_velocity", "acceleration"};
-    for (int k = 0; k < 5 && !st; k++) {
-        int w = k == 1 ? 4 : 3;
-        for (int i = 0; i < nt; i++) {
-            double v[4] = {0};
-            if (k == 0)
-                for (int j = 0; j < 3; j++)
-                    v[j] = p0[j] + (j == 0 ? 0.5 * a * t[i] * t[i] : 0);
-            if (k == 1) v[0] = 1;
-            if (k == 2) v[0] = a * t[i];
-            if (k == 4) v[0] = a;
-            memcpy(b + w * i, v, w * sizeof *b);
-        }
-        st = mcs_results_put_body(r, 1, name, qty[k], nt, b, &e);
-    }
-    if (!st) st = mcs_results_commit(&r, &e);
-    mcs_results_abort(&r);
-    if (st) fprintf(stderr, "%s\n", e.msg);
-    free(t), free(b);
-    return st == MCS_OK;
-}
-
 /* a box body of half sizes h at c (its facet surface, outward triangles) */
 static void box_body(char *s, size_t n, const char *name, const double *c, const double *h)
 {

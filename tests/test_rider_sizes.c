@@ -412,7 +412,7 @@ static void test_scenario_pairs(void)
 /* iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml: compiles (stage2_fe/s2_scenario.h)
  * and builds with the 5th female seated, her dummy size kept; the tank foam pads (placed for
  * the 50th's thighs, 22 mm clear) clear hers at t = 0 too (thigh ellipsoid to the pads' outer
- * nodes). The stage-2 run itself waits for `mcrash stage2`. */
+ * nodes). The stage-2 run: tests/test_stage2_verify.c. */
 static void test_stage2_05f(void)
 {
     mcs_scenario *s2 = NULL, *c2 = NULL;

@@ -332,7 +332,12 @@ static void test_fig23_05f(void)
     char *y = text_with(CONCEPT_05F_S2, NULL, NULL, "");
     s2_summary sum = {0};
     CHECK(y && run_s2(CONCEPT_05F_S2, y, s1, s2, &sum, &err) == MCS_OK);
+    CHECK(y && strstr(y, "body_characteristic: {")); /* the thigh's flesh on the pads */
     free(y);
+    double fpk = 0, tpk = 0;
+    pad_peak(s2, &fpk, &tpk);
+    printf("5th, stage 2, tank pads: contact force peak %.4g N at %.4g s\n", fpk, tpk);
+    FIG("fig23.p05_s2_pad_peak_n", "%.0f", fpk);
     static const char *const k1[10] = {
         "fig23.p05_s1_slip_100_mm", "fig23.p05_s1_slip_200_mm", "fig23.p05_s1_slip_300_mm",
         "fig23.p05_s1_up_100_mm", "fig23.p05_s1_up_200_mm", "fig23.p05_s1_up_300_mm",

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "core/mcs_results.h"
+#include "fe/fe_model.h"
 #include "stage1_mb/mb_model.h"
 #include "stage1_mb/mb_vec.h"
 
@@ -159,6 +160,28 @@ static inline double mt_surf_distance(const mb_model *m, const mb_surface *s, co
     }
     double f = sqrt(f2);
     return (f - 1) / (sqrt(g2) / f);
+}
+
+/* the least mt_surf_distance of the outer face nodes (hexahedron nodes 4-7) of the FE part
+ * `part` from the surface `surf` at t = 0 [m]; *ip: the part's index; NAN (*ip -1) when the
+ * part or the surface is missing */
+static inline double mt_hex_face_gap(const mb_model *m, const fe_model *fm, const char *part,
+                                     const char *surf, int *ip)
+{
+    int st = -1;
+    *ip = -1;
+    for (int i = 0; i < fm->npart; i++)
+        if (strcmp(fm->part[i].name, part) == 0) *ip = i;
+    for (int i = 0; i < m->nsurf; i++)
+        if (strcmp(m->surf[i].name, surf) == 0) st = i;
+    if (*ip < 0 || st < 0) return *ip = -1, NAN;
+    const fe_part *p = &fm->part[*ip];
+    double gap = INFINITY;
+    for (int e = p->elem_begin; e < p->elem_end; e++)
+        for (int j = 4; j < 8; j++)
+            gap = fmin(gap, mt_surf_distance(m, &m->surf[st],
+                                             fm->node_x0 + 3 * fm->hex_node[8 * e + j]));
+    return gap;
 }
 
 #endif

@@ -433,18 +433,10 @@ static void test_stage2_05f(void)
                *thigh[2] = {"rider_thigh_l", "rider_thigh_r"};
     double gap = INFINITY;
     for (int k = 0; k < 2; k++) {
-        int ip = -1, st = -1;
-        for (int i = 0; i < fm->npart; i++)
-            if (strcmp(fm->part[i].name, pads[k]) == 0) ip = i;
-        for (int i = 0; i < m->nsurf; i++)
-            if (strcmp(m->surf[i].name, thigh[k]) == 0) st = i;
-        CHECK(ip >= 0 && st >= 0);
-        if (ip < 0 || st < 0) continue;
-        const fe_part *p = &fm->part[ip];
-        for (int e = p->elem_begin; e < p->elem_end; e++)
-            for (int j = 4; j < 8; j++)
-                gap = fmin(gap, mt_surf_distance(m, &m->surf[st],
-                                                 fm->node_x0 + 3 * fm->hex_node[8 * e + j]));
+        int ip = -1;
+        double g = mt_hex_face_gap(m, fm, pads[k], thigh[k], &ip);
+        CHECK(ip >= 0);
+        if (ip >= 0) gap = fmin(gap, g);
     }
     printf("  5th female stage 2: tank pads %.1f mm from her thighs at t = 0\n", gap * 1e3);
     FIG("rider.size_05f_pad_gap_mm", "%.0f", gap * 1e3);

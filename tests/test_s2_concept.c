@@ -98,13 +98,10 @@ static void test_stage2_model_builds(void)
                *thigh[2] = {"rider_thigh_l", "rider_thigh_r"};
     double gap_min = INFINITY;
     for (int k = 0; k < 2; k++) {
-        int ip = -1, st = -1;
-        for (int i = 0; i < fm->npart; i++)
-            if (strcmp(fm->part[i].name, pads[k]) == 0) ip = i;
-        for (int i = 0; i < m->nsurf; i++)
-            if (strcmp(m->surf[i].name, thigh[k]) == 0) st = i;
-        CHECK(ip >= 0 && st >= 0);
-        if (ip < 0 || st < 0) continue;
+        int ip = -1;
+        double gap = mt_hex_face_gap(m, fm, pads[k], thigh[k], &ip);
+        CHECK(ip >= 0);
+        if (ip < 0) continue;
         const fe_part *p = &fm->part[ip];
         int nhex = p->elem_end - p->elem_begin, carried = 0;
         /* its nodes carried by the frame: the inner face, (nu + 1) (nv + 1) of nu nv hexes */
@@ -118,11 +115,6 @@ static void test_stage2_model_builds(void)
                     break;
                 }
         }
-        double gap = INFINITY;
-        for (int e = p->elem_begin; e < p->elem_end; e++)
-            for (int j = 4; j < 8; j++)
-                gap = fmin(gap, mt_surf_distance(m, &m->surf[st],
-                                                 fm->node_x0 + 3 * fm->hex_node[8 * e + j]));
         printf(
             "%s: %d hexes, %d nodes carried by moto_frame, outer face %.1f mm from %s at t = 0\n",
             pads[k], nhex, carried, 1e3 * gap, thigh[k]);

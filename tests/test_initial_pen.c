@@ -102,6 +102,7 @@ static void test_rider_scenarios(void)
         "iso13232_413-0_13.4_sedan_rider_95m.yaml",
         "iso13232_413-0_13.4_sedan_rider_concept.yaml",
         "iso13232_413-0_13.4_sedan_rider_concept_05f.yaml",
+        "iso13232_413-0_13.4_sedan_rider_concept_95m.yaml",
         "moving_car_413-6.7_13.4_sedan_rider.yaml",
         "mymosa_lateral_car_1100kg_rider.yaml",
         "mymosa_lateral_car_1100kg_rider_concept.yaml",

@@ -312,7 +312,7 @@ typedef struct {
     const char *fig[2];      /* verify-only figure keys: HIC15, Nij (the size's intercepts) */
 } scn_pair;
 
-static const scn_pair pairs[3] = {
+static const scn_pair pairs[4] = {
     {"iso13232_413-0_13.4_sedan_rider_05f.yaml",
      "iso13232_413-0_13.4_sedan_rider.yaml",
      "5th_female",
@@ -328,6 +328,11 @@ static const scn_pair pairs[3] = {
      "5th_female",
      0.01,
      {"rider.v413c_05f_hic15", "rider.v413c_05f_nij"}},
+    {"iso13232_413-0_13.4_sedan_rider_concept_95m.yaml",
+     "iso13232_413-0_13.4_sedan_rider_concept.yaml",
+     "95th_male",
+     0.05, /* past the pretensioners' pay-in (12 + 15 ms): the belts routed for the 95th */
+     {"rider.v413c_95m_hic15", "rider.v413c_95m_nij"}},
 };
 
 /* the row of criterion key, NULL when absent */
@@ -343,7 +348,7 @@ static const an_injury_row *row_of(const an_injury_row *r, int n, const char *ke
  * carrying the dummy size, and `mcrash injury`'s rows for that size (Nij and limits) */
 static void test_scenario_pairs(void)
 {
-    for (int k = 0; k < 3; k++) {
+    for (int k = 0; k < 4; k++) {
         const scn_pair *p = &pairs[k];
         char path[256], base[256], txt[512];
         snprintf(path, sizeof path, "scenarios/%s", p->file);

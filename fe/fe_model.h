@@ -388,6 +388,8 @@ mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_er
 mcs_status fe_builder_add_boundary(fe_builder *b, const fe_boundary_desc *d, mcs_error *err);
 mcs_status fe_builder_fix_node(fe_builder *b, int node, unsigned fix, const double vel[3],
                                mcs_error *err);
+/* the initial velocity of one node, replacing its part's (LS-DYNA *INITIAL_VELOCITY_NODE) */
+mcs_status fe_builder_node_velocity(fe_builder *b, int node, const double v[3], mcs_error *err);
 mcs_status fe_builder_add_load(fe_builder *b, const fe_load_desc *d, mcs_error *err);
 /* one node's share of a load; curve as in fe_load_desc (ncurve 0: constant) */
 mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force[3], int ncurve,

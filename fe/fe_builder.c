@@ -3,6 +3,7 @@
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_restraint.h"
 #include "fe/fe_slipring.h"
+#include "fe/fe_joint.h"
 #include "fe/fe_solid.h"
 
 #include <math.h>
@@ -57,6 +58,7 @@ void fe_builder_destroy(fe_builder **p)
     free(b->load);
     fe_restraint_list_free(b);
     fe_slipring_list_free(b);
+    fe_joint_list_free(b);
     free(b->spring);
     free(b->mass);
     for (int i = 0; i < b->nfacets; i++) {

@@ -49,6 +49,7 @@ struct fe_builder {
                                                      the builder's copies (owned)      */
     fe_facet_desc facets[FE_FACETS_MAX];
     struct fe_slipring_list *sliprings;           /* slip rings to add (fe_slipring.c) */
+    struct fe_joint_list *joints; /* joints, nodal rigid bodies, extra nodes (fe_joint.c) */
 };
 
 int fe_kind_nnode(int kind);

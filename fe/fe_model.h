@@ -351,6 +351,8 @@ typedef struct fe_model {
     int nwall_slave;       /* slave nodes of kinematic walls with mass, all walls [-]      */
     int *wall_slave;       /* (nwall_slave) node indices                                   */
     int wall_slave_off[FE_WALL_MAX + 1]; /* wall w's slaves: wall_slave_off[w] ..[w+1] [-]  */
+    int njoint;            /* joints between rigid bodies (fe_joint.h) [-]                 */
+    struct fe_joint *joint; /* (njoint)                                                    */
 } fe_model;
 
 #define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */

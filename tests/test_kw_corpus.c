@@ -252,9 +252,10 @@ static void test_expressions(void)
     }
 }
 
-/* mcrash check reads the decks a scenario names: a missing deck and a part ID without elements
- * (no *PART 5, as the build would say) are errors (exit 2) at the scenario key; --json lists each deck's unknown keywords once
- * (check_deck.k: *USER_LOADING on lines 4 and 23, *EOS_GRUNEISEN on line 14) */
+/* mcrash check reads the decks a scenario names: a missing deck and a part ID the deck lacks
+ * (no *PART 5, as the build would say) are errors (exit 2) at the scenario key; --json lists
+ * each deck's unknown keywords once (check_deck.k: *USER_LOADING on lines 4 and 23,
+ * *EOS_GRUNEISEN on line 14) */
 static void test_check_cli(void)
 {
     const char *scn = CD "scn/";

@@ -33,6 +33,8 @@ struct fe_builder {
     fe_boundary_desc *bc;
     int nfix, cap_fix;
     fe_node_fix *fix;
+    int nvel, cap_vel;
+    fe_node_fix *vel;  /* initial velocities of single nodes (v; fix unused) */
     int nload, cap_load;
     fe_bload *load;
     int nwall;

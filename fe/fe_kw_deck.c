@@ -95,6 +95,7 @@ void fe_kw_deck_destroy(fe_kw_deck **p)
     free(d->iv);
     free(d->spc);
     free(d->unknown);
+    kw_contact_free(d); /* fe_kw_cards_contact.c */
     free(d);
     *p = NULL;
 }

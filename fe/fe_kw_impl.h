@@ -17,6 +17,8 @@ typedef struct {
     int file;
 } kw_card;
 
+#define KW_INCLUDE_DEPTH 8 /* *INCLUDE nesting */
+
 /* a node while reading (sorted and checked at the end) */
 typedef struct {
     int id;
@@ -38,6 +40,12 @@ typedef struct {
     int nnode, cap_node;
     kw_node *node;         /* nodes read so far                                   */
     int ended;             /* *END seen in the current file                       */
+    /* reader mechanics (fe_kw_read.c, fe_kw_param.c) */
+    int nopen;             /* files being read, outermost first                   */
+    int open[KW_INCLUDE_DEPTH + 1]; /* their indices in d->file                    */
+    int npath, cap_path;
+    char **path;           /* *INCLUDE_PATH(_RELATIVE) folders, in the order given  */
+    struct kw_params *par; /* *PARAMETER values (fe_kw_param.c)                    */
 } kw_ctx;
 
 /* layouts: standard widths of a card's fields */
@@ -62,6 +70,8 @@ mcs_status kw_real(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, cons
                    double dflt, double *out);
 /* a text field over columns [col0, col0+w) trimmed into buf (whole card when w <= 0) */
 void kw_text(const kw_card *cd, int col0, int w, char *buf, size_t n);
+/* field i's text, trimmed, into buf; returns its 1-based column */
+int kw_field_text(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, char *buf, size_t n);
 /* true when the field is blank */
 int kw_blank(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i);
 /* an error at a card: "FILE:LINE:COL: error: *KEYWORD: ..." (col 0: no column) */
@@ -87,8 +97,62 @@ mcs_status kw_finish(kw_ctx *c);
 /* a new entry at the end of a deck list (zeroed); NULL out of memory */
 void *kw_push(void **arr, int *n, int *cap, size_t sz);
 
+/* ---- parameters (fe_kw_param.c, fe_kw_expr.c) ---- */
+
+/* *PARAMETER(_EXPRESSION)(_LOCAL|_GLOBAL), *PARAMETER_DUPLICATION: 1 = handled (*st set) */
+int kw_param_block(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st);
+/* field text p[0..n) is a reference &NAME or -&NAME */
+int kw_param_is_ref(const char *p, int n);
+/* the value of a reference (as_int: must be integral), errors at the field's column */
+mcs_status kw_param_num(kw_ctx *c, const kw_card *cd, const char *p, int n, const char *field,
+                        int as_int, double *out);
+/* a file ended: its _LOCAL parameters go out of scope */
+mcs_status kw_param_file_done(kw_ctx *c, int file);
+void kw_param_free(kw_ctx *c);
+/* evaluate an expression (fe_kw_expr.c); names through look (0: found); 0 on success, else
+ * -1 with the 0-based offset of the fault in *errpos and a message */
+int kw_expr_eval(const char *s, int (*look)(void *user, const char *name, double *v), void *user,
+                 double *out, int *errpos, char *msg, size_t nmsg);
+
 /* ---- handlers (fe_kw_cards.c): cards of one keyword; 1 = handled, 0 = unknown keyword ---- */
 int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st);
+
+/* ---- material handlers (fe_kw_cards_mat.c): *MAT_PLASTIC_KINEMATIC, *MAT_NULL, *MAT_RIGID,
+ * *MAT_MOONEY-RIVLIN_RUBBER, *MAT_LOW_DENSITY_FOAM; kw_mat_desc: their kernel descriptors
+ * (1 when k is one of them, *st the status; 0 otherwise) ---- */
+mcs_status kw_h_mat_pk(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_null(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_rigid(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_mr(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_ldf(kw_ctx *c, const kw_card *cd, int n);
+int kw_mat_desc(const fe_kw_deck *dk, const fe_kw_mat *k, fe_material_desc *m, mcs_error *err,
+                mcs_status *st);
+
+/* ---- handlers of fe_kw_cards_contact.c (contacts, sets, node velocities, prescribed
+ * motions, loads, termination) and the deck memory they own ---- */
+mcs_status kw_h_contact_single(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_general(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_s2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_auto_s2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_n2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_auto_n2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_set_node_gen(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_set_part_gen(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_set_segment(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_initvel_node(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_pmotion_node(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_pmotion_set(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_pmotion_rigid(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_load_node_point(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_load_node_set(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_load_segment(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_control_termination(kw_ctx *c, const kw_card *cd, int n);
+void kw_contact_free(fe_kw_deck *d);
+/* the deck's contacts, node velocities, prescribed motions and loads into a builder once its
+ * parts are in (fe_kw_build_contact.c): names[k] is deck part k's builder name, map the deck
+ * node -> builder node map (-1: not in the model) */
+mcs_status kw_add_deck_more(fe_builder *b, const fe_kw_deck *dk, const char (*names)[FE_NAME_MAX],
+                            const int *map, mcs_error *err);
 
 /* ---- unit conversions (SI value of the deck's unit of each quantity) ---- */
 static inline double kw_u_len(const fe_kw_deck *d) { return d->unit[0]; }

@@ -133,6 +133,16 @@ static void check_param_formats(const fe_kw_deck *d)
     CHECK(x && x[0] == 2.5 && x[1] == 1.25 && x[2] == -9);
 }
 
+/* contact_segment_set.k: segment set 3 = the block's bottom face (5 6 7 8), node set 4 = its
+ * nodes; three contacts on them (the model's passes: tests/test_kw_contact.c) */
+static void check_contact_sets(const fe_kw_deck *d)
+{
+    CHECK(d->ncontact == 3 && d->nsegset == 1 && d->segset[0].n == 1);
+    if (d->ncontact != 3) return;
+    CHECK(d->contact[0].sstyp == 0 && d->contact[0].ssid == 3 && d->contact[1].sstyp == 4 &&
+          d->contact[2].type == FE_KW_CT_SINGLE && d->contact[2].sstyp == 0);
+}
+
 static const corpus_row corpus[] = {
     /* parameters */
     {"param_basic.k", "mm-s-t", BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, check_param_basic},
@@ -159,9 +169,8 @@ static const corpus_row corpus[] = {
      "inc/circ_b.k:3:1:", NULL},
     /* contacts, boundary, loads */
     {"contact_plates.k", "mm-s-t", BUILD_DECK, 8, {2}, 2, 1, NULL, NULL, check_contact_plates},
-    {"contact_segment_set.k", "mm-s-t", BUILD_DECK, 0, {0}, 0, 0,
-     "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE: the slave side is a segment set",
-     "contact_segment_set.k:37:", NULL},
+    {"contact_segment_set.k", "mm-s-t", BUILD_DECK, 12, {1, 1}, 2, 1, NULL, NULL,
+     check_contact_sets},
     {"contact_damped.k", NULL, READ_ONLY, 0, {0}, 0, 0,
      "*CONTACT_AUTOMATIC_SINGLE_SURFACE: field VDC", "contact_damped.k:7:41:", NULL},
     /* unknown and refused keywords */

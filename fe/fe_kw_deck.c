@@ -5,9 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const int etype_nnode[FE_KW_NETYPE] = {4, 8, 2, 2, 10};
+static const int etype_nnode[FE_KW_NETYPE] = {4, 8, 2, 2, 10, 8};
 static const char *const etype_name[FE_KW_NETYPE] = {"SHELL", "SOLID", "BEAM", "DISCRETE",
-                                                     "SOLID"};
+                                                     "SOLID", "TSHELL"};
 
 int fe_kw_etype_nnode(fe_kw_etype t) { return etype_nnode[t]; }
 const char *fe_kw_etype_name(fe_kw_etype t) { return etype_name[t]; }
@@ -61,6 +61,7 @@ void fe_kw_deck_destroy(fe_kw_deck **p)
         free(d->elem[t].node);
         free(d->elem[t].dval);
         free(d->elem[t].loc);
+        free(d->elem[t].thick);
     }
     for (int i = 0; i < d->ncurve; i++) free(d->curve[i].xy);
     for (int i = 0; i < d->nset; i++) free(d->set[i].ids);
@@ -74,6 +75,7 @@ void fe_kw_deck_destroy(fe_kw_deck **p)
     free(d->iv);
     free(d->spc);
     free(d->unknown);
+    free(d->hg);
     free(d);
     *p = NULL;
 }

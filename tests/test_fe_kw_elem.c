@@ -1,6 +1,6 @@
 /* test_fe_kw_elem.c: the element, section, part and control keywords of fe_kw_cards_elem.c
- * and fe_kw_build_elem.c (docs/keyword.md), each on a small deck in tests/data/keyword/elem/:
- * counts and values read, what is built checked against closed forms (a plate's mass
+ * and fe_kw_build_elem.c (docs/keyword.md), each on a small deck in tests/data/keyword/corpus/
+ * (rows of test_kw_corpus.c too): counts and values read, what is built checked against closed forms (a plate's mass
  * rho sum(A_e t_e), a rigid body's given mass, CG and torque-free motion, the hex step
  * TSSFAC L / c and the mass that mass scaling adds), refusals naming keyword, file and line,
  * and the writer's round trip. */
@@ -14,7 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#define KD "tests/data/keyword/elem/"
+#define KD "tests/data/keyword/corpus/"
 
 static fe_kw_deck *read_deck(const char *path, const char *units)
 {

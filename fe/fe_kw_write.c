@@ -430,6 +430,49 @@ mcs_status fe_kw_write(const fe_kw_deck *d, const char *path, fe_kw_format fmt, 
 
 /* ---- the deck of a model ---- */
 
+/* what the element keywords carry: shells of their own thickness (*ELEMENT_SHELL_THICKNESS),
+ * each deformable hex or shell part's hourglass form (*HOURGLASS IHQ 2 viscous or 4
+ * stiffness, QM its coefficient; HGID = PID) and rigid parts' given mass properties
+ * (*PART_INERTIA) */
+static mcs_status model_elem_extras(const fe_model *m, fe_kw_deck *d, mcs_error *err)
+{
+    fe_kw_elems *e = &d->elem[FE_KW_SHELL];
+    int own = 0;
+    for (int i = 0; i < m->nshell; i++)
+        own |= m->shell_t[i] != m->part[m->shell_part[i]].section.thickness;
+    if (own && e->n == m->nshell) {
+        e->thick = calloc(4 * (size_t)e->n, sizeof(double));
+        if (!e->thick) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+        e->nthick = e->n;
+        for (int i = 0; i < m->nshell; i++)
+            if (m->shell_t[i] != m->part[m->shell_part[i]].section.thickness)
+                for (int j = 0; j < 4; j++) e->thick[4 * (size_t)i + j] = m->shell_t[i];
+    }
+    for (int ip = 0; ip < m->npart; ip++) {
+        const fe_part *p = &m->part[ip];
+        fe_kw_part *kp = &d->part[ip];
+        if (p->rigid.given) {
+            const fe_rigid_inertia *g = &p->rigid;
+            fe_kw_inertia *in = &kp->inertia;
+            in->given = 1, in->mass = g->mass;
+            memcpy(in->cg, g->cg, sizeof in->cg);
+            memcpy(in->v, g->velocity, sizeof in->v);
+            memcpy(in->w, g->omega, sizeof in->w);
+            const double I[6] = {g->inertia[0][0], g->inertia[0][1], g->inertia[0][2],
+                                 g->inertia[1][1], g->inertia[1][2], g->inertia[2][2]};
+            memcpy(in->i, I, sizeof I);
+        }
+        if (p->body >= 0 || (p->elem_kind != FE_KIND_HEX && p->elem_kind != FE_KIND_SHELL))
+            continue;
+        fe_kw_hourglass *h = kw_push((void **)&d->hg, &d->nhg, &d->cap_hg, sizeof *h);
+        if (!h) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+        h->id = kp->hgid = ip + 1;
+        h->ihq = p->section.hourglass == FE_HG_VISCOUS ? 2 : 4;
+        h->qm = p->hg_coef;
+    }
+    return MCS_OK;
+}
+
 static mcs_status model_props(const fe_model *m, int ip, fe_kw_deck *d, mcs_error *err)
 {
     const fe_part *p = &m->part[ip];
@@ -512,6 +555,7 @@ mcs_status fe_kw_from_model(const fe_model *m, const double *x, const char *titl
         if (!s) st = MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
         else *s = (fe_kw_spc){FE_KW_ON_NODE, i + 1, m->node_fix[i], {0, 0}};
     }
+    if (!st) st = model_elem_extras(m, d, err);
     if (st) fe_kw_deck_destroy(&d);
     *out = d;
     return st;

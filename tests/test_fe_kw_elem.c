@@ -55,6 +55,17 @@ static fe_kw_deck *round_trip(const fe_kw_deck *d, const char *units, fe_kw_form
     return r;
 }
 
+/* a built model as a deck (fe_kw_from_model), written and read back */
+static fe_kw_deck *model_round_trip(const fe_model *m)
+{
+    fe_kw_deck *d = NULL;
+    mcs_error err = {0};
+    CHECK(fe_kw_from_model(m, NULL, "model", &d, &err) == MCS_OK);
+    fe_kw_deck *r = d ? round_trip(d, NULL, FE_KW_FIXED) : NULL;
+    fe_kw_deck_destroy(&d);
+    return r;
+}
+
 /* shell_thickness.k (mm-s-t): 100 mm squares with THIC 2 2 2 2, THIC 1 2 (blank -> T3 1.5) 4,
  * the section's 1.5 (plain *ELEMENT_SHELL), and a triangle of area 5000 mm^2 with THIC 3 3 3
  * (_BETA form). Each shell's thickness is the mean of its nodes' (docs/keyword.md):
@@ -91,6 +102,19 @@ static void test_shell_thickness(void)
         CHECK(fe_state_create(m, &s, &err) == MCS_OK);
         for (int k = 0; s && k < 10; k++) CHECK(fe_step(m, s) == MCS_OK);
         fe_state_destroy(&s);
+        /* the model's deck: the same thicknesses, so the same mass */
+        fe_kw_deck *r = model_round_trip(m);
+        fe_model *m2 = r ? build(r, NULL, &err) : NULL;
+        CHECK(m2 && m2->nshell == 4);
+        /* the same thicknesses (the writer puts the shells of their own thickness first) */
+        for (int i = 0; m2 && i < 4; i++) {
+            int found = 0;
+            for (int j = 0; j < 4; j++) found += fabs(m2->shell_t[j] - want[i]) <= 1e-15;
+            CHECK(found == 1);
+        }
+        if (m2) CHECK_REL(m2->mass_total, 0.5593125, 1e-12);
+        fe_model_destroy(&m2);
+        fe_kw_deck_destroy(&r);
     }
     fe_model_destroy(&m);
     /* the writer: *ELEMENT_SHELL_THICKNESS for the shells of their own thickness */
@@ -248,6 +272,11 @@ static void test_part_inertia(void)
                "kinetic %.9g J (closed form %.9g)\n",
                t, s->body_x[0], c[0], s->energy[FE_E_kinetic], ke);
         CHECK_REL(s->energy[FE_E_kinetic], ke, 1e-9);
+        fe_kw_deck *r = model_round_trip(m);
+        const fe_kw_part *q = r ? fe_kw_find_part(r, 1) : NULL;
+        CHECK(q && q->inertia.given && q->inertia.mass == 10 && q->inertia.i[3] == 2);
+        CHECK(q && q->inertia.cg[0] == 0.6 && q->inertia.w[2] == 5);
+        fe_kw_deck_destroy(&r);
     }
     fe_state_destroy(&s);
     fe_model_destroy(&m);
@@ -293,7 +322,19 @@ static void test_hourglass(void)
     mcs_error err = {0};
     fe_model *m = build(d, NULL, &err);
     CHECK(m != NULL);
-    if (m) CHECK_NEAR(m->part[2].hg_coef, 0.05, 0); /* the kernel's stiffness default */
+    if (m) {
+        CHECK_NEAR(m->part[2].hg_coef, 0.05, 0); /* the kernel's stiffness default */
+        /* the model's deck: *HOURGLASS IHQ 2 / 4 with the effective coefficients */
+        fe_kw_deck *r = model_round_trip(m);
+        CHECK(r && r->nhg == 5);
+        for (int p = 0; r && p < 5; p++) {
+            fe_part_desc pd = fe_part_desc_default();
+            CHECK(fe_kw_part_props(r, p + 1, &pd, &err) == MCS_OK);
+            CHECK(pd.section.hourglass == form[p]);
+            CHECK_NEAR(pd.section.hourglass_coefficient, m->part[p].hg_coef, 1e-15);
+        }
+        fe_kw_deck_destroy(&r);
+    }
     fe_model_destroy(&m);
     fe_kw_deck *r = round_trip(d, NULL, FE_KW_FIXED);
     if (r) {

@@ -99,7 +99,8 @@ enum {
 /* ---- simulation, environment ---- */
 
 static const mcs_skey sim_keys[] = {
-    Q("end_time", MCS_DIM_TIME, REQ | GT, 0, 0, "simulated duration [s]"),
+    /* required, except beside a whole keyword deck (fe.keyword): its *CONTROL_TERMINATION */
+    Q("end_time", MCS_DIM_TIME, GT, 0, 0, "simulated duration [s]"),
     /* stage 1: the fixed step; FE stages: an upper bound on the stable (Courant) step */
     Q("time_step", MCS_DIM_TIME, GT, 0, 0, "time step [s]"),
     /* FE: safety factor on the Courant step (LS-DYNA TSSFAC, default 0.9) */
@@ -954,7 +955,15 @@ static const mcs_skey fe_ellipsoid_keys[] = {
 static const mcs_smap fe_ellipsoid_map = {.what = "rigid ellipsoid", .keys = fe_ellipsoid_keys};
 
 static const mcs_skey fe_keys[] = {
-    L("parts", part_map, REQ | NE, "FE parts"),
+    /* required, except with a whole keyword deck (keyword:, mcs_rule_fe) */
+    L("parts", part_map, NE, "FE parts"),
+    /* the whole stage-3 model from an LS-DYNA deck (docs/keyword.md, docs/contracts.md) */
+    S("keyword", NE, "LS-DYNA keyword deck read whole: parts, contacts, boundary, initial "
+                     "velocities, walls, end time (relative to the YAML file)"),
+    E("units", "m-s-kg|mm-s-t|mm-ms-kg|mm-ms-g|cm-s-g|cm-us-g", 0,
+      "unit system of the keyword deck (default m-s-kg, SI)"),
+    E("unknown_keywords", "warn|error", 0,
+      "keywords of the deck outside the subset (default warn)"),
     L("boundary", boundary_map, 0, "boundary conditions"),
     L("rigid_walls", wall_map, 0, "rigid walls"),
     L("contacts", fe_contact_map, 0, "FE contacts"),
@@ -973,7 +982,7 @@ static const mcs_skey fe_keys[] = {
     M("mass_scaling", mass_scaling_map, 0, "selective mass scaling"),
     END,
 };
-static const mcs_smap fe_map = {.what = "fe block", .keys = fe_keys};
+static const mcs_smap fe_map = {.what = "fe block", .keys = fe_keys, .check = mcs_rule_fe};
 
 /* ---- stage 2: vehicles prescribed from a stage-1 results file (DESIGN.md "Stage 2") ---- */
 

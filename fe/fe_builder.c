@@ -3,6 +3,7 @@
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_restraint.h"
 #include "fe/fe_slipring.h"
+#include "fe/fe_joint.h"
 #include "fe/fe_solid.h"
 
 #include <math.h>
@@ -55,9 +56,11 @@ void fe_builder_destroy(fe_builder **p)
     free(b->shell_t);
     free(b->bc);
     free(b->fix);
+    free(b->vel);
     free(b->load);
     fe_restraint_list_free(b);
     fe_slipring_list_free(b);
+    fe_joint_list_free(b);
     free(b->spring);
     free(b->mass);
     for (int i = 0; i < b->nfacets; i++) {
@@ -281,6 +284,20 @@ mcs_status fe_builder_fix_node(fe_builder *b, int node, unsigned fix, const doub
     f->node = node;
     f->fix = fix;
     for (int i = 0; i < 3; i++) f->v[i] = vel ? vel[i] : 0;
+    return MCS_OK;
+}
+
+mcs_status fe_builder_node_velocity(fe_builder *b, int node, const double v[3], mcs_error *err)
+{
+    if (node < 0 || node >= b->nnode || !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2]))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: node %d: no such node or velocity not finite",
+                       node);
+    if (grow((void **)&b->vel, &b->cap_vel, b->nvel + 1, sizeof *b->vel))
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
+    fe_node_fix *f = &b->vel[b->nvel++];
+    f->node = node;
+    f->fix = 0;
+    for (int i = 0; i < 3; i++) f->v[i] = v[i];
     return MCS_OK;
 }
 

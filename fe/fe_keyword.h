@@ -222,6 +222,65 @@ typedef struct {
     fe_kw_loc loc;
 } fe_kw_spc;
 
+/* ---- contacts, segment sets, node velocities, prescribed motions, loads, termination
+ * (fe_kw_cards_contact.c, built by fe_kw_build_contact.c; docs/keyword.md) ---- */
+
+/* the *CONTACT_* types read: AUTOMATIC_SINGLE_SURFACE, AUTOMATIC_GENERAL (self contact);
+ * (AUTOMATIC_)SURFACE_TO_SURFACE (symmetric); (AUTOMATIC_)NODES_TO_SURFACE (one way) */
+typedef enum { FE_KW_CT_SINGLE, FE_KW_CT_GENERAL, FE_KW_CT_S2S, FE_KW_CT_N2S } fe_kw_ctype;
+
+typedef struct {
+    int id;                      /* CID of the _ID/_TITLE card, else 0                        */
+    char title[FE_KW_TITLE_MAX]; /* its HEADING                                               */
+    fe_kw_ctype type;
+    int automatic;               /* an _AUTOMATIC_ keyword [-]                                */
+    int ssid, msid, sstyp, mstyp;/* card 1: sides and their ID types (0 segment set, 1 shell
+                                    element set, 2 part set, 3 part, 4 node set, 5 all, 6 all
+                                    but a part set, 7 branch) [-]                              */
+    double fs, fd, dc;           /* card 2: static, dynamic friction [-], decay [s/m]         */
+    double vc, vdc;              /* viscous friction limit [Pa], normal damping [% critical]  */
+    double bt, dt;               /* birth, death time [s] (dt 0: never)                       */
+    double sfs, sfm;             /* card 3: penalty scale of the slave, master side [-]       */
+    double sst, mst;             /* contact thickness override of each side (0: none) [m]     */
+    double sfst, sfmt, fsf;      /* scale on the shell thickness of each side, on FS/FD [-]   */
+    int soft;                    /* optional card A: SOFT (0 penalty) [-]                      */
+    double sldthk, sldstf;       /* optional card B: solid contact thickness [m], stiffness  */
+    fe_kw_loc loc;               /* card 1                                                    */
+} fe_kw_contact;
+
+/* *SET_SEGMENT: quadrilaterals (a triangle repeats N3) by node ID */
+typedef struct {
+    int id;
+    int n;
+    int *node;                   /* (n x 4) node IDs                                          */
+    fe_kw_loc loc;
+} fe_kw_segset;
+
+/* *INITIAL_VELOCITY_NODE */
+typedef struct {
+    int nid;
+    double v[3], vr[3];          /* [m/s], [rad/s]                                            */
+    fe_kw_loc loc;
+} fe_kw_nodevel;
+
+/* *BOUNDARY_PRESCRIBED_MOTION_NODE | _SET | _RIGID: ID DOF VAD LCID SF VID DEATH BIRTH */
+typedef struct {
+    fe_kw_target on;             /* FE_KW_ON_NODE, _NODESET or _PART (_RIGID)                 */
+    int id, dof, vad, lcid;      /* [-]                                                       */
+    double sf;                   /* scale on the curve [-]                                    */
+    double death, birth;         /* [s] (death 0: never)                                      */
+    fe_kw_loc loc;
+} fe_kw_pmotion;
+
+/* *LOAD_NODE_POINT, *LOAD_NODE_SET (NID|NSID DOF LCID SF), *LOAD_SEGMENT (LCID SF AT N1..N4) */
+typedef struct {
+    int segment;                 /* 0: a node, 1: a pressure on a segment, 2: a node set [-]  */
+    int nid, dof, lcid;          /* node or set, direction 1 x 2 y 3 z [-]; the curve [-]     */
+    double sf, at;               /* scale [-], arrival time [s]                               */
+    int node[4];                 /* segment nodes [-]                                         */
+    fe_kw_loc loc;
+} fe_kw_load;
+
 /* a keyword outside the subset: one entry per distinct name, in the order first met */
 typedef struct {
     char name[FE_KW_NAME_MAX + 16]; /* as written, without the "*" */
@@ -252,6 +311,12 @@ typedef struct fe_kw_deck {
     fe_kw_control ctl;    /* *CONTROL_HOURGLASS, *CONTROL_TIMESTEP                          */
     int beams_as_trusses; /* set by the caller: build *SECTION_BEAM ELFORM 1 and 2 beams as
                              trusses of their area (axial force only) instead of refusing */
+    int ncontact, cap_contact; fe_kw_contact *contact; /* *CONTACT_* (fe_kw_cards_contact.c) */
+    int nsegset, cap_segset;   fe_kw_segset *segset;   /* *SET_SEGMENT                         */
+    int nnodevel, cap_nodevel; fe_kw_nodevel *nodevel; /* *INITIAL_VELOCITY_NODE               */
+    int npmotion, cap_pmotion; fe_kw_pmotion *pmotion; /* *BOUNDARY_PRESCRIBED_MOTION_*        */
+    int nload, cap_load;       fe_kw_load *load;       /* *LOAD_NODE_POINT, *LOAD_SEGMENT      */
+    double end_time;      /* *CONTROL_TERMINATION ENDTIM [s] (0: not given)                    */
 } fe_kw_deck;
 
 typedef struct {

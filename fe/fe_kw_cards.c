@@ -785,6 +785,23 @@ static const struct {
     {"HOURGLASS", kw_h_hourglass, 0},
     {"CONTROL_HOURGLASS", kw_h_control_hourglass, 0},
     {"CONTROL_TIMESTEP", kw_h_control_timestep, 0},
+    {"CONTACT_AUTOMATIC_SINGLE_SURFACE", kw_h_contact_single, 1},
+    {"CONTACT_AUTOMATIC_GENERAL", kw_h_contact_general, 1},
+    {"CONTACT_SURFACE_TO_SURFACE", kw_h_contact_s2s, 1},
+    {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", kw_h_contact_auto_s2s, 1},
+    {"CONTACT_NODES_TO_SURFACE", kw_h_contact_n2s, 1},
+    {"CONTACT_AUTOMATIC_NODES_TO_SURFACE", kw_h_contact_auto_n2s, 1},
+    {"SET_NODE_LIST_GENERATE", kw_h_set_node_gen, 0},
+    {"SET_PART_LIST_GENERATE", kw_h_set_part_gen, 0},
+    {"SET_SEGMENT", kw_h_set_segment, 0},
+    {"INITIAL_VELOCITY_NODE", kw_h_initvel_node, 0},
+    {"BOUNDARY_PRESCRIBED_MOTION_NODE", kw_h_pmotion_node, 1},
+    {"BOUNDARY_PRESCRIBED_MOTION_SET", kw_h_pmotion_set, 1},
+    {"BOUNDARY_PRESCRIBED_MOTION_RIGID", kw_h_pmotion_rigid, 1},
+    {"LOAD_NODE_POINT", kw_h_load_node_point, 0},
+    {"LOAD_NODE_SET", kw_h_load_node_set, 0},
+    {"LOAD_SEGMENT", kw_h_load_segment, 0},
+    {"CONTROL_TERMINATION", kw_h_control_termination, 0},
 };
 
 int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st)

@@ -97,6 +97,7 @@ void fe_kw_deck_destroy(fe_kw_deck **p)
     free(d->spc);
     free(d->unknown);
     free(d->hg);
+    kw_contact_free(d); /* fe_kw_cards_contact.c */
     free(d);
     *p = NULL;
 }

@@ -136,6 +136,31 @@ mcs_status kw_beam_section(const fe_kw_deck *dk, const fe_kw_section *k, fe_sect
 mcs_status kw_part_inertia(const fe_kw_deck *dk, const fe_kw_part *p, fe_part_desc *d,
                            mcs_error *err);
 double kw_shell_thickness(const fe_kw_deck *dk, const fe_kw_section *k, int i);
+/* ---- handlers of fe_kw_cards_contact.c (contacts, sets, node velocities, prescribed
+ * motions, loads, termination) and the deck memory they own ---- */
+mcs_status kw_h_contact_single(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_general(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_s2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_auto_s2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_n2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_auto_n2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_set_node_gen(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_set_part_gen(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_set_segment(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_initvel_node(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_pmotion_node(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_pmotion_set(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_pmotion_rigid(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_load_node_point(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_load_node_set(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_load_segment(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_control_termination(kw_ctx *c, const kw_card *cd, int n);
+void kw_contact_free(fe_kw_deck *d);
+/* the deck's contacts, node velocities, prescribed motions and loads into a builder once its
+ * parts are in (fe_kw_build_contact.c): names[k] is deck part k's builder name, map the deck
+ * node -> builder node map (-1: not in the model) */
+mcs_status kw_add_deck_more(fe_builder *b, const fe_kw_deck *dk, const char (*names)[FE_NAME_MAX],
+                            const int *map, mcs_error *err);
 
 /* ---- unit conversions (SI value of the deck's unit of each quantity) ---- */
 static inline double kw_u_len(const fe_kw_deck *d) { return d->unit[0]; }

@@ -365,6 +365,8 @@ typedef struct fe_model {
     int nwall_slave;       /* slave nodes of kinematic walls with mass, all walls [-]      */
     int *wall_slave;       /* (nwall_slave) node indices                                   */
     int wall_slave_off[FE_WALL_MAX + 1]; /* wall w's slaves: wall_slave_off[w] ..[w+1] [-]  */
+    int njoint;            /* joints between rigid bodies (fe_joint.h) [-]                 */
+    struct fe_joint *joint; /* (njoint)                                                    */
 } fe_model;
 
 #define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */
@@ -399,6 +401,8 @@ mcs_status fe_builder_add_shell(fe_builder *b, int part, const int nodes[4], dou
 mcs_status fe_builder_add_boundary(fe_builder *b, const fe_boundary_desc *d, mcs_error *err);
 mcs_status fe_builder_fix_node(fe_builder *b, int node, unsigned fix, const double vel[3],
                                mcs_error *err);
+/* the initial velocity of one node, replacing its part's (LS-DYNA *INITIAL_VELOCITY_NODE) */
+mcs_status fe_builder_node_velocity(fe_builder *b, int node, const double v[3], mcs_error *err);
 mcs_status fe_builder_add_load(fe_builder *b, const fe_load_desc *d, mcs_error *err);
 /* one node's share of a load; curve as in fe_load_desc (ncurve 0: constant) */
 mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force[3], int ncurve,

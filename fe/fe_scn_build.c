@@ -8,6 +8,7 @@
 #include "fe/fe_scn_solid.h"
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_slipring.h"
+#include "fe/fe_scn_deck.h"
 #include "fe/fe_scn_keyword.h"
 #include "fe/fe_scn_place.h"
 #include "fe/fe_scn_pad.h"
@@ -543,7 +544,9 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     mcs_error kerr = {0};
     st = fe_builder_create(&b, &kerr);
     if (st) return fe_scn_relocate(st, fe, &kerr, err);
-    st = add_parts(b, root, fe_scn_get(fe, "parts"), err);
+    if (fe_scn_given(fe, "keyword")) /* a whole deck (fe_scn_deck.c) */
+        st = fe_scn_deck_add(b, fe, sim, &out->end_time, &opts, err);
+    if (!st) st = add_parts(b, root, fe_scn_get(fe, "parts"), err);
     if (!st) st = add_attach(b, root, fe_scn_get(fe, "parts"), out, err);
     if (!st) st = add_ring_bodies(b, fe_scn_get(fe, "sliprings"), out, err);
     if (!st) st = add_boundaries(b, fe_scn_get(fe, "boundary"), out, err);

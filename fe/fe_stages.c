@@ -2,6 +2,7 @@
  * accelerations, integration, stable step). Each reads and writes only what its comment says. */
 #include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
+#include "fe/fe_joint.h"
 #include "fe/fe_membrane.h"
 #include "fe/fe_parallel.h"
 #include "fe/fe_restraint.h"
@@ -113,6 +114,7 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
         if (chunked_part(m->part + ip)) fe_chunk_commit(s, ip, &acc);
     }
     fe_discrete_forces(m, s); /* springs and dampers add to node_fint */
+    fe_joint_forces(m, s);    /* joints: loads on the rigid bodies (body_fj) */
 }
 
 /* reads x, time; adds the contact and penalty rigid-wall forces to node_fext (zeroed by

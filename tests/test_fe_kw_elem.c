@@ -1,9 +1,10 @@
 /* test_fe_kw_elem.c: the element, section, part and control keywords of fe_kw_cards_elem.c
  * and fe_kw_build_elem.c (docs/keyword.md), each on a small deck in tests/data/keyword/corpus/
- * (rows of test_kw_corpus.c too): counts and values read, what is built checked against closed forms (a plate's mass
- * rho sum(A_e t_e), a rigid body's given mass, CG and torque-free motion, the hex step
- * TSSFAC L / c and the mass that mass scaling adds), refusals naming keyword, file and line,
- * and the writer's round trip. */
+ * (rows of test_kw_corpus.c too): counts and values read, what is built checked against
+ * closed forms (a plate's mass rho sum(A_e t_e), a rigid body's given mass, CG and torque-free
+ * motion, the hex step TSSFAC L / c and the mass that mass scaling adds), refusals naming
+ * keyword, file and line, the writer's round trip, and a whole deck's *CONTROL_TIMESTEP. */
+#include "cli_util.h"
 #include "fe/fe_keyword.h"
 #include "fe/fe_solid.h"
 #include "fe/fe_state.h"
@@ -406,6 +407,41 @@ static void test_timestep(void)
     fe_kw_deck_destroy(&d);
 }
 
+/* timestep.k as a scenario's whole deck (fe: {keyword: ...}): its *CONTROL_TIMESTEP sets the
+ * run's step scale and mass scaling, so the run starts at TSSFAC |DT2MS| = 2.01e-4 s with the
+ * mass of test_timestep's closed form; the scenario's time_step_scale wins over TSSFAC */
+static void test_timestep_whole_deck(void)
+{
+    char cwd[512], yaml[64], text[1024], args[256];
+    if (!getcwd(cwd, sizeof cwd)) return;
+    snprintf(yaml, sizeof yaml, "/tmp/mcrash_kwelem_%ld.yaml", (long)getpid());
+    for (int pass = 0; pass < 2; pass++) {
+        snprintf(text, sizeof text,
+                 "mcrash: 1\nsimulation: {end_time: 1 ms, output_rate: 1 kHz%s}\n"
+                 "fe: {keyword: %s/" KD "timestep.k}\n",
+                 pass ? ", time_step_scale: 0.5" : "", cwd);
+        FILE *f = fopen(yaml, "w");
+        if (!f) return;
+        fputs(text, f);
+        fclose(f);
+        snprintf(args, sizeof args, "run %s -o %s.h5 --quiet --json", yaml, yaml);
+        cli_result *r = cli_run(args);
+        CHECK(r->status == 0);
+        const char *dt = strstr(r->out, "\"dt_initial_s\": ");
+        const char *ma = strstr(r->out, "\"mass_added_kg\": ");
+        CHECK(dt && ma);
+        if (!dt || !ma) continue;
+        const double E = 2.1e11, nu = 0.3, rho = 7850;
+        const double c = sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * rho));
+        const double scale = pass ? 0.5 : 0.67, f2 = pow(0.67 * 3e-4 / (scale / c), 2);
+        CHECK_REL(atof(dt + 16), 0.67 * 3e-4, 1e-5);
+        CHECK_REL(atof(ma + 17), rho * (f2 - 1), 1e-5);
+    }
+    char h5[96];
+    snprintf(h5, sizeof h5, "%s.h5", yaml);
+    remove(yaml), remove(h5);
+}
+
 /* reading errors at the card: an offset shell, a negative thickness */
 static void test_refused_cards(void)
 {
@@ -438,6 +474,7 @@ int main(void)
     RUN(test_part_inertia);
     RUN(test_hourglass);
     RUN(test_timestep);
+    RUN(test_timestep_whole_deck);
     RUN(test_refused_cards);
     TEST_END();
 }

@@ -94,6 +94,29 @@ static void check_unknown_many(const fe_kw_deck *d)
     CHECK(strcmp(d->unknown[2].name, "DATABASE_MATSUM") == 0 && d->unknown[2].count == 1);
 }
 
+/* contact_plates.k (mm-s-t), by hand: three contacts (all parts, 2 on 1 with FS 0.3, nodes of
+ * part 2 on part set 5 = parts 1..2); set 5 = {1, 2}, set 7 = {1, 2, 3, 4}; nodes 5..8 at
+ * -1000 mm/s = -1 m/s; the motion on set 7: d = 1 mm/s t, v = 1e-3 m/s (SF 0 takes 1); node 6
+ * loaded by -5 x 1 N; ENDTIM 1.5 ms */
+static void check_contact_plates(const fe_kw_deck *d)
+{
+    CHECK(d->ncontact == 3);
+    if (d->ncontact != 3) return;
+    CHECK(d->contact[0].type == FE_KW_CT_SINGLE && d->contact[0].sstyp == 5 &&
+          d->contact[0].id == 1 && strcmp(d->contact[0].title, "all parts") == 0);
+    CHECK(d->contact[0].fs == 0.2 && d->contact[0].dt == 0);
+    CHECK(d->contact[1].type == FE_KW_CT_S2S && d->contact[1].fs == 0.3 &&
+          strcmp(d->contact[1].title, "upper on lower") == 0);
+    CHECK(d->contact[2].type == FE_KW_CT_N2S && !d->contact[2].automatic &&
+          d->contact[2].msid == 5 && d->contact[2].mstyp == 2);
+    const fe_kw_set *s5 = fe_kw_find_set(d, 5, 1), *s7 = fe_kw_find_set(d, 7, 0);
+    CHECK(s5 && s5->n == 2 && s7 && s7->n == 4 && s7->ids[3] == 4);
+    CHECK(d->nnodevel == 4 && fabs(d->nodevel[3].v[2] + 1) < 1e-12);
+    CHECK(d->npmotion == 1 && d->pmotion[0].sf == 1 && d->pmotion[0].vad == 2);
+    CHECK(d->nload == 1 && d->load[0].nid == 6 && d->load[0].sf == -5);
+    CHECK(fabs(d->end_time - 1.5e-3) < 1e-15);
+}
+
 static const corpus_row corpus[] = {
     /* parameters */
     {"param_basic.k", "mm-s-t", BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, check_param_basic},
@@ -111,6 +134,13 @@ static const corpus_row corpus[] = {
     {"include_path.k", NULL, READ_ONLY, 3, {0}, 0, 0, NULL, NULL, check_include_path},
     {"include_circular.k", NULL, READ_ONLY, 0, {0}, 0, 0, "circular include",
      "inc/circ_b.k:3:1:", NULL},
+    /* contacts, boundary, loads */
+    {"contact_plates.k", "mm-s-t", BUILD_DECK, 8, {2}, 2, 1, NULL, NULL, check_contact_plates},
+    {"contact_segment_set.k", "mm-s-t", BUILD_DECK, 0, {0}, 0, 0,
+     "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE: the slave side is a segment set",
+     "contact_segment_set.k:37:", NULL},
+    {"contact_damped.k", NULL, READ_ONLY, 0, {0}, 0, 0,
+     "*CONTACT_AUTOMATIC_SINGLE_SURFACE: field VDC", "contact_damped.k:7:41:", NULL},
     /* unknown and refused keywords */
     {"unknown_many.k", NULL, READ_ONLY, 1, {0}, 0, 0, NULL, NULL, check_unknown_many},
     {"sph_refused.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*SECTION_SPH: not supported (SPH",

@@ -412,6 +412,49 @@ static void test_scenario_pairs(void)
     }
 }
 
+/* the concept 95th includes the concept motorcycle and overrides the belts' routing by name
+ * (core/mcs_scenario.h, the include rule): the overridden keys are its own (the values written
+ * in the scenario), every other key of the belts and retractors is the model's (the values
+ * written in models/motorcycles/sport_208kg_concept.yaml), and no entity was added */
+static void test_concept_95m_overrides(void)
+{
+    mcs_scenario *s = NULL;
+    mcs_error err = {0};
+    if (mcs_scenario_load("scenarios/iso13232_413-0_13.4_sedan_rider_concept_95m.yaml", &s, &err))
+        fprintf(stderr, "%s\n", err.msg);
+    CHECK(s != NULL);
+    if (!s) return;
+    const mcs_node *fe = mcs_node_get(mcs_scenario_root(s), "fe");
+    const mcs_node *parts = mcs_node_get(fe, "parts"), *ret = mcs_node_get(fe, "retractors");
+    CHECK(mcs_node_len(parts) == 5 && mcs_node_len(ret) == 2);
+    const double y0[2] = {0.062, -0.278}, y1[2] = {0.278, -0.062}, ya[2] = {0.288, -0.288};
+    for (int k = 0; k < 2 && mcs_node_len(parts) >= 2 && mcs_node_len(ret) == 2; k++) {
+        const mcs_node *b = mcs_node_at(parts, k), *m = mcs_node_get(b, "mesh");
+        const mcs_node *r = mcs_node_at(ret, k);
+        CHECK(strcmp(mcs_node_str(mcs_node_get(b, "name")), k ? "belt_r" : "belt_l") == 0);
+        double o[3], e[3], a[3];
+        CHECK(!mcs_node_vec3(mcs_node_get(m, "origin"), o, &err) &&
+              !mcs_node_vec3(mcs_node_get(m, "end"), e, &err) &&
+              !mcs_node_vec3(mcs_node_get(r, "anchor"), a, &err));
+        CHECK_NEAR(o[0], 0.715, 1e-15);
+        CHECK_NEAR(o[1], y0[k], 1e-15);
+        CHECK_NEAR(o[2], 0.869, 1e-15);
+        CHECK_NEAR(e[1], y1[k], 1e-15);
+        CHECK_NEAR(a[0], 0.715, 1e-15);
+        CHECK_NEAR(a[1], ya[k], 1e-15);
+        CHECK_NEAR(a[2], 0.62, 1e-15);
+        /* from the model: mesh generator and divisions, section, retractor limit and payin */
+        CHECK(strcmp(mcs_node_str(mcs_node_get(m, "generate")), "line") == 0);
+        CHECK_NEAR(mcs_node_num(mcs_node_get(m, "divisions")), 10, 0);
+        CHECK_NEAR(mcs_node_num(mcs_node_get(mcs_node_get(b, "section"), "area")), 60e-6, 1e-18);
+        CHECK_NEAR(mcs_node_num(mcs_node_get(r, "load_limit")), 2000, 0);
+        CHECK(mcs_node_curve_len(mcs_node_get(r, "payin")) == 2);
+        CHECK_STR_CONTAINS(mcs_node_file(mcs_node_get(m, "divisions")), "sport_208kg_concept.yaml");
+        CHECK_STR_CONTAINS(mcs_node_file(mcs_node_get(m, "origin")), "concept_95m.yaml");
+    }
+    mcs_scenario_destroy(&s);
+}
+
 /* ---- stage 2 of the concept case with the 5th female ---- */
 
 /* iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml: compiles (stage2_fe/s2_scenario.h)
@@ -459,6 +502,7 @@ int main(void)
     RUN(test_seated);
     RUN(test_limits_scaling);
     RUN(test_scenario_pairs);
+    RUN(test_concept_95m_overrides);
     RUN(test_stage2_05f);
     TEST_END();
 }

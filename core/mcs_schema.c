@@ -954,6 +954,46 @@ static const mcs_skey fe_ellipsoid_keys[] = {
 };
 static const mcs_smap fe_ellipsoid_map = {.what = "rigid ellipsoid", .keys = fe_ellipsoid_keys};
 
+/* ---- fe: joints between rigid parts (fe/fe_joint.h, LS-DYNA *CONSTRAINED_JOINT_*) ---- */
+static const mcs_skey fe_revolute_keys[] = {
+    V("axis", NONE, 3, 3, REQ | NZ, 0, "rotation axis (world, t = 0)"),
+    Q("stiffness", MCS_DIM_ROTSTIFF, GE, 0, 0, "spring on the angle [N m/rad]"),
+    Q("damping", MCS_DIM_ROTDAMP, GE, 0, 0, "damper on the angle [N m s/rad]"),
+    V("range", ANG, 2, 2, 0, 0, "elastic stops [min, max] of the angle from t = 0 [rad]"),
+    END,
+};
+static const mcs_skey fe_slide_keys[] = {
+    V("axis", NONE, 3, 3, REQ | NZ, 0, "sliding axis (world, t = 0)"),
+    Q("stiffness", MCS_DIM_STIFFNESS, GE, 0, 0, "spring on the slide [N/m]"),
+    Q("damping", MCS_DIM_DAMPING, GE, 0, 0, "damper on the slide [N s/m]"),
+    V("range", LEN, 2, 2, 0, 0, "elastic stops [min, max] of the slide from t = 0 [m]"),
+    END,
+};
+static const mcs_smap fe_revolute_map = {
+    .what = "revolute joint", .keys = fe_revolute_keys, .check = mcs_rule_range};
+static const mcs_smap fe_cylindrical_map = {
+    .what = "cylindrical joint", .keys = fe_slide_keys, .check = mcs_rule_range};
+static const mcs_smap fe_translational_map = {
+    .what = "translational joint", .keys = fe_slide_keys, .check = mcs_rule_range};
+static const mcs_smap fe_spherical_map = {.what = "spherical joint", .keys = no_keys};
+static const mcs_svariant fe_joint_variants[] = {{"revolute", &fe_revolute_map},
+                                                 {"spherical", &fe_spherical_map},
+                                                 {"cylindrical", &fe_cylindrical_map},
+                                                 {"translational", &fe_translational_map},
+                                                 {0}};
+static const mcs_skey fe_joint_keys[] = {
+    S("name", REQ | UNIQ | NE, "joint name (results /stage3/joints/<name>)"),
+    D("type", "revolute | spherical | cylindrical | translational"),
+    RS("parts", PART, 1, REQ, "rigid parts A, B (one: A held to the ground)"),
+    V("point", LEN, 3, 3, REQ, 0, "joint point (world, t = 0) [m]"),
+    Q("penalty_scale", NONE, GT | LE, 0, 1, "s of the penalty k = s / (dt^2 lambda) (default 0.1)"),
+    END,
+};
+static const mcs_smap fe_joint_map = {.what = "FE joint",
+                                      .keys = fe_joint_keys,
+                                      .disc = "type",
+                                      .variants = fe_joint_variants};
+
 static const mcs_skey fe_keys[] = {
     /* required, except with a whole keyword deck (keyword:, mcs_rule_fe) */
     L("parts", part_map, NE, "FE parts"),
@@ -972,6 +1012,7 @@ static const mcs_skey fe_keys[] = {
     L("airbags", airbag_map, 0, "gas bags (uniform pressure) bounded by membrane parts"),
     L("retractors", retractor_map, 0, "belt retractors at truss belt ends"),
     L("sliprings", slipring_map, 0, "belt slip rings (D-ring, buckle tongue)"),
+    L("joints", fe_joint_map, 0, "joints between rigid parts (penalty; docs/fe.md \"Joints\")"),
     Q("damping", MCS_DIM_FREQ, GE, 0, 0, "mass-proportional damping c, f = -c m v [1/s]"),
     Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),
     Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),

@@ -161,14 +161,18 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
     const char *n = d->name;
     if (!(m->density > 0))
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.density must be > 0", n);
-    if (!(m->youngs_modulus > 0))
+    if (m->model == FE_MAT_NULL && m->youngs_modulus == 0) {
+        /* a null part carries no stress: its modulus only makes contact stiffness */
+    } else if (!(m->youngs_modulus > 0)) {
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.youngs_modulus must be > 0", n);
+    }
     if (!(m->poisson > -1 && m->poisson < 0.5))
         return MCS_ERR(err, MCS_ERR_RANGE,
                        "fe: part '%s': material.poisson must be in (-1, 0.5), got %g", n,
                        m->poisson);
     if (m->model != FE_MAT_ELASTIC && m->model != FE_MAT_ELASTIC_PLASTIC &&
-        m->model != FE_MAT_FABRIC && m->model != FE_MAT_FOAM && m->model != FE_MAT_RIGID)
+        m->model != FE_MAT_FABRIC && m->model != FE_MAT_FOAM && m->model != FE_MAT_RIGID &&
+        m->model != FE_MAT_NULL)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED, "fe: part '%s': material.model not built yet", n);
     if ((m->model == FE_MAT_FABRIC) != (d->section.type == FE_SECTION_MEMBRANE))
         return MCS_ERR(err, MCS_ERR_TYPE,
@@ -177,7 +181,16 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
                        n);
     if (m->model == FE_MAT_FABRIC) return fe_fabric_check(d, err);
     if (m->model == FE_MAT_FOAM) return fe_foam_check(d, err);
-    if (m->model == FE_MAT_RIGID) return MCS_OK;
+    if (m->model == FE_MAT_RIGID) {
+        const unsigned rot = m->rigid_fix & FE_DOF_ROT;
+        if ((m->rigid_fix & ~(unsigned)FE_DOF_ALL) || (rot && rot != FE_DOF_ROT))
+            return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                           "fe: part '%s': a rigid body's rotations are held all together or "
+                           "not at all",
+                           n);
+        return MCS_OK;
+    }
+    if (m->model == FE_MAT_NULL) return MCS_OK;
     if (m->model == FE_MAT_ELASTIC) return MCS_OK;
     if (m->nhardening < 0 || m->nhardening > FE_CURVE_MAX)
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.hardening: 0..%d points", n,

@@ -272,6 +272,11 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
         if (!in_list(ip, list, n)) continue;
         const fe_part *p = &m->part[ip];
         double K = p->bulk;
+        if (!(K > 0))
+            return MCS_ERR(err, MCS_ERR_RANGE,
+                           "fe: contact '%s': part '%s' has no stiffness for the penalty (a null "
+                           "material needs a Young's modulus, *MAT_NULL YM)",
+                           d->name, p->name);
         for (int e = p->elem_begin; e < p->elem_end; e++) {
             if (p->elem_kind == FE_KIND_SHELL) {
                 const int *q = m->shell_node + 4 * e;

@@ -215,6 +215,7 @@ static inline void fe_jaumann(double sg[6], const double W[3][3])
 static inline int fe_part_chunked(const fe_part *p)
 {
     if (p->body >= 0) return 0; /* rigid part: no element work (fe_rigid.c) */
+    if (p->material.model == FE_MAT_NULL) return 0; /* no stress, no step limit */
     return p->elem_kind == FE_KIND_HEX || p->elem_kind == FE_KIND_TRUSS ||
            p->elem_kind == FE_KIND_TET10 ||
            (p->elem_kind == FE_KIND_SHELL && p->section.type != FE_SECTION_MEMBRANE);

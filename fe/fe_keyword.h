@@ -146,8 +146,12 @@ typedef struct {
 
 typedef enum {
     FE_KW_MAT_ELASTIC = 1,
+    FE_KW_MAT_PK = 3,       /* *MAT_PLASTIC_KINEMATIC (fe_kw_cards_mat.c) */
+    FE_KW_MAT_NULL = 9,     /* *MAT_NULL */
     FE_KW_MAT_RIGID = 20,
     FE_KW_MAT_PLP = 24,
+    FE_KW_MAT_MR = 27,      /* *MAT_MOONEY-RIVLIN_RUBBER */
+    FE_KW_MAT_LDF = 57,     /* *MAT_LOW_DENSITY_FOAM */
     FE_KW_MAT_SPRING = 101, /* *MAT_SPRING_ELASTIC (*MAT_S01) */
     FE_KW_MAT_DAMPER = 102  /* *MAT_DAMPER_VISCOUS (*MAT_S02) */
 } fe_kw_mat_type;
@@ -164,6 +168,14 @@ typedef struct {
     double eps[8], es[8];/* EPS1..8 [-], ES1..8 [Pa]                                      */
     double k;            /* MAT_S01 stiffness K [N/m]; MAT_S02 damping DC [N s/m]          */
     fe_kw_loc loc;
+    /* fe_kw_cards_mat.c: MAT_003 (sigy, etan, c = SRC, p = SRP above), MAT_009, MAT_020
+     * constraints, MAT_027, MAT_057 */
+    double beta;         /* MAT_003 hardening parameter BETA (1 isotropic) [-]             */
+    double fail;         /* MAT_003 FS, MAT_024 FAIL: failure plastic strain (0: none) [-]  */
+    int cmo, con1, con2; /* MAT_020 constraint option and codes as written [-]             */
+    double a, b;         /* MAT_027 constants A, B [Pa]                                   */
+    int lcid;            /* MAT_057 curve of nominal stress vs. strain [-]                */
+    double tc, hu, shape;/* MAT_057 tension cut-off [Pa] (0: none), HU, SHAPE [-]          */
 } fe_kw_mat;
 
 typedef struct {

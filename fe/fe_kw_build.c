@@ -136,10 +136,8 @@ static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_ma
     m->density = k->ro;
     m->youngs_modulus = k->e;
     m->poisson = k->pr;
-    if (k->type == FE_KW_MAT_RIGID) { /* the kernel says whether it builds rigid parts */
-        m->model = FE_MAT_RIGID;
-        return MCS_OK;
-    }
+    mcs_status st;
+    if (kw_mat_desc(dk, k, m, err, &st)) return st; /* fe_kw_cards_mat.c */
     if (k->type == FE_KW_MAT_ELASTIC) {
         m->model = FE_MAT_ELASTIC;
         return MCS_OK;

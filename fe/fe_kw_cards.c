@@ -398,18 +398,6 @@ static mcs_status h_mat_damper(kw_ctx *c, const kw_card *cd, int n)
     return h_mat_discrete(c, cd, n, FE_KW_MAT_DAMPER);
 }
 
-static mcs_status h_mat_rigid(kw_ctx *c, const kw_card *cd, int n)
-{
-    for (int i = 0; i < n;) {
-        i = title_card(c, i);
-        TRY(need(c, cd, n, i, 3));
-        mcs_status st = MCS_OK;
-        if (!new_mat(c, &cd[i], FE_KW_MAT_RIGID, &st)) return st;
-        i += 3;
-    }
-    return MCS_OK;
-}
-
 static mcs_status h_mat_plp(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
@@ -752,8 +740,16 @@ static const struct {
     {"MAT_001", h_mat_elastic, 0},
     {"MAT_PIECEWISE_LINEAR_PLASTICITY", h_mat_plp, 0},
     {"MAT_024", h_mat_plp, 0},
-    {"MAT_RIGID", h_mat_rigid, 0},
-    {"MAT_020", h_mat_rigid, 0},
+    {"MAT_RIGID", kw_h_mat_rigid, 0}, /* fe_kw_cards_mat.c */
+    {"MAT_020", kw_h_mat_rigid, 0},
+    {"MAT_PLASTIC_KINEMATIC", kw_h_mat_pk, 0},
+    {"MAT_003", kw_h_mat_pk, 0},
+    {"MAT_NULL", kw_h_mat_null, 0},
+    {"MAT_009", kw_h_mat_null, 0},
+    {"MAT_MOONEY-RIVLIN_RUBBER", kw_h_mat_mr, 0},
+    {"MAT_027", kw_h_mat_mr, 0},
+    {"MAT_LOW_DENSITY_FOAM", kw_h_mat_ldf, 0},
+    {"MAT_057", kw_h_mat_ldf, 0},
     {"DEFINE_CURVE", h_curve, 0},
     {"SET_NODE", h_set_node, 0},
     {"SET_NODE_LIST", h_set_node, 0},

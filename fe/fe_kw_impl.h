@@ -136,6 +136,17 @@ mcs_status kw_beam_section(const fe_kw_deck *dk, const fe_kw_section *k, fe_sect
 mcs_status kw_part_inertia(const fe_kw_deck *dk, const fe_kw_part *p, fe_part_desc *d,
                            mcs_error *err);
 double kw_shell_thickness(const fe_kw_deck *dk, const fe_kw_section *k, int i);
+/* ---- material handlers (fe_kw_cards_mat.c): *MAT_PLASTIC_KINEMATIC, *MAT_NULL, *MAT_RIGID,
+ * *MAT_MOONEY-RIVLIN_RUBBER, *MAT_LOW_DENSITY_FOAM; kw_mat_desc: their kernel descriptors
+ * (1 when k is one of them, *st the status; 0 otherwise) ---- */
+mcs_status kw_h_mat_pk(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_null(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_rigid(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_mr(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_ldf(kw_ctx *c, const kw_card *cd, int n);
+int kw_mat_desc(const fe_kw_deck *dk, const fe_kw_mat *k, fe_material_desc *m, mcs_error *err,
+                mcs_status *st);
+
 /* ---- handlers of fe_kw_cards_contact.c (contacts, sets, node velocities, prescribed
  * motions, loads, termination) and the deck memory they own ---- */
 mcs_status kw_h_contact_single(kw_ctx *c, const kw_card *cd, int n);

@@ -218,6 +218,37 @@ static void w_sections(kw_out *o, const fe_kw_deck *d)
     }
 }
 
+/* *MAT_NULL, *MAT_LOW_DENSITY_FOAM, *MAT_PLASTIC_KINEMATIC (fe_kw_cards_mat.c); 0 for the rest */
+static int w_mat_more(kw_out *o, const fe_kw_deck *d, const fe_kw_mat *m)
+{
+    const double R = kw_u_dens(d), S = kw_u_stress(d);
+    if (m->type == FE_KW_MAT_NULL) { /* MID RO PC MU TEROD CEROD YM PR */
+        kw(o, "MAT_NULL");
+        put_int(o, 10, m->id), put_real(o, 10, m->ro / R);
+        for (int k = 0; k < 4; k++) put_real(o, 10, 0);
+        put_real(o, 10, m->e / S), put_real(o, 10, m->pr), endl(o);
+        return 1;
+    }
+    if (m->type == FE_KW_MAT_LDF) { /* MID RO E LCID TC HU BETA DAMP / SHAPE */
+        kw(o, "MAT_LOW_DENSITY_FOAM");
+        put_int(o, 10, m->id), put_real(o, 10, m->ro / R), put_real(o, 10, m->e / S);
+        put_int(o, 10, m->lcid), put_real(o, 10, m->tc > 0 ? m->tc / S : 1e20);
+        put_real(o, 10, m->hu), put_real(o, 10, 0), put_real(o, 10, 0), endl(o);
+        put_real(o, 10, m->shape), endl(o);
+        return 1;
+    }
+    if (m->type == FE_KW_MAT_PK) { /* MID RO E PR SIGY ETAN BETA / SRC SRP FS VP */
+        kw(o, "MAT_PLASTIC_KINEMATIC");
+        put_int(o, 10, m->id), put_real(o, 10, m->ro / R), put_real(o, 10, m->e / S);
+        put_real(o, 10, m->pr), put_real(o, 10, m->sigy / S), put_real(o, 10, m->etan / S);
+        put_real(o, 10, m->beta), endl(o);
+        put_real(o, 10, m->c * d->unit[1]), put_real(o, 10, m->p), put_real(o, 10, m->fail);
+        endl(o);
+        return 1;
+    }
+    return 0;
+}
+
 static void w_mats(kw_out *o, const fe_kw_deck *d)
 {
     double R = kw_u_dens(d), S = kw_u_stress(d);
@@ -231,13 +262,18 @@ static void w_mats(kw_out *o, const fe_kw_deck *d)
             endl(o);
             continue;
         }
+        if (w_mat_more(o, d, m)) continue; /* null, foam, plastic kinematic */
         kw(o, m->type == FE_KW_MAT_ELASTIC ? "MAT_ELASTIC"
               : m->type == FE_KW_MAT_RIGID ? "MAT_RIGID" : "MAT_PIECEWISE_LINEAR_PLASTICITY");
         put_int(o, 10, m->id), put_real(o, 10, m->ro / R), put_real(o, 10, m->e / S);
         put_real(o, 10, m->pr);
         if (m->type == FE_KW_MAT_PLP) put_real(o, 10, m->sigy / S), put_real(o, 10, m->etan / S);
+        if (m->type == FE_KW_MAT_PLP && m->fail > 0) put_real(o, 10, m->fail);
         endl(o);
-        if (m->type == FE_KW_MAT_RIGID) fprintf(o->f, "\n\n");
+        if (m->type == FE_KW_MAT_RIGID) { /* CMO CON1 CON2, then the third card blank */
+            put_real(o, 10, m->cmo), put_int(o, 10, m->con1), put_int(o, 10, m->con2), endl(o);
+            fprintf(o->f, "\n");
+        }
         if (m->type != FE_KW_MAT_PLP) continue;
         put_real(o, 10, m->c * d->unit[1]), put_real(o, 10, m->p), put_int(o, 10, m->lcss);
         endl(o);
@@ -498,11 +534,43 @@ static mcs_status model_props(const fe_model *m, int ip, fe_kw_deck *d, mcs_erro
     k->ro = md->density, k->e = md->youngs_modulus, k->pr = md->poisson;
     k->type = md->model == FE_MAT_ELASTIC_PLASTIC ? FE_KW_MAT_PLP
               : md->model == FE_MAT_RIGID         ? FE_KW_MAT_RIGID
+              : md->model == FE_MAT_NULL          ? FE_KW_MAT_NULL
                                                   : FE_KW_MAT_ELASTIC;
+    if (md->model == FE_MAT_RIGID && md->rigid_fix) { /* CMO 1: CON1 and CON2 codes */
+        static const unsigned con[8] = {0, 1, 2, 4, 3, 6, 5, 7};
+        k->cmo = 1;
+        for (int i = 0; i < 8; i++)
+            if (con[i] == (md->rigid_fix & FE_DOF_TRANS)) k->con1 = i;
+        k->con2 = md->rigid_fix & FE_DOF_ROT ? 7 : 0;
+    }
+    if (md->model == FE_MAT_FOAM && md->nfoam_curve == 1 && md->poisson == 0) {
+        /* *MAT_LOW_DENSITY_FOAM: its one loading curve, stress in Pa as the deck's curves */
+        fe_kw_curve *c = kw_push((void **)&d->curve, &d->ncurve, &d->cap_curve, sizeof *c);
+        const int np = md->foam_npoint[0];
+        if (!c || !(c->xy = malloc(2 * sizeof(double) * (size_t)(np + 1))))
+            return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+        k->type = FE_KW_MAT_LDF;
+        c->id = k->lcid = ip + 1;
+        c->xy[0] = c->xy[1] = 0;
+        c->n = 1;
+        for (int i = 0; i < np; i++)
+            if (md->foam_curve[0][i][0] > 0) {
+                c->xy[2 * c->n] = md->foam_curve[0][i][0];
+                c->xy[2 * c->n + 1] = md->foam_curve[0][i][1] / kw_u_stress(d);
+                c->n++;
+            }
+        k->hu = md->foam_hysteresis > 0 ? md->foam_hysteresis : 1;
+        k->shape = md->foam_shape > 0 ? md->foam_shape : 1;
+        k->tc = md->foam_tension_cutoff;
+        return MCS_OK;
+    }
     if (md->model == FE_MAT_FOAM || md->model == FE_MAT_FABRIC)
         mcs_log(MCS_LOG_WARN, "keyword: part '%s': %s material written as *MAT_ELASTIC (RO, E, "
-                              "PR only): the subset has no foam or fabric card",
-                p->name, md->model == FE_MAT_FOAM ? "foam" : "fabric");
+                              "PR only): %s",
+                p->name, md->model == FE_MAT_FOAM ? "foam" : "fabric",
+                md->model == FE_MAT_FOAM ? "*MAT_LOW_DENSITY_FOAM holds one curve and no Poisson "
+                                           "effect"
+                                         : "the subset has no fabric card");
     if (k->type != FE_KW_MAT_PLP) return MCS_OK;
     k->sigy = md->nhardening > 0 ? md->hardening[0][1] : md->yield_stress;
     k->c = md->cowper_symonds_c, k->p = md->cowper_symonds_p;

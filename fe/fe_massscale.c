@@ -105,7 +105,8 @@ mcs_status fe_massscale_build(fe_model *m, mcs_error *err)
     for (int ip = 0; ip < m->npart; ip++) {
         const fe_part *p = &m->part[ip];
         /* tet10 parts are not scaled (their step is their own frequency's: fe_tet10.c) */
-        if (p->material.model == FE_MAT_RIGID || p->section.type == FE_SECTION_MEMBRANE ||
+        if (p->material.model == FE_MAT_RIGID || p->material.model == FE_MAT_NULL ||
+            p->section.type == FE_SECTION_MEMBRANE ||
             p->elem_kind == FE_KIND_TET10)
             continue;
         const int off = p->elem_kind == FE_KIND_HEX     ? 0
@@ -152,7 +153,8 @@ void fe_massscale_reset(const fe_model *m, fe_state *s)
 
 static int scalable(const fe_part *p)
 {
-    return p->material.model != FE_MAT_RIGID && p->section.type != FE_SECTION_MEMBRANE &&
+    return p->material.model != FE_MAT_RIGID && p->material.model != FE_MAT_NULL &&
+           p->section.type != FE_SECTION_MEMBRANE &&
            p->elem_kind != FE_KIND_TET10;
 }
 

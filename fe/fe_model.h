@@ -83,7 +83,9 @@ typedef enum {
     FE_MAT_ELASTIC_PLASTIC,
     FE_MAT_FABRIC, /* membranes only: no compressive stress (fe_fabric.c) */
     FE_MAT_FOAM,   /* hex8: rate-dependent hysteretic foam (fe_foam.c) */
-    FE_MAT_RIGID   /* any element: the part is one 6-DOF body (fe_rigid.c) */
+    FE_MAT_RIGID,  /* any element: the part is one 6-DOF body (fe_rigid.c) */
+    FE_MAT_NULL    /* any element: no stress, mass only (LS-DYNA *MAT_NULL without an
+                      equation of state); youngs_modulus (may be 0) serves contact only */
 } fe_mat_model;
 
 #define FE_FOAM_NCURVE 8 /* most loading curves (strain rates) of a foam */
@@ -114,6 +116,8 @@ typedef struct {
     double foam_hysteresis;            /* unloading factor HU in (0, 1]; 1: no hysteresis [-]  */
     double foam_shape;                 /* unloading shape exponent (> 0; 0 takes 1) [-]        */
     double foam_tension_cutoff;        /* largest tensile stress (0: no cutoff) [Pa]           */
+    unsigned rigid_fix;                /* rigid: FE_DOF_* held on the body, global axes (LS-DYNA
+                                          *MAT_RIGID CMO 1 CON1/CON2); rotations all or none */
 } fe_material_desc;
 
 /* a rigid part's given mass properties (LS-DYNA *PART_INERTIA), used instead of the sums

@@ -178,11 +178,16 @@ mcs_status fe_rigid_build(const fe_builder *bld, fe_model *m, mcs_error *err)
 mcs_status fe_rigid_finish(fe_model *m, mcs_error *err)
 {
     int deformable = m->nspring > 0;
-    for (int ip = 0; ip < m->npart; ip++) deformable |= m->part[ip].body < 0;
-    if (m->nbody > 0 && !deformable && !(m->opts.dt_max > 0))
+    int nnull = 0;
+    for (int ip = 0; ip < m->npart; ip++) {
+        const int null = m->part[ip].material.model == FE_MAT_NULL;
+        deformable |= m->part[ip].body < 0 && !null;
+        nnull += null;
+    }
+    if ((m->nbody > 0 || nnull > 0) && !deformable && !(m->opts.dt_max > 0))
         return MCS_ERR(err, MCS_ERR_RANGE,
-                       "fe: every part is rigid, so nothing sets the stable step: give a time "
-                       "step (fe_opts.dt_max, simulation.time_step)");
+                       "fe: every part is rigid or null, so nothing sets the stable step: give "
+                       "a time step (fe_opts.dt_max, simulation.time_step)");
     unsigned kin = 0;
     for (int w = 0; w < m->nwall; w++)
         if (m->wall[w].method == FE_WALL_KINEMATIC) kin |= 1u << w;
@@ -208,6 +213,8 @@ mcs_status fe_rigid_finish(fe_model *m, mcs_error *err)
                 }
             B->fix |= f;
         }
+        /* the part's own constraints (*MAT_RIGID CMO 1), held at rest */
+        B->fix |= m->part[B->part].material.rigid_fix;
         if (B->fix & FE_DOF_ROT) B->fix |= FE_DOF_ROT;
     }
     return MCS_OK;

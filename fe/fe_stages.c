@@ -84,7 +84,8 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
     const int nch = m->nchunk;
     /* parts without a chunked kernel: whole part at a time, before the gather */
     for (int ip = 0; ip < m->npart; ip++)
-        if (m->part[ip].body >= 0) s->part_dt[ip] = INFINITY; /* rigid: no step limit */
+        if (m->part[ip].body >= 0 || m->part[ip].material.model == FE_MAT_NULL)
+            s->part_dt[ip] = INFINITY; /* rigid or null: no element work, no step limit */
         else if (m->part[ip].elem_kind == FE_KIND_SHELL && m->part[ip].section.type == FE_SECTION_MEMBRANE)
             fe_membrane_part(m, s, ip);
     fe_chunk_acc *ca = s->chunk_acc;

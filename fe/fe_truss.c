@@ -68,7 +68,8 @@ double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem)
     const fe_part *p = &m->part[ip];
     double dtmin = INFINITY;
     *elem = -1;
-    if (p->body >= 0) return INFINITY; /* rigid parts do not limit the step */
+    /* rigid and null parts do not limit the step */
+    if (p->body >= 0 || p->material.model == FE_MAT_NULL) return INFINITY;
     for (int e = p->elem_begin; e < p->elem_end; e++) {
         double len = 0;
         if (p->elem_kind == FE_KIND_TET10) { /* its own frequency ratio (fe_tet10.c) */

@@ -361,6 +361,10 @@ typedef struct fe_kw_deck {
     int npmotion, cap_pmotion; fe_kw_pmotion *pmotion; /* *BOUNDARY_PRESCRIBED_MOTION_*        */
     int nload, cap_load;       fe_kw_load *load;       /* *LOAD_NODE_POINT, *LOAD_SEGMENT      */
     double end_time;      /* *CONTROL_TERMINATION ENDTIM [s] (0: not given)                    */
+    double slsfac;        /* *CONTROL_CONTACT SLSFAC: penalty scale (0: not given, 0.1) [-]   */
+    double rwpnal;        /* RWPNAL: > 0 asks penalty rigid walls [-]                          */
+    int shlthk;           /* SHLTHK: shell thickness in non-automatic contacts (0: not) [-]    */
+    fe_kw_loc control_contact; /* its card (line 0: none)                                       */
     /* joints and constraints (fe_kw_cards_joint.c) */
     int njoint, cap_joint;     fe_kw_joint *joint;     /* *CONSTRAINED_JOINT_*                 */
     int nnrb, cap_nrb;         fe_kw_nrb *nrb;         /* nodal rigid bodies, extra nodes       */

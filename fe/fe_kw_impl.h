@@ -155,6 +155,8 @@ mcs_status kw_h_contact_s2s(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_contact_auto_s2s(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_contact_n2s(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_contact_auto_n2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_mpp(kw_ctx *c, const kw_card *cd, int n); /* _MPP, _ID_MPP */
+mcs_status kw_h_control_contact(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_set_node_gen(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_set_part_gen(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_set_segment(kw_ctx *c, const kw_card *cd, int n);

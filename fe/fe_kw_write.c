@@ -474,6 +474,10 @@ static void w_contacts(kw_out *o, const fe_kw_deck *d)
          "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_NODES_TO_SURFACE"}};
     const double T = d->unit[1], L = kw_u_len(d);
     if (d->end_time > 0) kw(o, "CONTROL_TERMINATION"), put_real(o, 10, d->end_time / T), endl(o);
+    if (d->slsfac > 0 || d->shlthk) { /* SLSFAC RWPNAL ISLCHK SHLTHK */
+        kw(o, "CONTROL_CONTACT"), put_real(o, 10, d->slsfac), put_real(o, 10, d->rwpnal);
+        put_int(o, 10, 0), put_int(o, 10, d->shlthk), endl(o);
+    }
     for (int i = 0; i < d->nsegset; i++) {
         const fe_kw_segset *s = &d->segset[i];
         kw(o, "SET_SEGMENT"), put_int(o, 10, s->id), endl(o);

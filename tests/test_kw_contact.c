@@ -344,6 +344,70 @@ static void test_motion_loads(void)
                 "rotational velocity", NULL);
 }
 
+/* the first segment stiffness of a plates deck with `tail`, or NAN */
+static double seg_k0(const char *tail)
+{
+    char *t = plates(tail);
+    fe_kw_deck *d = NULL;
+    mcs_error err = {0};
+    fe_builder *b = NULL;
+    fe_model *m = NULL;
+    mcs_status st = read_text(t, "mm-s-t", &d, &err);
+    if (!st) st = fe_builder_create(&b, &err);
+    if (!st) st = fe_kw_add_deck(b, d, &err);
+    if (!st) st = fe_model_create(b, NULL, &m, &err);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    double k = m && m->contact && m->contact->nseg > 0 ? m->contact->seg_k[0] : NAN;
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+    fe_kw_deck_destroy(&d);
+    free(t);
+    return k;
+}
+
+/* the _MPP option in both orders (its cards read over, the '&' second card too) and
+ * *CONTROL_CONTACT: SLSFAC scales every contact's penalty (LS-DYNA: k = SLSFAC x SFS x ...), so
+ * 0.05 halves the default 0.1's stiffness; RWPNAL > 0 with a rigid wall refused */
+static void test_mpp_control_contact(void)
+{
+    static const char mpp[] = "*CONTACT_AUTOMATIC_SINGLE_SURFACE_MPP_ID\n"
+                              "         7single\n"
+                              "         1       200         0         3         2    1.0005\n"
+                              "&                  0       1.0\n"
+                              "         0         0         5\n"
+                              "       0.2\n"
+                              "*CONTACT_SURFACE_TO_SURFACE_ID_MPP\n"
+                              "         8\n"
+                              "         0\n"
+                              "         2         1         3         3\n";
+    char *t = plates(mpp);
+    fe_kw_deck *d = NULL;
+    mcs_error err = {0};
+    mcs_status st = read_text(t, "mm-s-t", &d, &err);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    CHECK(st == MCS_OK && d && d->ncontact == 2);
+    if (d && d->ncontact == 2) {
+        CHECK(d->contact[0].id == 7 && strcmp(d->contact[0].title, "single") == 0);
+        CHECK(d->contact[0].type == FE_KW_CT_SINGLE && d->contact[0].sstyp == 5);
+        CHECK(d->contact[0].fs == 0.2 && d->contact[0].loc.line == 29);
+        CHECK(d->contact[1].id == 8 && d->contact[1].type == FE_KW_CT_S2S &&
+              !d->contact[1].automatic && d->contact[1].ssid == 2 && d->contact[1].msid == 1);
+    }
+    fe_kw_deck_destroy(&d);
+    free(t);
+    const char *c1 =
+        "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n         2         1         3         3\n";
+    char tail[512];
+    snprintf(tail, sizeof tail, "*CONTROL_CONTACT\n      0.05       0.0         0         1\n%s",
+             c1);
+    double k1 = seg_k0(c1), k2 = seg_k0(tail);
+    CHECK(isfinite(k1) && isfinite(k2));
+    CHECK_NEAR(k2 / k1, 0.5, 1e-12);
+    expect_fail("*CONTROL_CONTACT\n       0.1       1.0\n*RIGIDWALL_PLANAR\n\n"
+                "       0.0       0.0      -1.0       0.0       0.0       0.0\n",
+                1, "deck.k:26: error: *CONTROL_CONTACT: RWPNAL 1 asks penalty rigid walls", NULL);
+}
+
 /* the writer: contacts, segment sets, node velocities, motions, loads and the end time read
  * back as written (fe_kw_write, the corpus decks, in each format) */
 static void round_trip(const char *file)
@@ -364,7 +428,7 @@ static void round_trip(const char *file)
         if (!b) continue;
         CHECK(b->ncontact == a->ncontact && b->nsegset == a->nsegset && b->nload == a->nload);
         CHECK(b->nnodevel == a->nnodevel && b->npmotion == a->npmotion);
-        CHECK(b->end_time == a->end_time);
+        CHECK(b->end_time == a->end_time && b->slsfac == a->slsfac && b->shlthk == a->shlthk);
         for (int i = 0; i < a->ncontact && b->ncontact == a->ncontact; i++) {
             const fe_kw_contact *x = &a->contact[i], *y = &b->contact[i];
             CHECK(x->type == y->type && x->automatic == y->automatic && x->id == y->id);
@@ -393,6 +457,7 @@ static void test_write_round_trip(void)
 {
     round_trip(KD "corpus/contact_plates.k");
     round_trip(KD "corpus/contact_segment_set.k");
+    round_trip(KD "corpus/contact_mpp.k");
 }
 
 /* the whole deck through `mcrash run`: two equal steel bars (L 10 mm, 2 x 2 mm, E 210 GPa,
@@ -490,6 +555,7 @@ int main(void)
     RUN(test_sets);
     RUN(test_set_sides);
     RUN(test_write_round_trip);
+    RUN(test_mpp_control_contact);
     RUN(test_motion_loads);
     RUN(test_whole_deck_run);
     RUN(test_whole_deck_rules);

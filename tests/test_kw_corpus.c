@@ -135,6 +135,17 @@ static void check_contact_sets(const fe_kw_deck *d)
           d->contact[2].type == FE_KW_CT_SINGLE && d->contact[2].sstyp == 0);
 }
 
+/* contact_mpp.k (mm-s-t): SLSFAC 0.075, SHLTHK 1; contact 1000001 "all" (single surface, all
+ * parts, FS 0.125) and 1000002 (nodes of part 1 on part 1), their MPP cards read over */
+static void check_contact_mpp(const fe_kw_deck *d)
+{
+    CHECK(d->slsfac == 0.075 && d->shlthk == 1 && d->ncontact == 2);
+    if (d->ncontact != 2) return;
+    CHECK(d->contact[0].id == 1000001 && strcmp(d->contact[0].title, "all") == 0);
+    CHECK(d->contact[0].sstyp == 5 && d->contact[0].fs == 0.125 && d->contact[0].dt == 0);
+    CHECK(d->contact[1].id == 1000002 && d->contact[1].type == FE_KW_CT_N2S);
+}
+
 static const corpus_row corpus[] = {
     /* parameters */
     {"param_basic.k", "mm-s-t", BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, check_param_basic},
@@ -162,6 +173,7 @@ static const corpus_row corpus[] = {
     {"contact_plates.k", "mm-s-t", BUILD_DECK, 8, {2}, 2, 1, NULL, NULL, check_contact_plates},
     {"contact_segment_set.k", "mm-s-t", BUILD_DECK, 12, {1, 1}, 2, 1, NULL, NULL,
      check_contact_sets},
+    {"contact_mpp.k", "mm-s-t", BUILD_DECK, 4, {1}, 1, 1, NULL, NULL, check_contact_mpp},
     {"contact_damped.k", NULL, READ_ONLY, 0, {0}, 0, 0,
      "*CONTACT_AUTOMATIC_SINGLE_SURFACE: field VDC", "contact_damped.k:7:41:", NULL},
     /* unknown and refused keywords */

@@ -125,6 +125,14 @@ static void check_contact_plates(const fe_kw_deck *d)
     CHECK(fabs(d->end_time - 1.5e-3) < 1e-15);
 }
 
+/* param_formats.k: LONGX = 2.5, LONGN = 4 (long format), FREE = 1.25, K = 9 (free format):
+ * node &longn = 4 at (2.5, 1.25, -9) */
+static void check_param_formats(const fe_kw_deck *d)
+{
+    const double *x = node_at(d, 4);
+    CHECK(x && x[0] == 2.5 && x[1] == 1.25 && x[2] == -9);
+}
+
 /* contact_segment_set.k: segment set 3 = the block's bottom face (5 6 7 8), node set 4 = its
  * nodes; three contacts on them (the model's passes: tests/test_kw_contact.c) */
 static void check_contact_sets(const fe_kw_deck *d)
@@ -155,6 +163,7 @@ static const corpus_row corpus[] = {
      "*NODE: field X: parameter 'THIK' is not defined", "param_undefined.k:7:20:", NULL},
     {"param_bad_expr.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*PARAMETER_EXPRESSION: parameter 'A'",
      "param_bad_expr.k:3:", NULL},
+    {"param_formats.k", NULL, READ_ONLY, 1, {0}, 0, 0, NULL, NULL, check_param_formats},
     {"param_dup.k", NULL, READ_ONLY, 2, {0}, 0, 0, NULL, NULL, check_param_dup},
     {"param_dup_refused.k", NULL, READ_ONLY, 0, {0}, 0, 0,
      "parameter 'N' defined twice (first at " CD "param_dup_refused.k:6",

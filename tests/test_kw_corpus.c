@@ -195,6 +195,17 @@ static const corpus_row corpus[] = {
     {"skipped_element.k", NULL, BUILD_PART1, 2, {0}, 1, 1,
      "no element has part ID 1 (skipped as not supported: *ELEMENT_SEATBELT at",
      "skipped_element.k:14)", NULL},
+    /* elements, sections, parts, controls (values and closed forms: test_fe_kw_elem.c) */
+    {"shell_thickness.k", "mm-s-t", BUILD_DECK, 9, {4}, 1, 1, NULL, NULL, NULL},
+    {"tshell.k", NULL, BUILD_DECK, 0, {0}, 0, 0, "*ELEMENT_TSHELL 1 (part 1): thick shells",
+     "tshell.k:25:", NULL},
+    {"solid_user.k", NULL, BUILD_DECK, 0, {0}, 0, 0, "*SECTION_SOLID 1: ELFORM 102",
+     "solid_user.k:11:", NULL},
+    {"beams.k", "mm-s-t", BUILD_DECK, 0, {0}, 0, 0, "*SECTION_BEAM 1: ELFORM 2",
+     "beams.k:13:", NULL},
+    {"part_inertia.k", NULL, BUILD_DECK, 16, {0, 2}, 2, 2, NULL, NULL, NULL},
+    {"hourglass.k", NULL, BUILD_DECK, 40, {0, 5}, 5, 1, NULL, NULL, NULL},
+    {"timestep.k", NULL, BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, NULL},
 };
 
 #define NROW ((int)(sizeof corpus / sizeof corpus[0]))

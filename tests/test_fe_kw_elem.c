@@ -298,6 +298,13 @@ static void test_part_inertia(void)
     CHECK(m == NULL);
     CHECK_STR_CONTAINS(err.msg, "part_inertia.k:14: error: *PART_INERTIA 2: given mass");
     fe_model_destroy(&m);
+    /* an equation of state: refused by the part's line */
+    pp->inertia.given = 0, pp->eosid = 3;
+    err = (mcs_error){0};
+    m = build(d, NULL, &err);
+    CHECK(m == NULL);
+    CHECK_STR_CONTAINS(err.msg, "part_inertia.k:14: error: *PART 2: EOSID 3: equations of state");
+    fe_model_destroy(&m);
     fe_kw_deck_destroy(&d);
 }
 

@@ -147,6 +147,9 @@ mcs_status kw_beam_section(const fe_kw_deck *dk, const fe_kw_section *k, fe_sect
 mcs_status kw_part_inertia(const fe_kw_deck *dk, const fe_kw_part *p, fe_part_desc *d,
                            mcs_error *err)
 {
+    if (p->eosid) /* the pressure would come from it */
+        return at(dk, p->loc, err, MCS_ERR_UNSUPPORTED,
+                  "*PART %d: EOSID %d: equations of state are not built", p->id, p->eosid);
     const fe_kw_inertia *in = &p->inertia;
     if (!in->given) return MCS_OK;
     if (d->material.model != FE_MAT_RIGID)

@@ -128,7 +128,8 @@ mcs_status kw_h_hourglass(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_control_hourglass(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_control_timestep(kw_ctx *c, const kw_card *cd, int n);
 /* builder side (fe_kw_build_elem.c): the deck part's hourglass form, its beam section, its
- * *PART_INERTIA, the thickness of shell element i of the deck (0: the section's T1 applies) */
+ * *PART_INERTIA (and the refusal of an EOSID), the thickness of shell element i of the deck
+ * (0: the section's T1 applies) */
 mcs_status kw_part_hourglass(const fe_kw_deck *dk, const fe_kw_part *p, fe_section_desc *s,
                              mcs_error *err);
 mcs_status kw_beam_section(const fe_kw_deck *dk, const fe_kw_section *k, fe_section_desc *s,

@@ -139,6 +139,69 @@ static void test_shell_thickness(void)
     fe_kw_deck_destroy(&d);
 }
 
+/* a cantilever strip of 4 shells (100 x 25 mm each, steel, mm-s-t) clamped at x = 0 and
+ * started at 1 m/s out of its plane, once with the section's T1 = 2 mm and once with T1 =
+ * 1 mm but every shell's THIC1..4 = 2 mm: the same model, so the same motion (another path to
+ * the same answer: the per-element thickness must reach every shell term) */
+static void strip_deck(char *buf, size_t n, int own)
+{
+    int at = snprintf(buf, n,
+                      "*KEYWORD\n*PART\nstrip\n         1         1         1\n"
+                      "*SECTION_SHELL\n         1         2                   3\n"
+                      "%10s\n*MAT_ELASTIC\n         1   7.85e-9  210000.0       0.3\n"
+                      "*SET_NODE_LIST\n         1\n         1         6\n"
+                      "*BOUNDARY_SPC_SET\n         1         0         1         1         1"
+                      "         1         1         1\n"
+                      "*INITIAL_VELOCITY_GENERATION\n         1         2       0.0       0.0"
+                      "       0.0    1000.0\n\n*NODE\n",
+                      own ? "1.0" : "2.0");
+    for (int j = 0; j < 2; j++)
+        for (int i = 0; i < 5; i++)
+            at += snprintf(buf + at, n - (size_t)at, "%8d%16.1f%16.1f%16.1f\n", 5 * j + i + 1,
+                           100.0 * i, 25.0 * j, 0.0);
+    at += snprintf(buf + at, n - (size_t)at, "*ELEMENT_SHELL%s\n", own ? "_THICKNESS" : "");
+    for (int i = 0; i < 4; i++) {
+        at += snprintf(buf + at, n - (size_t)at, "%8d%8d%8d%8d%8d%8d\n", i + 1, 1, i + 1, i + 2,
+                       i + 7, i + 6);
+        if (own) at += snprintf(buf + at, n - (size_t)at, "%16s%16s%16s%16s\n", "2.", "2.",
+                                "2.", "2.");
+    }
+    snprintf(buf + at, n - (size_t)at, "*END\n");
+}
+
+static void test_shell_thickness_run(void)
+{
+    double tip[2] = {0, 0}, e_int[2] = {0, 0};
+    for (int own = 0; own < 2; own++) {
+        char deck[4096];
+        strip_deck(deck, sizeof deck, own);
+        fe_kw_opts o = fe_kw_opts_default();
+        o.quiet = 1, o.units = "mm-s-t";
+        fe_kw_deck *d = NULL;
+        mcs_error err = {0};
+        CHECK(fe_kw_read_mem("strip.k", deck, strlen(deck), &o, &d, &err) == MCS_OK);
+        if (!d) fprintf(stderr, "%s\n", err.msg);
+        fe_model *m = d ? build(d, NULL, &err) : NULL;
+        fe_state *s = NULL;
+        if (m && fe_state_create(m, &s, &err) == MCS_OK) {
+            CHECK_NEAR(m->shell_t[0], 0.002, 0);
+            for (int k = 0; k < 300; k++) CHECK(fe_step(m, s) == MCS_OK);
+            tip[own] = s->node_x[3 * 4 + 2]; /* node 5, the free end */
+            e_int[own] = s->energy[FE_E_internal];
+        }
+        CHECK(m != NULL);
+        fe_state_destroy(&s);
+        fe_model_destroy(&m);
+        fe_kw_deck_destroy(&d);
+    }
+    printf("cantilever strip, section 2 mm vs own 2 mm: tip z %.9g / %.9g m, internal %.6g / "
+           "%.6g J\n",
+           tip[0], tip[1], e_int[0], e_int[1]);
+    CHECK(tip[0] > 1e-5 && e_int[0] > 0); /* it moved and bent */
+    CHECK_NEAR(tip[1], tip[0], 1e-15);
+    CHECK_NEAR(e_int[1], e_int[0], 1e-12 * e_int[0]);
+}
+
 /* tshell.k: *ELEMENT_TSHELL and *SECTION_TSHELL (ICOMP 1: the angle card) read and counted;
  * building them is refused with the element's keyword, file and line */
 static void test_tshell(void)
@@ -297,6 +360,13 @@ static void test_part_inertia(void)
     m = build(d, NULL, &err);
     CHECK(m == NULL);
     CHECK_STR_CONTAINS(err.msg, "part_inertia.k:14: error: *PART_INERTIA 2: given mass");
+    fe_model_destroy(&m);
+    /* an equation of state: refused by the part's line */
+    pp->inertia.given = 0, pp->eosid = 3;
+    err = (mcs_error){0};
+    m = build(d, NULL, &err);
+    CHECK(m == NULL);
+    CHECK_STR_CONTAINS(err.msg, "part_inertia.k:14: error: *PART 2: EOSID 3: equations of state");
     fe_model_destroy(&m);
     fe_kw_deck_destroy(&d);
 }
@@ -474,6 +544,7 @@ static void test_refused_cards(void)
 int main(void)
 {
     RUN(test_shell_thickness);
+    RUN(test_shell_thickness_run);
     RUN(test_tshell);
     RUN(test_solid_user);
     RUN(test_beams);

@@ -125,6 +125,14 @@ static void check_contact_plates(const fe_kw_deck *d)
     CHECK(fabs(d->end_time - 1.5e-3) < 1e-15);
 }
 
+/* param_formats.k: LONGX = 2.5, LONGN = 4 (long format), FREE = 1.25, K = 9 (free format):
+ * node &longn = 4 at (2.5, 1.25, -9) */
+static void check_param_formats(const fe_kw_deck *d)
+{
+    const double *x = node_at(d, 4);
+    CHECK(x && x[0] == 2.5 && x[1] == 1.25 && x[2] == -9);
+}
+
 /* contact_segment_set.k: segment set 3 = the block's bottom face (5 6 7 8), node set 4 = its
  * nodes; three contacts on them (the model's passes: tests/test_kw_contact.c) */
 static void check_contact_sets(const fe_kw_deck *d)
@@ -155,6 +163,7 @@ static const corpus_row corpus[] = {
      "*NODE: field X: parameter 'THIK' is not defined", "param_undefined.k:7:20:", NULL},
     {"param_bad_expr.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*PARAMETER_EXPRESSION: parameter 'A'",
      "param_bad_expr.k:3:", NULL},
+    {"param_formats.k", NULL, READ_ONLY, 1, {0}, 0, 0, NULL, NULL, check_param_formats},
     {"param_dup.k", NULL, READ_ONLY, 2, {0}, 0, 0, NULL, NULL, check_param_dup},
     {"param_dup_refused.k", NULL, READ_ONLY, 0, {0}, 0, 0,
      "parameter 'N' defined twice (first at " CD "param_dup_refused.k:6",
@@ -183,6 +192,17 @@ static const corpus_row corpus[] = {
     {"skipped_element.k", NULL, BUILD_PART1, 2, {0}, 1, 1,
      "no element has part ID 1 (skipped as not supported: *ELEMENT_SEATBELT at",
      "skipped_element.k:14)", NULL},
+    /* elements, sections, parts, controls (values and closed forms: test_fe_kw_elem.c) */
+    {"shell_thickness.k", "mm-s-t", BUILD_DECK, 9, {4}, 1, 1, NULL, NULL, NULL},
+    {"tshell.k", NULL, BUILD_DECK, 0, {0}, 0, 0, "*ELEMENT_TSHELL 1 (part 1): thick shells",
+     "tshell.k:25:", NULL},
+    {"solid_user.k", NULL, BUILD_DECK, 0, {0}, 0, 0, "*SECTION_SOLID 1: ELFORM 102",
+     "solid_user.k:11:", NULL},
+    {"beams.k", "mm-s-t", BUILD_DECK, 0, {0}, 0, 0, "*SECTION_BEAM 1: ELFORM 2",
+     "beams.k:13:", NULL},
+    {"part_inertia.k", NULL, BUILD_DECK, 16, {0, 2}, 2, 2, NULL, NULL, NULL},
+    {"hourglass.k", NULL, BUILD_DECK, 40, {0, 5}, 5, 1, NULL, NULL, NULL},
+    {"timestep.k", NULL, BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, NULL},
 };
 
 #define NROW ((int)(sizeof corpus / sizeof corpus[0]))

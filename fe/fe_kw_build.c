@@ -329,7 +329,10 @@ static mcs_status set_ids(const fe_kw_deck *dk, int sid, fe_kw_loc l, int **ids,
     *n = -1;
     if (sid == 0) return MCS_OK;
     const fe_kw_set *s = fe_kw_find_set(dk, sid, 0);
-    if (!s) return at(dk, l, err, MCS_ERR_KEY, "node set %d is not defined", sid);
+    char skip[400];
+    if (!s)
+        return at(dk, l, err, MCS_ERR_KEY, "node set %d is not defined%s", sid,
+                  fe_kw_skipped(dk, "SET_", skip, sizeof skip));
     *ids = malloc(sizeof(int) * (size_t)(s->n ? s->n : 1));
     if (!*ids) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
     memcpy(*ids, s->ids, sizeof(int) * (size_t)s->n);
@@ -349,7 +352,10 @@ static mcs_status covers(const fe_kw_deck *dk, fe_kw_target on, int id, fe_kw_lo
     }
     if (on == FE_KW_ON_PARTSET) {
         const fe_kw_set *s = fe_kw_find_set(dk, id, 1);
-        if (!s) return at(dk, l, err, MCS_ERR_KEY, "part set %d is not defined", id);
+        char skip[400];
+        if (!s)
+            return at(dk, l, err, MCS_ERR_KEY, "part set %d is not defined%s", id,
+                      fe_kw_skipped(dk, "SET_", skip, sizeof skip));
         *out = 0;
         for (int i = 0; i < s->n; i++) *out |= s->ids[i] == pid;
         return MCS_OK;
@@ -433,7 +439,10 @@ static mcs_status wall_motions(const fe_kw_deck *dk, int w, fe_wall_desc *d, mcs
         if (j < 0) return at(dk, mo->loc, err, MCS_ERR_KEY, "rigid wall %d is not defined", mo->wall);
         if (j != w) continue;
         const fe_kw_curve *c = fe_kw_find_curve(dk, mo->lcid);
-        if (!c) return at(dk, mo->loc, err, MCS_ERR_KEY, "LCID %d is not defined", mo->lcid);
+        char skip[400];
+        if (!c)
+            return at(dk, mo->loc, err, MCS_ERR_KEY, "LCID %d is not defined%s", mo->lcid,
+                      fe_kw_skipped(dk, "DEFINE_", skip, sizeof skip));
         if (d->nmotion >= FE_WALL_NMOTION || c->n > FE_CURVE_MAX)
             return at(dk, mo->loc, err, MCS_ERR_RANGE,
                       "a wall takes at most %d motions of at most %d curve points",

@@ -53,6 +53,7 @@ void fe_builder_destroy(fe_builder **p)
         free(b->epart[k]);
     }
     free(b->part);
+    free(b->shell_t);
     free(b->bc);
     free(b->fix);
     free(b->vel);
@@ -361,6 +362,27 @@ mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force
     return push_load(b, node, &d, err);
 }
 
+mcs_status fe_builder_add_pressure(fe_builder *b, const int nodes[4], double p, int ncurve,
+                                   const double (*curve)[2], mcs_error *err)
+{
+    for (int i = 0; i < 4; i++)
+        if (nodes[i] < 0 || nodes[i] >= b->nnode)
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure on node %d: no such node",
+                           nodes[i]);
+    if (nodes[0] == nodes[1] || nodes[1] == nodes[2] || nodes[0] == nodes[2])
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure segment: nodes 1, 2, 3 must differ");
+    if (ncurve < 0 || ncurve > FE_CURVE_MAX)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure: curve needs 0..%d points", FE_CURVE_MAX);
+    fe_load_desc d;
+    memset(&d, 0, sizeof d);
+    d.force[0] = p;
+    d.ncurve = ncurve;
+    if (ncurve) memcpy(d.curve, curve, (size_t)ncurve * sizeof d.curve[0]);
+    mcs_status st = push_load(b, -2, &d, err);
+    if (!st) memcpy(b->load[b->nload - 1].seg, nodes, sizeof b->load[0].seg);
+    return st;
+}
+
 mcs_status fe_builder_add_wall(fe_builder *b, const fe_wall_desc *d, mcs_error *err)
 {
     if (b->nwall >= FE_WALL_MAX)
@@ -442,4 +464,26 @@ int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, i
     }
     free(mark);
     return cnt;
+}
+
+mcs_status fe_builder_add_shell(fe_builder *b, int part, const int nodes[4], double thickness,
+                                mcs_error *err)
+{
+    if (!(thickness > 0) || !isfinite(thickness))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: a shell's own thickness must be > 0, got %g",
+                       thickness);
+    if (part < 0 || part >= b->npart ||
+        fe_section_kind(b->part[part].section.type) != FE_KIND_SHELL)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: a shell of part index %d, which is no shell part",
+                       part);
+    int e0 = b->nelem[FE_KIND_SHELL];
+    mcs_status st = fe_builder_add_elem(b, part, nodes, err);
+    if (st) return st;
+    int e1 = b->nelem[FE_KIND_SHELL]; /* a membrane quad made two triangles */
+    if (grow((void **)&b->shell_t, &b->cap_shell_t, e1, sizeof(double)))
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory adding a shell");
+    for (int e = b->nshell_t; e < e0; e++) b->shell_t[e] = 0; /* the section's */
+    for (int e = e0; e < e1; e++) b->shell_t[e] = thickness;
+    b->nshell_t = e1;
+    return MCS_OK;
 }

@@ -62,6 +62,7 @@ void fe_builder_destroy(fe_builder **p)
     fe_joint_list_free(b);
     free(b->spring);
     free(b->mass);
+    for (int i = 0; i < b->ncontact; i++) fe_contact_desc_free(&b->contact[i]);
     for (int i = 0; i < b->nfacets; i++) {
         free((void *)b->facets[i].vert);
         free((void *)b->facets[i].tri);

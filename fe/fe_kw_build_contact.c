@@ -61,7 +61,15 @@ static int deck_part_index(const fe_kw_deck *dk, int pid)
 typedef struct {
     int n;
     char part[FE_CONTACT_PARTS][FE_NAME_MAX];
+    int nnode, nface; /* a node or segment set side: its builder nodes and faces (0: parts)  */
+    int *node, *face; /* (nnode), (nface x 4), owned                                          */
 } side;
+
+static void side_free(side *s)
+{
+    free(s->node), free(s->face);
+    s->node = s->face = NULL;
+}
 
 static mcs_status side_add(const kb *c, const fe_kw_contact *k, const char *what, int pk, side *s)
 {
@@ -76,6 +84,129 @@ static mcs_status side_add(const kb *c, const fe_kw_contact *k, const char *what
     return MCS_OK;
 }
 
+/* deck node index -> the shells and solids using it (CSR, built once per deck) */
+typedef struct {
+    int *off, *el; /* (nnode + 1), (...): element e of type t as 2 e + (t == solid) */
+} node_elems;
+
+static int node_elems_make(const fe_kw_deck *dk, node_elems *ne)
+{
+    const fe_kw_etype ty[2] = {FE_KW_SHELL, FE_KW_SOLID};
+    ne->off = calloc((size_t)dk->nnode + 1, sizeof(int));
+    if (!ne->off) return -1;
+    for (int t = 0; t < 2; t++) {
+        const fe_kw_elems *e = &dk->elem[ty[t]];
+        const int k = fe_kw_etype_nnode(ty[t]);
+        for (int i = 0; i < e->n; i++)
+            for (int j = 0; j < k; j++)
+                ne->off[fe_kw_node_index(dk, e->node[(size_t)k * i + j]) + 1]++;
+    }
+    for (int i = 0; i < dk->nnode; i++)
+        ne->off[i + 1] += ne->off[i];
+    ne->el = malloc(sizeof(int) * (size_t)(ne->off[dk->nnode] ? ne->off[dk->nnode] : 1));
+    int *fill = calloc((size_t)dk->nnode + 1, sizeof(int));
+    if (!ne->el || !fill) {
+        free(fill);
+        return -1;
+    }
+    for (int t = 0; t < 2; t++) {
+        const fe_kw_elems *e = &dk->elem[ty[t]];
+        const int k = fe_kw_etype_nnode(ty[t]);
+        for (int i = 0; i < e->n; i++)
+            for (int j = 0; j < k; j++) {
+                int di = fe_kw_node_index(dk, e->node[(size_t)k * i + j]);
+                ne->el[ne->off[di] + fill[di]++] = 2 * i + t;
+            }
+    }
+    free(fill);
+    return 0;
+}
+
+/* the deck part index of an element that holds every node of the face q (deck indices), -1 */
+static int face_part(const fe_kw_deck *dk, const node_elems *ne, const int q[4])
+{
+    for (int j = ne->off[q[0]]; j < ne->off[q[0] + 1]; j++) {
+        const int t = ne->el[j] & 1, i = ne->el[j] >> 1;
+        const fe_kw_etype ty = t ? FE_KW_SOLID : FE_KW_SHELL;
+        const int k = fe_kw_etype_nnode(ty);
+        const int *en = dk->elem[ty].node + (size_t)k * i;
+        int all = 1;
+        for (int a = 1; a < 4 && all; a++) {
+            int in = 0;
+            for (int b = 0; b < k && !in; b++)
+                in = fe_kw_node_index(dk, en[b]) == q[a];
+            all = in;
+        }
+        if (all) return deck_part_index(dk, dk->elem[ty].pid[i]);
+    }
+    return -1;
+}
+
+/* a segment set (typ 0) or node set (typ 4) side: the parts of its elements, its nodes and
+ * (segment set) its faces in builder indices */
+static mcs_status set_side(const kb *c, const fe_kw_contact *k, const char *what, int id, int typ,
+                           side *s)
+{
+    const fe_kw_deck *dk = c->dk;
+    const fe_kw_segset *ss = NULL;
+    for (int i = 0; i < dk->nsegset && typ == 0; i++)
+        if (dk->segset[i].id == id) ss = &dk->segset[i];
+    const fe_kw_set *ns = typ == 4 ? fe_kw_find_set(dk, id, 0) : NULL;
+    if (!ss && !ns)
+        return at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: %s %d is not defined", ct_name(k),
+                  what, typ == 0 ? "segment set" : "node set", id);
+    const int nn = ss ? 4 * ss->n : ns->n;
+    s->node = malloc(sizeof(int) * (size_t)(nn ? nn : 1));
+    s->face = ss ? malloc(sizeof(int) * (size_t)(nn ? nn : 1)) : NULL;
+    node_elems ne = {0};
+    mcs_status st = MCS_OK;
+    if (!s->node || (ss && !s->face) || node_elems_make(dk, &ne))
+        st = MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
+    for (int i = 0; i < (ss ? ss->n : ns->n) && !st; i++) {
+        int q[4], ids[4], n = ss ? 4 : 1;
+        for (int j = 0; j < n; j++) {
+            ids[j] = ss ? ss->node[4 * i + j] : ns->ids[i];
+            q[j] = fe_kw_node_index(dk, ids[j]);
+        }
+        for (int j = 0; j < n && !st; j++)
+            if (q[j] < 0 || c->map[q[j]] < 0)
+                st = at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: node %d of %s %d is %s",
+                        ct_name(k), what, ids[j], ss ? "segment set" : "node set", id,
+                        q[j] < 0 ? "not defined" : "in no element");
+        if (st) break;
+        if (ss) { /* the part of the element whose face it is */
+            int pk = face_part(dk, &ne, q);
+            if (pk < 0 || model_part(c, pk) < 0) {
+                st = at(dk, ss->loc, c->err, MCS_ERR_KEY,
+                        "*SET_SEGMENT %d: segment %d %d %d %d is no face of a shell or solid of "
+                        "the model",
+                        id, ids[0], ids[1], ids[2], ids[3]);
+                break;
+            }
+            st = side_add(c, k, what, pk, s);
+            for (int j = 0; j < 4; j++)
+                s->face[4 * s->nface + j] = c->map[q[j]];
+            s->nface++;
+            for (int j = 0; j < 4; j++)
+                s->node[s->nnode++] = c->map[q[j]];
+        } else { /* the parts of the elements holding the node */
+            for (int j = ne.off[q[0]]; j < ne.off[q[0] + 1] && !st; j++) {
+                const fe_kw_etype ty = ne.el[j] & 1 ? FE_KW_SOLID : FE_KW_SHELL;
+                int pk = deck_part_index(dk, dk->elem[ty].pid[ne.el[j] >> 1]);
+                if (pk >= 0 && model_part(c, pk) >= 0) st = side_add(c, k, what, pk, s);
+            }
+            s->node[s->nnode++] = c->map[q[0]];
+        }
+    }
+    free(ne.off), free(ne.el);
+    if (!st && s->n == 0)
+        st = at(dk, k->loc, c->err, MCS_ERR_RANGE,
+                "*%s: %s side: set %d holds no node of a "
+                "shell or solid",
+                ct_name(k), what, id);
+    return st;
+}
+
 /* the parts of one side: id of ID type typ (2 part set, 3 part, 5 all, 6 all but a part set);
  * single surface with id 0: every part */
 static mcs_status side_parts(const kb *c, const fe_kw_contact *k, const char *what, int id, int typ,
@@ -84,11 +215,12 @@ static mcs_status side_parts(const kb *c, const fe_kw_contact *k, const char *wh
     const fe_kw_deck *dk = c->dk;
     s->n = 0;
     int single = k->type == FE_KW_CT_SINGLE || k->type == FE_KW_CT_GENERAL;
-    if (typ == 0 || typ == 4)
+    if (typ == 4 && k->type != FE_KW_CT_N2S)
         return at(dk, k->loc, c->err, MCS_ERR_UNSUPPORTED,
-                  "*%s: the %s side is a %s (SSTYP/MSTYP %d): contacts are built on whole "
-                  "parts; give a part (3), a part set (2) or all parts (5)",
-                  ct_name(k), what, typ == 0 ? "segment set" : "node set", typ);
+                  "*%s: the %s side is a node set (SSTYP 4): node sets are for nodes-to-surface "
+                  "contacts",
+                  ct_name(k), what);
+    if (typ == 0 || typ == 4) return set_side(c, k, what, id, typ, s);
     const fe_kw_set *set = NULL;
     if ((typ == 2 || typ == 6) && !(single && id == 0)) {
         set = fe_kw_find_set(dk, id, 1);
@@ -131,7 +263,17 @@ static mcs_status side_parts(const kb *c, const fe_kw_contact *k, const char *wh
     return MCS_OK;
 }
 
+static mcs_status add_contact_sides(const kb *c, int i, side *sl, side *ms);
+
 static mcs_status add_contact(const kb *c, int i)
+{
+    side sl = {0}, ms = {0};
+    mcs_status st = add_contact_sides(c, i, &sl, &ms);
+    side_free(&sl), side_free(&ms);
+    return st;
+}
+
+static mcs_status add_contact_sides(const kb *c, int i, side *psl, side *pms)
 {
     const fe_kw_deck *dk = c->dk;
     const fe_kw_contact *k = &dk->contact[i];
@@ -143,20 +285,24 @@ static mcs_status add_contact(const kb *c, int i)
     static const fe_contact_type type[4] = {FE_CONTACT_SINGLE_SURFACE, FE_CONTACT_SINGLE_SURFACE,
                                             FE_CONTACT_TWO_SURFACE, FE_CONTACT_NODE_TO_SURFACE};
     d.type = type[k->type];
-    side sl, ms = {0};
-    mcs_status st = side_parts(c, k, "slave", k->ssid, k->sstyp, &sl);
+    side *sl = psl, *ms = pms;
+    mcs_status st = side_parts(c, k, "slave", k->ssid, k->sstyp, sl);
     if (!st && d.type != FE_CONTACT_SINGLE_SURFACE)
-        st = side_parts(c, k, "master", k->msid, k->mstyp, &ms);
+        st = side_parts(c, k, "master", k->msid, k->mstyp, ms);
     if (st) return st;
-    d.nslave = sl.n, d.nmaster = ms.n;
-    memcpy(d.slave, sl.part, sizeof sl.part);
-    memcpy(d.master, ms.part, sizeof ms.part);
+    d.nslave = sl->n, d.nmaster = ms->n;
+    memcpy(d.slave, sl->part, sizeof sl->part);
+    memcpy(d.master, ms->part, sizeof ms->part);
+    /* segment and node set sides: the kernel's side filters (copied by the builder) */
+    d.nslave_node = sl->nnode, d.slave_node = sl->node, d.nslave_face = sl->nface;
+    d.slave_face = sl->face, d.nmaster_node = ms->nnode, d.master_node = ms->node;
+    d.nmaster_face = ms->nface, d.master_face = ms->face;
     /* GENERAL adds beam edges to the single surface: refused when a part is of beams */
     const fe_kw_elems *be = &dk->elem[FE_KW_BEAM];
     for (int j = 0; j < be->n && k->type == FE_KW_CT_GENERAL; j++) {
         int pk = deck_part_index(dk, be->pid[j]);
-        for (int q = 0; q < sl.n && pk >= 0; q++)
-            if (strcmp(sl.part[q], c->names[pk]) == 0)
+        for (int q = 0; q < sl->n && pk >= 0; q++)
+            if (strcmp(sl->part[q], c->names[pk]) == 0)
                 return at(dk, k->loc, c->err, MCS_ERR_UNSUPPORTED,
                           "*%s: part %d is of beams, whose edge contact is not built", ct_name(k),
                           be->pid[j]);

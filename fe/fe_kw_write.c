@@ -318,6 +318,69 @@ static void w_conditions(kw_out *o, const fe_kw_deck *d)
     }
 }
 
+/* contacts, segment sets, node velocities, prescribed motions, loads, the end time
+ * (fe_kw_cards_contact.c reads them back) */
+static void w_contacts(kw_out *o, const fe_kw_deck *d)
+{
+    static const char *const nm[2][4] = {
+        {"CONTACT_SINGLE_SURFACE", "CONTACT_GENERAL", "CONTACT_SURFACE_TO_SURFACE",
+         "CONTACT_NODES_TO_SURFACE"},
+        {"CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_AUTOMATIC_GENERAL",
+         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_NODES_TO_SURFACE"}};
+    const double T = d->unit[1], L = kw_u_len(d);
+    if (d->end_time > 0) kw(o, "CONTROL_TERMINATION"), put_real(o, 10, d->end_time / T), endl(o);
+    for (int i = 0; i < d->nsegset; i++) {
+        const fe_kw_segset *s = &d->segset[i];
+        kw(o, "SET_SEGMENT"), put_int(o, 10, s->id), endl(o);
+        for (int k = 0; k < s->n; k++) {
+            for (int j = 0; j < 4; j++) put_int(o, 10, s->node[4 * k + j]);
+            endl(o);
+        }
+    }
+    for (int i = 0; i < d->nnodevel; i++) {
+        const fe_kw_nodevel *v = &d->nodevel[i];
+        if (i == 0) kw(o, "INITIAL_VELOCITY_NODE");
+        put_int(o, 10, v->nid);
+        for (int k = 0; k < 3; k++) put_real(o, 10, v->v[k] / kw_u_vel(d));
+        for (int k = 0; k < 3; k++) put_real(o, 10, v->vr[k] * T);
+        endl(o);
+    }
+    for (int i = 0; i < d->npmotion; i++) {
+        const fe_kw_pmotion *m = &d->pmotion[i];
+        kw(o, m->on == FE_KW_ON_NODE      ? "BOUNDARY_PRESCRIBED_MOTION_NODE"
+              : m->on == FE_KW_ON_NODESET ? "BOUNDARY_PRESCRIBED_MOTION_SET"
+                                          : "BOUNDARY_PRESCRIBED_MOTION_RIGID");
+        put_int(o, 10, m->id), put_int(o, 10, m->dof), put_int(o, 10, m->vad);
+        put_int(o, 10, m->lcid), put_real(o, 10, m->sf), endl(o);
+    }
+    for (int i = 0; i < d->nload; i++) {
+        const fe_kw_load *l = &d->load[i];
+        if (l->segment == 1) {
+            kw(o, "LOAD_SEGMENT"), put_int(o, 10, l->lcid), put_real(o, 10, l->sf);
+            put_real(o, 10, l->at / T);
+            for (int j = 0; j < 4; j++) put_int(o, 10, l->node[j]);
+        } else {
+            kw(o, l->segment ? "LOAD_NODE_SET" : "LOAD_NODE_POINT");
+            put_int(o, 10, l->nid), put_int(o, 10, l->dof), put_int(o, 10, l->lcid);
+            put_real(o, 10, l->sf);
+        }
+        endl(o);
+    }
+    for (int i = 0; i < d->ncontact; i++) {
+        const fe_kw_contact *c = &d->contact[i];
+        char name[64];
+        snprintf(name, sizeof name, "%s%s", nm[c->automatic ? 1 : 0][c->type],
+                 c->id || c->title[0] ? "_ID" : "");
+        kw(o, name);
+        if (c->id || c->title[0]) fprintf(o->f, "%10d%.70s\n", c->id, c->title);
+        put_int(o, 10, c->ssid), put_int(o, 10, c->msid), put_int(o, 10, c->sstyp);
+        put_int(o, 10, c->mstyp), endl(o);
+        put_real(o, 10, c->fs), put_real(o, 10, c->fd), put_real(o, 10, c->dc * L / T), endl(o);
+        put_real(o, 10, c->sfs), put_real(o, 10, c->sfm), put_real(o, 10, 0), put_real(o, 10, 0);
+        put_real(o, 10, c->sfst), put_real(o, 10, c->sfmt), put_real(o, 10, c->fsf), endl(o);
+    }
+}
+
 mcs_status fe_kw_write_stream(const fe_kw_deck *d, FILE *f, fe_kw_format fmt, mcs_error *err)
 {
     kw_out o = {.f = f, .fmt = fmt};
@@ -333,6 +396,7 @@ mcs_status fe_kw_write_stream(const fe_kw_deck *d, FILE *f, fe_kw_format fmt, mc
     w_nodes(&o, d);
     w_elems(&o, d);
     w_conditions(&o, d);
+    w_contacts(&o, d); /* contacts, segment sets, node velocities, motions, loads, end time */
     fprintf(f, "*END\n");
     if (o.bad_id)
         return MCS_ERR(err, MCS_ERR_RANGE,

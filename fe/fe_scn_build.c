@@ -5,6 +5,7 @@
 #include "fe/fe_scn_build.h"
 #include "fe/fe_scn_node.h"
 #include "fe/fe_scn_contact.h"
+#include "fe/fe_scn_joint.h"
 #include "fe/fe_scn_solid.h"
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_slipring.h"
@@ -553,15 +554,17 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     if (!st) st = fe_scn_solid_add(b, fe, err); /* springs, point masses */
     if (!st) st = fe_scn_add_restraints(b, fe, err); /* airbags, retractors (fe_scn_restraints.c) */
     if (!st) st = fe_scn_add_sliprings(b, fe, err);  /* belt slip rings (fe_scn_slipring.c) */
+    if (!st) st = fe_scn_add_joints(b, fe, err);     /* joints (fe_scn_joint.c) */
     if (!st) st = fe_scn_contact_add(b, fe, hook != NULL, err); /* contacts, ellipsoids */
     if (!st && place) st = fe_scn_place_apply(b, fe, place, out, err); /* fe_scn_place.c */
     if (!st && hook) st = hook(b, fe, ctx, err);
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
-        if (st)
-            fe_scn_relocate(st,
-                            fe_scn_slipring_node(fe, kerr.msg, fe_scn_restraint_node(fe, kerr.msg)),
-                            &kerr, err);
+        if (st) {
+            const mcs_node *at = fe_scn_restraint_node(fe, kerr.msg);
+            at = fe_scn_joint_node(fe, kerr.msg, fe_scn_slipring_node(fe, kerr.msg, at));
+            fe_scn_relocate(st, at, &kerr, err);
+        }
     }
     fe_builder_destroy(&b);
     return st;

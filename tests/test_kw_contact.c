@@ -138,6 +138,60 @@ static void test_contact_cards(void)
     free(t);
 }
 
+static void expect_fail(const char *tail, int at_build, const char *w1, const char *w2);
+
+/* segment and node set sides (corpus/contact_segment_set.k: a 1 x 1 shell plate, part 1, and a
+ * hex block above it, part 2; segment set 3 = the block's bottom face, node set 4 = its four
+ * nodes), counted by hand: the surface-to-surface contact has the face's 4 nodes on the plate's
+ * 1 shell, then the plate's 4 nodes on that 1 face (of the block's 6 exterior faces); the
+ * nodes-to-surface contact the set's 4 nodes on the shell; the single surface the face's 4 nodes
+ * on the face itself */
+static void test_set_sides(void)
+{
+    fe_kw_opts o = fe_kw_opts_default();
+    o.quiet = 1;
+    o.units = "mm-s-t";
+    fe_kw_deck *d = NULL;
+    mcs_error err = {0};
+    fe_builder *b = NULL;
+    fe_model *m = NULL;
+    mcs_status st = fe_kw_read(KD "corpus/contact_segment_set.k", &o, &d, &err);
+    if (!st) st = fe_builder_create(&b, &err);
+    if (!st) st = fe_kw_add_deck(b, d, &err);
+    if (!st) st = fe_model_create(b, NULL, &m, &err);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    CHECK(st == MCS_OK && m && m->contact && m->contact->npass == 4);
+    if (m && m->contact && m->contact->npass == 4) {
+        const fe_contact_model *c = m->contact;
+        int ne[4], ns[4];
+        for (int i = 0; i < 4; i++) {
+            ne[i] = c->pass[i].ent_end - c->pass[i].ent_begin;
+            ns[i] = c->pass[i].seg_end - c->pass[i].seg_begin;
+        }
+        CHECK(ne[0] == 4 && ns[0] == 1 && ne[1] == 4 && ns[1] == 1); /* two passes */
+        CHECK(c->pass[1].reverse && c->seg_solid[c->pass[1].seg_begin] == 1);
+        CHECK(ne[2] == 4 && ns[2] == 1 && c->seg_solid[c->pass[2].seg_begin] == 0);
+        CHECK(ne[3] == 4 && ns[3] == 1 && c->pass[3].self);
+        /* the face kept is the bottom one: its nodes are the block's first four (z = 0.1 mm) */
+        const int *q = c->seg_node + 4 * c->pass[1].seg_begin;
+        for (int k = 0; k < 4; k++)
+            CHECK(fabs(m->node_x0[3 * q[k] + 2] - 1e-4) < 1e-12);
+    }
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+    fe_kw_deck_destroy(&d);
+    /* a node set is for nodes to surface; a segment must be an element's face */
+    expect_fail("*SET_NODE_LIST\n         4\n         5         6\n"
+                "*CONTACT_SURFACE_TO_SURFACE\n         4         1         4         3\n",
+                1,
+                "deck.k:29: error: *CONTACT_SURFACE_TO_SURFACE: the slave side is a node set "
+                "(SSTYP 4): node sets are for nodes-to-surface contacts",
+                NULL);
+    expect_fail("*SET_SEGMENT\n         4\n         1         2         7         8\n"
+                "*CONTACT_SURFACE_TO_SURFACE\n         4         1         0         3\n",
+                1, "deck.k:26: error: *SET_SEGMENT 4: segment 1 2 7 8 is no face", NULL);
+}
+
 /* a deck that fails to read or build: the message holds each of want[] */
 static void expect_fail(const char *tail, int at_build, const char *w1, const char *w2)
 {
@@ -179,12 +233,7 @@ static void test_contact_refusals(void)
                 0, "field SFS/SFM", NULL);
     expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         1         3\n", 0,
                 "field SSTYP/MSTYP: shell element sets", NULL);
-    /* at build: a segment set side, a missing part, more than the kernel's 8 parts */
-    expect_fail("*CONTACT_NODES_TO_SURFACE\n         1         7         4         0\n"
-                "*SET_NODE_LIST\n         1\n         5         6\n"
-                "*SET_SEGMENT\n         7\n         1         2         3         4\n",
-                1, "deck.k:26: error: *CONTACT_NODES_TO_SURFACE: the slave side is a node set",
-                NULL);
+    /* at build: a missing part, friction growing with speed */
     expect_fail("*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n         2         9         3         3\n",
                 1,
                 "deck.k:26: error: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE: master side: "
@@ -295,6 +344,57 @@ static void test_motion_loads(void)
                 "rotational velocity", NULL);
 }
 
+/* the writer: contacts, segment sets, node velocities, motions, loads and the end time read
+ * back as written (fe_kw_write, the corpus decks, in each format) */
+static void round_trip(const char *file)
+{
+    fe_kw_opts o = fe_kw_opts_default();
+    o.quiet = 1;
+    o.units = "mm-s-t";
+    fe_kw_deck *a = NULL, *b = NULL;
+    mcs_error err = {0};
+    char out[128];
+    snprintf(out, sizeof out, "%s/rt.k", tmpdir);
+    CHECK(fe_kw_read(file, &o, &a, &err) == MCS_OK);
+    for (int f = 0; f < 3 && a; f++) {
+        CHECK(fe_kw_write(a, out, (fe_kw_format)f, &err) == MCS_OK);
+        mcs_status st = fe_kw_read(out, &o, &b, &err);
+        if (st) fprintf(stderr, "%s\n", err.msg);
+        CHECK(st == MCS_OK && b);
+        if (!b) continue;
+        CHECK(b->ncontact == a->ncontact && b->nsegset == a->nsegset && b->nload == a->nload);
+        CHECK(b->nnodevel == a->nnodevel && b->npmotion == a->npmotion);
+        CHECK(b->end_time == a->end_time);
+        for (int i = 0; i < a->ncontact && b->ncontact == a->ncontact; i++) {
+            const fe_kw_contact *x = &a->contact[i], *y = &b->contact[i];
+            CHECK(x->type == y->type && x->automatic == y->automatic && x->id == y->id);
+            CHECK(strcmp(x->title, y->title) == 0 && x->ssid == y->ssid && x->msid == y->msid);
+            CHECK(x->sstyp == y->sstyp && x->mstyp == y->mstyp && x->fs == y->fs);
+            CHECK(x->fd == y->fd && x->dc == y->dc && x->sfs == y->sfs && x->sfst == y->sfst);
+        }
+        for (int i = 0; i < a->nsegset && b->nsegset == a->nsegset; i++)
+            CHECK(b->segset[i].n == a->segset[i].n &&
+                  memcmp(b->segset[i].node, a->segset[i].node, 16 * (size_t)a->segset[i].n) == 0);
+        for (int i = 0; i < a->nnodevel && b->nnodevel == a->nnodevel; i++)
+            CHECK(b->nodevel[i].nid == a->nodevel[i].nid &&
+                  b->nodevel[i].v[2] == a->nodevel[i].v[2]);
+        for (int i = 0; i < a->npmotion && b->npmotion == a->npmotion; i++)
+            CHECK(memcmp(&b->pmotion[i].on, &a->pmotion[i].on, sizeof(fe_kw_target)) == 0 &&
+                  b->pmotion[i].id == a->pmotion[i].id && b->pmotion[i].sf == a->pmotion[i].sf);
+        for (int i = 0; i < a->nload && b->nload == a->nload; i++)
+            CHECK(b->load[i].nid == a->load[i].nid && b->load[i].sf == a->load[i].sf &&
+                  b->load[i].dof == a->load[i].dof);
+        fe_kw_deck_destroy(&b);
+    }
+    fe_kw_deck_destroy(&a);
+}
+
+static void test_write_round_trip(void)
+{
+    round_trip(KD "corpus/contact_plates.k");
+    round_trip(KD "corpus/contact_segment_set.k");
+}
+
 /* the whole deck through `mcrash run`: two equal steel bars (L 10 mm, 2 x 2 mm, E 210 GPa,
  * nu 0, rho 7850), the striker at v0 = 10 m/s (*INITIAL_VELOCITY_NODE) into the target at rest
  * across a 10 um gap, *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, end time 30 us from
@@ -388,6 +488,8 @@ int main(void)
     RUN(test_contact_cards);
     RUN(test_contact_refusals);
     RUN(test_sets);
+    RUN(test_set_sides);
+    RUN(test_write_round_trip);
     RUN(test_motion_loads);
     RUN(test_whole_deck_run);
     RUN(test_whole_deck_rules);

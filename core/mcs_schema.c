@@ -106,9 +106,11 @@ static const mcs_skey sim_keys[] = {
     /* FE: safety factor on the Courant step (LS-DYNA TSSFAC, default 0.9) */
     Q("time_step_scale", NONE, GT | LE, 0, 1, "FE time step scale factor"),
     Q("output_rate", MCS_DIM_FREQ, GT, 0, 0, "sampling rate of the results [Hz]"),
-    /* FE parts: /stageN/fields at every k-th output row, k = round(output_rate / field_rate) */
+    /* FE parts: /stageN/fields at their own rate (stage 1: every k-th output row, k = round(
+     * output_rate / field_rate)); default 200 frames per run (fe_scn_field_rate) */
     Q("field_rate", MCS_DIM_FREQ, GT, 0, 0,
-      "sampling rate of the FE displacement fields [Hz] (default output_rate)"),
+      "sampling rate of the FE displacement fields [Hz] (default 200 frames per run, at most "
+      "output_rate)"),
     END,
 };
 static const mcs_smap sim_map = {

@@ -57,8 +57,10 @@ void fe_joint_list_free(fe_builder *b)
 /* "file:line:col: " of a descriptor, or "" */
 static const char *where(const fe_joint_desc *d, char *buf, size_t n)
 {
-    if (d->file && d->line > 0)
+    if (d->file && d->line > 0 && d->col > 0)
         snprintf(buf, n, "%s:%d:%d: ", d->file, d->line, d->col);
+    else if (d->file && d->line > 0)
+        snprintf(buf, n, "%s:%d: ", d->file, d->line);
     else
         buf[0] = 0;
     return buf;
@@ -254,6 +256,8 @@ static mcs_status joint_body(const fe_model *m, const fe_joint_desc *d, int i, i
             return MCS_ERR(err, MCS_ERR_RANGE, "%sfe: joint '%s': node N%d missing", at, d->name,
                            i + 1);
         *out = m->node_body[n];
+        /* N2 on no body but held in every translation: the ground (a deck mcrash wrote) */
+        if (*out < 0 && i == 1 && (m->node_fix[n] & FE_DOF_TRANS) == FE_DOF_TRANS) return MCS_OK;
         if (*out < 0)
             return MCS_ERR(err, MCS_ERR_RANGE,
                            "%sfe: joint '%s': node N%d is on no rigid part or nodal rigid body", at,
@@ -337,6 +341,7 @@ static mcs_status build_one(const fe_model *m, const fe_joint_desc *d, fe_joint 
     const double zeta = 0.1;
     if (!(lam > 0))
         return MCS_ERR(err, MCS_ERR_RANGE, "%sfe: joint '%s': both bodies are held", at, d->name);
+    J->scale = sc;
     J->k = sc / (dt * dt * lam);
     J->c = 2 * zeta * sqrt(J->k / lam);
     J->kr = lamr > 0 ? sc / (dt * dt * lamr) : 0;

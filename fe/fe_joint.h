@@ -74,6 +74,7 @@ typedef struct fe_joint {
     int has_range;
     double range[2]; /* [m | rad]                                                       */
     double kstop;    /* stop stiffness: k (slide) or kr (angle) [..]                   */
+    double scale;    /* the penalty scale s [-]                                         */
 } fe_joint;
 
 /* joint loads at t, per joint (state joint_out) */

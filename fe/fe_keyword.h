@@ -223,6 +223,38 @@ typedef struct {
     fe_kw_loc loc;
 } fe_kw_load;
 
+/* ---- joints and constraints (fe_kw_cards_joint.c; kernel: fe_joint.h) ---- */
+
+/* *CONSTRAINED_JOINT_SPHERICAL|REVOLUTE|CYLINDRICAL|TRANSLATIONAL(_ID): N1..N6 RPS DAMP */
+typedef struct {
+    int id;                      /* JID of the _ID card, else its number among the joints   */
+    char title[FE_KW_TITLE_MAX]; /* the _ID card's heading                                  */
+    int type;                    /* fe_joint_type: 0 spherical 1 revolute 2 cyl. 3 transl.   */
+    int node[6];                 /* N1..N6 (0: blank) [-]                                   */
+    double rps, damp;            /* relative penalty stiffness, damping scale (default 1)   */
+    fe_kw_loc loc;               /* the node card                                           */
+} fe_kw_joint;
+
+/* *CONSTRAINED_NODAL_RIGID_BODY (PID CID NSID ...), *CONSTRAINED_EXTRA_NODES_NODE|SET
+ * (PID NID|NSID) */
+typedef struct {
+    int kind;                    /* 0 nodal rigid body (id: its node set), 1 extra node (id: a
+                                    node), 2 extra nodes (id: a node set) [-]                */
+    int pid;                     /* the body's ID / the rigid part's ID [-]                  */
+    int id;
+    fe_kw_loc loc;
+} fe_kw_nrb;
+
+/* *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED (phi, theta, psi) | _TRANSLATIONAL (x, y, z) */
+typedef struct {
+    int translational;           /* 0 generalized (rotations), 1 translational [-]           */
+    int jsid, pida, pidb, cida, cidb, jid;
+    int lc[3], dlc[3];           /* stiffness and damping curves per axis (0: none) [-]       */
+    double es[3], ff[3];         /* stop stiffness, friction limit per axis, as written      */
+    double neg[3], pos[3];       /* stops per axis [rad | m] (0: none)                       */
+    fe_kw_loc loc;
+} fe_kw_jstiff;
+
 /* a keyword outside the subset: one entry per distinct name, in the order first met */
 typedef struct {
     char name[FE_KW_NAME_MAX + 16]; /* as written, without the "*" */
@@ -255,6 +287,10 @@ typedef struct fe_kw_deck {
     int npmotion, cap_pmotion; fe_kw_pmotion *pmotion; /* *BOUNDARY_PRESCRIBED_MOTION_*        */
     int nload, cap_load;       fe_kw_load *load;       /* *LOAD_NODE_POINT, *LOAD_SEGMENT      */
     double end_time;      /* *CONTROL_TERMINATION ENDTIM [s] (0: not given)                    */
+    /* joints and constraints (fe_kw_cards_joint.c) */
+    int njoint, cap_joint;     fe_kw_joint *joint;     /* *CONSTRAINED_JOINT_*                 */
+    int nnrb, cap_nrb;         fe_kw_nrb *nrb;         /* nodal rigid bodies, extra nodes       */
+    int njstiff, cap_jstiff;   fe_kw_jstiff *jstiff;   /* *CONSTRAINED_JOINT_STIFFNESS_*       */
 } fe_kw_deck;
 
 typedef struct {

@@ -548,9 +548,11 @@ mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
         }
         if (!st) st = fe_kw_add_part(b, dk, p->id, &d, 1, map, NULL, err);
     }
+    if (!st) st = kw_add_deck_joint_nodes(b, dk, map, err); /* fe_kw_build_joint.c */
     if (!st) st = add_spcs(b, dk, map, err);
     if (!st) st = add_walls(b, dk, names, err);
     if (!st) st = kw_add_deck_more(b, dk, (const char(*)[FE_NAME_MAX])names, map, err);
+    if (!st) st = kw_add_deck_joints(b, dk, (const char(*)[FE_NAME_MAX])names, map, err);
     free(map);
     free(names);
     return st;

@@ -831,6 +831,15 @@ static const struct {
     {"LOAD_NODE_SET", kw_h_load_node_set, 0},
     {"LOAD_SEGMENT", kw_h_load_segment, 0},
     {"CONTROL_TERMINATION", kw_h_control_termination, 0},
+    {"CONSTRAINED_JOINT_SPHERICAL", kw_h_joint_spherical, 1}, /* fe_kw_cards_joint.c */
+    {"CONSTRAINED_JOINT_REVOLUTE", kw_h_joint_revolute, 1},
+    {"CONSTRAINED_JOINT_CYLINDRICAL", kw_h_joint_cylindrical, 1},
+    {"CONSTRAINED_JOINT_TRANSLATIONAL", kw_h_joint_translational, 1},
+    {"CONSTRAINED_NODAL_RIGID_BODY", kw_h_nodal_rigid_body, 0},
+    {"CONSTRAINED_EXTRA_NODES_NODE", kw_h_extra_nodes_node, 0},
+    {"CONSTRAINED_EXTRA_NODES_SET", kw_h_extra_nodes_set, 0},
+    {"CONSTRAINED_JOINT_STIFFNESS_GENERALIZED", kw_h_jstiff_generalized, 0},
+    {"CONSTRAINED_JOINT_STIFFNESS_TRANSLATIONAL", kw_h_jstiff_translational, 0},
 };
 
 int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st)

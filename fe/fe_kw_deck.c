@@ -96,6 +96,7 @@ void fe_kw_deck_destroy(fe_kw_deck **p)
     free(d->spc);
     free(d->unknown);
     kw_contact_free(d); /* fe_kw_cards_contact.c */
+    kw_joint_free(d);   /* fe_kw_cards_joint.c */
     free(d);
     *p = NULL;
 }

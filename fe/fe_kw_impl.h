@@ -154,6 +154,29 @@ void kw_contact_free(fe_kw_deck *d);
 mcs_status kw_add_deck_more(fe_builder *b, const fe_kw_deck *dk, const char (*names)[FE_NAME_MAX],
                             const int *map, mcs_error *err);
 
+/* ---- joints and constraints (fe_kw_cards_joint.c) ---- */
+mcs_status kw_h_joint_spherical(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_joint_revolute(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_joint_cylindrical(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_joint_translational(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_nodal_rigid_body(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_extra_nodes_node(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_extra_nodes_set(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_jstiff_generalized(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_jstiff_translational(kw_ctx *c, const kw_card *cd, int n);
+void kw_joint_free(fe_kw_deck *d);
+/* before the constraints: the deck nodes the joints and extra nodes name that no element
+ * holds join the builder (map updated); after everything: nodal rigid bodies, extra nodes,
+ * joints and their stiffness (fe_kw_build_joint.c) */
+mcs_status kw_add_deck_joint_nodes(fe_builder *b, const fe_kw_deck *dk, int *map,
+                                   mcs_error *err);
+mcs_status kw_add_deck_joints(fe_builder *b, const fe_kw_deck *dk,
+                              const char (*names)[FE_NAME_MAX], const int *map, mcs_error *err);
+/* the joints, nodal rigid bodies and extra nodes of a model into its deck (node i has ID i+1,
+ * part i ID i+1; new nodes, sets and curves numbered after the deck's) */
+mcs_status kw_joints_from_model(const fe_model *m, const double *x, fe_kw_deck *d,
+                                mcs_error *err);
+
 /* ---- unit conversions (SI value of the deck's unit of each quantity) ---- */
 static inline double kw_u_len(const fe_kw_deck *d) { return d->unit[0]; }
 static inline double kw_u_vel(const fe_kw_deck *d) { return d->unit[0] / d->unit[1]; }

@@ -318,6 +318,47 @@ static void w_conditions(kw_out *o, const fe_kw_deck *d)
     }
 }
 
+/* nodal rigid bodies, extra nodes, joints and joint stiffnesses (fe_kw_cards_joint.c) */
+static void w_constrained(kw_out *o, const fe_kw_deck *d)
+{
+    static const char *const jk[4] = {"SPHERICAL", "REVOLUTE", "CYLINDRICAL", "TRANSLATIONAL"};
+    static const char *const nk[3] = {"NODAL_RIGID_BODY", "EXTRA_NODES_NODE", "EXTRA_NODES_SET"};
+    char name[64];
+    for (int i = 0; i < d->nnrb; i++) {
+        const fe_kw_nrb *r = &d->nrb[i];
+        snprintf(name, sizeof name, "CONSTRAINED_%s", nk[r->kind]);
+        kw(o, name);
+        put_int(o, 10, r->pid);
+        if (r->kind == 0) put_int(o, 10, 0);
+        put_int(o, 10, r->id), endl(o);
+    }
+    for (int i = 0; i < d->njoint; i++) {
+        const fe_kw_joint *j = &d->joint[i];
+        snprintf(name, sizeof name, "CONSTRAINED_JOINT_%s_ID", jk[j->type]);
+        kw(o, name);
+        fprintf(o->f, "%10d%.70s\n", j->id, j->title); /* I10 + A70 in every format */
+        for (int k = 0; k < 6; k++) put_int(o, 10, j->node[k]);
+        put_real(o, 10, j->rps), put_real(o, 10, j->damp), endl(o);
+    }
+    for (int i = 0; i < d->njstiff; i++) {
+        const fe_kw_jstiff *s = &d->jstiff[i];
+        kw(o, s->translational ? "CONSTRAINED_JOINT_STIFFNESS_TRANSLATIONAL"
+                               : "CONSTRAINED_JOINT_STIFFNESS_GENERALIZED");
+        const int c1[6] = {s->jsid, s->pida, s->pidb, s->cida, s->cidb, s->jid};
+        for (int k = 0; k < 6; k++) put_int(o, 10, c1[k]);
+        endl(o);
+        for (int k = 0; k < 3; k++) put_int(o, 10, s->lc[k]);
+        for (int k = 0; k < 3; k++) put_int(o, 10, s->dlc[k]);
+        endl(o);
+        for (int k = 0; k < 3; k++) put_real(o, 10, s->es[k]), put_real(o, 10, s->ff[k]);
+        endl(o);
+        /* stops: degrees (generalized) or the deck's length */
+        const double u = s->translational ? kw_u_len(d) : M_PI / 180;
+        for (int k = 0; k < 3; k++) put_real(o, 10, s->neg[k] / u), put_real(o, 10, s->pos[k] / u);
+        endl(o);
+    }
+}
+
 /* contacts, segment sets, node velocities, prescribed motions, loads, the end time
  * (fe_kw_cards_contact.c reads them back) */
 static void w_contacts(kw_out *o, const fe_kw_deck *d)
@@ -397,6 +438,7 @@ mcs_status fe_kw_write_stream(const fe_kw_deck *d, FILE *f, fe_kw_format fmt, mc
     w_elems(&o, d);
     w_conditions(&o, d);
     w_contacts(&o, d); /* contacts, segment sets, node velocities, motions, loads, end time */
+    w_constrained(&o, d);
     fprintf(f, "*END\n");
     if (o.bad_id)
         return MCS_ERR(err, MCS_ERR_RANGE,
@@ -540,6 +582,7 @@ mcs_status fe_kw_from_model(const fe_model *m, const double *x, const char *titl
         if (!s) st = MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
         else *s = (fe_kw_spc){FE_KW_ON_NODE, i + 1, m->node_fix[i], {0, 0}};
     }
+    if (!st) st = kw_joints_from_model(m, xs, d, err); /* fe_kw_joint_model.c */
     if (st) fe_kw_deck_destroy(&d);
     *out = d;
     return st;

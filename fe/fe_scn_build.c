@@ -537,7 +537,7 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     opts.energy_growth_limit = mcs_node_num_or(fe, "energy_growth_limit", opts.energy_growth_limit);
     out->end_time = mcs_node_num(fe_scn_get(sim, "end_time"));
     out->output_rate = mcs_node_num_or(sim, "output_rate", FE_SCN_OUTPUT_RATE_DEFAULT);
-    out->field_rate = mcs_node_num_or(sim, "field_rate", out->output_rate);
+    out->field_rate = mcs_node_num_or(sim, "field_rate", 0); /* 0: fe_scn_field_rate */
 
     fe_builder *b = NULL;
     mcs_error kerr = {0};
@@ -579,4 +579,11 @@ void fe_problem_free(fe_problem *p)
     p->part_carrier = NULL;
     p->att = NULL;
     p->natt = 0;
+}
+
+double fe_scn_field_rate(const fe_problem *p)
+{
+    if (p->field_rate > 0) return p->field_rate;
+    const double r = p->end_time > 0 ? FE_SCN_FIELD_FRAMES / p->end_time : p->output_rate;
+    return r < p->output_rate ? r : p->output_rate;
 }

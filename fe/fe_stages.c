@@ -457,6 +457,11 @@ mcs_status fe_stable_step(const fe_model *m, fe_state *s)
     s->dt_prev = s->dt;
     s->nstep++;
     if (m->nms_elem) dtmin = fe_massscale_run(m, s, dtmin); /* mass scaling in the run */
+    /* the smallest estimate of the last FE_DT_WINDOW steps: a step that follows the element
+     * lengths and strain rates step by step oscillates with the highest mode and pumps it
+     * (docs/fe.md, rigid walls) */
+    s->dt_win[s->nstep % FE_DT_WINDOW] = dtmin;
+    for (int k = 0; k < FE_DT_WINDOW; k++) dtmin = fmin(dtmin, s->dt_win[k]);
     double dt = m->opts.dt_scale * dtmin;
     if (m->opts.dt_max > 0) dt = fmin(dt, m->opts.dt_max);
     if (isinf(dt) && s->neroded > 0) dt = s->dt_prev; /* every element eroded: the last step */

@@ -135,10 +135,14 @@ typedef struct {
 
 struct fe_contact_state;
 
+/* steps over which the stable step takes its smallest estimate (fe_stable_step) */
+#define FE_DT_WINDOW 8
+
 typedef struct fe_state {
     double time;                  /* t [s]                                                     */
     double dt;                    /* step from t to t + dt, used by the next fe_step [s]       */
     double dt_prev;               /* step from t - dt_prev to t [s]                            */
+    double dt_win[FE_DT_WINDOW];  /* the last stable-step estimates, ring by nstep [s]         */
     long nstep;                   /* steps taken [-]                                           */
     double energy[FE_NENERGY];    /* global energies at t [J]                                  */
     double energy0;               /* total energy at t = 0 [J]                                 */

@@ -53,6 +53,7 @@ void fe_builder_destroy(fe_builder **p)
         free(b->epart[k]);
     }
     free(b->part);
+    free(b->shell_t);
     free(b->bc);
     free(b->fix);
     free(b->vel);
@@ -458,4 +459,26 @@ int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, i
     }
     free(mark);
     return cnt;
+}
+
+mcs_status fe_builder_add_shell(fe_builder *b, int part, const int nodes[4], double thickness,
+                                mcs_error *err)
+{
+    if (!(thickness > 0) || !isfinite(thickness))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: a shell's own thickness must be > 0, got %g",
+                       thickness);
+    if (part < 0 || part >= b->npart ||
+        fe_section_kind(b->part[part].section.type) != FE_KIND_SHELL)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: a shell of part index %d, which is no shell part",
+                       part);
+    int e0 = b->nelem[FE_KIND_SHELL];
+    mcs_status st = fe_builder_add_elem(b, part, nodes, err);
+    if (st) return st;
+    int e1 = b->nelem[FE_KIND_SHELL]; /* a membrane quad made two triangles */
+    if (grow((void **)&b->shell_t, &b->cap_shell_t, e1, sizeof(double)))
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory adding a shell");
+    for (int e = b->nshell_t; e < e0; e++) b->shell_t[e] = 0; /* the section's */
+    for (int e = e0; e < e1; e++) b->shell_t[e] = thickness;
+    b->nshell_t = e1;
+    return MCS_OK;
 }

@@ -27,6 +27,8 @@ struct fe_builder {
     int nelem[FE_NKIND], cap_conn[FE_NKIND], cap_epart[FE_NKIND];
     int *conn[FE_NKIND];                          /* connectivity per kind */
     int *epart[FE_NKIND];                         /* part per element      */
+    double *shell_t;  /* own thickness of shells (nshell_t; 0: the section's) [m] */
+    int nshell_t, cap_shell_t;
     int npart, cap_part;
     fe_part_desc *part;
     int nbc, cap_bc;

@@ -375,8 +375,8 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
                     return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact segments)");
                 /* LS-DYNA shells: k = s K A / max diagonal; fabric at its contact thickness */
                 double ht = p->section.type == FE_SECTION_MEMBRANE
-                                ? 0.5 * fabric_contact_thickness(d, p->section.thickness)
-                                : 0.5 * tscale * p->section.thickness;
+                                ? 0.5 * fabric_contact_thickness(d, m->shell_t[e])
+                                : 0.5 * tscale * m->shell_t[e];
                 set_seg(c, c->nseg++, q, ip, 0, ht, scale * K * A / dmax, m->nhex + e);
             } else if (p->elem_kind == FE_KIND_HEX) {
                 double xe[8][3], bb[8][3], aa[8][3];
@@ -760,11 +760,11 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
     for (int e = 0; e < m->nshell && !st; e++) {
         const fe_section_desc *sec = &m->part[m->shell_part[e]].section;
         const int fabric = sec->type == FE_SECTION_MEMBRANE;
-        double ht = 0.5 * sec->thickness;
+        double ht = 0.5 * m->shell_t[e];
         for (int i = 0; i < 4; i++) {
             const int nd = m->shell_node[4 * e + i];
             cb.shell_ht[nd] = fmax(cb.shell_ht[nd], ht);
-            if (fabric) cb.fabric_t[nd] = fmax(cb.fabric_t[nd], sec->thickness);
+            if (fabric) cb.fabric_t[nd] = fmax(cb.fabric_t[nd], m->shell_t[e]);
             else cb.plain_ht[nd] = fmax(cb.plain_ht[nd], ht);
         }
     }

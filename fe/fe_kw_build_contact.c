@@ -317,7 +317,21 @@ static mcs_status add_contact_sides(const kb *c, int i, side *psl, side *pms)
                   ct_name(k), k->fd, k->fs);
     /* the penalty k = SLSFAC x SFS x (K A^2 / V or K A / diagonal), SLSFAC 0.1 (*CONTROL_CONTACT
      * default); shell offsets t/2 x SFST */
-    d.penalty_scale = 0.1 * k->sfs;
+    d.penalty_scale = (dk->slsfac > 0 ? dk->slsfac : 0.1) * k->sfs;
+    /* non-automatic contacts: LS-DYNA leaves the shell thickness out unless SHLTHK >= 1 */
+    int shells = 0;
+    for (int j = 0; j < dk->elem[FE_KW_SHELL].n && !k->automatic && dk->shlthk == 0; j++) {
+        int pk = deck_part_index(dk, dk->elem[FE_KW_SHELL].pid[j]);
+        for (int q = 0; q < sl->n + ms->n && pk >= 0 && !shells; q++)
+            shells = strcmp(q < sl->n ? sl->part[q] : ms->part[q - sl->n], c->names[pk]) == 0;
+        if (shells) break;
+    }
+    if (shells)
+        mcs_log(MCS_LOG_WARN,
+                "%s:%d: warning: *%s: shells meet at their t/2 offsets (x SFST), "
+                "as in LS-DYNA's automatic contacts; its non-automatic ones leave the "
+                "thickness out unless *CONTROL_CONTACT SHLTHK >= 1",
+                dk->file[k->loc.file], k->loc.line, ct_name(k));
     d.thickness_scale = k->sfst;
     mcs_error kerr = {0};
     st = fe_builder_add_contact(c->b, &d, &kerr);
@@ -492,6 +506,11 @@ mcs_status kw_add_deck_more(fe_builder *b, const fe_kw_deck *dk, const char (*na
                             const int *map, mcs_error *err)
 {
     kb c = {b, dk, names, map, err};
+    if (dk->rwpnal > 0 && dk->nwall > 0)
+        return at(dk, dk->control_contact, err, MCS_ERR_UNSUPPORTED,
+                  "*CONTROL_CONTACT: RWPNAL %g asks penalty rigid walls; the deck's walls are "
+                  "built as constraint walls (leave RWPNAL 0)",
+                  dk->rwpnal);
     mcs_status st = add_node_velocities(&c);
     for (int i = 0; i < dk->npmotion && !st; i++)
         st = add_motion(&c, &dk->pmotion[i]);

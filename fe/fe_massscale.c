@@ -56,7 +56,7 @@ static double elem_step(const fe_model *m, const fe_part *p, int e, double *mass
             memcpy(xe[n], x + 3 * c[n], sizeof xe[n]);
         }
         double area = fe_shell_frame(xe, fr, xl, yl);
-        *mass = p->material.density * p->section.thickness * area;
+        *mass = p->material.density * m->shell_t[e] * area;
         *nn = c[2] == c[3] ? 3 : 4;
         return fe_shell_length(xe, area) / p->wave_speed;
     }

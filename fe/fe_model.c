@@ -117,6 +117,10 @@ static void sort_elements(const fe_builder *b, fe_model *m)
                 if (b->epart[k][e] != ip) continue;
                 memcpy(dst_node[k] + (size_t)nn * pos, b->conn[k] + (size_t)nn * e,
                        (size_t)nn * sizeof(int));
+                if (k == FE_KIND_SHELL) /* its own thickness, else its section's */
+                    m->shell_t[pos] = e < b->nshell_t && b->shell_t[e] > 0
+                                          ? b->shell_t[e]
+                                          : m->part[ip].section.thickness;
                 dst_part[k][pos++] = ip;
             }
             m->part[ip].elem_end = pos;
@@ -154,7 +158,7 @@ static mcs_status lump_masses(fe_model *m, mcs_error *err)
                 double xe[4][3], fr[3][3], xl[4], yl[4];
                 const int *c = m->shell_node + 4 * e;
                 for (int i = 0; i < 4; i++) memcpy(xe[i], m->node_x0 + 3 * c[i], sizeof xe[i]);
-                double area = fe_shell_frame(xe, fr, xl, yl), t = p->section.thickness;
+                double area = fe_shell_frame(xe, fr, xl, yl), t = m->shell_t[e];
                 if (!(area > 0))
                     return MCS_ERR(err, MCS_ERR_RANGE,
                                    "fe: part '%s': shell %d (nodes %d %d %d %d) has area %g m^2: "
@@ -395,6 +399,7 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
         memcpy(p->name, d->name, FE_NAME_MAX);
         p->section = d->section;
         p->material = d->material;
+        p->rigid = d->rigid;
         p->elem_kind = fe_section_kind(d->section.type);
         derive_part(p);
         if (p->elem_kind == FE_KIND_SHELL && d->section.integration_points > m->nip_max)

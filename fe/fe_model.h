@@ -124,12 +124,24 @@ typedef struct {
                                           erosion (fe_stages.c); 0: never [-]                 */
 } fe_material_desc;
 
+/* a rigid part's given mass properties (LS-DYNA *PART_INERTIA), used instead of the sums
+ * over its nodes (fe_rigid.c) */
+typedef struct {
+    int given;                 /* 1: use these [-]                                          */
+    double mass;               /* [kg]                                                      */
+    double cg[3];              /* centre of mass at t = 0 [m]                               */
+    double inertia[3][3];      /* about cg, global axes, symmetric positive definite [kg m^2] */
+    double velocity[3];        /* initial velocity of the centre of mass [m/s]              */
+    double omega[3];           /* initial angular velocity [rad/s]                          */
+} fe_rigid_inertia;
+
 typedef struct {
     char name[FE_NAME_MAX];     /* unique part name                                        */
     fe_mesh_desc mesh;          /* generated mesh (FE_MESH_NONE: add nodes/elements yourself) */
     fe_section_desc section;    /* element type and its properties                         */
     fe_material_desc material;  /* constitutive model                                      */
     double initial_velocity[3]; /* of every node of the part [m/s]                         */
+    fe_rigid_inertia rigid;     /* rigid parts: given mass properties (rigid.given 0: none) */
 } fe_part_desc;
 
 /* degrees of freedom, as a mask for `fix` */
@@ -239,6 +251,7 @@ typedef struct {
     int gp_begin;       /* fully integrated hex: first of its 8 x nelem Gauss points in hex_gp */
     int body;           /* rigid part: its body (fe_rigid.c); -1 otherwise [-]          */
     int foam_begin;     /* foam hex: first of its points (1 or 8 per element) in foam_hist [-] */
+    fe_rigid_inertia rigid; /* rigid part: given mass properties (rigid.given 0: none)    */
 } fe_part;
 
 enum { FE_KIND_HEX, FE_KIND_SHELL, FE_KIND_TRUSS, FE_KIND_TET10, FE_NKIND };
@@ -283,6 +296,7 @@ typedef struct {
     X(int, hex_part, nhex, 1, "-", "part of each hex")                                             \
     X(int, shell_node, nshell, 4, "-", "shell connectivity, counter-clockwise about the normal")   \
     X(int, shell_part, nshell, 1, "-", "part of each shell")                                       \
+    X(double, shell_t, nshell, 1, "m", "shell thickness (its own, else its section's)")            \
     X(int, truss_node, ntruss, 2, "-", "truss connectivity")                                       \
     X(int, truss_part, ntruss, 1, "-", "part of each truss")                                     \
     X(int, tet10_node, ntet10, 10, "-", "tet10 connectivity: corners 1-4, then mid-edges 12 23 31 14 24 34") \
@@ -391,6 +405,9 @@ mcs_status fe_builder_add_part(fe_builder *b, const fe_part_desc *d, int *index,
  * A shell with its 3rd and 4th node equal is a degenerate triangle. */
 mcs_status fe_builder_add_node(fe_builder *b, const double x[3], int *index, mcs_error *err);
 mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_error *err);
+/* a shell of its own thickness [m] (> 0; the section's thickness is the others') */
+mcs_status fe_builder_add_shell(fe_builder *b, int part, const int nodes[4], double thickness,
+                                mcs_error *err);
 mcs_status fe_builder_add_boundary(fe_builder *b, const fe_boundary_desc *d, mcs_error *err);
 mcs_status fe_builder_fix_node(fe_builder *b, int node, unsigned fix, const double vel[3],
                                mcs_error *err);

@@ -8,8 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-static const char *const jwhat[4] = {"force", "moment", "displacement", "angle"};
-static const char *const junit[4] = {"N", "N m", "m", "rad"};
+static const char *const jwhat[5] = {"force", "moment", "displacement", "angle", "time"};
+static const char *const junit[5] = {"N", "N m", "m", "rad", "s"};
 static const char *const bwhat[5] = {"position", "orientation", "velocity", "angular_velocity",
                                      "acceleration"};
 static const char *const bunit[5] = {"m", "-", "m/s", "rad/s", "m/s^2"};
@@ -21,9 +21,9 @@ mcs_status fe_out_joint_open(mcs_results *r, int stage, const fe_model *m, fe_ou
     *o = (fe_out_joint){0};
     o->tprev = -1;
     if (m->njoint == 0 && m->nbody == 0) return MCS_OK;
-    /* a coupled stage-1 run has its own /stage1/bodies (the multibody's): joints only there */
-    o->nj = m->njoint, o->nb = stage == 1 ? 0 : m->nbody;
-    o->jser = calloc((size_t)(4 * o->nj + 1), sizeof *o->jser);
+    /* /stage1 and /stage2 have their own bodies (the multibody's): joints only there */
+    o->nj = m->njoint, o->nb = stage == 3 ? m->nbody : 0;
+    o->jser = calloc((size_t)(5 * o->nj + 1), sizeof *o->jser);
     o->bser = calloc((size_t)(5 * o->nb + 1), sizeof *o->bser);
     o->vprev = calloc((size_t)(3 * o->nb + 1), sizeof *o->vprev);
     if (!o->jser || !o->bser || !o->vprev)
@@ -33,14 +33,14 @@ mcs_status fe_out_joint_open(mcs_results *r, int stage, const fe_model *m, fe_ou
     const size_t three = 3;
     for (int j = 0; j < o->nj && !st; j++) {
         const fe_joint *J = &m->joint[j];
-        const int has[4] = {1, 1,
+        const int has[5] = {1, 1,
                             J->type == FE_JOINT_CYLINDRICAL || J->type == FE_JOINT_TRANSLATIONAL,
-                            J->type == FE_JOINT_REVOLUTE || J->type == FE_JOINT_CYLINDRICAL};
-        for (int k = 0; k < 4 && !st; k++) {
+                            J->type == FE_JOINT_REVOLUTE || J->type == FE_JOINT_CYLINDRICAL, 1};
+        for (int k = 0; k < 5 && !st; k++) {
             if (!has[k]) continue;
             snprintf(path, sizeof path, "/stage%d/joints/%s/%s", stage, J->name, jwhat[k]);
             st = mcs_results_series_create(r, path, k < 2 ? 2 : 1, k < 2 ? &three : NULL, junit[k],
-                                           0, &o->jser[4 * j + k], err);
+                                           0, &o->jser[5 * j + k], err);
         }
         if (!st) {
             snprintf(path, sizeof path, "/stage%d/joints/%s", stage, J->name);
@@ -118,10 +118,10 @@ mcs_status fe_out_joint_sample(const fe_model *m, const fe_state *s, fe_out_join
     mcs_status st = MCS_OK;
     for (int j = 0; j < o->nj && !st; j++) {
         const double *jo = s->joint_out + FE_JOUT_N * j;
-        const double *src[4] = {jo + FE_JOUT_FORCE, jo + FE_JOUT_MOMENT, jo + FE_JOUT_SLIDE,
-                                jo + FE_JOUT_ANGLE};
-        for (int k = 0; k < 4 && !st; k++)
-            if (o->jser[4 * j + k]) st = mcs_results_series_append(o->jser[4 * j + k], src[k], err);
+        const double *src[5] = {jo + FE_JOUT_FORCE, jo + FE_JOUT_MOMENT, jo + FE_JOUT_SLIDE,
+                                jo + FE_JOUT_ANGLE, &s->energy_time};
+        for (int k = 0; k < 5 && !st; k++)
+            if (o->jser[5 * j + k]) st = mcs_results_series_append(o->jser[5 * j + k], src[k], err);
     }
     const double t = s->energy_time;
     for (int b = 0; b < o->nb && !st; b++) {

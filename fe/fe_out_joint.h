@@ -1,5 +1,6 @@
 /* fe_out_joint: joints and rigid bodies of an FE model under /stage<N> (DESIGN.md "Stage 3 of a
  * crash scenario"), one row per /stage<N>/time row (the state's energy time t_n):
+ *   /stage<N>/joints/<name>/time [nt] s: the rows' times (= /stage<N>/time);
  *   /stage<N>/joints/<name>/force [nt x 3] N: force of B on A at the joint point (world);
  *   /stage<N>/joints/<name>/moment [nt x 3] N m: moment of B on A about the joint point;
  *   /stage<N>/joints/<name>/displacement [nt] m: slide of A along the axis from t = 0
@@ -11,8 +12,8 @@
  *     mass [m], body-to-world quaternion w, x, y, z (body axes: the world's at t = 0), velocity
  *     [m/s], angular velocity [rad/s] (world), acceleration [m/s^2]: the mean over the output
  *     interval ending at the row of the written velocities (row 0: net force / mass at t = 0),
- *     as /stage1's (docs/contracts.md); not under /stage1 (a coupled stage-1 run's FE parts):
- *     that group holds the multibody's bodies. */
+ *     as /stage1's (docs/contracts.md); stage 3 only (/stage1 and /stage2 hold the multibody's
+ *     bodies there: a coupled run's FE joints write their joints alone). */
 #ifndef FE_OUT_JOINT_H
 #define FE_OUT_JOINT_H
 
@@ -21,7 +22,7 @@
 
 typedef struct {
     int nj, nb;
-    mcs_results_series **jser; /* (nj x 4): force, moment, displacement, angle (NULL: none) */
+    mcs_results_series **jser; /* (nj x 5): force, moment, displacement, angle, time (NULL: none) */
     mcs_results_series **bser; /* (nb x 5): position, orientation, velocity, angular_velocity,
                                   acceleration */
     double *vprev;             /* (nb x 3) velocity of the last row [m/s]                    */

@@ -544,7 +544,7 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     st = fe_builder_create(&b, &kerr);
     if (st) return fe_scn_relocate(st, fe, &kerr, err);
     if (fe_scn_given(fe, "keyword")) /* a whole deck (fe_scn_deck.c) */
-        st = fe_scn_deck_add(b, fe, sim, &out->end_time, err);
+        st = fe_scn_deck_add(b, fe, sim, &out->end_time, &opts, err);
     if (!st) st = add_parts(b, root, fe_scn_get(fe, "parts"), err);
     if (!st) st = add_attach(b, root, fe_scn_get(fe, "parts"), out, err);
     if (!st) st = add_ring_bodies(b, fe_scn_get(fe, "sliprings"), out, err);

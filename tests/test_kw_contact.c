@@ -344,6 +344,70 @@ static void test_motion_loads(void)
                 "rotational velocity", NULL);
 }
 
+/* the first segment stiffness of a plates deck with `tail`, or NAN */
+static double seg_k0(const char *tail)
+{
+    char *t = plates(tail);
+    fe_kw_deck *d = NULL;
+    mcs_error err = {0};
+    fe_builder *b = NULL;
+    fe_model *m = NULL;
+    mcs_status st = read_text(t, "mm-s-t", &d, &err);
+    if (!st) st = fe_builder_create(&b, &err);
+    if (!st) st = fe_kw_add_deck(b, d, &err);
+    if (!st) st = fe_model_create(b, NULL, &m, &err);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    double k = m && m->contact && m->contact->nseg > 0 ? m->contact->seg_k[0] : NAN;
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+    fe_kw_deck_destroy(&d);
+    free(t);
+    return k;
+}
+
+/* the _MPP option in both orders (its cards read over, the '&' second card too) and
+ * *CONTROL_CONTACT: SLSFAC scales every contact's penalty (LS-DYNA: k = SLSFAC x SFS x ...), so
+ * 0.05 halves the default 0.1's stiffness; RWPNAL > 0 with a rigid wall refused */
+static void test_mpp_control_contact(void)
+{
+    static const char mpp[] = "*CONTACT_AUTOMATIC_SINGLE_SURFACE_MPP_ID\n"
+                              "         7single\n"
+                              "         1       200         0         3         2    1.0005\n"
+                              "&                  0       1.0\n"
+                              "         0         0         5\n"
+                              "       0.2\n"
+                              "*CONTACT_SURFACE_TO_SURFACE_ID_MPP\n"
+                              "         8\n"
+                              "         0\n"
+                              "         2         1         3         3\n";
+    char *t = plates(mpp);
+    fe_kw_deck *d = NULL;
+    mcs_error err = {0};
+    mcs_status st = read_text(t, "mm-s-t", &d, &err);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    CHECK(st == MCS_OK && d && d->ncontact == 2);
+    if (d && d->ncontact == 2) {
+        CHECK(d->contact[0].id == 7 && strcmp(d->contact[0].title, "single") == 0);
+        CHECK(d->contact[0].type == FE_KW_CT_SINGLE && d->contact[0].sstyp == 5);
+        CHECK(d->contact[0].fs == 0.2 && d->contact[0].loc.line == 29);
+        CHECK(d->contact[1].id == 8 && d->contact[1].type == FE_KW_CT_S2S &&
+              !d->contact[1].automatic && d->contact[1].ssid == 2 && d->contact[1].msid == 1);
+    }
+    fe_kw_deck_destroy(&d);
+    free(t);
+    const char *c1 =
+        "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n         2         1         3         3\n";
+    char tail[512];
+    snprintf(tail, sizeof tail, "*CONTROL_CONTACT\n      0.05       0.0         0         1\n%s",
+             c1);
+    double k1 = seg_k0(c1), k2 = seg_k0(tail);
+    CHECK(isfinite(k1) && isfinite(k2));
+    CHECK_NEAR(k2 / k1, 0.5, 1e-12);
+    expect_fail("*CONTROL_CONTACT\n       0.1       1.0\n*RIGIDWALL_PLANAR\n\n"
+                "       0.0       0.0      -1.0       0.0       0.0       0.0\n",
+                1, "deck.k:26: error: *CONTROL_CONTACT: RWPNAL 1 asks penalty rigid walls", NULL);
+}
+
 /* the writer: contacts, segment sets, node velocities, motions, loads and the end time read
  * back as written (fe_kw_write, the corpus decks, in each format) */
 static void round_trip(const char *file)
@@ -364,7 +428,7 @@ static void round_trip(const char *file)
         if (!b) continue;
         CHECK(b->ncontact == a->ncontact && b->nsegset == a->nsegset && b->nload == a->nload);
         CHECK(b->nnodevel == a->nnodevel && b->npmotion == a->npmotion);
-        CHECK(b->end_time == a->end_time);
+        CHECK(b->end_time == a->end_time && b->slsfac == a->slsfac && b->shlthk == a->shlthk);
         for (int i = 0; i < a->ncontact && b->ncontact == a->ncontact; i++) {
             const fe_kw_contact *x = &a->contact[i], *y = &b->contact[i];
             CHECK(x->type == y->type && x->automatic == y->automatic && x->id == y->id);
@@ -393,6 +457,7 @@ static void test_write_round_trip(void)
 {
     round_trip(KD "corpus/contact_plates.k");
     round_trip(KD "corpus/contact_segment_set.k");
+    round_trip(KD "corpus/contact_mpp.k");
 }
 
 /* the whole deck through `mcrash run`: two equal steel bars (L 10 mm, 2 x 2 mm, E 210 GPa,
@@ -439,6 +504,45 @@ static void test_whole_deck_run(void)
     CHECK(fabs(drift) < 0.5);
     /* the end time of the deck: 30 us (the run ends on the step that reaches it, dt 0.35 us) */
     CHECK(tend >= 30e-6 && tend < 30.4e-6);
+    mcs_results_close(&h);
+}
+
+/* a rigid plate (*MAT_RIGID) driven by *BOUNDARY_PRESCRIBED_MOTION_RIGID (VAD 0, a constant
+ * 5000 mm/s curve) against a steel bar (L 20 mm, 2 x 2 mm, E 210 GPa, nu 0, rho 7850) fixed at
+ * its far end, through *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, for 7 us (< 2L/c = 7.7 us: the
+ * wave has not come back). The plate moves as prescribed: x(t) = x0 + v t. 1-D wave theory
+ * (Graff 1975, sec. 2.1.3): a rigid face driven at v into an elastic bar pushes with
+ * rho c A v = 812 N until the reflection returns; the penalty spring in series only delays
+ * the rise, so the force stays between 0 and that. */
+static void test_rigid_push_run(void)
+{
+    char out[128], args[512];
+    snprintf(out, sizeof out, "%s/rp.h5", tmpdir);
+    snprintf(args, sizeof args, "run " KD "rigid_push.yaml -o %s --quiet", out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    if (r->status) fprintf(stderr, "%s\n", r->err);
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h) return;
+    mcs_array x = {0}, t = {0}, f = {0};
+    CHECK(rd(h, "/stage3/bodies/plate/position", &x) && rd(h, "/stage3/time", &t));
+    CHECK(rd(h, "/stage3/contact/plate on bar/force", &f));
+    const double v = 5, x0 = -0.501e-3, Fmax = 7850 * sqrt(210e9 / 7850) * 4e-6 * v;
+    size_t n = t.n;
+    CHECK(n > 10 && x.n == 3 * n && f.n == 3 * n);
+    double dx = 0, fpeak = 0, flow = 0;
+    for (size_t i = 0; i < n && x.n == 3 * n && f.n == 3 * n; i++) {
+        dx = fmax(dx, fabs(x.v[3 * i] - (x0 + v * t.v[i])));
+        fpeak = fmax(fpeak, -f.v[3 * i]); /* on the slave side (the plate): along -x */
+        flow = fmin(flow, -f.v[3 * i]);
+    }
+    CHECK(dx < 1e-12); /* [m], of 35 um travelled */
+    CHECK(fpeak > 0.3 * Fmax && fpeak <= 1.02 * Fmax && flow >= 0);
+    printf("rigid push: plate off x0 + v t by %.2g m, peak force %.0f N of rho c A v %.0f N\n", dx,
+           fpeak, Fmax);
+    mcs_array_free(&x), mcs_array_free(&t), mcs_array_free(&f);
     mcs_results_close(&h);
 }
 
@@ -490,8 +594,10 @@ int main(void)
     RUN(test_sets);
     RUN(test_set_sides);
     RUN(test_write_round_trip);
+    RUN(test_mpp_control_contact);
     RUN(test_motion_loads);
     RUN(test_whole_deck_run);
+    RUN(test_rigid_push_run);
     RUN(test_whole_deck_rules);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

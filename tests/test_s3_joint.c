@@ -67,6 +67,7 @@ static void test_pendulum_from_scenario(void)
     CHECK(rd(h, "/stage3/bodies/rod/velocity", &v) && rd(h, "/stage3/bodies/rod/orientation", &q));
     CHECK(rd(h, "/stage3/joints/pivot/force", &f) && rd(h, "/stage3/bodies/rod/position", &x));
     CHECK(mcs_results_exists(h, "/stage3/bodies/rod/acceleration"));
+    CHECK(mcs_results_exists(h, "/stage3/joints/pivot/time"));
     CHECK(!mcs_results_exists(h, "/stage3/joints/pivot/displacement"));
     CHECK(ang.n == t.n && v.n == 3 * t.n && q.n == 4 * t.n && f.n == 3 * t.n);
     double tb = NAN, vmax = 0, qerr = 1, fz = 0;

@@ -378,6 +378,27 @@ mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force
     return push_load(b, node, &d, err);
 }
 
+mcs_status fe_builder_add_pressure(fe_builder *b, const int nodes[4], double p, int ncurve,
+                                   const double (*curve)[2], mcs_error *err)
+{
+    for (int i = 0; i < 4; i++)
+        if (nodes[i] < 0 || nodes[i] >= b->nnode)
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure on node %d: no such node",
+                           nodes[i]);
+    if (nodes[0] == nodes[1] || nodes[1] == nodes[2] || nodes[0] == nodes[2])
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure segment: nodes 1, 2, 3 must differ");
+    if (ncurve < 0 || ncurve > FE_CURVE_MAX)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure: curve needs 0..%d points", FE_CURVE_MAX);
+    fe_load_desc d;
+    memset(&d, 0, sizeof d);
+    d.force[0] = p;
+    d.ncurve = ncurve;
+    if (ncurve) memcpy(d.curve, curve, (size_t)ncurve * sizeof d.curve[0]);
+    mcs_status st = push_load(b, -2, &d, err);
+    if (!st) memcpy(b->load[b->nload - 1].seg, nodes, sizeof b->load[0].seg);
+    return st;
+}
+
 mcs_status fe_builder_add_wall(fe_builder *b, const fe_wall_desc *d, mcs_error *err)
 {
     if (b->nwall >= FE_WALL_MAX)

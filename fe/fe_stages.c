@@ -159,22 +159,42 @@ void fe_contact_forces(const fe_model *m, fe_state *s)
     if (m->nwall_slave) fe_wall_penalty_friction(m, s); /* after the normal forces */
 }
 
-/* reads time, the load curves; adds nodal loads to node_fext */
+/* a load curve's scale at t (constant beyond its ends; no points: 1) */
+static double load_scale(const fe_load_curve *c, double t)
+{
+    double sc = 1;
+    if (c->ncurve == 1 || (c->ncurve > 1 && t <= c->curve[0][0])) sc = c->curve[0][1];
+    else if (c->ncurve > 1 && t >= c->curve[c->ncurve - 1][0]) sc = c->curve[c->ncurve - 1][1];
+    else if (c->ncurve > 1) {
+        int k = 0;
+        while (t > c->curve[k + 1][0]) k++;
+        double u = (t - c->curve[k][0]) / (c->curve[k + 1][0] - c->curve[k][0]);
+        sc = c->curve[k][1] + u * (c->curve[k + 1][1] - c->curve[k][1]);
+    }
+    return sc;
+}
+
+/* reads time, the load curves, x (pressures); adds nodal loads and pressures to node_fext */
 void fe_external_forces(const fe_model *m, fe_state *s)
 {
     for (int i = 0; i < m->nnodal_load; i++) {
         const fe_nodal_load *l = &m->nodal_load[i];
-        const fe_load_curve *c = &m->load_curve[l->load];
-        double sc = 1, t = s->time;
-        if (c->ncurve == 1 || (c->ncurve > 1 && t <= c->curve[0][0])) sc = c->curve[0][1];
-        else if (c->ncurve > 1 && t >= c->curve[c->ncurve - 1][0]) sc = c->curve[c->ncurve - 1][1];
-        else if (c->ncurve > 1) {
-            int k = 0;
-            while (t > c->curve[k + 1][0]) k++;
-            double u = (t - c->curve[k][0]) / (c->curve[k + 1][0] - c->curve[k][0]);
-            sc = c->curve[k][1] + u * (c->curve[k + 1][1] - c->curve[k][1]);
-        }
+        const double sc = load_scale(&m->load_curve[l->load], s->time);
         for (int j = 0; j < 3; j++) s->node_fext[3 * l->node + j] += sc * l->force[j];
+    }
+    /* pressures: -p A n over the current segment, A n = (x3 - x1) x (x4 - x2) / 2 (a
+     * triangle's too, x4 = x3), shared by its 4 (3) nodes */
+    for (int i = 0; i < m->npressure; i++) {
+        const fe_pressure *pr = &m->pressure[i];
+        const double p = pr->p * load_scale(&m->load_curve[pr->load], s->time);
+        const double *x1 = s->node_x + 3 * pr->node[0], *x2 = s->node_x + 3 * pr->node[1];
+        const double *x3 = s->node_x + 3 * pr->node[2], *x4 = s->node_x + 3 * pr->node[3];
+        double d1[3], d2[3], an[3];
+        for (int j = 0; j < 3; j++) d1[j] = x3[j] - x1[j], d2[j] = x4[j] - x2[j];
+        fe_cross(d1, d2, an);
+        const int tri = pr->node[3] == pr->node[2], nn = tri ? 3 : 4;
+        for (int k = 0; k < nn; k++)
+            for (int j = 0; j < 3; j++) s->node_fext[3 * pr->node[k] + j] -= 0.5 * p * an[j] / nn;
     }
     /* gas bag pressures and retractor pulls (fe_restraint_step.c); errors go to s->err */
     if (m->restraints) fe_restraint_forces(m, s);

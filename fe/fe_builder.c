@@ -175,6 +175,11 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
         m->model != FE_MAT_FABRIC && m->model != FE_MAT_FOAM && m->model != FE_MAT_RIGID &&
         m->model != FE_MAT_NULL)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED, "fe: part '%s': material.model not built yet", n);
+    if (m->failure_strain != 0 && m->model != FE_MAT_ELASTIC_PLASTIC)
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "fe: part '%s': material.failure_strain (element erosion) needs material "
+                       "model elastic_plastic",
+                       n);
     if ((m->model == FE_MAT_FABRIC) != (d->section.type == FE_SECTION_MEMBRANE))
         return MCS_ERR(err, MCS_ERR_TYPE,
                        "fe: part '%s': a membrane section takes material.model fabric, and "
@@ -217,6 +222,17 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
     if (m->cowper_symonds_c < 0 || (m->cowper_symonds_c > 0 && !(m->cowper_symonds_p > 0)))
         return MCS_ERR(err, MCS_ERR_RANGE,
                        "fe: part '%s': material.cowper_symonds: need c >= 0 and p > 0", n);
+    if (!(m->failure_strain >= 0) || !isfinite(m->failure_strain))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.failure_strain must be >= 0",
+                       n);
+    const fe_section_desc *sc = &d->section;
+    if (m->failure_strain > 0 &&
+        !(sc->type == FE_SECTION_SHELL ||
+          (sc->type == FE_SECTION_SOLID && sc->formulation == FE_HEX_ONE_POINT)))
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "fe: part '%s': element erosion (material.failure_strain) is built for "
+                       "one-point hexahedra and shells only",
+                       n);
     return MCS_OK;
 }
 

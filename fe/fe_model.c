@@ -431,6 +431,8 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
             m->nshell_rate = m->nshell_ip;
     for (int ip = 0; ip < m->npart; ip++)
         if (m->part[ip].section.type == FE_SECTION_MEMBRANE) m->nshell_mref = m->nshell;
+    for (int ip = 0; ip < m->npart; ip++) /* element erosion: flags of every hex and shell */
+        if (m->part[ip].material.failure_strain > 0) m->nerode = m->nhex + m->nshell;
     if (st == MCS_OK) st = alloc_arrays(m, err);
     if (st == MCS_OK) {
         /* masses and the membranes' reference metric from the reference positions; the nodes

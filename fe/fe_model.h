@@ -118,6 +118,10 @@ typedef struct {
     double foam_tension_cutoff;        /* largest tensile stress (0: no cutoff) [Pa]           */
     unsigned rigid_fix;                /* rigid: FE_DOF_* held on the body, global axes (LS-DYNA
                                           *MAT_RIGID CMO 1 CON1/CON2); rotations all or none */
+    double failure_strain;             /* elastic_plastic, one-point hex and shell parts: an
+                                          element whose plastic strain reaches this (a shell: at
+                                          any point through the thickness) is deleted, element
+                                          erosion (fe_stages.c); 0: never [-]                 */
 } fe_material_desc;
 
 /* a rigid part's given mass properties (LS-DYNA *PART_INERTIA), used instead of the sums
@@ -376,6 +380,8 @@ typedef struct fe_model {
     int nfoam_ip;          /* integration points of foam hexes (1 or 8 per element) [-]    */
     struct fe_sliprings *sliprings; /* belt slip rings (fe_slipring.h), NULL if none      */
     /* kinematic walls with mass (fe_wall_kin.c): their slave nodes, wall by wall */
+    int nerode;            /* element erosion: nhex + nshell when a part has a failure
+                              strain (element e of kind k at e, nhex + e for shells), else 0 */
     int nwall_slave;       /* slave nodes of kinematic walls with mass, all walls [-]      */
     int *wall_slave;       /* (nwall_slave) node indices                                   */
     int wall_slave_off[FE_WALL_MAX + 1]; /* wall w's slaves: wall_slave_off[w] ..[w+1] [-]  */

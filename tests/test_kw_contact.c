@@ -234,6 +234,12 @@ static void test_contact_refusals(void)
                 0, "field SFS/SFM", NULL);
     expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         1         3\n", 0,
                 "field SSTYP/MSTYP: shell element sets", NULL);
+    /* at build: a set that a skipped keyword would have defined is named with it */
+    expect_fail("*SET_PART_ADD\n         9\n         1\n"
+                "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n         2         9         3         2\n",
+                1, "master side: part set 9 is not defined (skipped as not supported: "
+                   "*SET_PART_ADD at deck.k:25",
+                NULL);
     /* at build: a missing part, friction growing with speed */
     expect_fail("*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n         2         9         3         3\n",
                 1,

@@ -146,6 +146,7 @@ static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_ma
     m->yield_stress = k->sigy;
     m->cowper_symonds_c = k->c;
     m->cowper_symonds_p = k->c > 0 ? k->p : 0;
+    m->failure_strain = k->fail; /* FAIL: element erosion */
     return hardening(dk, k, m, err);
 }
 

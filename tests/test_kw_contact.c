@@ -219,14 +219,21 @@ static void test_contact_refusals(void)
 {
     /* the plates' head has 24 lines: the tail starts at line 25 */
     expect_fail("*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         0         0         5\n"
-                "       0.1       0.1       0.0       0.0      20.0\n",
+                "       0.1       0.1       0.0      20.0\n",
+                0, "deck.k:27:31: error: *CONTACT_AUTOMATIC_SINGLE_SURFACE: field VC", NULL);
+    expect_fail("*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         0         0         5\n"
+                "       0.1       0.1       0.0       0.0     120.0\n",
                 0, "deck.k:27:41: error: *CONTACT_AUTOMATIC_SINGLE_SURFACE: field VDC", NULL);
     expect_fail("*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         0         0         5\n\n\n"
                 "         1\n",
                 0, "deck.k:29:1: error: *CONTACT_AUTOMATIC_SINGLE_SURFACE: field SOFT", NULL);
     expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         3         3\n"
-                "                                                           0.001\n",
+                "                                                                -0.001\n",
                 0, "deck.k:27:61: error: *CONTACT_SURFACE_TO_SURFACE: field BT", NULL);
+    expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         3         3\n"
+                "                                                  "
+                "               0.002     0.001\n",
+                0, "deck.k:27:71: error: *CONTACT_SURFACE_TO_SURFACE: field DT", NULL);
     expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         3         3         7\n",
                 0, "field SBOXID", NULL);
     expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         3         3\n\n"

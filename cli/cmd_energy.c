@@ -13,8 +13,8 @@
 #include <string.h>
 
 #define EN_NSERIES 5
-static const char *const series[EN_NSERIES] = {"kinetic", "potential", "internal",
-                                               "contact_total", "total"};
+static const char *const series[EN_NSERIES] = {"kinetic", "potential", "internal", "contact_total",
+                                               "total"};
 
 typedef struct {
     char name[128];
@@ -23,11 +23,11 @@ typedef struct {
 } en_item;
 
 typedef struct {
-    char kind[16];  /* part | retractor | slipring | airbag */
+    char kind[16]; /* part | retractor | slipring | airbag */
     char name[128];
-    double v[5];    /* part: kinetic, internal (+ hourglass), contact, dissipated, -;
-                       retractor: limiter, pretensioner; slipring: friction; airbag: gas work
-                       on the fabric, int (p - p0) dV [J]                                     */
+    double v[5]; /* part: kinetic, internal (+ hourglass), contact, dissipated, -;
+                    retractor: limiter, pretensioner; slipring: friction; airbag: gas work
+                    on the fabric, int (p - p0) dV [J]                                     */
 } en_restraint;
 
 typedef struct {
@@ -80,7 +80,8 @@ static int read_balance(mcs_results *r, en_report *o)
     mcs_error e = {0};
     if (mcs_results_read(r, p, &a, &e)) return -1;
     o->worst = 0;
-    for (size_t i = 0; i < a.n; i++) o->worst = fmax(o->worst, fabs(a.v[i] - a.v[0]));
+    for (size_t i = 0; i < a.n; i++)
+        o->worst = fmax(o->worst, fabs(a.v[i] - a.v[0]));
     mcs_array_free(&a);
     snprintf(p, sizeof p, "/stage%d/time", o->stage);
     double t0;
@@ -182,7 +183,8 @@ static void read_device(mcs_results *r, en_report *o, const char *kind, const ch
         snprintf(q, sizeof q, "/stage%d/airbag/%s/volume", o->stage, name);
         if (!mcs_results_read(r, p, &a, &e) && !mcs_results_read(r, q, &b, &e) && a.n) {
             const double p0 = a.v[0];
-            for (size_t i = 0; i < a.n; i++) a.v[i] -= p0;
+            for (size_t i = 0; i < a.n; i++)
+                a.v[i] -= p0;
             x->v[0] = trapz_work(&a, &b, -1);
         }
         static const char *const ch[3] = {"energy_in", "energy_vent", "energy_leak"};
@@ -244,8 +246,7 @@ static void print_table(const en_report *o)
     printf("\npartners (non-zero)\n%-40s %-12s %12s\n", "partner", "category", "energy [J]");
     for (int i = 0; i < o->npartner; i++)
         if (o->partner[i].e != 0)
-            printf("%-40s %-12s %12.3f\n", o->partner[i].name, o->partner[i].cat,
-                   o->partner[i].e);
+            printf("%-40s %-12s %12.3f\n", o->partner[i].name, o->partner[i].cat, o->partner[i].e);
     if (o->nrx == 0) return;
     printf("\nrestraints [J]\n  part: kinetic, internal + hourglass, contact, dissipated\n"
            "  retractor: limiter, pretensioner work\n  slipring: friction\n"
@@ -255,7 +256,8 @@ static void print_table(const en_report *o)
         const en_restraint *x = &o->rx[i];
         printf("%-10s %-24s", x->kind, x->name);
         int nv = strcmp(x->kind, "retractor") == 0 ? 2 : strcmp(x->kind, "slipring") == 0 ? 1 : 4;
-        for (int j = 0; j < nv; j++) printf(" %12.3f", x->v[j]);
+        for (int j = 0; j < nv; j++)
+            printf(" %12.3f", x->v[j]);
         printf("\n");
     }
 }
@@ -366,8 +368,10 @@ int cli_energy(int argc, char **argv)
     en_report o;
     memset(&o, 0, sizeof o);
     int rc = report(file, stage, group, &o);
-    if (!rc && json) print_json(&o);
-    else if (!rc) print_table(&o);
+    if (!rc && json)
+        print_json(&o);
+    else if (!rc)
+        print_table(&o);
     free(o.partner), free(o.rx);
     return rc;
 }

@@ -458,20 +458,26 @@ static const mcs_skey line_keys[] = {
     I("divisions", REQ | GE, 1, 0, "truss elements along the line"),
     END,
 };
-/* a hex foam layer over a patch of a body's ellipsoid surface (fe/fe_scn_pad.c): the inner
- * face on the surface, the outer one `thickness` out along its normal, at the body's pose at
- * t = 0; the patch in the ellipsoid's frame, p = (a cos lat cos lon, b cos lat sin lon,
- * c sin lat) */
+/* FE parts on a body's surface at its pose of t = 0 (fe/fe_scn_pad.h): foam_pad, a layer of
+ * solids (hexahedra over a patch of an ellipsoid, its inner face on the surface, the outer one
+ * `thickness` out along the normal; prisms over a whole facet surface, along the vertex
+ * normals); surface_shell, shells on the same patch or facets. The ellipsoid patch in its
+ * frame: p = (a cos lat cos lon, b cos lat sin lon, c sin lat) */
+#define SURFACE_MESH_KEYS                                                                          \
+    R("body", BODY, REQ, "body whose surface the part covers"),                                    \
+        S("surface", REQ | NE, "name of the body's ellipsoid or facet surface"),                   \
+        Q("element_size", LEN, GT, 0, 0, "ellipsoid: element edge length on the surface [m]"),     \
+        V("longitude", ANG, 2, 2, 0, 0,                                                            \
+          "ellipsoid: patch azimuth range about its z axis [rad]"),                                \
+        V("latitude", ANG, 2, 2, 0, 0,                                                             \
+          "ellipsoid: patch elevation range from its x-y plane, poles out [rad]")
 static const mcs_skey foam_pad_keys[] = {
-    R("body", BODY, REQ, "body whose surface the pad covers"),
-    S("surface", REQ | NE, "name of the body's ellipsoid surface (bodies[].surfaces[].name)"),
+    SURFACE_MESH_KEYS,
     Q("thickness", LEN, REQ | GT, 0, 0, "pad thickness, along the surface normal [m]"),
-    Q("element_size", LEN, REQ | GT, 0, 0, "element edge length on the surface [m]"),
-    V("longitude", ANG, 2, 2, REQ, 0, "patch: azimuth range about the ellipsoid's z axis [rad]"),
-    V("latitude", ANG, 2, 2, REQ, 0, "patch: elevation range from its x-y plane, poles out [rad]"),
     I("layers", GE | LE, 1, 16, "elements through the thickness (default 1)"),
     END,
 };
+static const mcs_skey surface_shell_keys[] = {SURFACE_MESH_KEYS, END};
 static const mcs_skey keyword_keys[] = {
     /* an LS-DYNA keyword file, relative to the YAML file that names it */
     S("keyword", REQ | NE, "LS-DYNA keyword file (or give generate:)"),
@@ -503,7 +509,9 @@ static const mcs_smap line_map = {.what = "line mesh", .keys = line_keys};
 static const mcs_smap flat_bag_map = {.what = "flat_bag mesh", .keys = flat_bag_keys};
 static const mcs_smap keyword_map = {.what = "keyword mesh", .keys = keyword_keys};
 static const mcs_smap foam_pad_map = {
-    .what = "foam_pad mesh", .keys = foam_pad_keys, .check = mcs_rule_foam_pad};
+    .what = "foam_pad mesh", .keys = foam_pad_keys, .check = mcs_rule_surface_mesh};
+static const mcs_smap surface_shell_map = {
+    .what = "surface_shell mesh", .keys = surface_shell_keys, .check = mcs_rule_surface_mesh};
 /* "(keyword)": chosen when generate: is absent, never by name */
 static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"circular_tube", &circular_tube_map},
@@ -514,6 +522,7 @@ static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"flat_bag", &flat_bag_map},
                                              {"line", &line_map},
                                              {"foam_pad", &foam_pad_map},
+                                             {"surface_shell", &surface_shell_map},
                                              {"(keyword)", &keyword_map},
                                              {0}};
 static const mcs_skey mesh_keys[] = {D("generate", "mesh generator"), END};
@@ -636,8 +645,9 @@ static const mcs_smap material_map = {
 
 static const mcs_skey attach_keys[] = {
     R("body", BODY, REQ, "stage-1 body carrying the nodes"),
-    /* surface: the nodes on one of the body's ellipsoid surfaces (within 0.1 mm; a foam_pad's
-     * inner face, or a keyword mesh modelled on the body), fe/fe_scn_pad.c */
+    /* surface: the nodes on one of the body's ellipsoid or facet surfaces (within 0.1 mm; a
+     * foam_pad's inner face, a surface_shell, a keyword mesh modelled on the body),
+     * fe/fe_scn_pad.c */
     E("where", "x_min|x_max|y_min|y_max|z_min|z_max|all|surface", REQ,
       "which nodes of the part (as boundary, or those on the body's surfaces): they move "
       "rigidly with the body"),

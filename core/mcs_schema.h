@@ -95,7 +95,7 @@ mcs_status mcs_rule_plastic(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_impact(scn_walk *w, mcs_node *map); /* core/mcs_scn_rule_impact.c */
 mcs_status mcs_rule_facet(scn_walk *w, mcs_node *map);  /* core/mcs_scn_rule_facet.c */
 mcs_status mcs_rule_fe_part(scn_walk *w, mcs_node *map);
-mcs_status mcs_rule_foam_pad(scn_walk *w, mcs_node *map); /* core/mcs_scn_rule_pad.c */
+mcs_status mcs_rule_surface_mesh(scn_walk *w, mcs_node *map); /* core/mcs_scn_rule_pad.c */
 
 /* the whole scenario */
 extern const mcs_smap mcs_schema_root;

@@ -10,7 +10,7 @@
 #   docs/img/restraints_energy.png        energy balance of each run
 # and the ISO 13232 413-0/13.4 pair, conventional and concept (300 ms each; a few minutes),
 # through scripts/validation_concept.py:
-#   docs/img/concept_{belts,airbag,trajectory,velocity,criteria}.png
+#   docs/img/concept_{belts,airbag,trajectory,velocity,criteria,energy}.png
 # The figures the doc states come from tests/test_validation_restraints.c (`make figures`).
 # Usage: scripts/plot_restraints.sh [bin/mcrash] [output directory for the PNGs]
 set -eu
@@ -29,4 +29,4 @@ echo "plot_restraints: $IMG/restraints_{bag,limiter,pretensioner,foam,energy}.pn
 "$MCRASH" run scenarios/iso13232_413-0_13.4_sedan_rider.yaml --stage 1 --quiet -o "$WORK/conv.h5" >/dev/null
 "$MCRASH" run scenarios/iso13232_413-0_13.4_sedan_rider_concept.yaml --stage 1 --quiet -o "$WORK/conc.h5" >/dev/null
 python3 scripts/validation_concept.py "$WORK/conv.h5" "$WORK/conc.h5" "$WORK" "$IMG"
-echo "plot_restraints: $IMG/concept_{belts,airbag,trajectory,velocity,criteria}.png"
+echo "plot_restraints: $IMG/concept_{belts,airbag,trajectory,velocity,criteria,energy}.png"

@@ -11,6 +11,8 @@ Draws (gnuplot, data and script in WORK_DIR):
   IMG_DIR/concept_velocity.png    frame, sedan, pelvis, upper torso, head velocity along the
                                   heading, both - Fig. 21
   IMG_DIR/concept_criteria.png    injury criteria / their limits, both - Fig. 22
+  IMG_DIR/concept_energy.png      the rider's energy balance (concept) and its cumulative contact
+                                  energy by partner category, both - Fig. 24
 The figures the doc states come from tests/test_validation_restraints.c (make verify). Reads the
 HDF5 files with h5dump (hdf5-tools); no numpy."""
 import os
@@ -107,6 +109,40 @@ def criteria(conv, conc, out):
         f.write("\n".join(rows) + "\n")
 
 
+CATEGORIES = ("belts", "airbags", "foam", "motorcycle", "opponent", "ground")
+
+
+def h5_attr(path, obj, name):
+    out = subprocess.run(["h5dump", "-a", obj + "/" + name, path], capture_output=True,
+                         text=True).stdout
+    m = re.search(r'\(0\): "([^"]*)"', out)
+    return m.group(1) if m else ""
+
+
+def h5_members(path, group):
+    out = subprocess.run(["h5ls", path + "/" + group], capture_output=True, text=True).stdout
+    return [line.split()[0] for line in out.splitlines() if line.strip()]
+
+
+def energy(h, tag, out):
+    """the rider's balance and its contact energy summed by partner category (mb_egroup.c)"""
+    g = "/stage1/energy_groups/rider/"
+    t = h5(h, "/stage1/time")
+    cols = [[1e3 * x for x in t]]
+    for k in ("kinetic", "potential", "internal", "contact_total", "total"):
+        cols.append(h5(h, g + k))
+    cat = {c: [0.0] * len(t) for c in CATEGORIES}
+    for p in h5_members(h, g + "contact"):
+        c = h5_attr(h, g + "contact/" + p, "category")
+        v = h5(h, g + "contact/" + p)
+        if c in cat:
+            cat[c] = [a + b for a, b in zip(cat[c], v)]
+    cols += [cat[c] for c in CATEGORIES]
+    n = min(len(c) for c in cols)
+    write(os.path.join(out, "energy_%s.dat" % tag),
+          [[c[i] / (1 if j == 0 else 1e3) for j, c in enumerate(cols)] for i in range(n)])
+
+
 GP = """set terminal pngcairo size 700,480 font "sans,10" noenhanced
 set grid
 set key outside below
@@ -153,6 +189,20 @@ set style data histograms; set style histogram clustered gap 1; set style fill s
 set xtics rotate by -40; set xlabel ""; set ylabel "value / limit"; set autoscale x; set yrange [0:*]
 plot "{d}/criteria.dat" using 3:xtic(2) title "conventional", "" using 4 title "concept", \\
      1 with lines dt 2 lc rgb "black" title "limit"
+set style data lines; set style fill empty; set xtics norotate; set autoscale
+set terminal pngcairo size 1000,480 font "sans,10" noenhanced
+set output "{img}/concept_energy.png"
+set multiplot layout 1,2
+set title "(a) the concept rider's energy (paper Eq. 9, Fig. 24a)"
+set xlabel "time [ms]"; set ylabel "energy [kJ]"; set xrange [0:300]; set yrange [0:*]
+plot for [c=2:6] "{d}/energy_conc.dat" using 1:c lw 2 \\
+         title word("kinetic potential internal contact total", c-1)
+set title "(b) contact energy by partner category (Fig. 24b); dashed: conventional"
+set yrange [*:*]
+plot for [c=7:12] "{d}/energy_conc.dat" using 1:c lw 2 lc c-6 \\
+         title word("belts airbags foam motorcycle opponent ground", c-6), \\
+     for [c=10:12] "{d}/energy_conv.dat" using 1:c dt 2 lc c-6 notitle
+unset multiplot
 """
 
 
@@ -167,6 +217,8 @@ def main():
     velocity(conv, "conv", work)
     velocity(conc, "conc", work)
     criteria(conv, conc, work)
+    energy(conv, "conv", work)
+    energy(conc, "conc", work)
     gp = os.path.join(work, "concept.gp")
     with open(gp, "w") as f:
         f.write(GP.format(d=work, img=img))

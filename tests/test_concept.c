@@ -6,6 +6,9 @@
  * Soundness against references that are not the code under test:
  * - one energy balance of bodies and FE parts: drift below 1e-3 (the engine's own accounting;
  *   test_mb_couple*.c check it against closed forms);
+ * - the rider's own balance (kinetic + potential + internal + contact transfer, paper Eq. 9)
+ *   constant within 1e-4 of its initial energy (test_mb_egroup.c checks the transfer against
+ *   closed forms);
  * - firing 12 ms after the first contact (paper Sec. 2.3.1, t_fire = 12 ms): the first sample
  *   at which the contact front_tyre_car carries a force, plus 12 ms;
  * - the pretensioner's pay-in is the paper's Eq. 3: nothing before t_fire, 100/15 mm/ms for
@@ -172,6 +175,16 @@ static void test_413_pair(void)
     mcs_results_attr_double(hc, "/stage1", "energy_drift", &drift_conv, &err);
     printf("  energy drift: concept %.2e, conventional %.2e\n", drift, drift_conv);
     CHECK(drift < 1e-3);
+    /* the rider's own balance (stage1_mb/mb_egroup.c, paper Eq. 9): kinetic + potential +
+     * internal + contact transfer at its t = 0 value (its rows written to the file) */
+    mcs_array et = {0};
+    CHECK(rd(h, "/stage1/energy_groups/rider/total", &et));
+    double egw = 0;
+    for (size_t i = 0; i < et.n; i++) egw = fmax(egw, fabs(et.v[i] - et.v[0]));
+    printf("  rider balance: |total - total(0)| <= %.3g J of %.1f J\n", egw,
+           et.n ? et.v[0] : 0.0);
+    CHECK(et.n > 0 && egw < 1e-4 * et.v[0]);
+    mcs_array_free(&et);
     /* firing: the first sample with a contact force, plus 12 ms */
     mcs_array t = {0}, fc = {0}, p = {0}, m = {0};
     CHECK(rd(h, "/stage1/time", &t) && rd(h, "/stage1/channels/front_tyre_car_fn", &fc));

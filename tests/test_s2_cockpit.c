@@ -173,7 +173,9 @@ static const char *pad_yaml =
     "0.1]},\n"
     "                {name: egg, type: ellipsoid, center: [-0.3, 0, 0], semi_axes: [0.2, 0.12, "
     "0.08],\n"
-    "                 orientation: [0, 0, 30 deg]}]}\n"
+    "                 orientation: [0, 0, 30 deg]},\n"
+    "                {name: lid, type: facet, vertices: [[0.2, -0.05, 0], [0.3, -0.05, 0],\n"
+    "                 [0.3, 0.05, 0], [0.2, 0.05, 0]], triangles: [[0, 1, 2], [0, 2, 3]]}]}\n"
     "fe:\n"
     "  parts:\n"
     "    - name: src\n"
@@ -191,13 +193,44 @@ static const char *pad_yaml =
     "             element_size: 25 mm, longitude: [-60 deg, 60 deg], latitude: [-30 deg, 30 deg]}\n"
     "      section: {type: solid}\n"
     "      material_from: src\n"
-    "      attach: {body: frame, where: surface}\n";
+    "      attach: {body: frame, where: surface}\n"
+    "    - name: lid_pad\n"
+    "      mesh: {generate: foam_pad, body: frame, surface: lid, thickness: 15 mm}\n"
+    "      section: {type: solid}\n"
+    "      material_from: src\n"
+    "      attach: {body: frame, where: surface}\n"
+    "    - name: lid_shell\n"
+    "      mesh: {generate: surface_shell, body: frame, surface: lid}\n"
+    "      section: {type: shell, thickness: 2 mm}\n"
+    "      material: {model: elastic, density: 1000, youngs_modulus: 1 GPa, poisson: 0.3}\n"
+    "    - name: ball_shell\n"
+    "      mesh: {generate: surface_shell, body: frame, surface: ball, element_size: 10 mm,\n"
+    "             longitude: [30 deg, 120 deg], latitude: [-20 deg, 40 deg]}\n"
+    "      section: {type: shell, thickness: 2 mm}\n"
+    "      material: {model: elastic, density: 1000, youngs_modulus: 1 GPa, poisson: 0.3}\n";
 
 static int part_index(const fe_model *m, const char *name)
 {
     for (int i = 0; i < m->npart; i++)
         if (strcmp(m->part[i].name, name) == 0) return i;
     return -1;
+}
+
+/* the lumped mass of a part's nodes (parts here share none) [kg] */
+static double part_mass(const fe_model *m, int ip)
+{
+    const fe_part *p = &m->part[ip];
+    int kind = p->elem_kind, nn = kind == FE_KIND_HEX ? 8 : 4;
+    const int *conn = kind == FE_KIND_HEX ? m->hex_node : m->shell_node;
+    unsigned char *seen = calloc((size_t)m->nnode, 1);
+    double mass = 0;
+    for (int e = p->elem_begin; seen && e < p->elem_end; e++)
+        for (int k = 0; k < nn; k++) {
+            int n = conn[nn * e + k];
+            if (!seen[n]) seen[n] = 1, mass += m->node_mass[n];
+        }
+    free(seen);
+    return mass;
 }
 
 static void sub3(const double *a, const double *b, double *r)
@@ -296,6 +329,10 @@ static void test_pad_sphere(void)
            1e3 * rho * v_ref, 1e3 * rho * v_smooth, 100 * (mass / (rho * v_smooth) - 1));
     CHECK_REL(area, a_ref, 1e-12);
     CHECK_REL(mass, rho * v_ref, 1e-12); /* the lumped masses: density x the hexes' volume */
+    /* surface_shell on the same patch: the hexes' inner faces, 2 mm at 1000 kg/m^3 */
+    int is = part_index(m, "ball_shell");
+    CHECK(is >= 0 && m->part[is].elem_end - m->part[is].elem_begin == nu * nv);
+    CHECK_REL(part_mass(m, is), 1000 * 0.002 * a_ref, 1e-12);
     FIG("s2.pad_area_facet_pct", "%.2f", 100 * (area / a_smooth - 1));
     FIG("s2.pad_mass_g", "%.1f", 1e3 * mass);
     FIG("s2.pad_mass_facet_pct", "%.2f", 100 * (mass / (rho * v_smooth) - 1));
@@ -348,6 +385,35 @@ static void test_pad_ellipsoid(void)
     fe_problem_free(&p);
 }
 
+/* On the flat facet `lid` (0.1 x 0.1 m, two triangles, outward +z): foam_pad makes two prisms
+ * (pentahedra) along the vertex normals, volume 0.1 x 0.1 x 0.015 m^3, 8 nodes, the 4 at the
+ * facet's corners on it; surface_shell two triangles of area 0.01 m^2 */
+static void test_pad_facet(void)
+{
+    mcs_error err = {0};
+    fe_problem p = build_pads(&err);
+    if (!p.model) return;
+    const fe_model *m = p.model;
+    int ip = part_index(m, "lid_pad"), is = part_index(m, "lid_shell");
+    CHECK(ip >= 0 && is >= 0);
+    if (ip < 0 || is < 0) return;
+    CHECK(m->part[ip].elem_end - m->part[ip].elem_begin == 2);
+    CHECK(m->part[is].elem_end - m->part[is].elem_begin == 2);
+    double mp = part_mass(m, ip), ms = part_mass(m, is);
+    printf("facet: pad mass %.6f g (425 x 1.5e-4 m^3 = %.6f g), shell %.6f g\n", 1e3 * mp,
+           1e3 * 425 * 1.5e-4, 1e3 * ms);
+    CHECK_REL(mp, 425 * 0.1 * 0.1 * 0.015, 1e-12);
+    CHECK_REL(ms, 1000 * 0.002 * 0.01, 1e-12);
+    /* the prisms' outer nodes 15 mm above (+z) their corners */
+    for (int e = m->part[ip].elem_begin; e < m->part[ip].elem_end; e++) {
+        const int *c = m->hex_node + 8 * e;
+        CHECK(c[4] == c[5] && c[6] == c[7]); /* pentahedra: n1 n2 n3 n4 n5 n5 n6 n6 */
+        CHECK_NEAR(m->node_x0[3 * c[2] + 2] - m->node_x0[3 * c[1] + 2], 0.015, 1e-15);
+        CHECK_NEAR(m->node_x0[3 * c[6] + 2] - m->node_x0[3 * c[4] + 2], 0.015, 1e-15);
+    }
+    fe_problem_free(&p);
+}
+
 /* attach {where: surface}: the pads' inner nodes, (16 + 1) x (11 + 1) on the sphere and the
  * egg pad's first layer; and a keyword mesh modelled on a body: the spring_mass deck's base
  * cube (mm) has its bottom corners (0..100 mm, z = 0) on a sphere of radius sqrt(1.005) m
@@ -368,9 +434,9 @@ static void test_attach_surface(void)
         }
     free(seen);
     /* half of them on the surface (each layer's inner face has the same nodes' count) */
-    printf("attach surface: %d nodes carried (sphere pad 204, egg pad %d)\n", p.natt,
+    printf("attach surface: %d nodes carried (sphere pad 204, egg pad %d, lid pad 4)\n", p.natt,
            egg_inner / 2);
-    CHECK(p.natt == 17 * 12 + egg_inner / 2);
+    CHECK(p.natt == 17 * 12 + egg_inner / 2 + 4); /* + the lid pad's 4 corners */
     fe_problem_free(&p);
     char y[2048];
     snprintf(y, sizeof y,
@@ -527,6 +593,7 @@ int main(void)
     RUN(test_merge_errors);
     RUN(test_pad_sphere);
     RUN(test_pad_ellipsoid);
+    RUN(test_pad_facet);
     RUN(test_attach_surface);
     RUN(test_press_pad);
     TEST_END();

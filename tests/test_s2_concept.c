@@ -92,9 +92,12 @@ static double surf_distance(const mb_model *m, const mb_surface *s, const double
     for (int i = 0; i < 3; i++)
         c[i] = b->pos[i] + R[3 * i] * s->center[0] + R[3 * i + 1] * s->center[1] +
                R[3 * i + 2] * s->center[2];
-    for (int i = 0; i < 3; i++) d[i] = x[i] - c[i];
-    for (int i = 0; i < 3; i++) e[i] = R[i] * d[0] + R[3 + i] * d[1] + R[6 + i] * d[2];
-    for (int i = 0; i < 3; i++) l[i] = s->rot[i] * e[0] + s->rot[3 + i] * e[1] + s->rot[6 + i] * e[2];
+    for (int i = 0; i < 3; i++)
+        d[i] = x[i] - c[i];
+    for (int i = 0; i < 3; i++)
+        e[i] = R[i] * d[0] + R[3 + i] * d[1] + R[6 + i] * d[2];
+    for (int i = 0; i < 3; i++)
+        l[i] = s->rot[i] * e[0] + s->rot[3 + i] * e[1] + s->rot[6 + i] * e[2];
     double f2 = 0, g2 = 0;
     for (int i = 0; i < 3; i++) {
         f2 += l[i] * l[i] / (s->semi[i] * s->semi[i]);
@@ -115,7 +118,8 @@ static void test_stage2_model_builds(void)
     if (!m || !m->couple) goto done;
     const fe_model *fm = m->couple->fe.model;
     int frame = mb_model_body(m, "moto_frame");
-    const char *pads[2] = {"pad_tank_l", "pad_tank_r"}, *thigh[2] = {"rider_thigh_l", "rider_thigh_r"};
+    const char *pads[2] = {"pad_tank_l", "pad_tank_r"},
+               *thigh[2] = {"rider_thigh_l", "rider_thigh_r"};
     double gap_min = INFINITY;
     for (int k = 0; k < 2; k++) {
         int ip = -1, st = -1;
@@ -141,9 +145,11 @@ static void test_stage2_model_builds(void)
         double gap = INFINITY;
         for (int e = p->elem_begin; e < p->elem_end; e++)
             for (int j = 4; j < 8; j++)
-                gap = fmin(gap, surf_distance(m, &m->surf[st], fm->node_x0 + 3 * fm->hex_node[8 * e + j]));
-        printf("%s: %d hexes, %d nodes carried by moto_frame, outer face %.1f mm from %s at t = 0\n",
-               pads[k], nhex, carried, 1e3 * gap, thigh[k]);
+                gap = fmin(
+                    gap, surf_distance(m, &m->surf[st], fm->node_x0 + 3 * fm->hex_node[8 * e + j]));
+        printf(
+            "%s: %d hexes, %d nodes carried by moto_frame, outer face %.1f mm from %s at t = 0\n",
+            pads[k], nhex, carried, 1e3 * gap, thigh[k]);
         CHECK(nhex >= 9 && carried > nhex);
         gap_min = fmin(gap_min, gap);
     }

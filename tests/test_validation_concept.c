@@ -65,6 +65,26 @@ static double json_after(const char *out, const char *name, const char *key)
     return v ? strtod(v + strlen(key), NULL) : NAN;
 }
 
+/* the conventional rider's: what the motorcycle and the car took, the kinetic energy left */
+static void energy_conventional(const char *conv)
+{
+    char args[512];
+    snprintf(args, sizeof args, "energy %s --json", conv);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    if (r->status) return;
+    const char *cat = strstr(r->out, "\"categories\""), *k = strstr(r->out, "\"kinetic\": [");
+    const double moto = json_after(cat, "motorcycle", "\"energy\": ");
+    const double opp = json_after(cat, "opponent", "\"energy\": ");
+    const double kin = k ? strtod(strchr(k, ',') + 1, NULL) : NAN;
+    printf("  conventional rider at 300 ms: motorcycle %.0f J, opponent %.0f J, kinetic %.0f J\n",
+           moto, opp, kin);
+    FIG("validation_restraints.p413_e_moto_conv", "%.0f", moto);
+    FIG("validation_restraints.p413_e_opp_conv", "%.0f", opp);
+    FIG("validation_restraints.p413_e_kin_conv", "%.0f", kin);
+    CHECK(strstr(cat, "belts") == NULL); /* no restraint partners */
+}
+
 /* the rider's energy (paper Eq. 9, Fig. 24b) of the concept run through `mcrash energy`: the
  * categories' cumulative contact energy at 300 ms, the balance's closure */
 static void energy_ranking(const char *conc)
@@ -94,6 +114,7 @@ static void energy_ranking(const char *conc)
     FIG("validation_restraints.p413_e_opp", "%.0f", e[4]);
     FIG("validation_restraints.p413_e_total", "%.0f", total);
     FIG("validation_restraints.p413_e_initial", "%.0f", e0);
+    FIG("validation_restraints.p413_e_restraint_pct", "%.0f", 100 * (e[0] + e[1] + e[3]) / total);
     FIG_TOL("validation_restraints.p413_e_closure", "%.1e", worst / e0, 3e-6);
     CHECK(worst / e0 < 1e-3);
     CHECK(fabs(sum - total) < 1e-6 * total); /* no ground contact, no other category here */
@@ -352,6 +373,7 @@ static void test_413_phases(void)
     mcs_results_close(&h);
     mcs_results_close(&hv);
     energy_ranking(conc);
+    energy_conventional(conv);
 }
 
 int main(void)

@@ -131,7 +131,7 @@ static double check_belt(mcs_results *h, const char *name, double t_fire, const 
         for (size_t i = 1; i < t->n; i++) {
             double tau = t->v[i] - t_fire;
             if (tau < -dt) before = fmax(before, fabs(pre.v[i]));
-            /* on the ramp, well inside it (the output may lag one FE step): Eq. 3's slope */
+            /* on the ramp, well inside it: Eq. 3's slope */
             if (tau > 0.002 && tau < 0.013)
                 slope_err = fmax(slope_err,
                                  fabs((pre.v[i] - pre.v[i - 1]) - (eq3(tau) - eq3(tau - dt))));
@@ -145,7 +145,9 @@ static double check_belt(mcs_results *h, const char *name, double t_fire, const 
                "limiter payout %.1f mm\n",
                name, before, slope_err, end_err, fpk, 1e3 * plateau, 1e3 * lim.v[lim.n - 1]);
         CHECK(before == 0);
-        CHECK(slope_err < 1e-12);
+        /* a sample may lag one FE step (1.7 us here) more or less than the one before it:
+         * the slope per sample is then off by one step's pay-in, 100/15 mm/ms x 1.7 us */
+        CHECK(slope_err < 0.1 / 0.015 * 2e-6);
         CHECK(end_err < 1e-12);
         CHECK(fpk <= F_LIM * (1 + 1e-9)); /* never above the limiter */
         CHECK(lim.v[lim.n - 1] > 0);      /* it paid webbing out */

@@ -437,7 +437,17 @@ static void test_every_shipped_scenario_checks(void)
     cli_result *r = cli_run(args);
     if (r->status != 0) fprintf(stderr, "%s", r->err);
     CHECK(r->status == 0);
-    CHECK(r->err[0] == 0);
+    /* stderr: nothing but the initial-penetration warnings (the cars' tyres on their static
+     * deflection, tests/test_initial_pen.c) */
+    for (const char *l = r->err; *l;) {
+        const char *e = strchr(l, '\n');
+        size_t n = e ? (size_t)(e - l) : strlen(l);
+        char line[512];
+        snprintf(line, sizeof line, "%.*s", (int)(n < sizeof line ? n : sizeof line - 1), l);
+        if (!strstr(line, ": warning: initial penetration: contact ")) printf("%s\n", line);
+        CHECK(strstr(line, ": warning: initial penetration: contact ") != NULL);
+        l += n + (e != NULL);
+    }
     int oks = 0;
     for (const char *p = r->out; (p = strstr(p, ": ok\n")); p++)
         oks++;

@@ -8,11 +8,12 @@
 #define MCS_CLI_COMMANDS(X)                                                                        \
     X(check, "mcrash check SCENARIO.yaml... | --json SCENARIO.yaml | --schema",                    \
       "validate scenarios; --json prints one resolved (includes merged, SI); --schema the keys")  \
-    X(run, "mcrash run SCENARIO.yaml [-o OUT.h5] [--stage 1|2|3|all] [--quiet] [--json]",         \
+    X(run, "mcrash run SCENARIO.yaml [-o OUT.h5] [--stage 1|2|3|all] [--motion STAGE1.h5] "        \
+           "[--quiet] [--json]",                                                                   \
       "run a scenario through its stages")                                                         \
     X(stage1, "mcrash stage1 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]",                        \
       "run the multibody model (ODE)")                                                             \
-    X(stage2, "mcrash stage2 SCENARIO.yaml [-o OUT.h5] --motion STAGE1.h5 [--quiet] [--json]",     \
+    X(stage2, "mcrash stage2 SCENARIO.yaml [-o OUT.h5] [--motion STAGE1.h5] [--quiet] [--json]",   \
       "run the FE rider-interaction model on stage-1 vehicle motion")                              \
     X(stage3, "mcrash stage3 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]",                        \
       "run the full FE vehicle model")                                                             \
@@ -26,7 +27,7 @@
       "the rider's energy balance and its transfer to each contact partner, ranked")              \
     X(signal, "mcrash signal hic|a3ms|cfc|nij|bric|vc|ti FILE.csv [--class CFC] [--window S] [--json]", \
       "filter a channel or compute one criterion from CSV")                                        \
-    X(compare, "mcrash compare REF CMP [--method iso18571|cora] [--json]",                         \
+    X(compare, "mcrash compare REF CMP | OUT.h5 --stages A,B [--method iso18571|cora] [--json]",   \
       "objective rating of one curve against another")                                             \
     X(export, "mcrash export OUT.h5 --xdmf [FILE.xmf] [--stride N] | --xdmf2 [FILE.xmf] | "         \
               "--csv DIR | --mme DIR | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long|--i10]",                                                  \

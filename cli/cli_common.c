@@ -20,6 +20,9 @@ int cli_parse_run_args(int argc, char **argv, int with_stage, cli_run_args *a)
             a->out = argv[++i];
         else if (with_stage && strcmp(s, "--stage") == 0 && i + 1 < argc)
             a->stage = argv[++i];
+        else if ((with_stage || strcmp(argv[0], "stage2") == 0) && strcmp(s, "--motion") == 0 &&
+                 i + 1 < argc)
+            a->motion = argv[++i];
         else if (s[0] == '-' && s[1]) {
             fprintf(stderr, "mcrash %s: unknown option '%s'\n", argv[0], s);
             return cli_usage(argv[0]);

@@ -7,12 +7,14 @@
 
 #include "core/mcs_scenario.h"
 #include "fe/fe_scn_build.h"
+#include "stage1_mb/mb_model.h"
 
 /* "SCENARIO [-o OUT.h5] [--quiet] [--json] [--stage 1|2|3|all]" */
 typedef struct {
     const char *path;   /* the scenario file */
     const char *out;    /* -o, or the default results file (def_out) */
     const char *stage;  /* --stage, "all" when not given */
+    const char *motion; /* --motion (stage2, run), NULL when not given */
     int quiet, json;    /* --quiet, --json */
     char def_out[4096]; /* "<scenario basename>.h5" when -o is absent */
 } cli_run_args;
@@ -35,6 +37,21 @@ void cli_json_string(const char *s);
  * the summary object on stdout; return the exit status (0, 1 numerical, 2 bad input) */
 int cli_stage1_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
 int cli_stage3_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
+/* `compare OUT.h5 --stages A,B` (cmd_compare_stages.c): "A,B" parsed (1 when good), and the
+ * ratings of every channel the two stages share (cora: CORA, else ISO/TS 18571) */
+int cli_parse_stages(const char *s, int *a, int *b);
+int cli_compare_stages(const char *h5, int sa, int sb, int cora, int json);
+
+/* stage 1's run without the summary printed (its error is), and its JSON summary object */
+int cli_stage1_exec(const mcs_scenario *scn, const char *out_path, int quiet,
+                    mb_run_summary *sum);
+void cli_stage1_json(const mb_run_summary *sum);
+/* stage 2 (cmd_stage2.c): motion overrides stage2.motion; append adds /stage2 to out_path */
+int cli_stage2_scenario(const mcs_scenario *scn, const char *motion, const char *out_path,
+                        int append, int quiet, int json);
+/* stage 1 then stage 2 into one file, reading the motion from the stage-1 run (run --stage all
+ * of a scenario with a stage2: block) */
+int cli_stage12_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
 
 /* the stage-3 model of a scenario as `mcrash stage3` builds it (a stage-1-only key of the fe:
  * block refused at its FILE:LINE:COL); `mcrash check` builds it too */

@@ -1,6 +1,7 @@
 /* cmd_compare.c: `mcrash compare REF CMP [--method iso18571|cora] [--json]` -- objective rating
  * of one channel against another, across files and formats (file.csv[:column], file.h5:/path,
- * file.mme:channel). Prints a table, or one JSON object with --json. */
+ * file.mme:channel). Prints a table, or one JSON object with --json. `mcrash compare OUT.h5
+ * --stages A,B` rates every channel two stages share (cmd_compare_stages.c). */
 #include <stdio.h>
 #include <string.h>
 
@@ -78,15 +79,24 @@ static void cora_table(const an_cora_result *r, const an_cora_opts *o)
 
 /* parse the arguments; returns 0 or the usage exit status */
 static int parse(int argc, char **argv, const char **a, const char **b, compare_method *m,
-                 int *json)
+                 int *json, int stages[2])
 {
     *a = *b = NULL;
+    stages[0] = stages[1] = 0;
     *m = METHOD_ISO;
     *json = 0;
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i], *val = NULL;
         if (strcmp(s, "--json") == 0) {
             *json = 1;
+            continue;
+        }
+        if (strcmp(s, "--stages") == 0) {
+            if (i + 1 >= argc || !cli_parse_stages(argv[i + 1], &stages[0], &stages[1])) {
+                fprintf(stderr, "mcrash compare: --stages needs A,B (stage numbers, e.g. 1,2)\n");
+                return 2;
+            }
+            i++;
             continue;
         }
         if (strncmp(s, "--method=", 9) == 0)
@@ -123,7 +133,11 @@ static int parse(int argc, char **argv, const char **a, const char **b, compare_
             return cli_usage(argv[0]);
         }
     }
-    if (!*a || !*b) {
+    if (stages[0] && (!*a || *b)) {
+        fprintf(stderr, "mcrash compare: --stages takes one results file\n");
+        return cli_usage(argv[0]);
+    }
+    if (!stages[0] && (!*a || !*b)) {
         fprintf(stderr, "mcrash compare: needs a reference and a comparison channel\n");
         return cli_usage(argv[0]);
     }
@@ -141,8 +155,9 @@ int cli_compare(int argc, char **argv)
     if (cli_wants_help(argv[0], argc, argv)) return 0;
     const char *ra, *rb;
     compare_method method;
-    int json, rc = parse(argc, argv, &ra, &rb, &method, &json);
+    int json, stages[2], rc = parse(argc, argv, &ra, &rb, &method, &json, stages);
     if (rc) return rc;
+    if (stages[0]) return cli_compare_stages(ra, stages[0], stages[1], method == METHOD_CORA, json);
 
     an_signal a = {0}, b = {0};
     mcs_error err = {0};

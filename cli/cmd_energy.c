@@ -181,11 +181,18 @@ static void read_device(mcs_results *r, en_report *o, const char *kind, const ch
                 its internal energy change (fe/fe_gasbag.h) */
         snprintf(p, sizeof p, "/stage%d/airbag/%s/pressure", o->stage, name);
         snprintf(q, sizeof q, "/stage%d/airbag/%s/volume", o->stage, name);
-        if (!mcs_results_read(r, p, &a, &e) && !mcs_results_read(r, q, &b, &e) && a.n) {
+        double w = 0;
+        char pw[512];
+        snprintf(pw, sizeof pw, "/stage%d/airbag/%s/work", o->stage, name);
+        if (!mcs_results_read(r, p, &a, &e) && !mcs_results_read(r, q, &b, &e) && a.n && b.n) {
             const double p0 = a.v[0];
-            for (size_t i = 0; i < a.n; i++)
-                a.v[i] -= p0;
-            x->v[0] = trapz_work(&a, &b, -1);
+            if (!last_of(r, pw, NULL, &w)) { /* the gas's int p dV less p0 dV */
+                x->v[0] = -(w - p0 * (b.v[b.n - 1] - b.v[0]));
+            } else { /* older files: the trapezoid sum over the output rows */
+                for (size_t i = 0; i < a.n; i++)
+                    a.v[i] -= p0;
+                x->v[0] = trapz_work(&a, &b, -1);
+            }
         }
         static const char *const ch[3] = {"energy_in", "energy_vent", "energy_leak"};
         double v[3] = {0, 0, 0}, u0 = 0, u1 = 0;

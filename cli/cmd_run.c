@@ -1,7 +1,10 @@
 /* cmd_run.c: `mcrash run SCENARIO.yaml [-o OUT.h5] [--stage 1|2|3|all] [--quiet] [--json]`.
  * A scenario with an fe: block and no bodies is a stage-3 run, as is --stage 3. Otherwise
- * --stage 1 or all (the default) runs stage 1; stage 2 is not built yet. Without -o the
- * results file is <scenario basename>.h5 in the current directory. */
+ * --stage 1 runs stage 1; --stage 2 stage 2 (as `mcrash stage2`, --motion or stage2.motion);
+ * all (the default) stage 1 and, when the scenario has a stage2: block, stage 2 after it into
+ * the same file (/stage1 and /stage2), its motion read from that stage-1 run (when stage 2
+ * then fails, the file keeps the complete /stage1 and has no /stage2). Without -o the results
+ * file is <scenario basename>.h5 in the current directory. */
 #include "cli/cli.h"
 #include "cli/cli_common.h"
 
@@ -20,7 +23,10 @@ int cli_run(int argc, char **argv)
     if (fe_only || strcmp(a.stage, "3") == 0)
         rc = cli_stage3_scenario(scn, a.out, a.quiet, a.json);
     else if (strcmp(a.stage, "2") == 0)
-        rc = cli_not_built("run --stage 2", "stage 2 is not built");
+        rc = cli_stage2_scenario(scn, a.motion, a.out, 0, a.quiet, a.json);
+    else if (strcmp(a.stage, "all") == 0 &&
+             mcs_node_kind(mcs_node_get(root, "stage2")) == MCS_NODE_MAP)
+        rc = cli_stage12_scenario(scn, a.out, a.quiet, a.json);
     else
         rc = cli_stage1_scenario(scn, a.out, a.quiet, a.json);
     mcs_scenario_destroy(&scn);

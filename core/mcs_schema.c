@@ -982,8 +982,8 @@ static const mcs_skey stage2_fe_keys[] = {
 static const mcs_smap stage2_fe_map = {.what = "stage2 fe block", .keys = stage2_fe_keys};
 
 static const mcs_skey stage2_keys[] = {
-    /* relative to the working directory, as -o; `--motion FILE` wins */
-    S("motion", NE, "stage-1 results file the motion is read from"),
+    /* relative to the scenario file (as include:); `--motion FILE` (cwd) wins */
+    S("motion", NE, "stage-1 results file the motion is read from (relative to the scenario)"),
     E("method", "pose|pulse", 0,
       "pose: written poses interpolated; pulse: velocity and acceleration histories integrated "
       "(default pose)"),
@@ -992,6 +992,17 @@ static const mcs_skey stage2_keys[] = {
     END,
 };
 static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys};
+
+/* energy groups (stage1_mb/mb_egroup.h): a named group's bodies, names or patterns with * and ?
+ * (the group "rider" of the bodies rider_* exists without it) */
+static const mcs_skey egroup_keys[] = {
+    A("bodies", REQ, "bodies of the group (names or patterns); prescribed bodies are left out"),
+    /* {<partner name or pattern>: <category>}: replaces the derived category (belts, airbags,
+     * foam, fe, motorcycle, opponent, ground, bodies) of the partners it matches */
+    A("categories", 0, "partner categories by partner name or pattern (a map)"),
+    END,
+};
+static const mcs_smap egroup_map = {.what = "energy group", .keys = egroup_keys};
 
 /* ---- the root ---- */
 
@@ -1014,6 +1025,8 @@ static const mcs_skey root_keys[] = {
     L("mount_points", mount_map, 0, "named points on bodies"),
     M("rider", rider_map, 0, "seat the rider on the motorcycle"),
     M("stage2", stage2_map, 0, "stage 2: bodies prescribed from a stage-1 results file"),
+    NM("energy_groups", egroup_map, 0,
+       "energy balances of named groups of bodies, split by contact partner (default: rider)"),
     END,
 };
 const mcs_smap mcs_schema_root = {.what = "scenario", .keys = root_keys, .check = mcs_rule_root};

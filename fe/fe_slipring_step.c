@@ -146,8 +146,11 @@ static double apply_side(const fe_model *m, fe_state *s, const fe_slipring *r, i
     const double area = p->section.area;
     double dU = -0.5 * (n0 + n1) * area * len * de;
     /* fe_truss summed this step's stretching work with the tension before the ring; the
-     * nodes feel the one after: the difference keeps the kernel's balance */
-    double fix = len > 0 && lold > 0 ? 0.5 * (n1 - n0) * area * len * log(len / lold) : 0;
+     * nodes feel the one after: the difference keeps the kernel's balance (at the step's
+     * middle length, as fe_truss) */
+    double fix = len > 0 && lold > 0
+                     ? 0.5 * (n1 - n0) * area * 0.5 * (len + lold) * log(len / lold)
+                     : 0;
     s->part_energy[FE_NENERGY * ip + FE_E_internal] += dU;
     s->part_energy[FE_NENERGY * ip + FE_E_dissipated] += fix - dU;
     return fix - dU;

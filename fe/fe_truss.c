@@ -36,7 +36,9 @@ void fe_truss_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
         s->truss_epsp[e] += fe_mat_1d(p, &s->truss_sig[e], de, s->truss_epsp[e], fabs(rate));
         double n0 = tonly ? fmax(sig0, 0) : sig0, n1 = tonly ? fmax(s->truss_sig[e], 0)
                                                              : s->truss_sig[e];
-        e_int += 0.5 * (n0 + n1) * area * de * len;
+        /* the work N dl, dl = l de at the step's middle length (second order: with the end
+         * length the error N dl^2 / 2l has N's sign, a steady gain for a tension-only belt) */
+        e_int += 0.5 * (n0 + n1) * area * de * 0.5 * (len + lold);
         double fn = n1 * area / len;
         for (int i = 0; i < 3; i++) {
             f[i] = -fn * d[i];

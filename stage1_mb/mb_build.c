@@ -230,7 +230,7 @@ mcs_status mb_model_build(const mcs_scenario *scn, const mb_opts *opts, mb_model
     if (!st) st = mb_build_loadcells(root, m, err);
     if (!st) st = mb_impact_apply(root, m, err); /* places the built motorcycle group */
     if (!st) st = mb_couple_build(scn, m, err);  /* last: FE parts placed with their bodies */
-    if (!st) st = mb_egroup_build(m, err);       /* the rider's energy balance (mb_egroup.h) */
+    if (!st) st = mb_egroup_build(root, m, err); /* the rider's energy balance (mb_egroup.h) */
     if (st) {
         mb_model_destroy(&m);
         return st;

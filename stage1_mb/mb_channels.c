@@ -67,7 +67,8 @@ static mcs_status put(const mb_model *m, const mb_state *s, mcs_results *r, doub
 {
     size_t nt = (size_t)s->nrec;
     int nch = mb_channels_count(m);
-    for (size_t t = 0; t < nt; t++) buf[t] = s->rec_chan[t * (size_t)nch + (size_t)col];
+    for (size_t t = 0; t < nt; t++)
+        buf[t] = s->rec_chan[t * (size_t)nch + (size_t)col];
     return mcs_results_put_channel(r, mb_out_stage(m), name, nt, buf, unit, frame, 0,
                                    body >= 0 ? m->body_name[body] : "ground", err);
 }
@@ -107,8 +108,8 @@ mcs_status mb_channels_write(const mb_model *m, const mb_state *s, mcs_results *
         for (int q = 0; q < 2 && !st; q++)
             for (int k = 0; k < nax && !st; k++) {
                 snprintf(name, sizeof name, "%s_%s_%c", j->name, q ? "moment" : "angle", axn[k]);
-                st = put(m, s, r, buf, base + MB_CH_JOINT3 * i + 3 * q + k, name,
-                         q ? "N m" : "rad", "restraint axes (parent)", j->child, err);
+                st = put(m, s, r, buf, base + MB_CH_JOINT3 * i + 3 * q + k, name, q ? "N m" : "rad",
+                         "restraint axes (parent)", j->child, err);
             }
     }
     return st;

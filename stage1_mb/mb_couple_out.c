@@ -10,9 +10,9 @@
 #include <string.h>
 
 struct mb_couple_out {
-    long rows;              /* stage-1 output rows sampled so far             */
-    long field_every;       /* a field at every k-th row (simulation.field_rate) */
-    fe_out fe;              /* fields, contacts, restraints, slip rings, parts (fe/fe_out.h) */
+    long rows;        /* stage-1 output rows sampled so far             */
+    long field_every; /* a field at every k-th row (simulation.field_rate) */
+    fe_out fe;        /* fields, contacts, restraints, slip rings, parts (fe/fe_out.h) */
     /* bodies contacts: /stage1/contact/<name>/force, the sum over their kernel surfaces */
     int ngroup;
     mcs_results_series *gforce[FE_ELLIPSOID_MAX + FE_FACETS_MAX];
@@ -44,10 +44,14 @@ static mcs_status open_groups(mcs_results *r, int stage, const fe_model *fm, mb_
     const fe_contact_model *c = fm->contact;
     char names[FE_ELLIPSOID_MAX + FE_FACETS_MAX][FE_NAME_MAX];
     int n = 0;
-    for (int i = 0; i < FE_ELLIPSOID_MAX; i++) o->ell_group[i] = -1;
-    for (int i = 0; i < FE_FACETS_MAX; i++) o->fac_group[i] = -1;
-    for (int i = 0; c && i < c->nell; i++) o->ell_group[i] = group_of(c->ell[i].name, names, &n);
-    for (int i = 0; c && i < c->nfac; i++) o->fac_group[i] = group_of(c->fac[i].name, names, &n);
+    for (int i = 0; i < FE_ELLIPSOID_MAX; i++)
+        o->ell_group[i] = -1;
+    for (int i = 0; i < FE_FACETS_MAX; i++)
+        o->fac_group[i] = -1;
+    for (int i = 0; c && i < c->nell; i++)
+        o->ell_group[i] = group_of(c->ell[i].name, names, &n);
+    for (int i = 0; c && i < c->nfac; i++)
+        o->fac_group[i] = group_of(c->fac[i].name, names, &n);
     o->ngroup = n;
     const size_t three = 3;
     mcs_status st = MCS_OK;

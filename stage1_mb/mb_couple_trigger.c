@@ -42,8 +42,7 @@ static mcs_status add_trig(const mb_model *m, mb_couple_rx *rx, const mcs_node *
     return MCS_OK;
 }
 
-static mcs_status build_triggers(const mcs_node *fe, mb_model *m, mb_couple_rx *rx,
-                                 mcs_error *err)
+static mcs_status build_triggers(const mcs_node *fe, mb_model *m, mb_couple_rx *rx, mcs_error *err)
 {
     const fe_model *fm = m->couple->fe.model;
     const mcs_node *bags = mcs_node_get(fe, "airbags"), *rets = mcs_node_get(fe, "retractors");
@@ -56,8 +55,7 @@ static mcs_status build_triggers(const mcs_node *fe, mb_model *m, mb_couple_rx *
         const mcs_node *t = mcs_node_get(inf, "trigger");
         if (mcs_node_kind(t) != MCS_NODE_MAP) continue;
         int k = fe_airbag_find(fm, mcs_node_str(mcs_node_get(b, "name")));
-        if (k >= 0)
-            st = add_trig(m, rx, t, mcs_node_get(inf, "fire_time"), MB_TRIG_BAG, k, err);
+        if (k >= 0) st = add_trig(m, rx, t, mcs_node_get(inf, "fire_time"), MB_TRIG_BAG, k, err);
     }
     for (int i = 0; i < mcs_node_len(rets) && !st; i++) {
         const mcs_node *r = mcs_node_at(rets, i), *t = mcs_node_get(r, "trigger");
@@ -156,7 +154,8 @@ void mb_couple_trigger_check(const mb_model *m, mb_state *s)
         const mb_couple_trig *g = &rx->trig[i];
         const mb_contact_def *d = &m->contact[g->contact];
         double fn = 0;
-        for (int p = d->pair0; p < d->pair0 + d->npair; p++) fn += s->pair[p].fn;
+        for (int p = d->pair0; p < d->pair0 + d->npair; p++)
+            fn += s->pair[p].fn;
         if (!(fn > g->force)) continue;
         /* the forces are those of the step's start, where the FE subcycle begins */
         q->trig_time[i] = f->time;

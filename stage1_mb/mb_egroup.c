@@ -34,12 +34,14 @@ static int member(const mb_model *m, const eg_group *g, int b)
     return b >= 0 && g->in[b];
 }
 
-/* category of an outside body (MB_GROUND: ground) */
+/* category of an outside body (MB_GROUND: ground): its impact group; without an impact: block
+ * the motorcycle model's moto_* bodies (a stage-2 model's prescribed motorcycle) */
 static const char *body_category(const mb_model *m, int b)
 {
     if (b < 0) return "ground";
     if (m->body_group && m->body_group[b] == MB_GROUP_MOTO) return "motorcycle";
     if (m->body_group && m->body_group[b] == MB_GROUP_OPP) return "opponent";
+    if (!m->body_group && fnmatch("moto_*", m->body_name[b], 0) == 0) return "motorcycle";
     return "bodies";
 }
 
@@ -160,10 +162,64 @@ mcs_status mb_egroup_add(mb_model *m, const char *name, const char *const *patte
     return MCS_OK;
 }
 
-mcs_status mb_egroup_build(mb_model *m, mcs_error *err)
+/* a scenario group's categories: {<partner name or pattern>: <category>}, in order (a later
+ * match wins); a key that matches no partner is an error at it */
+static mcs_status categories(const mb_model *m, eg_group *g, const mcs_node *gn, mcs_error *err)
+{
+    (void)m;
+    const mcs_node *c = mcs_node_get(gn, "categories");
+    if (mcs_node_kind(c) == MCS_NODE_NULL) return MCS_OK;
+    if (mcs_node_kind(c) != MCS_NODE_MAP)
+        return mcs_node_error(c, err, MCS_ERR_TYPE, "a map {partner or pattern: category}");
+    for (int i = 0; i < mcs_node_len(c); i++) {
+        const char *key = mcs_node_key(c, i), *cat = mcs_node_str(mcs_node_at(c, i));
+        if (!cat || !cat[0] || strlen(cat) >= MB_EGROUP_CAT)
+            return mcs_node_error(mcs_node_at(c, i), err, MCS_ERR_TYPE,
+                                  "a category name of 1 to %d characters", MB_EGROUP_CAT - 1);
+        int hit = 0;
+        for (int p = 0; p < g->npartner; p++)
+            if (fnmatch(key, g->pname[p], 0) == 0)
+                snprintf(g->pcat[p], MB_EGROUP_CAT, "%s", cat), hit = 1;
+        if (!hit)
+            return mcs_node_error(mcs_node_at(c, i), err, MCS_ERR_KEY,
+                                  "'%s' matches no partner of group '%s'", key, g->name);
+    }
+    return MCS_OK;
+}
+
+/* the scenario's energy_groups: {<name>: {bodies: name or pattern | [names or patterns]}};
+ * a name or pattern that matches no body is an error at it */
+static mcs_status scenario_group(mb_model *m, const char *name, const mcs_node *g, mcs_error *err)
+{
+    const mcs_node *bl = mcs_node_get(g, "bodies");
+    const int seq = mcs_node_kind(bl) == MCS_NODE_SEQ, n = seq ? mcs_node_len(bl) : 1;
+    const char *pat[64];
+    if (n > 64) return mcs_node_error(bl, err, MCS_ERR_RANGE, "at most 64 names or patterns");
+    for (int k = 0; k < n; k++) {
+        const mcs_node *pn = seq ? mcs_node_at(bl, k) : bl;
+        int hit = 0;
+        pat[k] = mcs_node_str(pn);
+        if (!pat[k]) return mcs_node_error(pn, err, MCS_ERR_TYPE, "a body name or pattern");
+        for (int b = 0; b < m->nbody && !hit; b++)
+            hit = fnmatch(pat[k], m->body_name[b], 0) == 0;
+        if (!hit) return mcs_node_error(pn, err, MCS_ERR_KEY, "no body matches '%s'", pat[k]);
+    }
+    mcs_status st = mb_egroup_add(m, name, pat, n, err);
+    return st ? st : categories(m, &m->egroup->g[m->egroup->ngroup - 1], g, err);
+}
+
+mcs_status mb_egroup_build(const mcs_node *root, mb_model *m, mcs_error *err)
 {
     static const char *const rider[] = {"rider_*"};
-    for (int b = 0; b < m->nbody; b++)
+    const mcs_node *eg = mcs_node_get(root, "energy_groups");
+    int has_rider = 0;
+    for (int i = 0; i < mcs_node_len(eg); i++) {
+        const char *name = mcs_node_key(eg, i);
+        mcs_status st = scenario_group(m, name, mcs_node_at(eg, i), err);
+        if (st) return st;
+        has_rider |= strcmp(name, "rider") == 0;
+    }
+    for (int b = 0; b < m->nbody && !has_rider; b++)
         if (fnmatch(rider[0], m->body_name[b], 0) == 0)
             return mb_egroup_add(m, "rider", rider, 1, err);
     return MCS_OK;

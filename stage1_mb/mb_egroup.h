@@ -26,6 +26,7 @@
 #define MB_EGROUP_H
 
 #include "core/mcs_results.h"
+#include "core/mcs_scenario.h"
 #include "stage1_mb/mb_model.h"
 
 #define MB_EGROUP_CAT 16 /* longest category name + 1 */
@@ -34,9 +35,10 @@
  * contact_total, total) */
 #define MB_EGROUP_NSERIES 5
 
-/* the default group "rider" (bodies rider_*) into m->egroup; none without such bodies. Call
- * after mb_couple_build. */
-mcs_status mb_egroup_build(mb_model *m, mcs_error *err);
+/* the scenario's energy_groups ({<name>: {bodies: [names or patterns]}}) and the default group
+ * "rider" (bodies rider_*, unless energy_groups names one) into m->egroup; none without either.
+ * A name or pattern that matches no body is an error at its key. Call after mb_couple_build. */
+mcs_status mb_egroup_build(const mcs_node *root, mb_model *m, mcs_error *err);
 /* a group of the bodies whose names match any of the fnmatch patterns (added to m->egroup) */
 mcs_status mb_egroup_add(mb_model *m, const char *name, const char *const *patterns, int npattern,
                          mcs_error *err);

@@ -40,7 +40,8 @@ mcs_status mb_build_loadcells(const mcs_node *root, mb_model *m, mcs_error *err)
         const mcs_node *jn = mcs_node_get(sn, "joint");
         const char *jname = mcs_node_str(jn);
         if (!jname)
-            return mcs_node_error(sn, err, MCS_ERR_KEY, "a load_cell sensor needs joint: (a joint name)");
+            return mcs_node_error(sn, err, MCS_ERR_KEY,
+                                  "a load_cell sensor needs joint: (a joint name)");
         lc->joint = -1;
         for (int j = 0; j < m->njoint; j++)
             if (strcmp(m->joint[j].name, jname) == 0) lc->joint = j;
@@ -127,8 +128,7 @@ void mb_loadcell_record(const mb_model *m, const mb_state *s, long row)
         mb_loadcell_value(m, s, i, s->rec_loadcell + ((size_t)row * m->nloadcell + i) * 6);
 }
 
-mcs_status mb_loadcell_write(const mb_model *m, const mb_state *s, mcs_results *r,
-                             mcs_error *err)
+mcs_status mb_loadcell_write(const mb_model *m, const mb_state *s, mcs_results *r, mcs_error *err)
 {
     static const char *const sfx[6] = {"fx", "fy", "fz", "mx", "my", "mz"};
     size_t nt = (size_t)s->nrec;
@@ -139,7 +139,8 @@ mcs_status mb_loadcell_write(const mb_model *m, const mb_state *s, mcs_results *
     for (int i = 0; !st && i < m->nloadcell; i++) {
         const struct mb_loadcell *lc = &m->loadcell[i];
         for (int k = 0; !st && k < 6; k++) {
-            for (size_t t = 0; t < nt; t++) buf[t] = s->rec_loadcell[(t * m->nloadcell + i) * 6 + k];
+            for (size_t t = 0; t < nt; t++)
+                buf[t] = s->rec_loadcell[(t * m->nloadcell + i) * 6 + k];
             if (lc->cfc > 0 && nt >= 2) st = an_cfc_filter(buf, (int)nt, dt, lc->cfc, buf, err);
             char name[MB_NAME + 8];
             snprintf(name, sizeof name, "%s_%s", lc->name, sfx[k]);

@@ -301,6 +301,11 @@ typedef struct {
     const char *scenario_text; /* for /meta/scenario                                        */
     int quiet;                 /* no progress line                                          */
     int append;                /* 1: add the stage's group to the existing file out_path    */
+    /* more of the stage's output, written after the state's records and before the commit
+     * (stage 2's /stage2/motion); NULL: none */
+    mcs_status (*write_more)(void *ctx, const mb_model *m, const mb_state *s, mcs_results *r,
+                             mcs_error *err);
+    void *write_ctx;
 } mb_run_opts;
 
 typedef struct {

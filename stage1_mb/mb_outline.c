@@ -39,7 +39,8 @@ static int grow(outline *o, int nv, int nt)
 
 static void vert(outline *o, const double p[3])
 {
-    for (int i = 0; i < 3; i++) o->x[3 * o->n + i] = p[i];
+    for (int i = 0; i < 3; i++)
+        o->x[3 * o->n + i] = p[i];
     o->n++;
 }
 
@@ -103,9 +104,11 @@ static int torus(outline *o, const mb_surface *s)
     double e1[3] = {1, 0, 0};
     if (fabs(a[0]) > 0.9) e1[0] = 0, e1[1] = 1;
     double d = e1[0] * a[0] + e1[1] * a[1] + e1[2] * a[2], n1 = 0;
-    for (int i = 0; i < 3; i++) e1[i] -= d * a[i], n1 += e1[i] * e1[i];
+    for (int i = 0; i < 3; i++)
+        e1[i] -= d * a[i], n1 += e1[i] * e1[i];
     n1 = sqrt(n1);
-    for (int i = 0; i < 3; i++) e1[i] /= n1;
+    for (int i = 0; i < 3; i++)
+        e1[i] /= n1;
     double e2[3] = {a[1] * e1[2] - a[2] * e1[1], a[2] * e1[0] - a[0] * e1[2],
                     a[0] * e1[1] - a[1] * e1[0]};
     const int base = o->n;
@@ -129,8 +132,10 @@ static int facets(outline *o, const mb_surface *s)
     const double *v = mb_mesh_vert(s->mesh, &nv);
     if (grow(o, nv, nt)) return -1;
     const int *t = mb_mesh_tri(s->mesh), base = o->n;
-    for (int i = 0; i < nv; i++) vert(o, v + 3 * i);
-    for (int i = 0; i < nt; i++) tri(o, base + t[3 * i], base + t[3 * i + 1], base + t[3 * i + 2]);
+    for (int i = 0; i < nv; i++)
+        vert(o, v + 3 * i);
+    for (int i = 0; i < nt; i++)
+        tri(o, base + t[3 * i], base + t[3 * i + 1], base + t[3 * i + 2]);
     return 0;
 }
 
@@ -143,8 +148,8 @@ mcs_status mb_outline_write(const mb_model *m, mcs_results *r, mcs_error *err)
         for (int k = 0; k < m->nsurf && !st; k++) {
             const mb_surface *s = &m->surf[k];
             if (s->body != b) continue;
-            int bad = s->type == MB_SURF_ELLIPSOID   ? ellipsoid(&o, s)
-                      : s->type == MB_SURF_CYLINDER  ? torus(&o, s)
+            int bad = s->type == MB_SURF_ELLIPSOID          ? ellipsoid(&o, s)
+                      : s->type == MB_SURF_CYLINDER         ? torus(&o, s)
                       : s->type == MB_SURF_FACET && s->mesh ? facets(&o, s)
                                                             : 0;
             if (bad) st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 1 output: out of memory (outlines)");

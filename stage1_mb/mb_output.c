@@ -30,7 +30,8 @@ static mcs_status write_bodies(const mb_model *m, const mb_state *s, mcs_results
         for (size_t t = 0; t < nt; t++)                                                            \
             for (int k = 0; k < (width); k++)                                                      \
                 buf[t * (width) + k] = s->rec_body[(t * m->nbody + b) * MB_BODY_ROW + off + k];    \
-        mcs_status st = mcs_results_put_body(r, mb_out_stage(m), m->body_name[b], #name, nt, buf, err);          \
+        mcs_status st =                                                                            \
+            mcs_results_put_body(r, mb_out_stage(m), m->body_name[b], #name, nt, buf, err);        \
         if (st) return st;                                                                         \
         off += (width);                                                                            \
     }
@@ -40,15 +41,16 @@ static mcs_status write_bodies(const mb_model *m, const mb_state *s, mcs_results
     return MCS_OK;
 }
 
-static mcs_status write_channels(const mb_model *m, const mb_state *s, mcs_results *r,
-                                 double *buf, mcs_error *err)
+static mcs_status write_channels(const mb_model *m, const mb_state *s, mcs_results *r, double *buf,
+                                 mcs_error *err)
 {
     size_t nt = (size_t)s->nrec;
     double dt = 1.0 / m->output_rate;
     for (int i = 0; i < m->nsensor; i++) {
         const mb_sensor *se = &m->sensor[i];
         for (int k = 0; k < 3; k++) {
-            for (size_t t = 0; t < nt; t++) buf[t] = s->rec_sensor[(t * m->nsensor + i) * 3 + k];
+            for (size_t t = 0; t < nt; t++)
+                buf[t] = s->rec_sensor[(t * m->nsensor + i) * 3 + k];
             int cfc = se->cfc;
             if (cfc > 0 && nt >= 2) {
                 mcs_status st = an_cfc_filter(buf, (int)nt, dt, cfc, buf, err);
@@ -56,24 +58,26 @@ static mcs_status write_channels(const mb_model *m, const mb_state *s, mcs_resul
             }
             char name[MB_NAME + 8];
             snprintf(name, sizeof name, "%s_%s%c", se->name, q_suffix[se->type], "xyz"[k]);
-            mcs_status st = mcs_results_put_channel(r, mb_out_stage(m), name, nt, buf, q_unit[se->type],
-                                                    "SAE J211 local (x forward, y right, z down)",
-                                                    nt >= 2 ? cfc : 0, m->body_name[se->body],
-                                                    err);
+            mcs_status st =
+                mcs_results_put_channel(r, mb_out_stage(m), name, nt, buf, q_unit[se->type],
+                                        "SAE J211 local (x forward, y right, z down)",
+                                        nt >= 2 ? cfc : 0, m->body_name[se->body], err);
             if (st) return st;
         }
     }
     return MCS_OK;
 }
 
-static mcs_status write_energy(const mb_model *m, const mb_state *s, mcs_results *r, double *buf, mcs_error *err)
+static mcs_status write_energy(const mb_model *m, const mb_state *s, mcs_results *r, double *buf,
+                               mcs_error *err)
 {
     size_t nt = (size_t)s->nrec;
     int j = 0;
 #define MB_X_EN(name, unit)                                                                        \
     {                                                                                              \
-        for (size_t t = 0; t < nt; t++) buf[t] = s->rec_energy[t * MB_NENERGY + j];                \
-        mcs_status st = mcs_results_put_energy(r, mb_out_stage(m), #name, nt, buf, err);                         \
+        for (size_t t = 0; t < nt; t++)                                                            \
+            buf[t] = s->rec_energy[t * MB_NENERGY + j];                                            \
+        mcs_status st = mcs_results_put_energy(r, mb_out_stage(m), #name, nt, buf, err);           \
         if (st) return st;                                                                         \
         j++;                                                                                       \
     }

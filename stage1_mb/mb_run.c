@@ -21,6 +21,7 @@ static mcs_status write_results(const mb_model *m, const mb_state *s, const mb_r
                                 mcs_results **r, mcs_error *err)
 {
     mcs_status st = mb_output_write(m, s, *r, err);
+    if (!st && o->write_more) st = o->write_more(o->write_ctx, m, s, *r, err);
     if (!st) st = mcs_results_commit(r, err);
     mcs_results_abort(r);
     if (st || m->nsensor == 0) return st;
@@ -28,8 +29,7 @@ static mcs_status write_results(const mb_model *m, const mb_state *s, const mb_r
     mcs_error e2 = {0};
     int n = 0;
     if (mb_injury_write(o->out_path, mb_out_stage(m), &n, &e2))
-        mcs_log(MCS_LOG_WARN, "stage %d: injury criteria not written: %s", mb_out_stage(m),
-                e2.msg);
+        mcs_log(MCS_LOG_WARN, "stage %d: injury criteria not written: %s", mb_out_stage(m), e2.msg);
     return MCS_OK;
 }
 
@@ -77,9 +77,13 @@ mcs_status mb_run(const mb_model *m, const mb_run_opts *o, mb_run_summary *sum, 
     mcs_results_abort(&r);
     mb_couple_out_free(&co);
     if (sum) {
-        *sum = (mb_run_summary){.steps = s->step, .bodies = m->nbody, .wall_time_s = now() - w0,
-                                .energy_drift = mb_energy_drift(m, s), .t_end = s->t};
-        for (int k = 0; k < MB_NTIMER; k++) sum->timer[k] = s->timer[k];
+        *sum = (mb_run_summary){.steps = s->step,
+                                .bodies = m->nbody,
+                                .wall_time_s = now() - w0,
+                                .energy_drift = mb_energy_drift(m, s),
+                                .t_end = s->t};
+        for (int k = 0; k < MB_NTIMER; k++)
+            sum->timer[k] = s->timer[k];
     }
     mb_state_destroy(&s);
     return st;

@@ -187,6 +187,27 @@ static void test_413_pair(void)
            et.n ? et.v[0] : 0.0);
     CHECK(et.n > 0 && egw < 1e-4 * et.v[0]);
     mcs_array_free(&et);
+    /* the bag's gas energies as written: the first law of the gas, U - U0 = H_in - H_vent -
+     * H_leak - int p dV, at every row (fe/fe_gasbag.h; each series its own column) */
+    static const char *const gch[5] = {"energy", "energy_in", "energy_vent", "energy_leak",
+                                       "work"};
+    mcs_array ga[5] = {{0}};
+    int gok = 1;
+    for (int k = 0; k < 5; k++) {
+        char gp[96];
+        snprintf(gp, sizeof gp, "/stage1/airbag/front/%s", gch[k]);
+        gok &= rd(h, gp, &ga[k]) && ga[k].n == ga[0].n;
+    }
+    CHECK(gok);
+    double gw = 0;
+    for (size_t i = 0; gok && i < ga[0].n; i++)
+        gw = fmax(gw, fabs(ga[0].v[i] - ga[0].v[0] -
+                           (ga[1].v[i] - ga[2].v[i] - ga[3].v[i] - ga[4].v[i])));
+    printf("  bag gas: |U - U0 - (H_in - H_vent - H_leak - W)| <= %.2e J of U0 %.1f J\n", gw,
+           gok ? ga[0].v[0] : 0.0);
+    CHECK(gok && gw < 1e-6 * ga[0].v[0]);
+    for (int k = 0; k < 5; k++)
+        mcs_array_free(&ga[k]);
     /* firing: the first sample with a contact force, plus 12 ms */
     mcs_array t = {0}, fc = {0}, p = {0}, m = {0};
     CHECK(rd(h, "/stage1/time", &t) && rd(h, "/stage1/channels/front_tyre_car_fn", &fc));

@@ -196,6 +196,84 @@ static void test_belt_through_limiter(void)
     mb_model_destroy(&m);
 }
 
+/* Two balls, no gravity: b1 (1 kg, 2 m/s, a little sideways) strikes b2 (2 kg, at rest)
+ * through a damped contact with friction. The group "one" (b1) transfers to its one partner,
+ * the contact, its own loss of kinetic energy (spin included); the group "pair" (both) has no
+ * partner: the contact is internal, and its kinetic + internal energy (the contact's stored +
+ * dissipated) stays at b1's initial 2.045 J up to the engine's own balance error. */
+#define BALLS_YAML                                                                                 \
+    "mcrash: 1\nname: two balls\n"                                                                 \
+    "simulation: {end_time: 20 ms, time_step: 10 us, output_rate: 10 kHz}\n"                       \
+    "environment: {gravity: 0}\n"                                                                  \
+    "characteristics:\n"                                                                           \
+    "  pad: {loading: [[0, 0], [0.01, 10000]], damping: 20 N s/m}\n"                               \
+    "bodies:\n"                                                                                    \
+    "  - {name: b1, mass: 1, inertia: [0.004, 0.004, 0.004], position: [0, 0, 0],\n"               \
+    "     velocity: [2, 0.3, 0], angular_velocity: [0, 0, 0],\n"                                   \
+    "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [0.1, 0.1, 0.1]}]}\n"         \
+    "  - {name: b2, mass: 2, inertia: [0.008, 0.008, 0.008], position: [0.205, 0.05, 0],\n"        \
+    "     velocity: [0, 0, 0], angular_velocity: [0, 0, 0],\n"                                     \
+    "     surfaces: [{type: ellipsoid, center: [0, 0, 0], semi_axes: [0.1, 0.1, 0.1]}]}\n"         \
+    "contacts: [{name: hit, a: b1, b: b2, characteristic: pad, friction: 0.2}]\n"                  \
+    "energy_groups:\n"                                                                             \
+    "  pair: {bodies: [b1, b2]}\n"                                                                 \
+    "  one: {bodies: b1, categories: {h*: struck ball}}\n"
+
+static void test_scenario_groups(void)
+{
+    mb_model *m = mc_model("balls.yaml", BALLS_YAML);
+    if (!m) return;
+    const int gp = mb_egroup_find(m, "pair"), g1 = mb_egroup_find(m, "one");
+    const char *cat = NULL;
+    CHECK(mb_egroup_count(m) == 2 && gp == 0 && g1 == 1 && mb_egroup_find(m, "rider") < 0);
+    CHECK(mb_egroup_npartner(m, gp) == 0 && mb_egroup_npartner(m, g1) == 1);
+    /* the category from the scenario's categories (derived: bodies) */
+    CHECK(strcmp(mb_egroup_partner(m, g1, 0, &cat), "hit") == 0 &&
+          strcmp(cat, "struck ball") == 0);
+    mcs_error err = {0};
+    mb_state *s = NULL;
+    mcs_status st = mb_state_create(m, &s, &err);
+    const double e0 = st ? 0 : body_energy(m, s, 0, 0);
+    double worst1 = 0, worstp = 0, peak = 0, e[5], pe[1];
+    while (!st && s->step < m->nsteps) {
+        st = mb_step(m, s, &err);
+        mb_egroup_now(m, s, g1, e, pe);
+        const double loss = e0 - body_energy(m, s, 0, 0);
+        worst1 = fmax(worst1, fabs(pe[0] - loss)), peak = fmax(peak, loss);
+        mb_egroup_now(m, s, gp, e, pe);
+        worstp = fmax(worstp, fabs(e[0] + e[2] - e0));
+        CHECK(e[3] == 0);
+    }
+    CHECK(st == MCS_OK);
+    printf("two balls: b1's transfer to the contact vs its kinetic energy loss %.2e of %.3f J; "
+           "the pair's kinetic + internal vs its initial %.4f J: %.2e J; the model's drift %.2e\n",
+           worst1 / peak, peak, e0, worstp, mb_energy_drift(m, s));
+    CHECK(peak > 1.0);           /* b1 gave b2 most of its energy */
+    CHECK(worst1 < 2e-4 * peak); /* test_drop_on_foam's: the spin */
+    /* the contact's element energy (stored + damper + friction, as /stage1/energy takes it)
+     * against the bodies' work: the engine's own balance error of this stiff contact (its
+     * drift, the same two bodies and contact) and nothing more */
+    CHECK(fabs(worstp / e0 - mb_energy_drift(m, s)) < 1e-6);
+    CHECK(worstp < 1e-2 * e0);
+    mb_state_destroy(&s);
+    mb_model_destroy(&m);
+    /* a name that matches no body: located */
+    char y[4096];
+    snprintf(y, sizeof y, "%s  bad: {bodies: [b1, rider_*]}\n", BALLS_YAML);
+    mcs_error e2 = {0};
+    mb_model *bad = mt_model_text("bad.yaml", y, &e2);
+    CHECK(bad == NULL);
+    CHECK_STR_CONTAINS(e2.msg, "no body matches 'rider_*'");
+    CHECK_STR_CONTAINS(e2.msg, "bad.yaml:");
+    mb_model_destroy(&bad);
+    snprintf(y, sizeof y, "%s  bad: {bodies: [b1], categories: {miss: x}}\n", BALLS_YAML);
+    e2 = (mcs_error){0};
+    bad = mt_model_text("bad.yaml", y, &e2);
+    CHECK(bad == NULL);
+    CHECK_STR_CONTAINS(e2.msg, "'miss' matches no partner of group 'bad'");
+    mb_model_destroy(&bad);
+}
+
 /* the results file: the series of the group, the partners' sum and the closure */
 static void test_results_file(void)
 {
@@ -262,11 +340,45 @@ static void test_results_file(void)
     mb_model_destroy(&m);
 }
 
+/* a model that writes stage 2 (mb_opts.stage, as a stage-2 run's): the group under /stage2,
+ * which `mcrash energy` finds without --stage */
+static void test_stage2_output(void)
+{
+    mcs_error err = {0};
+    mcs_scenario *scn = NULL;
+    mb_model *m = NULL;
+    mb_opts o = mb_opts_default();
+    o.stage = 2;
+    CHECK(mcs_scenario_load_text("s2.yaml", SHEET_YAML, strlen(SHEET_YAML), &scn, &err) == 0);
+    CHECK(mb_model_build(scn, &o, &m, &err) == MCS_OK);
+    mcs_scenario_destroy(&scn);
+    if (!m) return;
+    char path[] = "/tmp/mcrash_egroup2_XXXXXX.h5";
+    int fd = mkstemps(path, 3);
+    if (fd >= 0) close(fd);
+    mb_run_opts ro = {.out_path = path, .quiet = 1};
+    CHECK(mb_run(m, &ro, NULL, &err) == MCS_OK);
+    mcs_results *r = NULL;
+    CHECK(mcs_results_open(&r, path, &err) == MCS_OK);
+    CHECK(r && mcs_results_kind(r, "/stage2/energy_groups/rider/contact/bag") == MCS_RES_DATASET);
+    CHECK(r && mcs_results_kind(r, "/stage1/energy_groups") == MCS_RES_NONE);
+    mcs_results_close(&r);
+    char args[128];
+    snprintf(args, sizeof args, "energy %s", path);
+    cli_result *c = cli_run(args);
+    CHECK(c->status == 0);
+    CHECK_STR_CONTAINS(c->out, "stage 2, group rider");
+    unlink(path);
+    mb_model_destroy(&m);
+}
+
 int main(void)
 {
     RUN(test_drop_on_foam);
     RUN(test_drop_on_membrane);
     RUN(test_belt_through_limiter);
+    RUN(test_scenario_groups);
     RUN(test_results_file);
+    RUN(test_stage2_output);
     TEST_END();
 }

@@ -458,6 +458,26 @@ static void test_attach_surface(void)
         CHECK(fabs(q.model->node_x0[3 * q.att[i].node + 2]) < 1e-12);
     fe_problem_free(&q);
     mcs_scenario_destroy(&scn);
+    /* the same keyword part as a stage-2-only part (stage2.fe): its deck is still found
+     * relative to the file that names it once merged into fe: */
+    char y2[2048];
+    const char *fe_at = strstr(y, "fe:\n  parts:\n");
+    snprintf(y2, sizeof y2,
+             "%.*sstage2:\n  prescribed: [{body: base}]\n  fe:\n    parts:\n"
+             "      - {name: cube, mesh: {keyword: spring_mass.k, part: 1, units: mm-s-t},\n"
+             "         attach: {body: base, where: surface}}\n",
+             fe_at ? (int)(fe_at - y) : 0, y);
+    mcs_scenario *c2 = NULL;
+    err = (mcs_error){0};
+    scn = load("tests/data/keyword/kw_attach2.yaml", y2, &err);
+    CHECK(scn && s2_scenario_compile(scn, &c2, &err) == MCS_OK);
+    q = (fe_problem){0};
+    CHECK(c2 && fe_scn_build(c2, &q, &err) == MCS_OK);
+    if (!q.model) fprintf(stderr, "%s\n", err.msg);
+    CHECK(q.natt == 4);
+    fe_problem_free(&q);
+    mcs_scenario_destroy(&c2);
+    mcs_scenario_destroy(&scn);
 }
 
 /* ---- a body pressed into a pad ---- */

@@ -65,6 +65,45 @@ static double json_after(const char *out, const char *name, const char *key)
     return v ? strtod(v + strlen(key), NULL) : NAN;
 }
 
+/* the 4 values of restraint `name` in `mcrash energy --json`'s "restraints" (0 if absent) */
+static void rx_values(const char *out, const char *name, double v[4])
+{
+    char pat[96];
+    snprintf(pat, sizeof pat, "\"name\": \"%s\", \"values\": [", name);
+    const char *p = out ? strstr(out, "\"restraints\"") : NULL;
+    p = p ? strstr(p, pat) : NULL;
+    for (int k = 0; k < 4; k++) {
+        char *end = NULL;
+        v[k] = p ? strtod(p + (k ? 1 : strlen(pat)), &end) : 0;
+        p = p && end ? end : NULL;
+    }
+}
+
+/* what the restraints kept of the rider's transfer (`mcrash energy`'s restraint table) */
+static void energy_restraints(const char *out, double pay_l)
+{
+    double bl[4], br[4], bag[4], fl[4], fr[4], rl[4], rr[4], gas[4];
+    rx_values(out, "belt_l", bl), rx_values(out, "belt_r", br), rx_values(out, "bag_front", bag);
+    rx_values(out, "foam_l", fl), rx_values(out, "foam_r", fr), rx_values(out, "thigh_l", rl);
+    rx_values(out, "thigh_r", rr), rx_values(out, "front", gas);
+    printf("  restraints at 300 ms: limiters %.0f J, pretensioners %.0f J, webbing contact %.0f J, "
+           "work on the gas %.0f J, bag fabric contact %.0f J, foam internal %.0f J and contact "
+           "%.0f J\n",
+           rl[0] + rr[0], rl[1] + rr[1], bl[2] + br[2], gas[0], bag[2], fl[1] + fr[1],
+           fl[2] + fr[2]);
+    FIG("validation_restraints.p413_rx_limiter", "%.0f", rl[0] + rr[0]);
+    FIG("validation_restraints.p413_rx_pretens", "%.0f", rl[1] + rr[1]);
+    FIG("validation_restraints.p413_rx_belt_contact", "%.0f", bl[2] + br[2]);
+    FIG("validation_restraints.p413_rx_gas", "%.0f", gas[0]);
+    FIG("validation_restraints.p413_rx_bag_contact", "%.0f", bag[2]);
+    FIG("validation_restraints.p413_rx_foam_internal", "%.0f", fl[1] + fr[1]);
+    FIG("validation_restraints.p413_rx_foam_contact", "%.0f", fl[2] + fr[2]);
+    /* the left limiter absorbed F_lim times its payout (it pays out at F_lim only; paper
+     * Sec. 2.3.1: 2 kN), the payout read from /stage1/retractor/thigh_l above */
+    CHECK_NEAR(rl[0], F_LIM * pay_l, 1e-6 * rl[0]);
+    CHECK(rr[0] > 0);
+}
+
 /* the conventional rider's: what the motorcycle and the car took, the kinetic energy left */
 static void energy_conventional(const char *conv)
 {
@@ -87,7 +126,7 @@ static void energy_conventional(const char *conv)
 
 /* the rider's energy (paper Eq. 9, Fig. 24b) of the concept run through `mcrash energy`: the
  * categories' cumulative contact energy at 300 ms, the balance's closure */
-static void energy_ranking(const char *conc)
+static void energy_ranking(const char *conc, double pay_l)
 {
     char args[512];
     snprintf(args, sizeof args, "energy %s --json", conc);
@@ -120,6 +159,7 @@ static void energy_ranking(const char *conc)
     CHECK(fabs(sum - total) < 1e-6 * total); /* no ground contact, no other category here */
     /* the restraints (belts, bag, foam) take more than the motorcycle and the car together */
     CHECK(e[0] + e[1] + e[3] > e[2] + e[4]);
+    energy_restraints(out, pay_l);
 }
 
 /* |a(i) - b(i)| of two (n x 3) arrays' rows, in the axes of quaternion q (w, x, y, z): R^T d */
@@ -372,7 +412,7 @@ static void test_413_phases(void)
     mcs_array_free(&p), mcs_array_free(&V), mcs_array_free(&m), mcs_array_free(&cr);
     mcs_results_close(&h);
     mcs_results_close(&hv);
-    energy_ranking(conc);
+    energy_ranking(conc, pay);
     energy_conventional(conv);
 }
 

@@ -33,7 +33,7 @@ double tr_quat_angle(const double a[4], const double b[4])
 static void body_free(tr_motion_body_data *b)
 {
     free(b->name), free(b->pos), free(b->quat), free(b->vel), free(b->angvel), free(b->acc);
-    free(b->ipos), free(b->ivel), free(b->iquat), free(b->aedge);
+    free(b->ipos), free(b->ivel), free(b->iquat), free(b->aedge), free(b->wedge);
 }
 
 void tr_motion_destroy(tr_motion **pm)
@@ -146,7 +146,8 @@ static mcs_status read_body(mcs_results *r, tr_motion *m, tr_motion_body_data *b
     b->ivel = malloc(sizeof(double) * 3 * (size_t)nt);
     b->iquat = malloc(sizeof(double) * 4 * (size_t)nt);
     b->aedge = malloc(sizeof(double) * 3 * (size_t)nt);
-    if (!b->ipos || !b->ivel || !b->iquat || !b->aedge)
+    b->wedge = malloc(sizeof(double) * 3 * (size_t)nt);
+    if (!b->ipos || !b->ivel || !b->iquat || !b->aedge || !b->wedge)
         return MCS_ERR(err, MCS_ERR_NOMEM, "%s: body '%s': out of memory", mcs_results_path(r),
                        b->name);
     tr_motion_pulse_integrate(m, b);

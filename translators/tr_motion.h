@@ -24,12 +24,13 @@
  *   interpolated linearly to t_k between the intervals' midpoints; A_0 = a(t_0); at the end
  *   extrapolated): continuous, exact for a linear a(t), and the velocity it integrates to
  *   equals the written one at every sample (to round-off). Integrated exactly (position
- *   error O(h^4) on a smooth motion). Orientation: the written w (samples of the state) taken
- *   piecewise linear and integrated by the 4th-order Magnus step, theta(tau) = tau w_i +
- *   tau^2/(2h) dw - tau^3/(12h) w_i x dw (dw = w_i+1 - w_i), then q = exp(theta) Q_i; exact
- *   for constant spin, order 2 otherwise (the linear w). Angular velocity returned is d/dt of
- *   that orientation (it differs from the linear w by the Magnus remainder,
- *   O(h^2 |w| |dw|)). Nothing ties the integral to the written positions and orientations:
+ *   error O(h^4) on a smooth motion). Orientation: the written w (samples of the state) on
+ *   each interval the cubic Hermite through w_i, w_i+1 with the slopes the same edge values
+ *   give from the means (w_k - w_k-1) / h_k (the 3-point derivative; extrapolated at both
+ *   ends), integrated by the Magnus series to its second term, theta = int w + 1/2 int int
+ *   w(s) x w(u) du ds in closed form, then q = exp(theta) Q_i: exact for constant spin, 4th
+ *   order. Angular velocity returned is d/dt of that orientation (it differs from the cubic w
+ *   by the Magnus remainder). Nothing ties the integral to the written positions and orientations:
  *   it drifts; tr_motion_get_drift() gives the largest deviation from the written position,
  *   orientation and velocity.
  *

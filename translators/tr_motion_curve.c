@@ -40,18 +40,36 @@ void tr_motion_pose_eval(const struct tr_motion *m, const tr_motion_body_data *b
     rotate(th, thd, thdd, q0, k);
 }
 
-/* the pulse's rotation vector from Q_i over tau: 4th-order Magnus of the linear w */
-static void magnus(const double w0[3], const double w1[3], double h, double tau, double th[3],
-                   double thd[3], double thdd[3])
+/* the pulse's rotation vector from Q_i over tau for w(tau) = sum_n c_n tau^n (n < 4): the
+ * Magnus series to its second term, theta = W1 + W2, W1 = int_0^tau w, W2 = 1/2 int_0^tau ds
+ * int_0^s du w(s) x w(u) = 1/2 sum_mn c_m x c_n tau^(m+n+2) / ((n+1)(m+n+2)) (4th order;
+ * exact for constant spin); theta' = w + w x W1 / 2, theta'' = w' + w' x W1 / 2 */
+static void magnus(const double c[4][3], double tau, double th[3], double thd[3], double thdd[3])
 {
-    double dw[3], c[3];
-    mb_sub(w1, w0, dw);
-    mb_cross(w0, dw, c);
-    for (int j = 0; j < 3; j++) {
-        th[j] = tau * w0[j] + tau * tau / (2 * h) * dw[j] - tau * tau * tau / (12 * h) * c[j];
-        thd[j] = w0[j] + tau / h * dw[j] - tau * tau / (4 * h) * c[j];
-        thdd[j] = dw[j] / h - tau / (2 * h) * c[j];
-    }
+    double w[3] = {0, 0, 0}, wd[3] = {0, 0, 0}, w1[3] = {0, 0, 0}, tp[7], x[3], y[3];
+    tp[0] = 1;
+    for (int n = 1; n < 7; n++)
+        tp[n] = tp[n - 1] * tau;
+    for (int n = 0; n < 4; n++)
+        for (int j = 0; j < 3; j++) {
+            w[j] += c[n][j] * tp[n];
+            w1[j] += c[n][j] * tp[n + 1] / (n + 1);
+            if (n) wd[j] += n * c[n][j] * tp[n - 1];
+        }
+    for (int j = 0; j < 3; j++)
+        th[j] = w1[j];
+    for (int mm = 0; mm < 4; mm++)
+        for (int n = 0; n < 4; n++) {
+            if (mm == n) continue;
+            mb_cross(c[mm], c[n], x);
+            double f = 0.5 * tau * tp[mm + n + 1] / ((n + 1) * (mm + n + 2));
+            for (int j = 0; j < 3; j++)
+                th[j] += f * x[j];
+        }
+    mb_cross(w, w1, x);
+    mb_cross(wd, w1, y);
+    for (int j = 0; j < 3; j++)
+        thd[j] = w[j] + 0.5 * x[j], thdd[j] = wd[j] + 0.5 * y[j];
 }
 
 void tr_motion_pulse_eval(const struct tr_motion *m, const tr_motion_body_data *b, int i, double t,
@@ -70,38 +88,61 @@ void tr_motion_pulse_eval(const struct tr_motion *m, const tr_motion_body_data *
         k->pos[j] = p0[j] + h * (v0[j] * s + h * (a0[j] * (0.5 * s2 - s3 / 6) + a1[j] * s3 / 6 +
                                                   c * (s3 - 0.5 * s2 * s2)));
     }
-    double th[3], thd[3], thdd[3];
-    magnus(b->angvel + 3 * i, b->angvel + 3 * (i + 1), h, t - m->t[i], th, thd, thdd);
+    /* angular velocity: the cubic Hermite through w_i, w_i+1 with the slopes W_i, W_i+1 */
+    const double *w0 = b->angvel + 3 * i, *w1 = b->angvel + 3 * (i + 1);
+    const double *d0 = b->wedge + 3 * i, *d1 = b->wedge + 3 * (i + 1);
+    double c[4][3], th[3], thd[3], thdd[3];
+    for (int j = 0; j < 3; j++) {
+        double sl = (w1[j] - w0[j]) / h;
+        c[0][j] = w0[j], c[1][j] = d0[j];
+        c[2][j] = (3 * sl - 2 * d0[j] - d1[j]) / h;
+        c[3][j] = (d0[j] + d1[j] - 2 * sl) / (h * h);
+    }
+    magnus(c, t - m->t[i], th, thd, thdd);
     rotate(th, thd, thdd, b->iquat + 4 * i, k);
 }
 
-/* the acceleration at the samples from the interval means M_k (row k > 0) and a(t_0) (row 0):
- * inside, the linear interpolation of the means at the intervals' midpoints, A_k =
- * (M_k h_k+1 + M_k+1 h_k) / (h_k + h_k+1); at the end their linear extrapolation; at t_0 the
- * written a(t_0). Exact for a linear a(t). */
-static void accel_edges(const struct tr_motion *m, tr_motion_body_data *b)
+/* the rate of a sampled quantity at the samples from its interval means, in place: E's rows
+ * k > 0 hold the means M_k over [t_k-1, t_k] and become, inside, the means interpolated
+ * linearly between the intervals' midpoints, E_k = (M_k h_k+1 + M_k+1 h_k) / (h_k + h_k+1)
+ * (the 3-point derivative when M_k = (x_k - x_k-1) / h_k), at the end extrapolated the same
+ * way; row 0 is kept when keep0, else extrapolated too. Exact for a linear rate. */
+static void rate_edges(const double *t, int nt, double *E, int keep0)
 {
-    int n = m->nt - 1; /* intervals */
-    const double *M = b->acc;
-    memcpy(b->aedge, b->acc, 3 * sizeof(double));
-    for (int k = 1; k < n; k++) {
-        double hk = m->t[k] - m->t[k - 1], hn = m->t[k + 1] - m->t[k];
-        for (int j = 0; j < 3; j++)
-            b->aedge[3 * k + j] = (M[3 * k + j] * hn + M[3 * (k + 1) + j] * hk) / (hk + hn);
-    }
+    int n = nt - 1; /* intervals */
     for (int j = 0; j < 3; j++) {
-        double e = M[3 * n + j];
+        double mn = E[3 * n + j], e = mn, f = E[3 + j];
         if (n > 1) {
-            double hl = m->t[n] - m->t[n - 1], hp = m->t[n - 1] - m->t[n - 2];
-            e += (M[3 * n + j] - M[3 * (n - 1) + j]) * hl / (hl + hp);
+            double hl = t[n] - t[n - 1], hp = t[n - 1] - t[n - 2];
+            e += (mn - E[3 * (n - 1) + j]) * hl / (hl + hp);
+            double hf = t[1] - t[0], hs = t[2] - t[1];
+            f -= (E[6 + j] - E[3 + j]) * hf / (hf + hs);
         }
-        b->aedge[3 * n + j] = e;
+        if (!keep0) E[j] = f;
+        for (int k = 1; k < n; k++) {
+            double hk = t[k] - t[k - 1], hn = t[k + 1] - t[k];
+            E[3 * k + j] = (E[3 * k + j] * hn + E[3 * (k + 1) + j] * hk) / (hk + hn);
+        }
+        E[3 * n + j] = e;
     }
+}
+
+/* the acceleration at the samples (A_0 = the written a(t_0)) and the angular velocity's slopes
+ * (from its interval means (w_k - w_k-1) / h_k) */
+static void pulse_edges(const struct tr_motion *m, tr_motion_body_data *b)
+{
+    memcpy(b->aedge, b->acc, sizeof(double) * 3 * (size_t)m->nt);
+    rate_edges(m->t, m->nt, b->aedge, 1);
+    for (int k = 1; k < m->nt; k++)
+        for (int j = 0; j < 3; j++)
+            b->wedge[3 * k + j] =
+                (b->angvel[3 * k + j] - b->angvel[3 * (k - 1) + j]) / (m->t[k] - m->t[k - 1]);
+    rate_edges(m->t, m->nt, b->wedge, 0);
 }
 
 void tr_motion_pulse_integrate(const struct tr_motion *m, tr_motion_body_data *b)
 {
-    accel_edges(m, b);
+    pulse_edges(m, b);
     memcpy(b->ipos, b->pos, 3 * sizeof(double));
     memcpy(b->ivel, b->vel, 3 * sizeof(double));
     memcpy(b->iquat, b->quat, 4 * sizeof(double));

@@ -13,6 +13,8 @@ typedef struct {
     double *acc;           /* written acceleration [m/s^2] (nt x 3), NULL for pose: row 0
                               a(t_0), row k > 0 the mean over [t_k-1, t_k]              */
     double *aedge;         /* pulse: acceleration at the samples (nt x 3) [m/s^2]      */
+    double *wedge;         /* pulse: angular velocity's slope at the samples (nt x 3)
+                              [rad/s^2]                                                 */
     double *ipos;          /* pulse: integrated position at the samples [m] (nt x 3)   */
     double *ivel;          /* pulse: integrated velocity at the samples [m/s] (nt x 3) */
     double *iquat;         /* pulse: integrated orientation at the samples (nt x 4)    */

@@ -746,10 +746,24 @@ static const mcs_skey slave_master_keys[] = {
     RS("master", PART, 1, REQ, "master side (symmetric: its nodes against the slave segments too)"),
     END,
 };
+/* the bodies' surface compliance in series with the penalty, per FE node: force = stress(delta_b)
+ * x the node's tributary area (MADYMO's MB-FE contact characteristic; docs/contracts.md "Soft
+ * body surfaces in bodies contacts"); the unloading keys as a characteristic's, on stress */
+static const mcs_skey body_law_keys[] = {
+    C("stress", LEN, MCS_DIM_PRESSURE, 2, REQ, 0,
+      "stress vs. penetration into the body [[m, Pa], ...] (2 to 32 points)"),
+    Q("unloading_slope", MCS_D(-2, 1, -2, 0, 0), GT, 0, 0,
+      "unloading slope from the maximum [Pa/m] (none: elastic, along the curve)"),
+    Q("elastic_limit", LEN, GE, 0, 0, "penetration below which unloading is elastic [m]"),
+    END,
+};
+static const mcs_smap body_law_map = {.what = "body characteristic", .keys = body_law_keys};
 /* FE nodes against stage-1 bodies' surfaces (stage1_mb/mb_couple_contact.c) */
 static const mcs_skey bodies_contact_keys[] = {
     RS("parts", PART, 1, REQ, "FE parts whose nodes meet the bodies"),
     RS("bodies", BODY, 1, REQ, "stage-1 bodies whose ellipsoid and facet surfaces they meet"),
+    M("body_characteristic", body_law_map, 0,
+      "the bodies' surface compliance in series (ellipsoids only; none: rigid surfaces)"),
     END,
 };
 static const mcs_smap bodies_contact_map = {.what = "bodies contact", .keys = bodies_contact_keys};

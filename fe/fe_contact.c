@@ -27,7 +27,7 @@ void fe_contact_state_destroy(fe_contact_state **p)
     free(c->x_ref), free(c->seg_box), free(c->cell_off), free(c->cell_item);
     free(c->pass_hash), free(c->pass_cell_base), free(c->pass_cell), free(c->ent_cand);
     free(c->ent_cand_off), free(c->ent_flag), free(c->live), free(c->slot);
-    free(c->ent_ft), free(c->ent_et), free(c->ell_ft), free(c->ell_et);
+    free(c->ent_ft), free(c->ent_et), free(c->ell_ft), free(c->ell_et), free(c->ell_law);
     free(c->node_fc), free(c->part_fric), free(c->part_elastic), free(c->if_force);
     free(c->if_energy), free(c->if_fric), free(c->ell_c), free(c->ell_R), free(c->ell_v);
     free(c->ell_force), free(c->ell_w), free(c->ell_vl), free(c->ell_moment), free(c->ell_work);
@@ -78,6 +78,7 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
     s->ent_et = zalloc(ne2, sizeof(double), &b);
     s->ell_ft = zalloc(3 * (size_t)c->nell_node, sizeof(double), &b);
     s->ell_et = zalloc((size_t)c->nell_node, sizeof(double), &b);
+    s->ell_law = zalloc((size_t)c->nell_node, sizeof(fe_body_law_node), &b);
     s->node_fc = zalloc(3 * (size_t)m->nnode, sizeof(double), &b);
     s->part_fric = zalloc((size_t)m->npart, sizeof(double), &b);
     s->part_elastic = zalloc((size_t)m->npart, sizeof(double), &b);
@@ -120,6 +121,7 @@ mcs_status fe_contact_state_create(const fe_model *m, fe_contact_state **out, mc
     if (!s->pass_hash || !s->pass_cell_base || !s->pass_cell || !s->x_ref || !s->seg_box ||
         !s->cell_off || !s->cell_item || !s->ent_cand_off || !s->ent_cand || !s->ent_flag ||
         !s->live || !s->slot || !s->ent_ft || !s->ent_et || !s->ell_ft || !s->ell_et ||
+        !s->ell_law ||
         !s->node_fc || !s->part_fric || !s->part_elastic || !s->if_force || !s->if_energy ||
         !s->if_fric || !s->ell_c || !s->ell_R || !s->ell_v || !s->ell_force || !s->ell_w ||
         !s->ell_vl || !s->ell_moment || !s->ell_work || !s->fac_c || !s->fac_R || !s->fac_v ||
@@ -146,6 +148,10 @@ void fe_contact_state_reset(const fe_model *m, fe_contact_state *s)
     memset(s->ent_et, 0, ne2 * sizeof(double));
     memset(s->ell_ft, 0, 3 * (size_t)c->nell_node * sizeof(double));
     memset(s->ell_et, 0, (size_t)c->nell_node * sizeof(double));
+    memset(s->ell_law, 0, (size_t)c->nell_node * sizeof(fe_body_law_node));
+    for (int i = 0; i < c->nell; i++)
+        for (int j = c->ell[i].node_begin; c->ell[i].law_curve && j < c->ell[i].node_end; j++)
+            mcs_hyst_reset(&c->ell[i].law, &s->ell_law[j].h);
     memset(s->node_fc, 0, 3 * (size_t)m->nnode * sizeof(double));
     memset(s->part_fric, 0, (size_t)m->npart * sizeof(double));
     memset(s->part_elastic, 0, (size_t)m->npart * sizeof(double));
@@ -378,10 +384,31 @@ static void entry_forces(const fe_model *m, fe_state *s, int e, fe_contact_slot 
 
 /* ---- phase 3: rigid ellipsoids ---------------------------------------------------------- */
 
+/* the body law's deflection delta_b in [0, d] with delta_b + A sigma(delta_b) / kp = d: the
+ * penalty spring (kp) and the body's surface (A sigma) in series carry one force and their
+ * deflections add to the penetration d. The left side increases with delta_b (sigma does not
+ * decrease along a path), so Newton's iterates kept inside the bracket converge (bisection
+ * where a step leaves it) [m] */
+static double law_deflection(const mcs_hyst_model *L, const mcs_hyst_state *h, double A,
+                             double kp, double d)
+{
+    if (!(d > 0)) return 0;
+    double lo = 0, hi = d, x = fmin(fmax(h->x, 0), d);
+    for (int it = 0; it < 100; it++) {
+        const double r = x + A * mcs_hyst_force(L, h, x) / kp - d;
+        if (fabs(r) <= 1e-13 * d || hi - lo <= 1e-15 * d) break;
+        if (r > 0) hi = x;
+        else lo = x;
+        const double xn = x - r / (1 + A * mcs_hyst_stiffness(L, h, x) / kp);
+        x = (xn > lo && xn < hi) ? xn : 0.5 * (lo + hi);
+    }
+    return x;
+}
+
 void fe_contact_rigid_node(const fe_model *m, fe_state *s, int n, double g, const double R[9],
                            const double db[3], const double qb[3], double scale, double mu,
                            const double V[3], const double W[3], double ft[3], double *et,
-                           double F[3], double M[3])
+                           const fe_contact_law *law, double F[3], double M[3])
 {
     double dir[3], qw[3]; /* the normal and the surface point q - c, world */
     for (int k = 0; k < 3; k++) {
@@ -392,6 +419,16 @@ void fe_contact_rigid_node(const fe_model *m, fe_state *s, int n, double g, cons
     const double dt0 = m->contact->dt0, dtp = s->dt_prev;
     double kp = scale * m->node_mass[n] / (dt0 * dt0), fn = -kp * g;
     double f[3], el = 0.5 * kp * g * g, d = 0;
+    if (law && law->model) {
+        /* the body's surface in series: the penalty spring carries the law's force A sigma */
+        fe_body_law_node *b = law->node;
+        const double A = fe_contact_node_area(m, s, n, dir), x0 = b->h.x;
+        const double xb = law_deflection(law->model, &b->h, A, kp, -g);
+        fn = A * mcs_hyst_update(law->model, &b->h, xb);
+        b->work += 0.5 * (b->force + fn) * (xb - x0);
+        b->force = fn;
+        el = 0.5 * fn * fn / kp + b->work;
+    }
     for (int k = 0; k < 3; k++) f[k] = fn * dir[k];
     if (mu > 0) {
         /* slip against the surface point q, moving at V + W x (q - c) */
@@ -424,9 +461,18 @@ void fe_contact_rigid_node(const fe_model *m, fe_state *s, int n, double g, cons
     cs->pen_max = fmax(cs->pen_max, -g);
 }
 
-void fe_contact_rigid_release(const fe_model *m, fe_state *s, int n, double ft[3], double *et)
+void fe_contact_rigid_release(const fe_model *m, fe_state *s, int n, double ft[3], double *et,
+                              const fe_contact_law *law)
 {
     fe_contact_state *cs = s->contact;
+    fe_body_law_node *b = law && law->model ? law->node : NULL;
+    if (b && (b->h.x != 0 || b->work != 0)) {
+        /* the body's surface unloads to 0: its work so far is what its hysteresis dissipated */
+        b->work -= 0.5 * b->force * b->h.x;
+        if (m->node_part[n] >= 0) cs->part_fric[m->node_part[n]] += b->work;
+        mcs_hyst_reset(law->model, &b->h);
+        b->work = b->force = 0;
+    }
     if (*et > 0 && m->node_part[n] >= 0) cs->part_fric[m->node_part[n]] += *et;
     *et = 0;
     ft[0] = ft[1] = ft[2] = 0;
@@ -449,6 +495,7 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
             const int j = cs->ell_cand[E->node_begin + jc], n = c->ell_node[j];
             const double *x = s->node_x + 3 * n;
             double *ft = cs->ell_ft + 3 * j;
+            const fe_contact_law law = {E->law_curve ? &E->law : NULL, cs->ell_law + j};
             double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]}, pb[3], qb[3];
             const double ht = c->ell_ht[j]; /* shell nodes meet it at t/2, solids at 0 */
             if (fe_dot(r, r) > (amax + ht) * (amax + ht)) goto release;
@@ -471,11 +518,11 @@ static void ellipsoid_forces(const fe_model *m, fe_state *s)
                 len = sqrt(len);
                 for (int k = 0; k < 3; k++) db[k] = nb[k] / len;
                 fe_contact_rigid_node(m, s, n, g, R, db, qb, E->scale, E->mu, V, W, ft,
-                                      &cs->ell_et[j], F, M);
+                                      &cs->ell_et[j], &law, F, M);
                 continue;
             }
         release:
-            fe_contact_rigid_release(m, s, n, ft, &cs->ell_et[j]);
+            fe_contact_rigid_release(m, s, n, ft, &cs->ell_et[j], &law);
         }
     }
 }

@@ -13,6 +13,7 @@
 
 #include <stddef.h>
 
+#include "core/mcs_hysteresis.h"
 #include "fe/fe_model.h"
 
 #define FE_CONTACT_MAX 16    /* most contact interfaces                                      */
@@ -59,6 +60,28 @@ typedef struct {
  * apart; airbag practice (OpenRadioss airbag self contact GAP_MIN = 1 mm) [m] */
 #define FE_CONTACT_FABRIC_TMIN 1e-3
 
+/* a body-side contact law in series with the penalty (an ellipsoid's; docs/contracts.md
+ * "Soft body surfaces in bodies contacts"): the body's surface yields by delta_b with the stress
+ * sigma(delta_b) over the node's tributary area A (fe_contact_model.node_area), the penalty
+ * spring carries the same force: delta_b + A sigma(delta_b) / k_p = penetration. Loading and
+ * unloading as the characteristics' hysteresis element (core/mcs_hysteresis.h) on stress. */
+#define FE_BODY_LAW_PTS 32
+typedef struct {
+    int n;                      /* points of the stress curve; 0: none (rigid surface) [-]     */
+    double x[FE_BODY_LAW_PTS];  /* penetration into the body [m], increasing                    */
+    double y[FE_BODY_LAW_PTS];  /* stress [Pa]                                                 */
+    double unload_slope;        /* unloading line slope [Pa/m]; 0: elastic (along the curve)    */
+    double elastic_limit;       /* no permanent set below this penetration [m]                  */
+} fe_body_law_desc;
+
+/* a node's body-law history while in contact: the stress path's state (deflection delta_b
+ * [m], stress [Pa]), the work of the node's law force on delta_b [J] (trapezoid per step),
+ * that force [N] */
+typedef struct fe_body_law_node {
+    mcs_hyst_state h;
+    double work, force;
+} fe_body_law_node;
+
 typedef struct {
     char name[FE_NAME_MAX];
     double center[3];        /* at t = 0 [m]                                                   */
@@ -69,6 +92,7 @@ typedef struct {
     double friction;         /* Coulomb coefficient [-]                                        */
     int nparts;              /* 0: every node with mass                                        */
     char parts[FE_CONTACT_PARTS][FE_NAME_MAX];
+    fe_body_law_desc law;    /* the body's surface compliance in series (law.n = 0: rigid)     */
 } fe_ellipsoid_desc;
 
 /* a rigid triangle mesh moving with a pose (stage-1 facet surfaces, stage1_mb/
@@ -119,6 +143,8 @@ typedef struct {
     double scale, mu;          /* penalty scale, friction [-]                                  */
     int node_begin, node_end;  /* its nodes in ell_node [-]                                    */
     char name[FE_NAME_MAX];
+    mcs_curve *law_curve;      /* body law: stress vs. penetration (owned; NULL: rigid)        */
+    mcs_hyst_model law;        /* its hysteresis element (stress [Pa] vs. penetration [m])     */
 } fe_contact_ellipsoid;
 
 typedef struct {
@@ -159,6 +185,10 @@ typedef struct fe_contact_model {
     fe_contact_facets *fac;      /* (nfac) rigid facet surfaces (fe_contact_facet.c)            */
     int *fac_node;               /* (nfac_node) nodes each facet surface acts on                */
     double *fac_ht;              /* (nfac_node) half shell thickness at each of them [m]        */
+    /* body laws: each node's surface faces (exterior hex faces, shell elements), CSR, for its
+     * tributary contact area (fe_contact_node_area); NULL without a body law */
+    int *area_off;               /* (nnode + 1)                                                */
+    int (*area_face)[5];         /* its faces: 4 nodes (a triangle's repeated), 1: two-sided  */
 } fe_contact_model;
 
 /* called by fe_model_create once the model is frozen (masses, dt_initial known) */
@@ -195,6 +225,7 @@ typedef struct fe_contact_state {
     double *ent_et;         /* (nent x 2) tangential (stick) elastic energy of the slot [J]  */
     double *ell_ft;         /* (nell_node x 3) ellipsoid friction history [N]               */
     double *ell_et;         /* (nell_node) its tangential elastic energy [J]                 */
+    struct fe_body_law_node *ell_law; /* (nell_node) body-law history of each node          */
     /* nodal contact forces and the energy bookkeeping */
     double *node_fc;        /* (nnode x 3) contact force at t [N]                            */
     double *part_fric;      /* (npart) frictional dissipation so far [J]                     */

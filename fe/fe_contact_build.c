@@ -5,6 +5,7 @@
 #include "fe/fe_contact.h"
 #include "fe/fe_contact_impl.h"
 #include "fe/fe_elem.h"
+#include "fe/fe_state.h"
 
 #include <limits.h>
 #include <math.h>
@@ -454,6 +455,94 @@ void fe_contact_quat_to_R(const double q0[4], double R[9])
     R[6] = 2 * (x * z - w * y), R[7] = 2 * (y * z + w * x), R[8] = 1 - 2 * (x * x + y * y);
 }
 
+/* the body law of ellipsoid E from its descriptor (docs/contracts.md "Soft body surfaces in
+ * bodies contacts") */
+static mcs_status build_law(const fe_body_law_desc *d, fe_contact_ellipsoid *E, mcs_error *err)
+{
+    if (d->n == 0) return MCS_OK;
+    mcs_error e2 = {0};
+    mcs_status st = mcs_curve_create(E->name, d->n, d->x, d->y, MCS_EXTRAP_LINEAR,
+                                     MCS_EXTRAP_LINEAR, &E->law_curve, &e2);
+    if (st) return MCS_ERR(err, st, "fe: ellipsoid '%s': body law: %s", E->name, e2.msg);
+    E->law = (mcs_hyst_model){.loading = E->law_curve, .unload = MCS_UNLOAD_ELASTIC,
+                              .elastic_limit = INFINITY};
+    if (d->unload_slope > 0) {
+        E->law.unload = MCS_UNLOAD_SLOPE;
+        E->law.unload_slope = d->unload_slope;
+        E->law.elastic_limit = d->elastic_limit;
+    }
+    st = mcs_hyst_model_check(&E->law, E->name, &e2);
+    if (st) return MCS_ERR(err, st, "fe: ellipsoid '%s': body law: %s", E->name, e2.msg);
+    return MCS_OK;
+}
+
+/* the body laws' surface faces of each node: the exterior hex faces (tetrahedra, pentahedra:
+ * their padded faces) and the shell elements (two-sided), CSR (fe_contact_node_area) */
+static mcs_status build_node_faces(fe_contact_model *c, const fe_model *m,
+                                   const unsigned char *ext, mcs_error *err)
+{
+    c->area_off = calloc((size_t)m->nnode + 1, sizeof(int));
+    if (!c->area_off) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
+    for (int pass = 0; pass < 2; pass++) {
+        int *fill = NULL;
+        if (pass == 1) {
+            for (int n = 0; n < m->nnode; n++) c->area_off[n + 1] += c->area_off[n];
+            c->area_face = malloc(sizeof *c->area_face * (size_t)(c->area_off[m->nnode] + 1));
+            fill = calloc((size_t)m->nnode + 1, sizeof(int));
+            if (!c->area_face || !fill) {
+                free(fill);
+                return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
+            }
+        }
+        for (int e = 0; e < m->nhex + m->nshell; e++) {
+            const int hex = e < m->nhex, el = hex ? e : e - m->nhex;
+            for (int f = 0; f < (hex ? 6 : 1); f++) {
+                if (hex && !ext[6 * el + f]) continue;
+                int q[5];
+                for (int i = 0; i < 4; i++)
+                    q[i] = hex ? m->hex_node[8 * el + hex_face[f][i]] : m->shell_node[4 * el + i];
+                q[4] = !hex;
+                for (int i = 0; i < 4; i++) {
+                    int dup = 0;
+                    for (int j = 0; j < i; j++) dup |= q[j] == q[i];
+                    if (dup) continue;
+                    if (pass == 0) c->area_off[q[i] + 1]++;
+                    else memcpy(c->area_face[c->area_off[q[i]] + fill[q[i]]++], q, sizeof q);
+                }
+            }
+        }
+        free(fill);
+    }
+    c->bytes += sizeof(int) * ((size_t)m->nnode + 1 + 5 * (size_t)c->area_off[m->nnode]);
+    return MCS_OK;
+}
+
+double fe_contact_node_area(const fe_model *m, const fe_state *s, int n, const double dir[3])
+{
+    const fe_contact_model *c = m->contact;
+    const double *X = s->node_x;
+    double A = 0;
+    for (int k = c->area_off[n]; k < c->area_off[n + 1]; k++) {
+        const int *q = c->area_face[k];
+        int nu = 0;
+        for (int i = 0; i < 4; i++) {
+            int dup = 0;
+            for (int j = 0; j < i; j++) dup |= q[j] == q[i];
+            nu += !dup;
+        }
+        if (nu < 3) continue;
+        double d1[3], d2[3], a[3];
+        for (int k2 = 0; k2 < 3; k2++) {
+            d1[k2] = X[3 * q[2] + k2] - X[3 * q[0] + k2];
+            d2[k2] = X[3 * q[3] + k2] - X[3 * q[1] + k2];
+        }
+        fe_cross(d1, d2, a); /* twice the vector area (outward for a hex face) */
+        const double an = -0.5 * fe_dot(a, dir) / nu;
+        A += q[4] ? fabs(an) : fmax(an, 0);
+    }
+    return A;
+}
+
 static mcs_status build_ellipsoids(const fe_builder *b, fe_contact_model *c, const fe_model *m,
                                    unsigned char *mark, const double *shell_ht, mcs_error *err)
 {
@@ -475,6 +564,11 @@ static mcs_status build_ellipsoids(const fe_builder *b, fe_contact_model *c, con
         fe_contact_quat_to_R(d->orientation, E->R);
         E->scale = d->penalty_scale > 0 ? d->penalty_scale : 0.1;
         E->mu = d->friction;
+        mcs_status st = build_law(&d->law, E, err);
+        if (st) {
+            free(mk);
+            return st;
+        }
         memset(mark, d->nparts ? 0 : 1, (size_t)m->nnode);
         for (int j = 0; j < d->nparts; j++) {
             fe_builder_part_nodes(b, fe_builder_find_part(b, d->parts[j]), mk);
@@ -536,7 +630,9 @@ void fe_contact_model_free(fe_model *m)
     free(c->iface), free(c->pass), free(c->seg_node), free(c->seg_part), free(c->seg_solid);
     free(c->seg_ht), free(c->seg_k);
     free(c->ent_node), free(c->ent_ht), free(c->nbr_off), free(c->nbr);
-    free(c->touch), free(c->ell), free(c->ell_node), free(c->ell_ht);
+    for (int i = 0; c->ell && i < c->nell; i++) mcs_curve_destroy(&c->ell[i].law_curve);
+    free(c->touch), free(c->ell), free(c->ell_node), free(c->ell_ht), free(c->area_off);
+    free(c->area_face);
     fe_contact_facets_free(c);
     free(c);
     m->contact = NULL;
@@ -592,6 +688,8 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
     }
     if (!st && any_self) st = build_neighbours(c, m, err);
     if (!st) st = build_ellipsoids(b, c, m, cb.mark, cb.shell_ht, err);
+    for (int i = 0; i < c->nell && !st; i++)
+        if (c->ell[i].law_curve && !c->area_off) st = build_node_faces(c, m, cb.ext, err);
     if (!st) st = fe_contact_facets_build(b, c, m, cb.mark, cb.shell_ht, err);
     if (!st) st = build_touch(c, m, cb.mark, err);
     if (!st) {

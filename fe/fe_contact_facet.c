@@ -264,10 +264,10 @@ void fe_contact_facets_forces(const fe_model *m, fe_state *s)
                 }
             }
             fe_contact_rigid_node(m, s, n, g, R, db, qb, F->scale, F->mu, V, W, ft, &cs->fac_et[j],
-                                  Ft, M);
+                                  NULL, Ft, M);
             continue;
         release:
-            fe_contact_rigid_release(m, s, n, ft, &cs->fac_et[j]);
+            fe_contact_rigid_release(m, s, n, ft, &cs->fac_et[j], NULL);
         }
     }
 }

@@ -99,11 +99,27 @@ double fe_friction_update(double ft[3], const double n[3], const double du[3], d
  * friction mu (ft the stick force, *et its energy): the force onto the node (node_fc), minus it
  * onto the surface's F and its moment about the reference point onto M, the part's elastic and
  * frictional energy, pen_max */
+/* a body-side law in series (fe_body_law_desc): its model (NULL: rigid surface), the node's
+ * history */
+typedef struct {
+    const mcs_hyst_model *model;
+    fe_body_law_node *node;
+} fe_contact_law;
+
+/* node n's tributary contact area facing a body along dir (unit, from the body towards the
+ * node, world): a quarter (a third for a triangle) of each of its surface faces' vector areas
+ * in the current configuration, summed, projected on -dir (an exterior hex face counts when
+ * it faces the body; a shell element, two-sided, either way) [m^2] */
+double fe_contact_node_area(const fe_model *m, const fe_state *s, int n, const double dir[3]);
+
 void fe_contact_rigid_node(const fe_model *m, fe_state *s, int n, double g, const double R[9],
                            const double db[3], const double qb[3], double scale, double mu, const double V[3],
-                           const double W[3], double ft[3], double *et, double F[3], double M[3]);
-/* node n out of contact with it: the stick spring's energy *et is dissipated, ft zeroed */
-void fe_contact_rigid_release(const fe_model *m, fe_state *s, int n, double ft[3], double *et);
+                           const double W[3], double ft[3], double *et, const fe_contact_law *law,
+                           double F[3], double M[3]);
+/* node n out of contact with it: the stick spring's energy *et is dissipated, ft zeroed; a
+ * body law unloads to 0 and its work (the hysteresis' dissipation) is dissipated, history reset */
+void fe_contact_rigid_release(const fe_model *m, fe_state *s, int n, double ft[3], double *et,
+                              const fe_contact_law *law);
 
 /* rigid facet surfaces (fe_contact_facet.c): node lists and grids when the model is built
  * (mark: nnode bytes of scratch, shell_ht: half shell thickness per node), freed with it; their

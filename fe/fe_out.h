@@ -8,6 +8,7 @@
 
 #include "fe/fe_out_contact.h"
 #include "fe/fe_out_mesh.h"
+#include "fe/fe_out_motion.h"
 #include "fe/fe_out_parts.h"
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_slipring.h"
@@ -18,6 +19,7 @@ typedef struct {
     fe_out_restraint rest;  /* /stage<N>/airbag, /stage<N>/retractor             */
     fe_out_slipring rings;  /* /stage<N>/slipring                                */
     fe_out_parts parts;     /* /stage<N>/parts/<part>/energy                     */
+    fe_out_motion motion;   /* /stage<N>/parts/<part>/{mass, motion} (fe_out_motion.h) */
 } fe_out;
 
 /* every series of m into /stage<stage> of r */

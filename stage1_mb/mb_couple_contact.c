@@ -82,7 +82,7 @@ static int push_surf(mb_couple_contact *c, cc_surf v)
 /* one kernel surface for stage-1 surface k of body b, in contact `name` with parts */
 static mcs_status add_surface(fe_builder *fb, const mb_model *m, int k, const char *name,
                               const char (*parts)[FE_NAME_MAX], int nparts, double mu, double scale,
-                              int *kind, mcs_error *err)
+                              const fe_body_law_desc *law, int *kind, mcs_error *err)
 {
     const mb_surface *sf = &m->surf[k];
     const mb_body_desc *d = &m->body[sf->body];
@@ -100,11 +100,15 @@ static mcs_status add_surface(fe_builder *fb, const mb_model *m, int k, const ch
         for (int i = 0; i < 3; i++)
             e.center[i] = d->pos[i] + c[i];
         memcpy(e.semi_axes, sf->semi, sizeof e.semi_axes);
-        e.penalty_scale = scale, e.friction = mu, e.nparts = nparts;
+        e.penalty_scale = scale, e.friction = mu, e.nparts = nparts, e.law = *law;
         memcpy(e.parts, parts, sizeof(e.parts[0]) * (size_t)nparts);
         *kind = 0;
         return fe_builder_add_ellipsoid(fb, &e, err); /* pose set every subcycle */
     }
+    if (law->n > 0)
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "body_characteristic: on ellipsoid surfaces only ('%s' is a facet mesh)",
+                       sf->name);
     fe_facet_desc f;
     memset(&f, 0, sizeof f);
     memcpy(f.name, nm, sizeof nm);
@@ -144,6 +148,24 @@ static int label_contact(mb_couple_contact *cc, const char *nm, char (*parts)[FE
     return 0;
 }
 
+/* body_characteristic: the bodies' surface compliance in series (docs/contracts.md "Soft body
+ * surfaces in bodies contacts") */
+static mcs_status body_law(const mcs_node *n, fe_body_law_desc *law, mcs_error *err)
+{
+    memset(law, 0, sizeof *law);
+    if (mcs_node_kind(n) == MCS_NODE_NULL) return MCS_OK;
+    const mcs_node *c = mcs_node_get(n, "stress");
+    const int len = mcs_node_curve_len(c);
+    if (len < 2 || len > FE_BODY_LAW_PTS)
+        return mcs_node_error(c, err, MCS_ERR_RANGE, "2 to %d points", FE_BODY_LAW_PTS);
+    mcs_status st = mcs_node_curve(c, law->x, law->y, len, err);
+    if (st) return st;
+    law->n = len;
+    law->unload_slope = mcs_node_num_or(n, "unloading_slope", 0);
+    law->elastic_limit = mcs_node_num_or(n, "elastic_limit", 0);
+    return MCS_OK;
+}
+
 static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc, const mcs_node *n,
                               int index, mcs_error *err)
 {
@@ -170,6 +192,9 @@ static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc
     memcpy(cc->name[cc->ncontact++], name, FE_NAME_MAX);
     const double mu = mcs_node_num_or(n, "friction", 0);
     const double scale = mcs_node_num_or(n, "penalty_scale", 0);
+    fe_body_law_desc law;
+    mcs_status lst = body_law(mcs_node_get(n, "body_characteristic"), &law, err);
+    if (lst) return lst;
     for (int j = 0; j < mcs_node_len(bl); j++) {
         const mcs_node *bn = mcs_node_at(bl, j);
         const int b = mb_model_body(m, mcs_node_str(bn));
@@ -183,7 +208,7 @@ static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc
                 continue;
             mcs_error kerr = {0};
             int kind = 0;
-            mcs_status st = add_surface(fb, m, k, name, parts, np, mu, scale, &kind, &kerr);
+            mcs_status st = add_surface(fb, m, k, name, parts, np, mu, scale, &law, &kind, &kerr);
             if (st) return mcs_node_error(bn, err, st, "%s", kerr.msg);
             cc_surf v = {kind, -1, slot, k, cc->ncontact - 1}; /* index: set below */
             if (push_surf(cc, v)) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");

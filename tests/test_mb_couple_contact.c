@@ -1,5 +1,18 @@
 /* tests for stage1_mb/mb_couple_contact: fe.contacts[] of type bodies (FE nodes against the
  * ellipsoid and facet surfaces of stage-1 bodies) in a coupled stage-1 run.
+ * References, each derived beside its test, none a value of the code under test:
+ * - a ball dropped on a fixed plate or hex block: a conservative oscillator on the lattice force
+ *   sum k_n (delta - h_n) of the nodes under it (rebound at v0, peak force where its work is
+ *   M v0^2 / 2), and the impulse 2 M v0 equal to the plate's;
+ * - a solid ball set down sliding: Coulomb friction decelerates it at mu g until it rolls at
+ *   5/7 v0 (Routh, Dynamics of a System of Rigid Bodies);
+ * - a ball thrown at a free plate in space, a paddle spinning onto a free sheet: linear and
+ *   angular momentum of bodies + FE conserved (no external load);
+ * - a facet block on a fixed membrane: a linear spring K = sum k_n, peak force v0 sqrt(M K),
+ *   contact time pi sqrt(M / K); half over the sheet's edge, the moment r_c x J of the
+ *   impulse J at the stiffness-weighted centroid r_c of the nodes under it;
+ * - the contact's written force equal and opposite to the facet's, row by row;
+ * - bad input refused at its FILE:LINE:COL.
  *
  * The plates that stand for fixed FE surfaces are heavy (density x 1000): every node is fixed,
  * so their mass only sets the FE stable step dt0 (and the per-node penalty k = s m_n / dt0^2,
@@ -137,6 +150,7 @@ static void test_ball_drop_on_fixed_plate(void)
     FIG("stage1_engine.contact_drop_rebound_err_pct", "%.3f", fabs(verr));
     FIG("stage1_engine.contact_drop_peak_err_pct", "%.2f", fabs(perr));
     FIG_TOL("stage1_engine.contact_drop_drift", "%.4f", drift, 3e-4);
+    FIG_TOL("stage1_engine.contact_drop_impulse_err", "%.0e", fabs(imp_fe - 2 * v0), 1e-4);
     CHECK_NEAR(verr, 0, 0.1);
     CHECK_NEAR(perr, 0, 1.0);
     /* equal and opposite: what the plate's nodes received (minus it) is what the ball got;

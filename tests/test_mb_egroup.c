@@ -102,6 +102,7 @@ static void test_drop_on_foam(void)
            "difference %.2e of %.3f J (%.3f J at the end)\n",
            rel, peak, end);
     FIG_TOL("energy.foam_drop_err", "%.1e", rel, 1e-5);
+    FIG("energy.foam_drop_peak_j", "%.1f", peak);
     CHECK(rel < 2e-4); /* the rolling ball: ODE's rotation update is not the mean velocity's */
     CHECK(peak > 0.5 * 5 * (0.25 + 9)); /* the ball stopped in the foam: all its kinetic energy
                                            and some potential energy went there */
@@ -248,6 +249,7 @@ static void test_scenario_groups(void)
     printf("two balls: b1's transfer to the contact vs its kinetic energy loss %.2e of %.3f J; "
            "the pair's kinetic + internal vs its initial %.4f J: %.2e J; the model's drift %.2e\n",
            worst1 / peak, peak, e0, worstp, mb_energy_drift(m, s));
+    FIG("energy.balls_pair_drift", "%.0e", mb_energy_drift(m, s));
     CHECK(peak > 1.0);           /* b1 gave b2 most of its energy */
     CHECK(worst1 < 2e-4 * peak); /* test_drop_on_foam's: the spin */
     /* the contact's element energy (stored + damper + friction, as /stage1/energy takes it)

@@ -1,6 +1,12 @@
 /* tests for the stage-2 cockpit: stage2.fe merged into fe: (stage2_fe/s2_scenario.c,
  * core/mcs_scn_merge.c), foam pads generated on a body's ellipsoid and attached by
- * `where: surface` (fe/fe_scn_pad.c), material_from (fe/fe_scn_build.c). */
+ * `where: surface` (fe/fe_scn_pad.c), material_from (fe/fe_scn_build.c).
+ * References (docs/validation_stage2.md "The cockpit"), none a value of the code under test:
+ * the merge against the scenario text it must give (keys added, settings replaced, errors at
+ * their FILE:LINE:COL); the pads' geometry against closed forms (nodes at R and R + t on a
+ * sphere, the inscribed facets' area and frustum volume times 425 kg/m^3, the paper's foam
+ * density [2023 Sec. 2.3.3]; an ellipsoid's equation and its surface normal); a body pressed
+ * into a pad against the foam's own 100/s loading curve times the contact area, S_100(e) A. */
 #include "core/mcs_scenario.h"
 #include "fe/fe_contact.h"
 #include "fe/fe_model.h"

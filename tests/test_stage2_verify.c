@@ -140,10 +140,59 @@ static void rate_regions(const char *h2, double rating[3])
     }
 }
 
+/* scenario text t without its body_characteristic entries (", body_characteristic: {...}"
+ * cut from the comma before the key to the brace that closes its value), in place */
+static void strip_body_laws(char *t)
+{
+    const char *key = "body_characteristic: {"; /* the key with its value (comments name it) */
+    for (char *at; (at = strstr(t, key));) {
+        char *c = at, *e = strchr(at, '{');
+        while (c > t && *c != ',') c--;
+        int depth = 0;
+        for (; e && *e; e++) {
+            depth += (*e == '{') - (*e == '}');
+            if (*e == '}' && depth == 0) break;
+        }
+        if (!e || !*e || *c != ',') return;
+        memmove(c, e + 1, strlen(e + 1) + 1);
+    }
+}
+
+/* the tank pads' largest contact force on the rider (both pads) [N] and its time [s] in h2 */
+static void pad_peak(const char *h2, double *fpk, double *tpk)
+{
+    const char *pads[] = {"/stage2/contact/pad_tank_l_rider/force",
+                          "/stage2/contact/pad_tank_r_rider/force"};
+    *fpk = *tpk = 0;
+    for (int p = 0; p < 2; p++) {
+        size_t n = 0;
+        double *f = read_ds(h2, pads[p], &n);
+        CHECK(f && n == 3 * 3001);
+        for (size_t j = 0; f && j < n / 3; j++) {
+            double m = sqrt(f[3 * j] * f[3 * j] + f[3 * j + 1] * f[3 * j + 1] +
+                            f[3 * j + 2] * f[3 * j + 2]);
+            if (m > *fpk) *fpk = m, *tpk = 1e-4 * (double)j;
+        }
+        free(f);
+    }
+}
+
+/* stage 2's neck tension [N] */
+static double neck_tension(const char *h2)
+{
+    size_t one = 0;
+    double *b = read_ds(h2, "/stage2/injury/neck_tension", &one), v = b ? b[0] : NAN;
+    CHECK(b != NULL);
+    free(b);
+    return v;
+}
+
 /* item 7's consistency: stage 2 of the concept case with the vehicles prescribed and the
  * cockpit as in stage 1 (rigid: stage 1's surfaces, no stage2.fe) rates the rider's head,
  * chest and pelvis resultant accelerations >= 0.8 against stage 1 (ISO/TS 18571); then with
- * the shipped stage-2 scenario's tank foam pads (reported) */
+ * the shipped stage-2 scenario's tank foam pads, whose contacts carry the thigh's flesh
+ * (body_characteristic), and with the same pads meeting a rigid thigh (the laws cut out)
+ * (reported) */
 static void test_consistency_413(void)
 {
     if (!th_verify() || !h1[0]) return;
@@ -158,56 +207,59 @@ static void test_consistency_413(void)
     char *y = text_with(CONCEPT, NULL, NULL, blk);
     s2_summary sum = {0};
     mcs_error err = {0};
-    double rigid[3], foam[3];
+    double rigid[3], foam[3], hard[3];
     CHECK(y && run_s2(CONCEPT, y, h1, h2, &sum, &err) == MCS_OK);
     rate_regions(h2, rigid);
     unlink(h2);
     free(y);
+    /* the pads with the thigh's flesh (the shipped scenario) */
     y = text_with(CONCEPT_S2, NULL, NULL, "");
+    CHECK(y && strstr(y, "body_characteristic: {"));
     CHECK(y && run_s2(CONCEPT_S2, y, h1, h2, &sum, &err) == MCS_OK);
     rate_regions(h2, foam);
-    /* what the pads change: their contact force on the rider, and the neck tension */
-    double fpk = 0, tpk = 0, nt1 = 0, nt2 = 0;
-    const char *pads[] = {"/stage2/contact/pad_tank_l_rider/force",
-                          "/stage2/contact/pad_tank_r_rider/force"};
-    for (int p = 0; p < 2; p++) {
-        size_t n = 0;
-        double *f = read_ds(h2, pads[p], &n);
-        CHECK(f && n == 3 * 3001);
-        for (size_t j = 0; f && j < n / 3; j++) {
-            double m = sqrt(f[3 * j] * f[3 * j] + f[3 * j + 1] * f[3 * j + 1] +
-                            f[3 * j + 2] * f[3 * j + 2]);
-            if (m > fpk) fpk = m, tpk = 1e-4 * (double)j;
-        }
-        free(f);
-    }
-    size_t one = 0;
-    double *a = read_ds(h1, "/stage1/injury/neck_tension", &one);
-    double *b = read_ds(h2, "/stage2/injury/neck_tension", &one);
-    CHECK(a && b);
-    if (a && b) nt1 = a[0], nt2 = b[0];
-    free(a), free(b);
-    printf("  tank pads: contact force peak %.4g N at %.4g s; neck tension %.4g N (stage 1) "
-           "-> %.4g N\n",
-           fpk, tpk, nt1, nt2);
-    FIG("stage2.foam_pad_peak_kn", "%.0f", 1e-3 * fpk);
-    FIG("stage2.foam_pad_peak_ms", "%.1f", 1e3 * tpk);
-    FIG("stage2.neck_tension_s1_kn", "%.2f", 1e-3 * nt1);
-    FIG("stage2.neck_tension_foam_kn", "%.2f", 1e-3 * nt2);
+    double fpk = 0, tpk = 0, nt2 = neck_tension(h2), nt1 = 0;
+    pad_peak(h2, &fpk, &tpk);
+    unlink(h2);
+    /* the same pads against a rigid thigh */
+    if (y) strip_body_laws(y);
+    CHECK(y && !strstr(y, "body_characteristic: {") && strstr(y, "friction: 0.5}"));
+    CHECK(y && run_s2(CONCEPT_S2, y, h1, h2, &sum, &err) == MCS_OK);
+    rate_regions(h2, hard);
+    double hpk = 0, htpk = 0, nth = neck_tension(h2);
+    pad_peak(h2, &hpk, &htpk);
     unlink(h2);
     free(y);
+    size_t one = 0;
+    double *a = read_ds(h1, "/stage1/injury/neck_tension", &one);
+    CHECK(a != NULL);
+    if (a) nt1 = a[0];
+    free(a);
+    printf("  tank pads, thigh flesh: contact force peak %.4g N at %.4g s; rigid thigh: %.4g N "
+           "at %.4g s; neck tension %.4g N (stage 1) -> %.4g N (flesh), %.4g N (rigid thigh)\n",
+           fpk, tpk, hpk, htpk, nt1, nt2, nth);
+    FIG("stage2.foam_pad_peak_n", "%.0f", fpk);
+    FIG("stage2.foam_pad_peak_ms", "%.1f", 1e3 * tpk);
+    FIG("stage2.foam_pad_rigid_thigh_peak_kn", "%.0f", 1e-3 * hpk);
+    FIG("stage2.foam_pad_rigid_thigh_peak_ms", "%.1f", 1e3 * htpk);
+    FIG("stage2.neck_tension_s1_kn", "%.2f", 1e-3 * nt1);
+    FIG("stage2.neck_tension_foam_kn", "%.2f", 1e-3 * nt2);
+    FIG("stage2.neck_tension_rigid_thigh_kn", "%.2f", 1e-3 * nth);
     printf("413 concept, stage 2 against stage 1, resultant acceleration (ISO/TS 18571):\n"
            "  rigid cockpit: head %.3f, chest %.3f, pelvis %.3f\n"
-           "  tank foam pads (stage2.fe): head %.3f, chest %.3f, pelvis %.3f\n",
-           rigid[0], rigid[1], rigid[2], foam[0], foam[1], foam[2]);
+           "  tank foam pads (stage2.fe), thigh flesh: head %.3f, chest %.3f, pelvis %.3f\n"
+           "  tank foam pads, rigid thigh: head %.3f, chest %.3f, pelvis %.3f\n",
+           rigid[0], rigid[1], rigid[2], foam[0], foam[1], foam[2], hard[0], hard[1], hard[2]);
     for (int i = 0; i < 3; i++)
-        CHECK(rigid[i] >= 0.8);
+        CHECK(rigid[i] >= 0.8 && foam[i] >= 0.8);
     FIG("stage2.consistency_rigid_head", "%.2f", rigid[0]);
     FIG("stage2.consistency_rigid_chest", "%.2f", rigid[1]);
     FIG("stage2.consistency_rigid_pelvis", "%.2f", rigid[2]);
     FIG("stage2.consistency_foam_head", "%.2f", foam[0]);
     FIG("stage2.consistency_foam_chest", "%.2f", foam[1]);
     FIG("stage2.consistency_foam_pelvis", "%.2f", foam[2]);
+    FIG("stage2.consistency_foam_rigid_thigh_head", "%.2f", hard[0]);
+    FIG("stage2.consistency_foam_rigid_thigh_chest", "%.2f", hard[1]);
+    FIG("stage2.consistency_foam_rigid_thigh_pelvis", "%.2f", hard[2]);
 }
 
 int main(void)

@@ -1,13 +1,16 @@
 /* test_validation_restraints: the closed forms of docs/validation_restraints.md inside coupled
  * stage-1 runs (bodies + fe: block, stage1_mb/mb_couple.c), each on a scenario of
  * scenarios/verification/coupled_*.yaml (scripts/plot_restraints.sh plots the same files):
- * - a rigid body on a closed gas bag: p V^gamma = const (adiabatic closed chamber), force on
- *   the body = gauge pressure x the cap's area;
- * - a body pulled by a belt through the load limiter: deceleration plateau F_limit / M;
- * - the pretensioner's pay-in against the paper's Eq. 3 with no load;
- * - a body on a foam block: the foam's force-deflection curve, quasi-static and at impact rate;
- * - momentum of body + FE with no external load;
- * and the energy drift of each run. */
+ * - a rigid body on a closed gas bag: p V^gamma = const (the ideal gas's adiabat, gamma 1.4;
+ *   docs/gasbag.md), force on the body = gauge pressure x the cap's area (statics);
+ * - a body pulled by a belt through the load limiter: deceleration plateau F_limit / M (Newton's
+ *   second law; the paper's 2 kN, 2023 Sec. 2.3.1), the elastic onset and the stop by hand;
+ * - the pretensioner's pay-in against the paper's Eq. 3 with no load, the free body against a
+ *   tension-only spring's closed form;
+ * - a body on a foam block: the foam's force-deflection curve as the model file defines it
+ *   (force = area x S(strain, rate)), quasi-static and at impact rate;
+ * - momentum of body + FE with no external load (conserved: Newton's third law);
+ * and the energy drift of each run. Each case's derivation is beside it. */
 #include "fe/fe_restraint.h"
 #include "stage1_mb/mb_couple.h"
 #include "tests/harness.h"

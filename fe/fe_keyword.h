@@ -152,9 +152,11 @@ typedef struct {
     fe_kw_loc loc;
 } fe_kw_spc;
 
+/* a keyword outside the subset: one entry per distinct name, in the order first met */
 typedef struct {
     char name[FE_KW_NAME_MAX + 16]; /* as written, without the "*" */
-    fe_kw_loc loc;
+    fe_kw_loc loc;                  /* its first occurrence                               */
+    int count;                      /* occurrences [-]                                    */
 } fe_kw_unknown;
 
 typedef struct fe_kw_deck {
@@ -196,6 +198,11 @@ mcs_status fe_kw_read(const char *path, const fe_kw_opts *opts, fe_kw_deck **out
 mcs_status fe_kw_read_mem(const char *name, const char *text, size_t len, const fe_kw_opts *opts,
                           fe_kw_deck **out, mcs_error *err);
 void fe_kw_deck_destroy(fe_kw_deck **p);
+
+/* the unknown keywords whose names start with one of the '|'-separated prefixes (e.g.
+ * "ELEMENT_|PART"), as " (skipped as not supported: *ELEMENT_SPH at f.k:12, ...)" for an error
+ * that their absence explains; "" when none. Returns buf. */
+const char *fe_kw_skipped(const fe_kw_deck *d, const char *prefixes, char *buf, size_t n);
 
 /* lookups by ID (NULL / -1 when absent) */
 int fe_kw_node_index(const fe_kw_deck *d, int nid);

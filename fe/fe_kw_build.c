@@ -28,9 +28,10 @@ static mcs_status section_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_sec
                                mcs_error *err)
 {
     const fe_kw_section *k = fe_kw_find_section(dk, p->secid);
+    char skip[400];
     if (!k)
-        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: section %d is not defined", p->id,
-                  p->secid);
+        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: section %d is not defined%s", p->id,
+                  p->secid, fe_kw_skipped(dk, "SECTION_", skip, sizeof skip));
     if (k->kind == FE_KW_SEC_SHELL) {
         if (k->elform != 0 && k->elform != 2)
             mcs_log(MCS_LOG_WARN, "%s:%d: warning: *SECTION_SHELL %d: ELFORM %d is run as "
@@ -117,9 +118,10 @@ static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_ma
                                 mcs_error *err)
 {
     const fe_kw_mat *k = fe_kw_find_mat(dk, p->mid);
+    char skip[400];
     if (!k)
-        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: material %d is not defined", p->id,
-                  p->mid);
+        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: material %d is not defined%s", p->id,
+                  p->mid, fe_kw_skipped(dk, "MAT", skip, sizeof skip));
     if (k->type == FE_KW_MAT_SPRING || k->type == FE_KW_MAT_DAMPER)
         return at(dk, k->loc, err, MCS_ERR_TYPE,
                   "material %d is a spring or damper: it belongs to *ELEMENT_DISCRETE parts",
@@ -146,9 +148,11 @@ static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_ma
 mcs_status fe_kw_part_props(const fe_kw_deck *dk, int pid, fe_part_desc *d, mcs_error *err)
 {
     const fe_kw_part *p = fe_kw_find_part(dk, pid);
+    char skip[400];
     if (!p)
-        return MCS_ERR(err, MCS_ERR_KEY, "%s: error: no *PART %d (its section and material)",
-                       dk->nfile ? dk->file[0] : "(deck)", pid);
+        return MCS_ERR(err, MCS_ERR_KEY, "%s: error: no *PART %d (its section and material)%s",
+                       dk->nfile ? dk->file[0] : "(deck)", pid,
+                       fe_kw_skipped(dk, "PART", skip, sizeof skip));
     mcs_status st = section_desc(dk, p, &d->section, err);
     if (!st) st = material_desc(dk, p, &d->material, err);
     return st;
@@ -195,8 +199,10 @@ mcs_status fe_kw_add_part(fe_builder *b, const fe_kw_deck *dk, int pid, const fe
 {
     const char *fn = dk->nfile ? dk->file[0] : "(deck)";
     int t = part_etype(dk, pid);
+    char skip[400];
     if (t == -1)
-        return MCS_ERR(err, MCS_ERR_KEY, "%s: error: no element has part ID %d", fn, pid);
+        return MCS_ERR(err, MCS_ERR_KEY, "%s: error: no element has part ID %d%s", fn, pid,
+                       fe_kw_skipped(dk, "ELEMENT_", skip, sizeof skip));
     if (t == -2)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
                        "%s: error: part %d mixes element types; a part holds one type", fn, pid);
@@ -510,10 +516,13 @@ mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
 {
     for (int t = 0; t < FE_KW_NETYPE; t++)
         for (int i = 0; i < dk->elem[t].n; i++)
-            if (!fe_kw_find_part(dk, dk->elem[t].pid[i]))
+            if (!fe_kw_find_part(dk, dk->elem[t].pid[i])) {
+                char skip[400];
                 return at(dk, dk->elem[t].loc[i], err, MCS_ERR_KEY,
-                          "*ELEMENT_%s %d: part %d has no *PART card", fe_kw_etype_name(t),
-                          dk->elem[t].id[i], dk->elem[t].pid[i]);
+                          "*ELEMENT_%s %d: part %d has no *PART card%s", fe_kw_etype_name(t),
+                          dk->elem[t].id[i], dk->elem[t].pid[i],
+                          fe_kw_skipped(dk, "PART", skip, sizeof skip));
+            }
     int *map = malloc(sizeof(int) * (size_t)(dk->nnode ? dk->nnode : 1));
     char(*names)[FE_NAME_MAX] = calloc((size_t)(dk->npart ? dk->npart : 1), FE_NAME_MAX);
     mcs_status st = map && names ? MCS_OK : MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
@@ -532,8 +541,10 @@ mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
             continue;
         }
         if (!st && part_etype(dk, p->id) == -1) {
-            mcs_log(MCS_LOG_WARN, "%s:%d: warning: *PART %d has no elements: skipped",
-                    dk->file[p->loc.file], p->loc.line, p->id);
+            char skip[400];
+            mcs_log(MCS_LOG_WARN, "%s:%d: warning: *PART %d has no elements: skipped%s",
+                    dk->file[p->loc.file], p->loc.line, p->id,
+                    fe_kw_skipped(dk, "ELEMENT_", skip, sizeof skip));
             continue;
         }
         if (!st) st = fe_kw_add_part(b, dk, p->id, &d, 1, map, NULL, err);

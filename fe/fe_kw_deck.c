@@ -33,6 +33,27 @@ void *kw_push(void **arr, int *n, int *cap, size_t sz)
     return e;
 }
 
+const char *fe_kw_skipped(const fe_kw_deck *d, const char *prefixes, char *buf, size_t n)
+{
+    size_t at = 0;
+    buf[0] = 0;
+    for (int i = 0; i < d->nunknown; i++) {
+        const fe_kw_unknown *u = &d->unknown[i];
+        int hit = 0;
+        for (const char *p = prefixes; *p && !hit;) {
+            size_t k = strcspn(p, "|");
+            hit = k && strncmp(u->name, p, k) == 0;
+            p += k + (p[k] == '|');
+        }
+        if (!hit || at + 1 >= n) continue;
+        at += (size_t)snprintf(buf + at, n - at, "%s*%s at %s:%d",
+                               at ? ", " : " (skipped as not supported: ", u->name,
+                               d->file[u->loc.file], u->loc.line);
+    }
+    if (at && at + 2 < n) snprintf(buf + at, n - at, ")");
+    return buf;
+}
+
 fe_kw_opts fe_kw_opts_default(void)
 {
     fe_kw_opts o = {.units = NULL, .strict = 0, .quiet = 0};

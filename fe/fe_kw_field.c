@@ -137,6 +137,12 @@ mcs_status kw_int(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, const
         return MCS_OK;
     }
     if (kw_parse_int(p, n, out) == 0) return MCS_OK;
+    if (kw_param_is_ref(p, n)) {
+        double v;
+        mcs_status st = kw_param_num(c, cd, p, n, name, 1, &v);
+        if (!st) *out = (int)v;
+        return st;
+    }
     /* an integer written as a real ("12." or "12.0") is accepted */
     double v;
     if (kw_parse_real(p, n, &v) == 0 && v == floor(v) && fabs(v) <= INT_MAX) {
@@ -157,7 +163,19 @@ mcs_status kw_real(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, cons
         return MCS_OK;
     }
     if (kw_parse_real(p, n, out) == 0) return MCS_OK;
+    if (kw_param_is_ref(p, n)) return kw_param_num(c, cd, p, n, name, 0, out);
     return bad(c, cd, p, n, name, "a number");
+}
+
+int kw_field_text(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, char *buf, size_t n)
+{
+    int at, len;
+    span(c, cd, l, i, &at, &len);
+    const char *p = trim(cd->s + at, &len);
+    if ((size_t)len >= n) len = (int)n - 1;
+    memcpy(buf, p, (size_t)len);
+    buf[len] = 0;
+    return (int)(p - cd->s) + 1;
 }
 
 void kw_text(const kw_card *cd, int col0, int w, char *buf, size_t n)

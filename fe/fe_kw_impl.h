@@ -17,6 +17,8 @@ typedef struct {
     int file;
 } kw_card;
 
+#define KW_INCLUDE_DEPTH 8 /* *INCLUDE nesting */
+
 /* a node while reading (sorted and checked at the end) */
 typedef struct {
     int id;
@@ -38,6 +40,12 @@ typedef struct {
     int nnode, cap_node;
     kw_node *node;         /* nodes read so far                                   */
     int ended;             /* *END seen in the current file                       */
+    /* reader mechanics (fe_kw_read.c, fe_kw_param.c) */
+    int nopen;             /* files being read, outermost first                   */
+    int open[KW_INCLUDE_DEPTH + 1]; /* their indices in d->file                    */
+    int npath, cap_path;
+    char **path;           /* *INCLUDE_PATH(_RELATIVE) folders, in the order given  */
+    struct kw_params *par; /* *PARAMETER values (fe_kw_param.c)                    */
 } kw_ctx;
 
 /* layouts: standard widths of a card's fields */
@@ -62,6 +70,8 @@ mcs_status kw_real(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, cons
                    double dflt, double *out);
 /* a text field over columns [col0, col0+w) trimmed into buf (whole card when w <= 0) */
 void kw_text(const kw_card *cd, int col0, int w, char *buf, size_t n);
+/* field i's text, trimmed, into buf; returns its 1-based column */
+int kw_field_text(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, char *buf, size_t n);
 /* true when the field is blank */
 int kw_blank(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i);
 /* an error at a card: "FILE:LINE:COL: error: *KEYWORD: ..." (col 0: no column) */
@@ -86,6 +96,23 @@ mcs_status kw_tet4_to_tet10(kw_ctx *c);
 mcs_status kw_finish(kw_ctx *c);
 /* a new entry at the end of a deck list (zeroed); NULL out of memory */
 void *kw_push(void **arr, int *n, int *cap, size_t sz);
+
+/* ---- parameters (fe_kw_param.c, fe_kw_expr.c) ---- */
+
+/* *PARAMETER(_EXPRESSION)(_LOCAL|_GLOBAL), *PARAMETER_DUPLICATION: 1 = handled (*st set) */
+int kw_param_block(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st);
+/* field text p[0..n) is a reference &NAME or -&NAME */
+int kw_param_is_ref(const char *p, int n);
+/* the value of a reference (as_int: must be integral), errors at the field's column */
+mcs_status kw_param_num(kw_ctx *c, const kw_card *cd, const char *p, int n, const char *field,
+                        int as_int, double *out);
+/* a file ended: its _LOCAL parameters go out of scope */
+mcs_status kw_param_file_done(kw_ctx *c, int file);
+void kw_param_free(kw_ctx *c);
+/* evaluate an expression (fe_kw_expr.c); names through look (0: found); 0 on success, else
+ * -1 with the 0-based offset of the fault in *errpos and a message */
+int kw_expr_eval(const char *s, int (*look)(void *user, const char *name, double *v), void *user,
+                 double *out, int *errpos, char *msg, size_t nmsg);
 
 /* ---- handlers (fe_kw_cards.c): cards of one keyword; 1 = handled, 0 = unknown keyword ---- */
 int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st);

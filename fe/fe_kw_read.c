@@ -8,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define KW_INCLUDE_DEPTH 8
 #define KW_FILE_MAX (1L << 30) /* largest deck file read [B] */
 
 static const struct {
@@ -94,41 +93,143 @@ static mcs_status read_file(kw_ctx *c, const char *path)
     char *text = NULL;
     size_t len = 0;
     mcs_status st = slurp(c, path, &text, &len);
+    c->open[c->nopen++] = fi;
     if (!st) st = read_text(c, fi, text, len);
+    if (!st) st = kw_param_file_done(c, fi);
+    c->nopen--;
     free(text);
     return st;
 }
 
-/* *INCLUDE: the next card names a file, relative to the including file's folder */
+/* folder of a path with its trailing '/' ("" when none) */
+static void folder_of(const char *path, char *buf, size_t n)
+{
+    const char *slash = strrchr(path, '/');
+    snprintf(buf, n, "%.*s", slash ? (int)(slash - path) + 1 : 0, path);
+}
+
+static int is_file(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (f) fclose(f);
+    return f != NULL;
+}
+
+/* an absolute name: /x, or a Windows drive (C:/x) */
+static int is_absolute(const char *name)
+{
+    return name[0] == '/' || (isalpha((unsigned char)name[0]) && name[1] == ':');
+}
+
+/* the file an *INCLUDE name means: as written when absolute, else relative to the including
+ * file's folder, the main deck's folder, then each *INCLUDE_PATH folder; 0 when found */
+static int resolve_include(kw_ctx *c, int from, const char *name, char *path, size_t n)
+{
+    if (is_absolute(name)) {
+        snprintf(path, n, "%s", name);
+        return is_file(path) ? 0 : -1;
+    }
+    char dir[1024];
+    folder_of(c->d->file[from], dir, sizeof dir);
+    snprintf(path, n, "%s%s", dir, name);
+    if (is_file(path)) return 0;
+    char main_dir[1024];
+    folder_of(c->d->file[0], main_dir, sizeof main_dir);
+    char first[2048];
+    snprintf(first, sizeof first, "%s", path);
+    snprintf(path, n, "%s%s", main_dir, name);
+    if (is_file(path)) return 0;
+    for (int i = 0; i < c->npath; i++) {
+        const char *p = c->path[i];
+        if (is_absolute(p)) snprintf(path, n, "%s/%s", p, name);
+        else snprintf(path, n, "%s%s/%s", main_dir, p, name);
+        if (is_file(path)) return 0;
+    }
+    snprintf(path, n, "%s", first);
+    return -1;
+}
+
+/* the file being read (or including it) that is the same file as path, -1 when none */
+static int open_index(const kw_ctx *c, const char *path)
+{
+    char *rp = realpath(path, NULL);
+    int found = -1;
+    for (int i = 0; rp && i < c->nopen && found < 0; i++) {
+        char *q = realpath(c->d->file[c->open[i]], NULL);
+        if (q && strcmp(q, rp) == 0) found = i;
+        free(q);
+    }
+    free(rp);
+    return found;
+}
+
+/* the file name of an *INCLUDE card from *cd on: a name ending in " +" goes on over the next
+ * card (LS-DYNA's long names); backslashes become slashes (Windows paths); *cd is advanced */
+static void include_name(const kw_card *cards, int ncard, int *at, char *name, size_t n)
+{
+    size_t len = 0;
+    name[0] = 0;
+    while (*at < ncard) {
+        char part[1024];
+        kw_text(&cards[(*at)++], 0, 0, part, sizeof part);
+        size_t k = strlen(part);
+        int more = k >= 2 && part[k - 1] == '+' && part[k - 2] == ' ';
+        if (more) part[k -= 2] = 0;
+        while (k > 0 && part[k - 1] == ' ') part[--k] = 0;
+        len += (size_t)snprintf(name + len, len < n ? n - len : 0, "%s", part);
+        if (!more || len >= n) break;
+    }
+    for (char *p = name; *p; p++)
+        if (*p == '\\') *p = '/';
+}
+
+/* *INCLUDE: each card names a file (see resolve_include); a card-less *INCLUDE (its names all
+ * commented out) includes nothing, as LS-DYNA does */
 static mcs_status do_include(kw_ctx *c, const kw_card *cards, int ncard)
 {
-    if (ncard < 1)
-        return kw_fail(c, c->kwloc.file, c->kwloc.line, 0, MCS_ERR_FORMAT,
-                       "the file name card is missing");
-    if (c->depth >= KW_INCLUDE_DEPTH)
-        return kw_fail(c, cards[0].file, cards[0].line, 1, MCS_ERR_FORMAT,
-                       "includes nested deeper than %d (a loop?)", KW_INCLUDE_DEPTH);
-    char name[1024], path[2048];
-    kw_text(&cards[0], 0, 0, name, sizeof name);
-    if (!name[0])
-        return kw_fail(c, cards[0].file, cards[0].line, 1, MCS_ERR_FORMAT, "empty file name");
-    const char *from = c->d->file[cards[0].file], *slash = strrchr(from, '/');
-    if (name[0] == '/' || !slash)
-        snprintf(path, sizeof path, "%s", name);
-    else
-        snprintf(path, sizeof path, "%.*s/%s", (int)(slash - from), from, name);
-    int gfmt = c->gfmt, ended = c->ended;
-    c->depth++;
-    c->ended = 0;
-    mcs_status st = read_file(c, path);
-    if (st == MCS_ERR_IO) {
-        mcs_error_clear(c->err);
-        st = kw_fail(c, cards[0].file, cards[0].line, 1, MCS_ERR_IO, "cannot open '%s'", path);
+    mcs_status st = MCS_OK;
+    for (int at = 0; at < ncard && !st;) {
+        const kw_card *cd = &cards[at];
+        char name[1024], path[2048];
+        include_name(cards, ncard, &at, name, sizeof name);
+        if (!name[0]) continue;
+        if (c->nopen > KW_INCLUDE_DEPTH)
+            return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_FORMAT,
+                           "includes nested deeper than %d", KW_INCLUDE_DEPTH);
+        if (resolve_include(c, cd->file, name, path, sizeof path))
+            return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_IO, "cannot open '%s'%s", path,
+                           c->npath ? " (nor in the *INCLUDE_PATH folders)" : "");
+        int loop = open_index(c, path);
+        if (loop >= 0)
+            return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_FORMAT,
+                           "circular include: '%s' is already being read (%s includes it)",
+                           c->d->file[c->open[loop]], c->d->file[cd->file]);
+        int gfmt = c->gfmt, ended = c->ended;
+        c->depth++;
+        c->ended = 0;
+        st = read_file(c, path);
+        c->depth--;
+        c->gfmt = gfmt;
+        c->ended = ended;
     }
-    c->depth--;
-    c->gfmt = gfmt;
-    c->ended = ended;
     return st;
+}
+
+/* *INCLUDE_PATH, *INCLUDE_PATH_RELATIVE: each card a folder searched for included files
+ * (absolute, or relative to the main deck's folder) */
+static mcs_status do_include_path(kw_ctx *c, const kw_card *cards, int ncard)
+{
+    for (int at = 0; at < ncard;) {
+        char name[1024];
+        include_name(cards, ncard, &at, name, sizeof name);
+        size_t k = strlen(name);
+        while (k > 1 && name[k - 1] == '/') name[--k] = 0;
+        if (!k) continue;
+        char **slot = kw_push((void **)&c->path, &c->npath, &c->cap_path, sizeof *slot);
+        if (!slot || !(*slot = strdup(name)))
+            return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
+    }
+    return MCS_OK;
 }
 
 /* *KEYWORD options: LONG=Y|S, I10=Y|N (memory sizes and the rest are ignored) */
@@ -169,14 +270,48 @@ static void keyword_line(kw_ctx *c, const char *s, const char **rest)
     if (c->has_id) c->kw[k -= 3] = 0;
 }
 
+/* keywords the kernel cannot honour and a model without them would be wrong: refused by name
+ * even when unknown keywords are only warned of (a name ending in '*' is a prefix) */
+static const struct {
+    const char *name;
+    const char *why;
+} refused[] = {
+    {"ELEMENT_SPH", "SPH particles: the kernel has no meshless particles"},
+    {"SECTION_SPH*", "SPH particles: the kernel has no meshless particles"},
+    {"SECTION_ALE*", "ALE: the kernel is Lagrangian only"},
+    {"ALE_*", "ALE: the kernel is Lagrangian only"},
+};
+
+static mcs_status refuse_known(kw_ctx *c)
+{
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+        size_t k = strlen(refused[i].name);
+        int prefix = refused[i].name[k - 1] == '*';
+        if (prefix ? strncmp(c->kw, refused[i].name, k - 1) == 0
+                   : strcmp(c->kw, refused[i].name) == 0)
+            return kw_fail(c, c->kwloc.file, c->kwloc.line, 1, MCS_ERR_UNSUPPORTED,
+                           "not supported (%s)", refused[i].why);
+    }
+    return MCS_OK;
+}
+
+/* an unknown keyword: counted under its name, first place kept */
 static mcs_status unknown(kw_ctx *c)
 {
     fe_kw_deck *d = c->d;
-    fe_kw_unknown *u = kw_push((void **)&d->unknown, &d->nunknown, &d->cap_unknown, sizeof *u);
-    if (!u) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-    snprintf(u->name, sizeof u->name, "%s%s%s", c->kw, c->has_id ? "_ID" : "",
+    char name[sizeof d->unknown[0].name];
+    snprintf(name, sizeof name, "%s%s%s", c->kw, c->has_id ? "_ID" : "",
              c->has_title ? "_TITLE" : "");
-    u->loc = c->kwloc;
+    fe_kw_unknown *u = NULL;
+    for (int i = 0; i < d->nunknown && !u; i++)
+        if (strcmp(d->unknown[i].name, name) == 0) u = &d->unknown[i];
+    if (!u) {
+        u = kw_push((void **)&d->unknown, &d->nunknown, &d->cap_unknown, sizeof *u);
+        if (!u) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
+        snprintf(u->name, sizeof u->name, "%s", name);
+        u->loc = c->kwloc;
+    }
+    u->count++;
     if (c->o->strict)
         return kw_fail(c, c->kwloc.file, c->kwloc.line, 1, MCS_ERR_FORMAT,
                        "keyword not supported (the supported subset is in docs/keyword.md)");
@@ -189,12 +324,17 @@ static mcs_status block(kw_ctx *c, const kw_card *cards, int ncard)
     mcs_status st = MCS_OK;
     if (strcmp(c->kw, "INCLUDE") == 0 && !c->has_id && !c->has_title)
         return do_include(c, cards, ncard);
+    if ((strcmp(c->kw, "INCLUDE_PATH") == 0 || strcmp(c->kw, "INCLUDE_PATH_RELATIVE") == 0) &&
+        !c->has_id && !c->has_title)
+        return do_include_path(c, cards, ncard);
+    if (kw_param_block(c, cards, ncard, &st)) return st;
     if (strcmp(c->kw, "END") == 0) {
         c->ended = 1;
         return MCS_OK;
     }
     if (kw_dispatch(c, cards, ncard, &st)) return st;
-    return unknown(c);
+    st = refuse_known(c);
+    return st ? st : unknown(c);
 }
 
 static mcs_status read_text(kw_ctx *c, int file, char *text, size_t len)
@@ -250,16 +390,13 @@ static mcs_status read_text(kw_ctx *c, int file, char *text, size_t len)
 static void log_unknown(const fe_kw_deck *d)
 {
     if (d->nunknown == 0) return;
-    char list[900];
-    size_t at = 0;
-    list[0] = 0;
-    for (int i = 0; i < d->nunknown && at + 80 < sizeof list; i++)
-        at += (size_t)snprintf(list + at, sizeof list - at, "%s*%s (%s:%d)", i ? ", " : "",
-                               d->unknown[i].name, d->file[d->unknown[i].loc.file],
-                               d->unknown[i].loc.line);
-    mcs_log(MCS_LOG_WARN, "%s: warning: %d keyword%s not supported and skipped: %s%s",
-            d->file[0], d->nunknown, d->nunknown == 1 ? "" : "s", list,
-            at + 80 >= sizeof list ? ", ..." : "");
+    int total = 0;
+    for (int i = 0; i < d->nunknown; i++) total += d->unknown[i].count;
+    mcs_log(MCS_LOG_WARN, "%s: warning: %d keyword%s not supported and skipped (%d block%s):",
+            d->file[0], d->nunknown, d->nunknown == 1 ? "" : "s", total, total == 1 ? "" : "s");
+    for (int i = 0; i < d->nunknown; i++)
+        mcs_log(MCS_LOG_WARN, "  *%s x%d, first at %s:%d", d->unknown[i].name,
+                d->unknown[i].count, d->file[d->unknown[i].loc.file], d->unknown[i].loc.line);
 }
 
 static mcs_status read_any(const char *path, const char *text, size_t len,
@@ -279,6 +416,7 @@ static mcs_status read_any(const char *path, const char *text, size_t len,
         if (!st) {
             memcpy(copy, text, len);
             copy[len] = 0;
+            c.open[c.nopen++] = fi;
             st = read_text(&c, fi, copy, len);
         }
         free(copy);
@@ -287,6 +425,9 @@ static mcs_status read_any(const char *path, const char *text, size_t len,
     }
     if (!st) st = kw_finish(&c);
     free(c.node);
+    for (int i = 0; i < c.npath; i++) free(c.path[i]);
+    free(c.path);
+    kw_param_free(&c);
     if (st) {
         fe_kw_deck_destroy(&d);
         return st;

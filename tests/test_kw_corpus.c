@@ -1,0 +1,246 @@
+/* test_kw_corpus.c: the project's corpus of keyword decks (tests/data/keyword/corpus/), written
+ * in the shapes users' LS-DYNA decks take (issue 14): parameters and expressions, nested,
+ * relative and commented includes, include paths, thickness cards, contacts, hourglass cards,
+ * materials, refusals by name. Each row gives what reading the deck must give: its counts, or
+ * the refusal message and the file:line it names. A row may also build the deck (the whole
+ * deck as fe_kw_add_deck does, or part 1 as a scenario's `mesh: {keyword:, part: 1}` does) and
+ * add its own checks of the values read.
+ *
+ * Adding a deck: write it under tests/data/keyword/corpus/, add a row to `corpus` (counts by
+ * hand from the deck's text), and if it reads, its values in a check function with the hand
+ * calculation in a comment. The figure "N of M corpus decks read" (docs/keyword.md) follows:
+ * run `make figures` (or edit the marker) after adding rows. */
+#include "fe/fe_kw_impl.h" /* kw_expr_eval, the evaluator on its own */
+#include "harness.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CD "tests/data/keyword/corpus/"
+
+enum { READ_ONLY, BUILD_DECK, BUILD_PART1 };
+
+typedef struct {
+    const char *file;              /* under CD                                                */
+    const char *units;             /* the deck's units (NULL: m-s-kg)                          */
+    int build;                     /* READ_ONLY | BUILD_DECK | BUILD_PART1                      */
+    int nnode;                     /* nodes [-]                                                */
+    int nelem[FE_KW_NETYPE];       /* elements per kind: shell, solid, beam, discrete, tet10   */
+    int npart, nmat;               /* *PART and *MAT_ cards [-]                                 */
+    const char *refusal;           /* expected message substring; NULL: the deck must read     */
+    const char *at;                /* expected "file:line" in the refusal                       */
+    void (*check)(const fe_kw_deck *d); /* further checks of a deck read (NULL: none)          */
+} corpus_row;
+
+static const double *node_at(const fe_kw_deck *d, int id)
+{
+    int i = fe_kw_node_index(d, id);
+    return i >= 0 ? d->node_x + 3 * i : NULL;
+}
+
+/* param_basic.k (mm-s-t): LEN = 10 mm, PID = 7, SEC = 3, RHO = 7.85e-9 t/mm^3 = 7850 kg/m^3,
+ * EMOD (type C) = 210000 MPa = 2.1e11 Pa, NU = 0.3; node 3 = (&len, &len, -&len) mm */
+static void check_param_basic(const fe_kw_deck *d)
+{
+    const double *x = node_at(d, 3);
+    CHECK(x && fabs(x[0] - 0.01) < 1e-15 && fabs(x[1] - 0.01) < 1e-15 &&
+          fabs(x[2] + 0.01) < 1e-15);
+    CHECK(d->npart == 1 && d->part[0].id == 7 && d->part[0].secid == 3 && d->part[0].mid == 4);
+    CHECK(d->elem[FE_KW_SOLID].n == 1 && d->elem[FE_KW_SOLID].pid[0] == 7);
+    const fe_kw_mat *m = fe_kw_find_mat(d, 4);
+    CHECK(m && fabs(m->ro - 7850) < 1e-9 && fabs(m->e - 2.1e11) < 1 && m->pr == 0.3);
+    CHECK(fe_kw_find_section(d, 3) != NULL);
+}
+
+/* param_expr.k (m-s-kg), by hand: HYP = sqrt(3^2 + 4^2) = 5; NEG = -(2^2) + (3 - 4) * 2 = -6;
+ * TRIG = sin^2 + cos^2 + tan 0 = 1; MIX = 4/3 + |-4| - e^0 + ln 1 = 13/3; NPID = I(5 - 3) = 2;
+ * DOUBLE = 2 * 5 = 10 (free-format card) */
+static void check_param_expr(const fe_kw_deck *d)
+{
+    const double *x3 = node_at(d, 3), *x5 = node_at(d, 5);
+    CHECK(x3 && fabs(x3[0] - 5) < 1e-15 && fabs(x3[1] - 13.0 / 3) < 1e-15);
+    CHECK(x5 && fabs(x5[0] - 10) < 1e-15 && fabs(x5[2] + 6) < 1e-15);
+    CHECK(d->npart == 1 && d->part[0].id == 2 && d->elem[FE_KW_SHELL].pid[0] == 2);
+    const fe_kw_section *s = fe_kw_find_section(d, 1);
+    CHECK(s && fabs(s->t[0] - 1) < 1e-15 && fabs(s->t[3] - 1) < 1e-15);
+}
+
+/* param_local.k: global X0 = 1; the include's local X0 = 2 gives its node 1 x = 2 and the
+ * global X1 = 2 * 10 = 20; back in the main file X0 is the global 1 again (node 5) */
+static void check_param_local(const fe_kw_deck *d)
+{
+    const double *x1 = node_at(d, 1), *x2 = node_at(d, 2), *x5 = node_at(d, 5);
+    CHECK(x1 && x1[0] == 2 && x2 && x2[0] == 20 && x5 && x5[0] == 1);
+}
+
+/* include_path.k: nodes 11, 12, 13 from lib/ (by *INCLUDE_PATH_RELATIVE), a backslash path and
+ * a name continued over two cards */
+static void check_include_path(const fe_kw_deck *d)
+{
+    const double *a = node_at(d, 11), *b = node_at(d, 12), *c = node_at(d, 13);
+    CHECK(a && a[2] == 5 && b && b[2] == 6 && c && c[2] == 7);
+    CHECK(d->nfile == 4);
+}
+
+/* unknown_many.k: three distinct keywords, *DATABASE_GLSTAT three times (first on line 5) */
+static void check_unknown_many(const fe_kw_deck *d)
+{
+    CHECK(d->nunknown == 3);
+    if (d->nunknown != 3) return;
+    CHECK(strcmp(d->unknown[0].name, "CONTROL_ENERGY") == 0 && d->unknown[0].count == 1);
+    CHECK(strcmp(d->unknown[1].name, "DATABASE_GLSTAT") == 0 && d->unknown[1].count == 3);
+    CHECK(d->unknown[1].loc.line == 5 && d->unknown[1].loc.file == 0);
+    CHECK(strcmp(d->unknown[2].name, "DATABASE_MATSUM") == 0 && d->unknown[2].count == 1);
+}
+
+static const corpus_row corpus[] = {
+    /* parameters */
+    {"param_basic.k", "mm-s-t", BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, check_param_basic},
+    {"param_expr.k", NULL, READ_ONLY, 5, {1}, 1, 1, NULL, NULL, check_param_expr},
+    {"param_local.k", NULL, READ_ONLY, 3, {0}, 0, 0, NULL, NULL, check_param_local},
+    {"param_undefined.k", NULL, READ_ONLY, 0, {0}, 0, 0,
+     "*NODE: field X: parameter 'THIK' is not defined", "param_undefined.k:7:20:", NULL},
+    {"param_bad_expr.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*PARAMETER_EXPRESSION: parameter 'A'",
+     "param_bad_expr.k:3:", NULL},
+    /* includes */
+    {"include_nested.k", NULL, BUILD_DECK, 6, {2}, 1, 1, NULL, NULL, NULL},
+    {"include_missing_nested.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*INCLUDE: cannot open",
+     "inc/mid_missing.k:3:1:", NULL},
+    {"include_commented.k", NULL, READ_ONLY, 1, {0}, 0, 0, NULL, NULL, NULL},
+    {"include_path.k", NULL, READ_ONLY, 3, {0}, 0, 0, NULL, NULL, check_include_path},
+    {"include_circular.k", NULL, READ_ONLY, 0, {0}, 0, 0, "circular include",
+     "inc/circ_b.k:3:1:", NULL},
+    /* unknown and refused keywords */
+    {"unknown_many.k", NULL, READ_ONLY, 1, {0}, 0, 0, NULL, NULL, check_unknown_many},
+    {"sph_refused.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*SECTION_SPH: not supported (SPH",
+     "sph_refused.k:6:1:", NULL},
+    {"skipped_element.k", NULL, BUILD_PART1, 2, {0}, 1, 1,
+     "no element has part ID 1 (skipped as not supported: *ELEMENT_SEATBELT at",
+     "skipped_element.k:14)", NULL},
+};
+
+#define NROW ((int)(sizeof corpus / sizeof corpus[0]))
+
+/* build a deck read: the whole deck into a model, or part 1 as a scenario part */
+static mcs_status build(const corpus_row *r, const fe_kw_deck *d, mcs_error *err)
+{
+    fe_builder *b = NULL;
+    fe_model *m = NULL;
+    mcs_status st = fe_builder_create(&b, err);
+    if (!st && r->build == BUILD_DECK) st = fe_kw_add_deck(b, d, err);
+    if (!st && r->build == BUILD_PART1) {
+        fe_part_desc base = fe_part_desc_default();
+        snprintf(base.name, sizeof base.name, "part1");
+        st = fe_kw_add_part(b, d, 1, &base, 1, NULL, NULL, err);
+    }
+    if (!st) st = fe_model_create(b, NULL, &m, err);
+    fe_model_destroy(&m);
+    fe_builder_destroy(&b);
+    return st;
+}
+
+/* one row: 1 when the deck gave what the row expects */
+static int run_row(const corpus_row *r, int *read_ok)
+{
+    char path[512];
+    snprintf(path, sizeof path, CD "%s", r->file);
+    fe_kw_opts o = fe_kw_opts_default();
+    o.quiet = 1;
+    o.units = r->units;
+    fe_kw_deck *d = NULL;
+    mcs_error err = {0};
+    int before = th_checks_failed;
+    mcs_status st = fe_kw_read(path, &o, &d, &err);
+    if (!st && r->build != READ_ONLY) st = build(r, d, &err);
+    *read_ok = st == MCS_OK;
+    if (r->refusal) {
+        if (st == MCS_OK) fprintf(stderr, "%s: read, a refusal was expected\n", r->file);
+        CHECK(st != MCS_OK);
+        CHECK_STR_CONTAINS(err.msg, r->refusal);
+        CHECK_STR_CONTAINS(err.msg, r->at);
+    } else {
+        if (st) fprintf(stderr, "%s: %s\n", r->file, err.msg);
+        CHECK(st == MCS_OK);
+    }
+    if (d && !r->refusal) {
+        CHECK(d->nnode == r->nnode);
+        for (int t = 0; t < FE_KW_NETYPE; t++) CHECK(d->elem[t].n == r->nelem[t]);
+        CHECK(d->npart == r->npart && d->nmat == r->nmat);
+        if (r->check) r->check(d);
+    }
+    fe_kw_deck_destroy(&d);
+    if (th_checks_failed != before) fprintf(stderr, "  in corpus row %s\n", r->file);
+    return th_checks_failed == before;
+}
+
+static void test_corpus(void)
+{
+    int nread = 0, nrefused = 0;
+    for (int i = 0; i < NROW; i++) {
+        int read_ok = 0;
+        int ok = run_row(&corpus[i], &read_ok);
+        nread += ok && read_ok;
+        nrefused += ok && !read_ok;
+    }
+    /* every row as expected: the read ones and the refused ones */
+    CHECK(nread + nrefused == NROW);
+    FIG("keyword.corpus_read", "%.0f", nread);
+    FIG("keyword.corpus_decks", "%.0f", NROW);
+}
+
+/* the evaluator on its own, each value by hand */
+static int no_names(void *user, const char *name, double *v)
+{
+    (void)user;
+    if (strcmp(name, "X") == 0) return *v = 2, 0;
+    return -1;
+}
+
+static void test_expressions(void)
+{
+    static const struct {
+        const char *s;
+        double v;
+    } ok[] = {
+        {"1 + 2 * 3", 7},           {"(1 + 2) * 3", 9},       {"2 ** 3 ** 2", 512},
+        {"-2 ** 2", -4},            {"2 ^ -1", 0.5},          {"10 / 4 / 5", 0.5},
+        {"1.5d1 + .5e1", 20},       {"max(1, x, -3)", 2},     {"min(4, 3.5)", 3.5},
+        {"atan2(1, 1) * 4", M_PI},  {"sqrt(x) ** 2", 2},      {"-&x * -x", 4},
+        {"int(-2.7) + nint(2.5)", 1}, {"mod(7, 3) + sign(2, -1)", -1}, {"log10(1000)", 3},
+    };
+    for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++) {
+        double v = 0;
+        int pos = 0;
+        char msg[128];
+        int r = kw_expr_eval(ok[i].s, no_names, NULL, &v, &pos, msg, sizeof msg);
+        if (r) fprintf(stderr, "'%s': %s at %d\n", ok[i].s, msg, pos);
+        CHECK(r == 0);
+        CHECK_NEAR(v, ok[i].v, 1e-12 * fmax(1, fabs(ok[i].v)));
+    }
+    static const struct {
+        const char *s;
+        int pos;
+        const char *msg;
+    } bad[] = {
+        {"1 +", 3, "unexpected end"},        {"2 * (3", 6, "')' expected"},
+        {"y + 1", 0, "parameter 'Y'"},       {"foo(1)", 0, "unknown function 'FOO'"},
+        {"sin(1, 2)", 0, "wrong number"},    {"1 2", 2, "unexpected '2'"},
+        {"log(0)", 0, "not finite"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        double v = 0;
+        int pos = -1;
+        char msg[128] = "";
+        CHECK(kw_expr_eval(bad[i].s, no_names, NULL, &v, &pos, msg, sizeof msg) != 0);
+        CHECK(pos == bad[i].pos);
+        CHECK_STR_CONTAINS(msg, bad[i].msg);
+    }
+}
+
+int main(void)
+{
+    RUN(test_corpus);
+    RUN(test_expressions);
+    TEST_END();
+}

@@ -5,10 +5,15 @@
  * refuses with the same message; nothing is simulated or written. A stage-1 model's surface
  * pairs that penetrate more than 1 mm at t = 0 are listed as warnings on stderr (contact,
  * surfaces, depth, the force its law gives there; stage1_mb/mb_initial.h): a model should
- * start without them. Warnings do not change the exit status. */
+ * start without them. Warnings do not change the exit status. Every LS-DYNA keyword deck the
+ * scenario names is read (a missing deck, an error in it or a part ID with no elements is an
+ * error, exit 2); --json adds "keyword_decks": each deck's sizes and unknown keywords (each once,
+ * with its count and first file:line). */
 #include "cli/cli.h"
 #include "cli/cli_common.h"
 #include "core/mcs_scenario.h"
+#include "fe/fe_keyword.h"
+#include "fe/fe_scn_keyword.h"
 #include "stage1_mb/mb_initial.h"
 #include "stage1_mb/mb_model.h"
 
@@ -61,23 +66,89 @@ static mcs_status build_model(const char *path, const mcs_scenario *scn, mcs_err
     return st;
 }
 
+/* a JSON string */
+static void json_str(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"' || *s == '\\') fprintf(f, "\\%c", *s);
+        else if ((unsigned char)*s < 0x20) fprintf(f, "\\u%04x", *s);
+        else fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+/* one keyword deck's entry of "keyword_decks" (--json): sizes and unknown keywords */
+static void kw_visit(const char *path, const mcs_node *at, const fe_kw_deck *d, void *user)
+{
+    (void)at;
+    FILE *f = user;
+    int nelem = 0;
+    for (int t = 0; t < FE_KW_NETYPE; t++) nelem += d->elem[t].n;
+    fprintf(f, "%s\n    {\"file\": ", ftell(f) ? "," : "");
+    json_str(f, path);
+    fprintf(f, ", \"nodes\": %d, \"elements\": %d, \"parts\": %d, \"unknown_keywords\": [",
+            d->nnode, nelem, d->npart);
+    for (int i = 0; i < d->nunknown; i++) {
+        char where[1200];
+        snprintf(where, sizeof where, "%s:%d", d->file[d->unknown[i].loc.file],
+                 d->unknown[i].loc.line);
+        fprintf(f, "%s\n      {\"keyword\": \"*%s\", \"count\": %d, \"first\": ", i ? "," : "",
+                d->unknown[i].name, d->unknown[i].count);
+        json_str(f, where);
+        fputc('}', f);
+    }
+    fprintf(f, "%s]}", d->nunknown ? "\n    " : "");
+}
+
+/* the resolved scenario as JSON, with "keyword_decks" (decks is their entries, "" for none) */
+static mcs_status write_json(const mcs_scenario *scn, const char *decks)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&buf, &len);
+    if (!m) return MCS_ERR_NOMEM;
+    mcs_status st = mcs_scenario_write_json(scn, m);
+    fclose(m);
+    char *close = buf ? strrchr(buf, '}') : NULL;
+    if (!st && close && *decks) {
+        char *end = close;
+        while (end > buf && (end[-1] == ' ' || end[-1] == '\n')) end--;
+        fwrite(buf, 1, (size_t)(end - buf), stdout);
+        printf(",\n  \"keyword_decks\": [%s\n  ]\n}\n", decks);
+    } else if (!st && buf) {
+        fputs(buf, stdout);
+    }
+    free(buf);
+    return st;
+}
+
 /* check one file; 0 ok, else the exit status */
 static int check_one(const char *path, int json)
 {
     mcs_scenario *scn = NULL;
     mcs_error err = {0};
     mcs_status st = mcs_scenario_load(path, &scn, &err);
+    char *decks = NULL;
+    size_t ndecks = 0;
+    FILE *df = open_memstream(&decks, &ndecks);
+    if (!df) st = MCS_ERR(&err, MCS_ERR_NOMEM, "mcrash check: out of memory");
+    /* every keyword deck it names is read (a missing deck or part ID is an error here) */
+    if (!st) st = fe_scn_kw_check(mcs_scenario_root(scn), kw_visit, df, &err);
+    if (df) fclose(df);
     if (!st) st = build_model(path, scn, &err);
     if (st) {
         mcs_scenario_destroy(&scn);
+        free(decks);
         fprintf(stderr, "%s\n", err.msg);
         return mcs_status_exit_code(st);
     }
     if (json)
-        st = mcs_scenario_write_json(scn, stdout);
+        st = write_json(scn, decks ? decks : "");
     else
         printf("%s: ok\n", path);
     mcs_scenario_destroy(&scn);
+    free(decks);
     return st ? 2 : 0;
 }
 

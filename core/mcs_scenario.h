@@ -15,8 +15,12 @@
  * and merged in order, then the including file is merged on top:
  *   - maps merge key by key, recursively;
  *   - lists of entities (sequences whose items are all mappings: bodies, joints, contacts,
- *     fe.parts, ...) concatenate, included items first (a model's bodies come before the
- *     scenario's own);
+ *     fe.parts, ...) merge by name: an entry whose `name:` is already in the list merges into
+ *     that entry (its keys over the included entry's, by these same rules, in the entry's
+ *     place); an entry with a new name or no name is appended, included items first (a
+ *     model's bodies come before the scenario's own). Inside an entry merged by name, a list
+ *     whose entries carry no name (vents, curves, unnamed surfaces) is a value: replaced. A
+ *     `name:` that is a mapping or a list is refused there (FILE:LINE:COL of the name);
  *   - anything else given in both (a scalar, null, a vector, a curve, a kind mismatch) is a
  *     value: the including file's replaces it; between two includes, the later one wins.
  * The resolved tree has no include: key. Validation runs on the resolved tree, and every node
@@ -61,9 +65,10 @@ void mcs_scenario_destroy(mcs_scenario **scn);
 
 /* a copy of scn (its own nodes: scn may be destroyed first) in which the map at the dotted path
  * `from` (e.g. "stage2.fe") is merged on top of the root's key `into` ("fe") by the include
- * rule above (entity lists concatenate, scn's first), `from` removed, and the whole validated
- * again (so a name given twice fails with its file and line). A missing `from` gives a plain
- * copy. (core/mcs_scn_merge.c; used by stage 2: stage2_fe/s2_scenario.h) */
+ * rule above but with entity lists concatenated (scn's first: no override by name), `from`
+ * removed, and the whole validated again (so a name given twice fails with its file and
+ * line). A missing `from` gives a plain copy. (core/mcs_scn_merge.c; used by stage 2:
+ * stage2_fe/s2_scenario.h) */
 mcs_status mcs_scenario_merged(const mcs_scenario *scn, const char *from, const char *into,
                                mcs_scenario **out, mcs_error *err);
 

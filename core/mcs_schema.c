@@ -99,15 +99,18 @@ enum {
 /* ---- simulation, environment ---- */
 
 static const mcs_skey sim_keys[] = {
-    Q("end_time", MCS_DIM_TIME, REQ | GT, 0, 0, "simulated duration [s]"),
+    /* required, except beside a whole keyword deck (fe.keyword): its *CONTROL_TERMINATION */
+    Q("end_time", MCS_DIM_TIME, GT, 0, 0, "simulated duration [s]"),
     /* stage 1: the fixed step; FE stages: an upper bound on the stable (Courant) step */
     Q("time_step", MCS_DIM_TIME, GT, 0, 0, "time step [s]"),
     /* FE: safety factor on the Courant step (LS-DYNA TSSFAC, default 0.9) */
     Q("time_step_scale", NONE, GT | LE, 0, 1, "FE time step scale factor"),
     Q("output_rate", MCS_DIM_FREQ, GT, 0, 0, "sampling rate of the results [Hz]"),
-    /* FE parts: /stageN/fields at every k-th output row, k = round(output_rate / field_rate) */
+    /* FE parts: /stageN/fields at their own rate (stage 1: every k-th output row, k = round(
+     * output_rate / field_rate)); default 200 frames per run (fe_scn_field_rate) */
     Q("field_rate", MCS_DIM_FREQ, GT, 0, 0,
-      "sampling rate of the FE displacement fields [Hz] (default output_rate)"),
+      "sampling rate of the FE displacement fields [Hz] (default 200 frames per run, at most "
+      "output_rate)"),
     END,
 };
 static const mcs_smap sim_map = {
@@ -331,9 +334,8 @@ static const mcs_smap attachment_map = {
 static const mcs_skey sensor_keys[] = {
     S("name", REQ | UNIQ | NE, "channel name"),
     R("body", BODY, REQ, "body carrying the sensor"),
-    E("type",
-      "acceleration|velocity|displacement|angular_velocity|angular_acceleration|load_cell", REQ,
-      "quantity measured"),
+    E("type", "acceleration|velocity|displacement|angular_velocity|angular_acceleration|load_cell",
+      REQ, "quantity measured"),
     V("point", LEN, 3, 3, 0, 0, "sensor point in the body frame [m] (default: centre of mass)"),
     /* SAE J211 channel frequency class; 0 = unfiltered */
     I("cfc", GE, 0, 0, "channel frequency class (0, 60, 180, 600, 1000)"),
@@ -375,7 +377,6 @@ static const mcs_skey rider_keys[] = {
     END,
 };
 static const mcs_smap rider_map = {.what = "rider block", .keys = rider_keys};
-
 
 /* the impact configuration (stage1_mb/mb_impact.c, docs/scenario_keys.md "impact"): the
  * motorcycle group is rotated to its heading, translated so that its contact point meets the
@@ -467,8 +468,7 @@ static const mcs_skey line_keys[] = {
     R("body", BODY, REQ, "body whose surface the part covers"),                                    \
         S("surface", REQ | NE, "name of the body's ellipsoid or facet surface"),                   \
         Q("element_size", LEN, GT, 0, 0, "ellipsoid: element edge length on the surface [m]"),     \
-        V("longitude", ANG, 2, 2, 0, 0,                                                            \
-          "ellipsoid: patch azimuth range about its z axis [rad]"),                                \
+        V("longitude", ANG, 2, 2, 0, 0, "ellipsoid: patch azimuth range about its z axis [rad]"),  \
         V("latitude", ANG, 2, 2, 0, 0,                                                             \
           "ellipsoid: patch elevation range from its x-y plane, poles out [rad]")
 static const mcs_skey foam_pad_keys[] = {
@@ -483,8 +483,8 @@ static const mcs_skey keyword_keys[] = {
     S("keyword", REQ | NE, "LS-DYNA keyword file (or give generate:)"),
     I("part", REQ | GE, 1, 0, "part ID in the keyword file"),
     /* keyword decks carry no units: LENGTH-TIME-MASS of the deck (docs/keyword.md) */
-    E("units", "m-s-kg|mm-s-t|mm-ms-kg|mm-ms-g|cm-s-g|cm-us-g",
-      0, "unit system of the deck (default m-s-kg, SI)"),
+    E("units", "m-s-kg|mm-s-t|mm-ms-kg|mm-ms-g|cm-s-g|cm-us-g", 0,
+      "unit system of the deck (default m-s-kg, SI)"),
     E("unknown_keywords", "warn|error", 0, "keywords outside the subset (default warn)"),
     END,
 };
@@ -628,7 +628,8 @@ static const mcs_skey foam_keys[] = {
 /* fabric (membranes): linear in the fibre frame, no compressive stress (docs/fe.md) */
 static const mcs_skey fabric_keys[] = {
     ELASTIC_KEYS,
-    Q("youngs_modulus_b", PRS, GT, 0, 0, "modulus along fibre b, the weft [Pa] (default isotropic)"),
+    Q("youngs_modulus_b", PRS, GT, 0, 0,
+      "modulus along fibre b, the weft [Pa] (default isotropic)"),
     Q("shear_modulus", PRS, GT, 0, 0, "in-plane shear modulus [Pa] (default E/(2(1+nu)))"),
     V("direction", NONE, 3, 3, NZ, 0, "fibre a (warp) direction, projected on each element"),
     Q("damping", NONE, GE | LE, 0, 1, "stiffness damping, fraction of critical (top frequency)"),
@@ -737,8 +738,9 @@ static const mcs_skey wall_keys[] = {
     E("method", "kinematic|penalty", 0, "contact treatment (default kinematic)"),
     Q("penalty_scale", NONE, GT, 0, 0, "penalty stiffness scale (default 0.1)"),
     RS("parts", PART, 1, 0, "parts it stops (default every part)"),
-    Q("mass", MCS_DIM_MASS, GT, 0, 0, "a free wall of this mass moving along its normal, velocity = "
-                              "its initial velocity [kg]"),
+    Q("mass", MCS_DIM_MASS, GT, 0, 0,
+      "a free wall of this mass moving along its normal, velocity = "
+      "its initial velocity [kg]"),
     M("motion", wall_motion_map, 0, "motion from a curve, on top of velocity t"),
     END,
 };
@@ -774,8 +776,13 @@ static const mcs_smap body_law_map = {.what = "body characteristic", .keys = bod
 static const mcs_skey bodies_contact_keys[] = {
     RS("parts", PART, 1, REQ, "FE parts whose nodes meet the bodies"),
     RS("bodies", BODY, 1, REQ, "stage-1 bodies whose ellipsoid and facet surfaces they meet"),
-    M("body_characteristic", body_law_map, 0,
-      "the bodies' surface compliance in series (ellipsoids only; none: rigid surfaces)"),
+    /* inline, or the name of one of fe.body_characteristics (or stage2.fe's, in stage2.fe) */
+    {.name = "body_characteristic",
+     .type = MCS_SK_MAP,
+     .sub = &body_law_map,
+     .ref = MCS_REF_BODY_LAW,
+     .doc = "the bodies' surface compliance in series, or its name in fe.body_characteristics "
+            "(ellipsoids only; none: rigid surfaces)"},
     END,
 };
 static const mcs_smap bodies_contact_map = {.what = "bodies contact", .keys = bodies_contact_keys};
@@ -784,12 +791,10 @@ static const mcs_smap single_surface_map = {.what = "single_surface contact",
 static const mcs_smap two_surface_map = {.what = "two_surface contact", .keys = slave_master_keys};
 static const mcs_smap s2s_map = {.what = "surface_to_surface contact", .keys = two_surface_keys};
 static const mcs_smap n2s_map = {.what = "node_to_surface contact", .keys = two_surface_keys};
-static const mcs_svariant fe_contact_variants[] = {{"single_surface", &single_surface_map},
-                                                   {"two_surface", &two_surface_map},
-                                                   {"surface_to_surface", &s2s_map},
-                                                   {"node_to_surface", &n2s_map},
-                                                   {"bodies", &bodies_contact_map},
-                                                   {0}};
+static const mcs_svariant fe_contact_variants[] = {
+    {"single_surface", &single_surface_map}, {"two_surface", &two_surface_map},
+    {"surface_to_surface", &s2s_map},        {"node_to_surface", &n2s_map},
+    {"bodies", &bodies_contact_map},         {0}};
 static const mcs_skey fe_contact_keys[] = {
     D("type", "contact type"),
     S("name", UNIQ, "contact name"),
@@ -825,8 +830,9 @@ static const mcs_skey spring_keys[] = {
     Q("stiffness", MCS_DIM_STIFFNESS, GE, 0, 0, "linear stiffness, F = k (l - l0) [N/m]"),
     C("curve", LEN, FRC, 2, 0, 0, "[[elongation m, force N], ...] instead of stiffness"),
     Q("damping", MCS_DIM_DAMPING, GE, 0, 0, "viscous damping, F = c dl/dt [N s/m]"),
-    S("part", NE, "spring part its energies are reported under (default \"springs\"); not "
-                  "an element part's name"),
+    S("part", NE,
+      "spring part its energies are reported under (default \"springs\"); not "
+      "an element part's name"),
     END,
 };
 static const mcs_smap spring_map = {.what = "spring", .keys = spring_keys};
@@ -841,9 +847,10 @@ static const mcs_skey fe_mass_keys[] = {
 static const mcs_smap fe_mass_map = {.what = "point mass", .keys = fe_mass_keys};
 static const mcs_skey mass_scaling_keys[] = {
     Q("time_step", MCS_DIM_TIME, REQ | GT, 0, 0, "target step, safety factor included [s]"),
-    I("check_interval", GE, 0, 0, "re-check the elements every this many cycles during the run, "
-                                  "adding mass where the step fell below the target (0: at t = 0 "
-                                  "only, the default)"),
+    I("check_interval", GE, 0, 0,
+      "re-check the elements every this many cycles during the run, "
+      "adding mass where the step fell below the target (0: at t = 0 "
+      "only, the default)"),
     END,
 };
 static const mcs_smap mass_scaling_map = {.what = "mass scaling", .keys = mass_scaling_keys};
@@ -864,10 +871,12 @@ static const mcs_smap trigger_map = {.what = "trigger", .keys = trigger_keys};
 
 static const mcs_skey inflator_keys[] = {
     Q("fire_time", MCS_DIM_TIME, 0, 0, 0, "firing time [s] (default 0)"),
-    M("trigger", trigger_map, 0, "fire on a stage-1 contact instead of at fire_time (coupled "
-                                 "stage-1 runs)"),
+    M("trigger", trigger_map, 0,
+      "fire on a stage-1 contact instead of at fire_time (coupled "
+      "stage-1 runs)"),
     C("mass_flow", MCS_DIM_TIME, MASSFLOW, 1, REQ | GE, 0, "[[time since firing s, kg/s], ...]"),
-    C("temperature", MCS_DIM_TIME, MCS_DIM_TEMP, 1, REQ | GE, 0, "[[time s, gas temperature K], ...]"),
+    C("temperature", MCS_DIM_TIME, MCS_DIM_TEMP, 1, REQ | GE, 0,
+      "[[time s, gas temperature K], ...]"),
     END,
 };
 static const mcs_smap inflator_map = {.what = "inflator", .keys = inflator_keys};
@@ -911,8 +920,9 @@ static const mcs_skey retractor_keys[] = {
     R("anchor_body", BODY, 0, "stage-1 body carrying the anchor (default: fixed in the world)"),
     Q("stiffness", MCS_DIM_STIFFNESS, GT, 0, 0, "webbing to the anchor [N/m] (default E A / l0)"),
     Q("fire_time", MCS_DIM_TIME, 0, 0, 0, "pretensioner firing time [s] (default 12 ms)"),
-    M("trigger", trigger_map, 0, "fire on a stage-1 contact instead of at fire_time (coupled "
-                                 "stage-1 runs)"),
+    M("trigger", trigger_map, 0,
+      "fire on a stage-1 contact instead of at fire_time (coupled "
+      "stage-1 runs)"),
     C("payin", MCS_DIM_TIME, LEN, 1, 0, 0, "[[time since firing s, payout <= 0 m], ...] (Eq. 3)"),
     Q("pretensioner_max_force", FRC, GE, 0, 0, "stall force [N] (default none)"),
     Q("load_limit", FRC, GE, 0, 0, "load-limiter force [N] (default 2 kN; 0 none)"),
@@ -931,10 +941,12 @@ static const mcs_skey slipring_keys[] = {
     R("body", BODY, 0, "stage-1 body carrying the ring node (default: the node is free)"),
     Q("friction", NONE, GE, 0, 0, "Coulomb coefficient round the ring (LS-DYNA FC; default 0)"),
     Q("lock_time", MCS_DIM_TIME, GE, 0, 0, "no slip from this time on (LS-DYNA LTIME)"),
-    Q("min_length", LEN, GT, 0, 0, "smallest unstretched side length; the run stops there "
-                                    "(LS-DYNA LMIN; default 5 % of the shorter side)"),
-    S("retractor", NE, "retractor whose webbing segment is one side (its belt end is the ring "
-                       "node): the retractor feeds through the ring"),
+    Q("min_length", LEN, GT, 0, 0,
+      "smallest unstretched side length; the run stops there "
+      "(LS-DYNA LMIN; default 5 % of the shorter side)"),
+    S("retractor", NE,
+      "retractor whose webbing segment is one side (its belt end is the ring "
+      "node): the retractor feeds through the ring"),
     END,
 };
 static const mcs_smap slipring_map = {.what = "slip ring", .keys = slipring_keys};
@@ -953,27 +965,83 @@ static const mcs_skey fe_ellipsoid_keys[] = {
 };
 static const mcs_smap fe_ellipsoid_map = {.what = "rigid ellipsoid", .keys = fe_ellipsoid_keys};
 
+/* the entity lists and settings of fe: that stage2.fe: has too (one list: its lists are
+ * appended to fe:'s, its settings replace fe:'s, stage2_fe/s2_scenario.c) */
+#define FE_SHARED_KEYS                                                                             \
+    L("boundary", boundary_map, 0, "boundary conditions"),                                         \
+        L("contacts", fe_contact_map, 0, "FE contacts"),                                           \
+        L("rigid_ellipsoids", fe_ellipsoid_map, 0, "rigid ellipsoids"),                            \
+        L("loads", load_map, 0, "nodal loads"),                                                    \
+        L("airbags", airbag_map, 0, "gas bags (uniform pressure) bounded by membrane parts"),      \
+        L("retractors", retractor_map, 0, "belt retractors at truss belt ends"),                   \
+        L("sliprings", slipring_map, 0, "belt slip rings (D-ring, buckle tongue)"),                \
+        L("springs", spring_map, 0, "discrete springs and dampers"),                               \
+        L("masses", fe_mass_map, 0, "point masses"),                                               \
+        NM("body_characteristics", body_law_map, 0,                                                \
+           "named body characteristics (body_characteristic: NAME of a bodies contact)"),          \
+        Q("damping", MCS_DIM_FREQ, GE, 0, 0, "mass-proportional damping c, f = -c m v [1/s]"),     \
+        Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),                    \
+        Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),                      \
+        Q("energy_growth_limit", NONE, GE, 0, 0, "stop when total energy grows by this fraction")
+
+/* ---- fe: joints between rigid parts (fe/fe_joint.h, LS-DYNA *CONSTRAINED_JOINT_*) ---- */
+static const mcs_skey fe_revolute_keys[] = {
+    V("axis", NONE, 3, 3, REQ | NZ, 0, "rotation axis (world, t = 0)"),
+    Q("stiffness", MCS_DIM_ROTSTIFF, GE, 0, 0, "spring on the angle [N m/rad]"),
+    Q("damping", MCS_DIM_ROTDAMP, GE, 0, 0, "damper on the angle [N m s/rad]"),
+    V("range", ANG, 2, 2, 0, 0, "elastic stops [min, max] of the angle from t = 0 [rad]"),
+    END,
+};
+static const mcs_skey fe_slide_keys[] = {
+    V("axis", NONE, 3, 3, REQ | NZ, 0, "sliding axis (world, t = 0)"),
+    Q("stiffness", MCS_DIM_STIFFNESS, GE, 0, 0, "spring on the slide [N/m]"),
+    Q("damping", MCS_DIM_DAMPING, GE, 0, 0, "damper on the slide [N s/m]"),
+    V("range", LEN, 2, 2, 0, 0, "elastic stops [min, max] of the slide from t = 0 [m]"),
+    END,
+};
+static const mcs_smap fe_revolute_map = {
+    .what = "revolute joint", .keys = fe_revolute_keys, .check = mcs_rule_range};
+static const mcs_smap fe_cylindrical_map = {
+    .what = "cylindrical joint", .keys = fe_slide_keys, .check = mcs_rule_range};
+static const mcs_smap fe_translational_map = {
+    .what = "translational joint", .keys = fe_slide_keys, .check = mcs_rule_range};
+static const mcs_smap fe_spherical_map = {.what = "spherical joint", .keys = no_keys};
+static const mcs_svariant fe_joint_variants[] = {{"revolute", &fe_revolute_map},
+                                                 {"spherical", &fe_spherical_map},
+                                                 {"cylindrical", &fe_cylindrical_map},
+                                                 {"translational", &fe_translational_map},
+                                                 {0}};
+static const mcs_skey fe_joint_keys[] = {
+    S("name", REQ | UNIQ | NE, "joint name (results /stage3/joints/<name>)"),
+    D("type", "revolute | spherical | cylindrical | translational"),
+    RS("parts", PART, 1, REQ, "rigid parts A, B (one: A held to the ground)"),
+    V("point", LEN, 3, 3, REQ, 0, "joint point (world, t = 0) [m]"),
+    Q("penalty_scale", NONE, GT | LE, 0, 1, "s of the penalty k = s / (dt^2 lambda) (default 0.1)"),
+    END,
+};
+static const mcs_smap fe_joint_map = {.what = "FE joint",
+                                      .keys = fe_joint_keys,
+                                      .disc = "type",
+                                      .variants = fe_joint_variants};
+
 static const mcs_skey fe_keys[] = {
-    L("parts", part_map, REQ | NE, "FE parts"),
-    L("boundary", boundary_map, 0, "boundary conditions"),
+    /* required, except with a whole keyword deck (keyword:, mcs_rule_fe) */
+    L("parts", part_map, NE, "FE parts"),
+    /* the whole stage-3 model from an LS-DYNA deck (docs/keyword.md, docs/contracts.md) */
+    S("keyword", NE, "LS-DYNA keyword deck read whole: parts, contacts, boundary, initial "
+                     "velocities, walls, end time (relative to the YAML file)"),
+    E("units", "m-s-kg|mm-s-t|mm-ms-kg|mm-ms-g|cm-s-g|cm-us-g", 0,
+      "unit system of the keyword deck (default m-s-kg, SI)"),
+    E("unknown_keywords", "warn|error", 0,
+      "keywords of the deck outside the subset (default warn)"),
     L("rigid_walls", wall_map, 0, "rigid walls"),
-    L("contacts", fe_contact_map, 0, "FE contacts"),
-    L("rigid_ellipsoids", fe_ellipsoid_map, 0, "rigid ellipsoids"),
-    L("loads", load_map, 0, "nodal loads"),
-    L("airbags", airbag_map, 0, "gas bags (uniform pressure) bounded by membrane parts"),
-    L("retractors", retractor_map, 0, "belt retractors at truss belt ends"),
-    L("sliprings", slipring_map, 0, "belt slip rings (D-ring, buckle tongue)"),
-    Q("damping", MCS_DIM_FREQ, GE, 0, 0, "mass-proportional damping c, f = -c m v [1/s]"),
-    Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),
-    Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),
-    Q("energy_growth_limit", NONE, GE, 0, 0, "stop when total energy grows by this fraction"),
-    L("springs", spring_map, 0, "discrete springs and dampers"),
-    L("masses", fe_mass_map, 0, "point masses"),
+    FE_SHARED_KEYS,
+    L("joints", fe_joint_map, 0, "joints between rigid parts (penalty; docs/fe.md \"Joints\")"),
     /* LS-DYNA DT2MS < 0: mass added only to elements whose step is below time_step */
     M("mass_scaling", mass_scaling_map, 0, "selective mass scaling"),
     END,
 };
-static const mcs_smap fe_map = {.what = "fe block", .keys = fe_keys};
+static const mcs_smap fe_map = {.what = "fe block", .keys = fe_keys, .check = mcs_rule_fe};
 
 /* ---- stage 2: vehicles prescribed from a stage-1 results file (DESIGN.md "Stage 2") ---- */
 
@@ -989,20 +1057,7 @@ static const mcs_smap stage2_presc_map = {.what = "prescribed body", .keys = sta
  * be fe:'s or these; its settings replace fe:'s */
 static const mcs_skey stage2_fe_keys[] = {
     L("parts", part_map, 0, "FE parts of stage 2 only"),
-    L("boundary", boundary_map, 0, "boundary conditions"),
-    L("contacts", fe_contact_map, 0, "FE contacts"),
-    L("rigid_ellipsoids", fe_ellipsoid_map, 0, "rigid ellipsoids"),
-    L("loads", load_map, 0, "nodal loads"),
-    L("airbags", airbag_map, 0, "gas bags"),
-    L("retractors", retractor_map, 0, "belt retractors"),
-    L("sliprings", slipring_map, 0, "belt slip rings"),
-    L("springs", spring_map, 0, "discrete springs and dampers"),
-    L("masses", fe_mass_map, 0, "point masses"),
-    /* settings of the stage-2 FE model: given here, they replace fe:'s */
-    Q("damping", MCS_DIM_FREQ, GE, 0, 0, "mass-proportional damping c, f = -c m v [1/s]"),
-    Q("bulk_q1", NONE, GE, 0, 0, "quadratic bulk viscosity (default 1.5)"),
-    Q("bulk_q2", NONE, GE, 0, 0, "linear bulk viscosity (default 0.06)"),
-    Q("energy_growth_limit", NONE, GE, 0, 0, "stop when total energy grows by this fraction"),
+    FE_SHARED_KEYS,
     END,
 };
 static const mcs_smap stage2_fe_map = {.what = "stage2 fe block", .keys = stage2_fe_keys};
@@ -1033,7 +1088,6 @@ static const mcs_skey stage2_keys[] = {
     END,
 };
 static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys};
-
 
 /* ---- the root ---- */
 

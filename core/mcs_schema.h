@@ -18,7 +18,7 @@ typedef enum {
     MCS_SK_REF,   /* name of an entity of kind .ref */
     MCS_SK_REFS,  /* list of names of entities of kind .ref */
     MCS_SK_CURVE, /* [[x, y], ...]: x of .dim strictly increasing, y of .dim_y, >= .nmin points */
-    MCS_SK_MAP,   /* mapping with keys .sub */
+    MCS_SK_MAP,   /* mapping with keys .sub; with .ref: or the name of one (a reference) */
     MCS_SK_LIST,  /* list of mappings .sub */
     MCS_SK_NAMED, /* mapping {<name>: mapping .sub} */
     MCS_SK_ANY,   /* free-form: any YAML (no NaN/Inf) */
@@ -44,6 +44,7 @@ typedef enum {
     MCS_REF_BODY_OR_GROUND, /* bodies[].name or "ground" */
     MCS_REF_CHAR,           /* characteristics.<name> */
     MCS_REF_FE_PART,        /* fe.parts[].name */
+    MCS_REF_BODY_LAW,       /* fe.body_characteristics.<name> */
 } mcs_sref;
 
 typedef struct mcs_smap mcs_smap;
@@ -95,6 +96,7 @@ mcs_status mcs_rule_plastic(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_impact(scn_walk *w, mcs_node *map); /* core/mcs_scn_rule_impact.c */
 mcs_status mcs_rule_facet(scn_walk *w, mcs_node *map);  /* core/mcs_scn_rule_facet.c */
 mcs_status mcs_rule_fe_part(scn_walk *w, mcs_node *map);
+mcs_status mcs_rule_fe(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_surface_mesh(scn_walk *w, mcs_node *map); /* core/mcs_scn_rule_pad.c */
 
 /* the whole scenario */

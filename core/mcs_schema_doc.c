@@ -34,6 +34,8 @@ static const char *ref_name(mcs_sref r)
         return "a characteristic";
     case MCS_REF_FE_PART:
         return "an FE part";
+    case MCS_REF_BODY_LAW:
+        return "a body characteristic";
     default:
         return "?";
     }
@@ -100,7 +102,10 @@ static void type_of(const mcs_skey *k, char *buf, size_t n)
                  k->nmin > 0 ? k->nmin : 2);
         break;
     case MCS_SK_MAP:
-        snprintf(buf, n, "%s", k->sub->what);
+        if (k->ref)
+            snprintf(buf, n, "%s, or name of %s", k->sub->what, ref_name(k->ref));
+        else
+            snprintf(buf, n, "%s", k->sub->what);
         break;
     case MCS_SK_LIST:
         snprintf(buf, n, "list of %s", scn_plural(k->sub->what, pl, sizeof pl));

@@ -18,23 +18,66 @@ typedef struct {
 
 static mcs_status load_tree(inc_ctx *c, const char *path, const mcs_node *from, mcs_node **out);
 
-/* merged copy of two entries: maps key by key, entity lists concatenated, else over wins */
-static mcs_node *merge(scn_arena *a, mcs_node *base, mcs_node *over);
+/* the include rule (mcs_scenario.h): maps merge key by key; entity lists merge by name when
+ * by_name (an entry whose name is already in the base merges into that entry, others are
+ * appended), else concatenate; inside an entry merged by name a list of unnamed entries is a
+ * value; anything else: over wins. err set: a bad override is reported there. */
+typedef struct {
+    scn_arena *a;
+    mcs_error *err; /* NULL: no merge error is possible (by_name 0) */
+    int by_name;    /* entity lists merge by name (include:), else concatenate */
+    mcs_status st;  /* first failure */
+    char path[512]; /* dotted path of the node being merged, for messages */
+    size_t plen;
+} merge_ctx;
 
-static mcs_node *merge_maps(scn_arena *a, mcs_node *base, mcs_node *over)
+static mcs_node *merge(merge_ctx *c, mcs_node *base, mcs_node *over, int in_entry);
+
+static size_t push_path(merge_ctx *c, const char *key, int index)
 {
-    mcs_node *r = scn_node_new(a, MCS_NODE_MAP, over->file, over->line, over->col);
-    if (!r) return NULL;
+    char seg[128];
+    size_t old = c->plen;
+    int k = key ? snprintf(seg, sizeof seg, "%s%.100s", c->plen ? "." : "", key)
+                : snprintf(seg, sizeof seg, "[%d]", index);
+    if (k > 0 && c->plen + (size_t)k < sizeof c->path) {
+        memcpy(c->path + c->plen, seg, (size_t)k + 1);
+        c->plen += (size_t)k;
+    }
+    return old;
+}
+
+static void pop_path(merge_ctx *c, size_t old)
+{
+    c->plen = old;
+    c->path[old] = 0;
+}
+
+static mcs_node *oom(merge_ctx *c)
+{
+    if (!c->st) c->st = MCS_ERR_NOMEM;
+    return NULL;
+}
+
+static mcs_node *merge_maps(merge_ctx *c, mcs_node *base, mcs_node *over, int in_entry)
+{
+    mcs_node *r = scn_node_new(c->a, MCS_NODE_MAP, over->file, over->line, over->col);
+    if (!r) return oom(c);
     r->path = over->path;
     for (int i = 0; i < base->n; i++) {
         int j = scn_map_find(over, base->keys[i]->text);
-        mcs_node *v = j < 0 ? base->items[i] : merge(a, base->items[i], over->items[j]);
-        mcs_node *k = j < 0 ? base->keys[i] : over->keys[j];
-        if (!v || scn_node_push(a, r, k, v)) return NULL;
+        mcs_node *v = base->items[i], *k = base->keys[i];
+        if (j >= 0) {
+            size_t old = push_path(c, over->keys[j]->text, 0);
+            v = merge(c, base->items[i], over->items[j], in_entry);
+            pop_path(c, old);
+            k = over->keys[j];
+        }
+        if (!v) return NULL;
+        if (scn_node_push(c->a, r, k, v)) return oom(c);
     }
     for (int j = 0; j < over->n; j++) {
         if (scn_map_find(base, over->keys[j]->text) >= 0) continue;
-        if (scn_node_push(a, r, over->keys[j], over->items[j])) return NULL;
+        if (scn_node_push(c->a, r, over->keys[j], over->items[j])) return oom(c);
     }
     return r;
 }
@@ -48,16 +91,80 @@ static int is_entity_list(const mcs_node *n)
     return 1;
 }
 
-static mcs_node *merge(scn_arena *a, mcs_node *base, mcs_node *over)
+static int has_names(const mcs_node *list)
 {
-    if (base->kind == MCS_NODE_MAP && over->kind == MCS_NODE_MAP) return merge_maps(a, base, over);
-    if (!is_entity_list(base) || !is_entity_list(over)) return over;
-    mcs_node *r = scn_node_new(a, MCS_NODE_SEQ, over->file, over->line, over->col);
-    if (!r) return NULL;
+    for (int i = 0; i < list->n; i++)
+        if (scn_map_find(list->items[i], "name") >= 0) return 1;
+    return 0;
+}
+
+/* the name an entry merges by: NULL when it has none (or null); a map or list: an error */
+static const char *entry_name(merge_ctx *c, const mcs_node *e, int index)
+{
+    int i = scn_map_find(e, "name");
+    if (i < 0 || e->items[i]->kind == MCS_NODE_NULL) return NULL;
+    const mcs_node *n = e->items[i];
+    if (n->text) return n->text;
+    if (c->err && !c->st) {
+        size_t old = push_path(c, NULL, index);
+        push_path(c, "name", 0);
+        c->st = scn_fail(c->err, MCS_ERR_TYPE, n, c->path,
+                         "entries of an included list merge by name: expected a name, got a %s",
+                         mcs_node_kind_str(n->kind));
+        pop_path(c, old);
+    }
+    return NULL;
+}
+
+/* base's index of the entry named nm (the first), -1 if none */
+static int find_named(const mcs_node *base, const char *nm)
+{
+    for (int i = 0; i < base->n; i++) {
+        int k = scn_map_find(base->items[i], "name");
+        const mcs_node *n = k < 0 ? NULL : base->items[i]->items[k];
+        if (n && n->kind != MCS_NODE_NULL && n->text && strcmp(n->text, nm) == 0) return i;
+    }
+    return -1;
+}
+
+static mcs_node *merge_list(merge_ctx *c, mcs_node *base, mcs_node *over)
+{
+    mcs_node *r = scn_node_new(c->a, MCS_NODE_SEQ, over->file, over->line, over->col);
+    if (!r) return oom(c);
     for (int i = 0; i < base->n; i++)
-        if (scn_node_push(a, r, NULL, base->items[i])) return NULL;
-    for (int i = 0; i < over->n; i++)
-        if (scn_node_push(a, r, NULL, over->items[i])) return NULL;
+        if (scn_node_push(c->a, r, NULL, base->items[i])) return oom(c);
+    for (int j = 0; j < over->n; j++) {
+        const char *nm = c->by_name ? entry_name(c, over->items[j], j) : NULL;
+        if (c->st) return NULL;
+        int i = nm ? find_named(base, nm) : -1;
+        if (i < 0) {
+            if (scn_node_push(c->a, r, NULL, over->items[j])) return oom(c);
+            continue;
+        }
+        size_t old = push_path(c, NULL, j);
+        mcs_node *m = merge_maps(c, base->items[i], over->items[j], 1);
+        pop_path(c, old);
+        if (!m) return NULL;
+        r->items[i] = m;
+    }
+    return r;
+}
+
+static mcs_node *merge(merge_ctx *c, mcs_node *base, mcs_node *over, int in_entry)
+{
+    if (base->kind == MCS_NODE_MAP && over->kind == MCS_NODE_MAP)
+        return merge_maps(c, base, over, in_entry);
+    if (!is_entity_list(base) || !is_entity_list(over)) return over;
+    if (in_entry && c->by_name && !has_names(base) && !has_names(over)) return over;
+    return merge_list(c, base, over);
+}
+
+/* merge for include: (by name); NULL with *st set on failure (err holds the message) */
+static mcs_node *include_merge(inc_ctx *ic, mcs_node *base, mcs_node *over, mcs_status *st)
+{
+    merge_ctx c = {.a = &ic->scn->arena, .err = ic->err, .by_name = 1};
+    mcs_node *r = merge(&c, base, over, 0);
+    *st = r ? MCS_OK : c.st ? c.st : MCS_ERR_NOMEM;
     return r;
 }
 
@@ -124,12 +231,11 @@ static mcs_status resolve(inc_ctx *c, const char *file, mcs_node *root, mcs_node
         mcs_node *sub = NULL;
         if (!p) return MCS_ERR_NOMEM;
         if ((st = load_tree(c, p, list[k], &sub))) break;
-        acc = acc ? merge(&c->scn->arena, acc, sub) : sub;
-        if (!acc) st = MCS_ERR_NOMEM;
+        acc = acc ? include_merge(c, acc, sub, &st) : sub;
     }
     if (st) return st;
-    *out = acc ? merge(&c->scn->arena, acc, root) : root;
-    return *out ? MCS_OK : MCS_ERR_NOMEM;
+    *out = acc ? include_merge(c, acc, root, &st) : root;
+    return st;
 }
 
 /* parse text of file (already checked), resolve its includes */
@@ -252,5 +358,6 @@ const char *mcs_scenario_text(const mcs_scenario *scn)
 
 mcs_node *scn_merge(scn_arena *a, mcs_node *base, mcs_node *over)
 {
-    return merge(a, base, over);
+    merge_ctx c = {.a = a};
+    return merge(&c, base, over, 0);
 }

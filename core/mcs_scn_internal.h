@@ -63,8 +63,9 @@ mcs_status scn_parse(mcs_scenario *scn, const char *file, const char *text, size
 mcs_status scn_resolve(mcs_scenario *scn, const char *file, mcs_node *root, mcs_node **out,
                        mcs_error *err);
 
-/* merged copy of two entries by the include rule (mcs_scenario.h): maps key by key, entity
- * lists concatenated (base's first), else over wins; shares the leaves; NULL out of memory */
+/* merged copy of two entries by the include rule (mcs_scenario.h) but with entity lists
+ * concatenated (base's first, no override by name: mcs_scenario_merged), else over wins;
+ * shares the leaves; NULL out of memory */
 mcs_node *scn_merge(scn_arena *a, mcs_node *base, mcs_node *over);
 
 /* validate against the schema, convert quantities to SI, set paths */

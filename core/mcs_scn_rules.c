@@ -18,6 +18,26 @@ mcs_status mcs_rule_root(scn_walk *w, mcs_node *map)
         return mcs_node_error(v, w->err, MCS_ERR_RANGE,
                               "schema version %g is not supported (this mcrash reads version 1)",
                               v->num);
+    /* end_time may come from a whole keyword deck's *CONTROL_TERMINATION (stage 3 only) */
+    const mcs_node *sim = given(map, "simulation"), *fe = given(map, "fe");
+    const mcs_node *bodies = given(map, "bodies");
+    if (sim && !given(sim, "end_time") &&
+        (!fe || !given(fe, "keyword") || (bodies && mcs_node_len(bodies) > 0)))
+        return scn_walk_fail(w, sim, "end_time", MCS_ERR_KEY,
+                             "required key is missing (only a whole keyword deck, fe.keyword, "
+                             "without bodies may leave it out)");
+    return MCS_OK;
+}
+
+/* fe: parts, or a whole keyword deck (or both: the scenario's parts beside the deck's) */
+mcs_status mcs_rule_fe(scn_walk *w, mcs_node *map)
+{
+    if (!given(map, "parts") && !given(map, "keyword"))
+        return scn_walk_fail(w, map, "parts", MCS_ERR_KEY,
+                             "required key is missing (or give keyword:, a whole deck)");
+    if ((given(map, "units") || given(map, "unknown_keywords")) && !given(map, "keyword"))
+        return scn_walk_fail(w, map, given(map, "units") ? "units" : "unknown_keywords",
+                             MCS_ERR_KEY, "belongs to a whole keyword deck: give keyword:");
     return MCS_OK;
 }
 

@@ -35,10 +35,18 @@ static int ref_names(const scn_walk *w, mcs_sref ref, const char **names, int ma
 {
     int n = 0;
     const mcs_node *list = NULL;
-    if (ref == MCS_REF_CHAR) {
-        const mcs_node *c = mcs_node_get(w->root, "characteristics");
-        for (int i = 0; i < mcs_node_len(c) && n < max && c->kind == MCS_NODE_MAP; i++)
-            names[n++] = mcs_node_key(c, i);
+    if (ref == MCS_REF_CHAR || ref == MCS_REF_BODY_LAW) {
+        const mcs_node *fe = mcs_node_get(w->root, "fe");
+        const mcs_node *c = ref == MCS_REF_CHAR ? mcs_node_get(w->root, "characteristics")
+                                                : mcs_node_get(fe, "body_characteristics");
+        for (int pass = 0; pass < 2; pass++) {
+            for (int i = 0; i < mcs_node_len(c) && n < max && c->kind == MCS_NODE_MAP; i++)
+                names[n++] = mcs_node_key(c, i);
+            /* inside stage2: stage2.fe's too (merged into fe: for stage 2) */
+            if (ref == MCS_REF_CHAR || strncmp(w->path, "stage2.", 7) != 0) break;
+            fe = mcs_node_get(mcs_node_get(w->root, "stage2"), "fe");
+            c = mcs_node_get(fe, "body_characteristics");
+        }
         return n;
     }
     if (ref == MCS_REF_BODY_OR_GROUND) names[n++] = "ground";
@@ -64,6 +72,8 @@ static const char *ref_what(mcs_sref ref)
         return "characteristic";
     case MCS_REF_FE_PART:
         return "FE part";
+    case MCS_REF_BODY_LAW:
+        return "body characteristic";
     default:
         return "body";
     }
@@ -369,6 +379,9 @@ static mcs_status walk_value(scn_walk *w, mcs_node *v, const mcs_skey *k)
     case MCS_SK_CURVE:
         return check_curve(w, v, k);
     case MCS_SK_MAP:
+        /* a map key with a reference: a scalar is the name of one */
+        if (k->ref && v->kind != MCS_NODE_MAP && v->kind != MCS_NODE_SEQ)
+            return check_ref(w, v, k->ref);
         return map_item(w, v, k);
     case MCS_SK_LIST:
         return check_list(w, v, k);

@@ -3,6 +3,7 @@
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_restraint.h"
 #include "fe/fe_slipring.h"
+#include "fe/fe_joint.h"
 #include "fe/fe_solid.h"
 
 #include <math.h>
@@ -54,11 +55,14 @@ void fe_builder_destroy(fe_builder **p)
     free(b->part);
     free(b->bc);
     free(b->fix);
+    free(b->vel);
     free(b->load);
     fe_restraint_list_free(b);
     fe_slipring_list_free(b);
+    fe_joint_list_free(b);
     free(b->spring);
     free(b->mass);
+    for (int i = 0; i < b->ncontact; i++) fe_contact_desc_free(&b->contact[i]);
     for (int i = 0; i < b->nfacets; i++) {
         free((void *)b->facets[i].vert);
         free((void *)b->facets[i].tri);
@@ -157,14 +161,18 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
     const char *n = d->name;
     if (!(m->density > 0))
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.density must be > 0", n);
-    if (!(m->youngs_modulus > 0))
+    if (m->model == FE_MAT_NULL && m->youngs_modulus == 0) {
+        /* a null part carries no stress: its modulus only makes contact stiffness */
+    } else if (!(m->youngs_modulus > 0)) {
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.youngs_modulus must be > 0", n);
+    }
     if (!(m->poisson > -1 && m->poisson < 0.5))
         return MCS_ERR(err, MCS_ERR_RANGE,
                        "fe: part '%s': material.poisson must be in (-1, 0.5), got %g", n,
                        m->poisson);
     if (m->model != FE_MAT_ELASTIC && m->model != FE_MAT_ELASTIC_PLASTIC &&
-        m->model != FE_MAT_FABRIC && m->model != FE_MAT_FOAM && m->model != FE_MAT_RIGID)
+        m->model != FE_MAT_FABRIC && m->model != FE_MAT_FOAM && m->model != FE_MAT_RIGID &&
+        m->model != FE_MAT_NULL)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED, "fe: part '%s': material.model not built yet", n);
     if ((m->model == FE_MAT_FABRIC) != (d->section.type == FE_SECTION_MEMBRANE))
         return MCS_ERR(err, MCS_ERR_TYPE,
@@ -173,7 +181,16 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
                        n);
     if (m->model == FE_MAT_FABRIC) return fe_fabric_check(d, err);
     if (m->model == FE_MAT_FOAM) return fe_foam_check(d, err);
-    if (m->model == FE_MAT_RIGID) return MCS_OK;
+    if (m->model == FE_MAT_RIGID) {
+        const unsigned rot = m->rigid_fix & FE_DOF_ROT;
+        if ((m->rigid_fix & ~(unsigned)FE_DOF_ALL) || (rot && rot != FE_DOF_ROT))
+            return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                           "fe: part '%s': a rigid body's rotations are held all together or "
+                           "not at all",
+                           n);
+        return MCS_OK;
+    }
+    if (m->model == FE_MAT_NULL) return MCS_OK;
     if (m->model == FE_MAT_ELASTIC) return MCS_OK;
     if (m->nhardening < 0 || m->nhardening > FE_CURVE_MAX)
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.hardening: 0..%d points", n,
@@ -280,6 +297,20 @@ mcs_status fe_builder_fix_node(fe_builder *b, int node, unsigned fix, const doub
     f->node = node;
     f->fix = fix;
     for (int i = 0; i < 3; i++) f->v[i] = vel ? vel[i] : 0;
+    return MCS_OK;
+}
+
+mcs_status fe_builder_node_velocity(fe_builder *b, int node, const double v[3], mcs_error *err)
+{
+    if (node < 0 || node >= b->nnode || !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2]))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: node %d: no such node or velocity not finite",
+                       node);
+    if (grow((void **)&b->vel, &b->cap_vel, b->nvel + 1, sizeof *b->vel))
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
+    fe_node_fix *f = &b->vel[b->nvel++];
+    f->node = node;
+    f->fix = 0;
+    for (int i = 0; i < 3; i++) f->v[i] = v[i];
     return MCS_OK;
 }
 

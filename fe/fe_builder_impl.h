@@ -33,6 +33,8 @@ struct fe_builder {
     fe_boundary_desc *bc;
     int nfix, cap_fix;
     fe_node_fix *fix;
+    int nvel, cap_vel;
+    fe_node_fix *vel;  /* initial velocities of single nodes (v; fix unused) */
     int nload, cap_load;
     fe_bload *load;
     int nwall;
@@ -49,6 +51,7 @@ struct fe_builder {
                                                      the builder's copies (owned)      */
     fe_facet_desc facets[FE_FACETS_MAX];
     struct fe_slipring_list *sliprings;           /* slip rings to add (fe_slipring.c) */
+    struct fe_joint_list *joints; /* joints, nodal rigid bodies, extra nodes (fe_joint.c) */
 };
 
 int fe_kind_nnode(int kind);

@@ -54,6 +54,12 @@ typedef struct {
     double fabric_thickness;                  /* contact thickness of membrane (fabric) parts;
                                                  0 -> max(section thickness,
                                                  FE_CONTACT_FABRIC_TMIN) [m]                   */
+    /* a side on part of its parts' surface (LS-DYNA segment and node sets): its nodes limited
+     * to *_node (builder node indices), its segments to the element faces (shells, exterior
+     * hex faces) whose nodes are *_face's (n x 4, a triangle repeats its 3rd); n 0: the whole
+     * parts. Copied by fe_builder_add_contact. */
+    int nslave_node, nslave_face, nmaster_node, nmaster_face; /* [-]                          */
+    const int *slave_node, *slave_face, *master_node, *master_face;
 } fe_contact_desc;
 
 /* the smallest default contact thickness of fabric (membrane parts): two layers rest this far
@@ -112,6 +118,8 @@ typedef struct {
 } fe_facet_desc;
 
 fe_contact_desc fe_contact_desc_default(void);
+/* frees the side filters a builder's copy holds (fe_builder_destroy) */
+void fe_contact_desc_free(fe_contact_desc *d);
 
 /* the builder keeps the descriptors; fe_model_create resolves them */
 mcs_status fe_builder_add_contact(fe_builder *b, const fe_contact_desc *d, mcs_error *err);

@@ -40,6 +40,13 @@ static mcs_status check_parts(const fe_builder *b, const char *what, const char 
     return MCS_OK;
 }
 
+void fe_contact_desc_free(fe_contact_desc *d)
+{
+    free((void *)d->slave_node), free((void *)d->slave_face);
+    free((void *)d->master_node), free((void *)d->master_face);
+    d->slave_node = d->slave_face = d->master_node = d->master_face = NULL;
+}
+
 mcs_status fe_builder_add_contact(fe_builder *b, const fe_contact_desc *d, mcs_error *err)
 {
     if (b->ncontact >= FE_CONTACT_MAX)
@@ -60,7 +67,29 @@ mcs_status fe_builder_add_contact(fe_builder *b, const fe_contact_desc *d, mcs_e
     if (!(d->fabric_thickness >= 0) || !isfinite(d->fabric_thickness))
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: contact '%s': fabric_thickness must be >= 0",
                        d->name);
-    b->contact[b->ncontact] = *d;
+    fe_contact_desc *o = &b->contact[b->ncontact];
+    *o = *d;
+    o->slave_node = o->slave_face = o->master_node = o->master_face = NULL;
+    const int *src[4] = {d->slave_node, d->slave_face, d->master_node, d->master_face};
+    const int num[4] = {d->nslave_node, 4 * d->nslave_face, d->nmaster_node, 4 * d->nmaster_face};
+    const int **dst[4] = {&o->slave_node, &o->slave_face, &o->master_node, &o->master_face};
+    for (int k = 0; k < 4; k++) { /* the side filters, copied (freed with the builder) */
+        if (num[k] <= 0) continue;
+        for (int i = 0; i < num[k]; i++)
+            if (!src[k] || src[k][i] < 0 || src[k][i] >= fe_builder_nnode(b)) {
+                fe_contact_desc_free(o);
+                return MCS_ERR(err, MCS_ERR_RANGE, "fe: contact '%s': a node of its node or "
+                                                   "face lists is not a node of the model",
+                               d->name);
+            }
+        int *q = malloc(sizeof(int) * (size_t)num[k]);
+        if (!q) {
+            fe_contact_desc_free(o);
+            return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
+        }
+        memcpy(q, src[k], sizeof(int) * (size_t)num[k]);
+        *dst[k] = q;
+    }
     if (!b->contact[b->ncontact].name[0])
         snprintf(b->contact[b->ncontact].name, FE_NAME_MAX, "contact%d", b->ncontact);
     b->ncontact++;
@@ -262,19 +291,72 @@ static void set_seg(fe_contact_model *c, int sg, const int nodes[4], int part, i
     c->seg_k[sg] = k;
 }
 
-/* segments of the parts in list: shell elements; exterior faces of hexes */
+/* the key of a face: its nodes sorted, a repeated node dropped (INT_MAX fills) */
+static void face_key(const int q[4], int key[4])
+{
+    memcpy(key, q, 4 * sizeof(int));
+    sort4(key);
+    for (int i = 3; i > 0; i--)
+        if (key[i] == key[i - 1]) {
+            for (int j = i; j < 3; j++) key[j] = key[j + 1];
+            key[3] = INT_MAX;
+        }
+}
+
+static int cmp_key(const void *a, const void *b)
+{
+    const int *x = a, *y = b;
+    for (int i = 0; i < 4; i++)
+        if (x[i] != y[i]) return x[i] < y[i] ? -1 : 1;
+    return 0;
+}
+
+/* a side's face filter: sorted keys of nf faces (NULL when nf is 0: every face) */
+typedef struct {
+    int n;
+    int *key; /* (n x 4) */
+} face_filter;
+
+static int face_filter_make(face_filter *f, const int *faces, int nf)
+{
+    f->n = nf > 0 ? nf : 0;
+    f->key = NULL;
+    if (f->n == 0) return 0;
+    f->key = malloc(sizeof(int) * 4 * (size_t)f->n);
+    if (!f->key) return -1;
+    for (int i = 0; i < f->n; i++) face_key(faces + 4 * i, f->key + 4 * i);
+    qsort(f->key, (size_t)f->n, 4 * sizeof(int), cmp_key);
+    return 0;
+}
+
+static int face_passes(const face_filter *f, const int q[4])
+{
+    if (!f || f->n == 0) return 1;
+    int key[4];
+    face_key(q, key);
+    return bsearch(key, f->key, (size_t)f->n, 4 * sizeof(int), cmp_key) != NULL;
+}
+
+/* segments of the parts in list: shell elements; exterior faces of hexes; only those in the
+ * face filter ff when it has faces */
 static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, int n,
                                double scale, double tscale, const fe_contact_desc *d,
-                               mcs_error *err)
+                               const face_filter *ff, mcs_error *err)
 {
     fe_contact_model *c = cb->c;
     for (int ip = 0; ip < m->npart; ip++) {
         if (!in_list(ip, list, n)) continue;
         const fe_part *p = &m->part[ip];
         double K = p->bulk;
+        if (!(K > 0))
+            return MCS_ERR(err, MCS_ERR_RANGE,
+                           "fe: contact '%s': part '%s' has no stiffness for the penalty (a null "
+                           "material needs a Young's modulus, *MAT_NULL YM)",
+                           d->name, p->name);
         for (int e = p->elem_begin; e < p->elem_end; e++) {
             if (p->elem_kind == FE_KIND_SHELL) {
                 const int *q = m->shell_node + 4 * e;
+                if (!face_passes(ff, q)) continue;
                 double xe[4][3], fr[3][3], xl[4], yl[4];
                 for (int i = 0; i < 4; i++) memcpy(xe[i], m->node_x0 + 3 * q[i], sizeof xe[i]);
                 double A = fe_shell_frame(xe, fr, xl, yl), dmax = 0;
@@ -309,6 +391,7 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
                         int t = q[0];
                         q[0] = q[1], q[1] = q[2], q[2] = q[3], q[3] = t;
                     }
+                    if (!face_passes(ff, q)) continue;
                     double d1[3], d2[3], nn[3];
                     for (int i = 0; i < 3; i++) {
                         d1[i] = m->node_x0[3 * q[2] + i] - m->node_x0[3 * q[0] + i];
@@ -327,9 +410,11 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
     return MCS_OK;
 }
 
-/* slave entries: every node with mass of the parts in list (hex parts: surface nodes only) */
+/* slave entries: every node with mass of the parts in list (hex parts: surface nodes only);
+ * only the nonly nodes of `only` when nonly > 0 */
 static mcs_status add_entries(cbuild *cb, const fe_model *m, const int *list, int n,
-                              double tscale, const fe_contact_desc *d, mcs_error *err)
+                              double tscale, const fe_contact_desc *d, const int *only,
+                              int nonly, mcs_error *err)
 {
     fe_contact_model *c = cb->c;
     memset(cb->mark, 0, (size_t)m->nnode);
@@ -348,8 +433,11 @@ static mcs_status add_entries(cbuild *cb, const fe_model *m, const int *list, in
                             cb->mark[m->hex_node[8 * e + hex_face[f][i]]] = 1;
         }
     }
+    for (int i = 0; i < nonly; i++) /* the node filter: 3 marks a node of both */
+        if (cb->mark[only[i]]) cb->mark[only[i]] = 3;
     for (int nd = 0; nd < m->nnode; nd++) {
-        if (!cb->mark[nd] || !(m->node_mass[nd] > 0)) continue;
+        if (!cb->mark[nd] || (nonly > 0 && cb->mark[nd] != 3) || !(m->node_mass[nd] > 0))
+            continue;
         if (grow_arrays(cb, 0, c->nent + 1))
             return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact nodes)");
         c->ent_node[c->nent] = nd;
@@ -372,6 +460,11 @@ static mcs_status add_pass(cbuild *cb, const fe_model *m, int iface, int self, i
                            int nsl, const int *ma, int nma, const fe_contact_desc *d,
                            mcs_error *err)
 {
+    /* the side filters: entries from the slave side (the master side when reversed), segments
+     * from the other */
+    const int *only = rev ? d->master_node : d->slave_node;
+    int nonly = rev ? d->nmaster_node : d->nslave_node;
+    const int self_faces = self || rev;
     fe_contact_model *c = cb->c;
     fe_contact_pass *p = &c->pass[c->npass];
     double scale = d->penalty_scale > 0 ? d->penalty_scale : 0.1;
@@ -389,8 +482,13 @@ static mcs_status add_pass(cbuild *cb, const fe_model *m, int iface, int self, i
                            "surfaces are not built yet",
                            d->name, m->part[ip].name);
     }
-    mcs_status st = add_entries(cb, m, sl, nsl, tscale, d, err);
-    if (!st) st = add_segments(cb, m, ma, nma, scale, tscale, d, err);
+    face_filter ff;
+    if (face_filter_make(&ff, self_faces ? d->slave_face : d->master_face,
+                         self_faces ? d->nslave_face : d->nmaster_face))
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact)");
+    mcs_status st = add_entries(cb, m, sl, nsl, tscale, d, only, nonly, err);
+    if (!st) st = add_segments(cb, m, ma, nma, scale, tscale, d, &ff, err);
+    free(ff.key);
     p->ent_end = c->nent;
     p->seg_end = c->nseg;
     c->npass++;

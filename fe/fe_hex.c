@@ -162,16 +162,15 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
         for (int i = 3; i < 6; i++) w += 2 * (old[i] + sg[i]) * de[i];
         e_int += 0.5 * w * vol;
         /* bulk viscosity in compression */
-        double len = fe_hex_length(xe, vol), q = 0, qrate = 0;
+        double len = fe_hex_length(xe, vol), q = 0, evr = 0;
         if (dt > 0 && dv < 0) {
-            double evr = dv / dt;
+            evr = dv / dt;
             q = rho * len * (m->opts.bulk_q1 * len * evr * evr - m->opts.bulk_q2 * c0 * evr);
-            qrate = m->opts.bulk_q1 * len * fabs(evr) + m->opts.bulk_q2 * c0;
         }
         /* dissipation with the trapezoidal rule of every other work (fe_state.h) */
         e_diss += -0.5 * (s->hex_q[e] + q) * dv * vol;
         s->hex_q[e] = q;
-        double dte = len / (qrate + sqrt(qrate * qrate + c0 * c0)) * fe_dt_factor(m, FE_KIND_HEX, e);
+        double dte = fe_bulk_dt(m, len, c0, evr) * fe_dt_factor(m, FE_KIND_HEX, e);
         if (dte < dtmin) dtmin = dte, dtel = e;
         /* nodal forces f_iI = V sig_ij b_jI */
         double sxx = sg[0] - q, syy = sg[1] - q, szz = sg[2] - q;

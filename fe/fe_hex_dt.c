@@ -51,7 +51,9 @@ mcs_status fe_hex_dt_build(fe_model *m, mcs_error *err)
 {
     for (int ip = 0; ip < m->npart; ip++) {
         const fe_part *p = &m->part[ip];
-        if (p->elem_kind != FE_KIND_HEX || p->material.model == FE_MAT_RIGID) continue;
+        if (p->elem_kind != FE_KIND_HEX || p->material.model == FE_MAT_RIGID ||
+            p->material.model == FE_MAT_NULL)
+            continue;
         if (!(p->lambda > 0)) continue;
         for (int e = p->elem_begin; e < p->elem_end; e++) {
             if (fe_hex_shape(m->hex_node + 8 * e) == 4) continue; /* tetrahedra: fe_tet.c */

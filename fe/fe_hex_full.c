@@ -157,16 +157,14 @@ void fe_hex_full_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, f
         memcpy(s->hex_sig + 6 * (size_t)e, savg, sizeof savg);
         s->hex_epsp[e] = epsum;
         /* bulk viscosity in compression, as the one-point hex */
-        double len = fe_hex_length(xe, vol), qv = 0, qrate = 0;
-        if (dt > 0 && theta < 0) {
+        double len = fe_hex_length(xe, vol), qv = 0;
+        if (dt > 0 && theta < 0)
             qv = rho * len * (m->opts.bulk_q1 * len * theta * theta - m->opts.bulk_q2 * c0 * theta);
-            qrate = m->opts.bulk_q1 * len * fabs(theta) + m->opts.bulk_q2 * c0;
-        }
         e_diss += -0.5 * (s->hex_q[e] + qv) * theta * dt * vol;
         s->hex_q[e] = qv;
         for (int n = 0; n < 8; n++)
             for (int i = 0; i < 3; i++) f[3 * n + i] += (psum - qv * vol) * b[n][i];
-        double dte = len / (qrate + sqrt(qrate * qrate + c0 * c0)) * fe_dt_factor(m, FE_KIND_HEX, e);
+        double dte = fe_bulk_dt(m, len, c0, dt > 0 ? theta : 0) * fe_dt_factor(m, FE_KIND_HEX, e);
         if (dte < dtmin) dtmin = dte, dtel = e;
     }
     acc->e_int = e_int;

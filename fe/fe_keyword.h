@@ -76,8 +76,12 @@ typedef struct {
 
 typedef enum {
     FE_KW_MAT_ELASTIC = 1,
+    FE_KW_MAT_PK = 3,       /* *MAT_PLASTIC_KINEMATIC (fe_kw_cards_mat.c) */
+    FE_KW_MAT_NULL = 9,     /* *MAT_NULL */
     FE_KW_MAT_RIGID = 20,
     FE_KW_MAT_PLP = 24,
+    FE_KW_MAT_MR = 27,      /* *MAT_MOONEY-RIVLIN_RUBBER */
+    FE_KW_MAT_LDF = 57,     /* *MAT_LOW_DENSITY_FOAM */
     FE_KW_MAT_SPRING = 101, /* *MAT_SPRING_ELASTIC (*MAT_S01) */
     FE_KW_MAT_DAMPER = 102  /* *MAT_DAMPER_VISCOUS (*MAT_S02) */
 } fe_kw_mat_type;
@@ -94,6 +98,14 @@ typedef struct {
     double eps[8], es[8];/* EPS1..8 [-], ES1..8 [Pa]                                      */
     double k;            /* MAT_S01 stiffness K [N/m]; MAT_S02 damping DC [N s/m]          */
     fe_kw_loc loc;
+    /* fe_kw_cards_mat.c: MAT_003 (sigy, etan, c = SRC, p = SRP above), MAT_009, MAT_020
+     * constraints, MAT_027, MAT_057 */
+    double beta;         /* MAT_003 hardening parameter BETA (1 isotropic) [-]             */
+    double fail;         /* MAT_003 FS, MAT_024 FAIL: failure plastic strain (0: none) [-]  */
+    int cmo, con1, con2; /* MAT_020 constraint option and codes as written [-]             */
+    double a, b;         /* MAT_027 constants A, B [Pa]                                   */
+    int lcid;            /* MAT_057 curve of nominal stress vs. strain [-]                */
+    double tc, hu, shape;/* MAT_057 tension cut-off [Pa] (0: none), HU, SHAPE [-]          */
 } fe_kw_mat;
 
 typedef struct {
@@ -152,6 +164,97 @@ typedef struct {
     fe_kw_loc loc;
 } fe_kw_spc;
 
+/* ---- contacts, segment sets, node velocities, prescribed motions, loads, termination
+ * (fe_kw_cards_contact.c, built by fe_kw_build_contact.c; docs/keyword.md) ---- */
+
+/* the *CONTACT_* types read: AUTOMATIC_SINGLE_SURFACE, AUTOMATIC_GENERAL (self contact);
+ * (AUTOMATIC_)SURFACE_TO_SURFACE (symmetric); (AUTOMATIC_)NODES_TO_SURFACE (one way) */
+typedef enum { FE_KW_CT_SINGLE, FE_KW_CT_GENERAL, FE_KW_CT_S2S, FE_KW_CT_N2S } fe_kw_ctype;
+
+typedef struct {
+    int id;                      /* CID of the _ID/_TITLE card, else 0                        */
+    char title[FE_KW_TITLE_MAX]; /* its HEADING                                               */
+    fe_kw_ctype type;
+    int automatic;               /* an _AUTOMATIC_ keyword [-]                                */
+    int ssid, msid, sstyp, mstyp;/* card 1: sides and their ID types (0 segment set, 1 shell
+                                    element set, 2 part set, 3 part, 4 node set, 5 all, 6 all
+                                    but a part set, 7 branch) [-]                              */
+    double fs, fd, dc;           /* card 2: static, dynamic friction [-], decay [s/m]         */
+    double vc, vdc;              /* viscous friction limit [Pa], normal damping [% critical]  */
+    double bt, dt;               /* birth, death time [s] (dt 0: never)                       */
+    double sfs, sfm;             /* card 3: penalty scale of the slave, master side [-]       */
+    double sst, mst;             /* contact thickness override of each side (0: none) [m]     */
+    double sfst, sfmt, fsf;      /* scale on the shell thickness of each side, on FS/FD [-]   */
+    int soft;                    /* optional card A: SOFT (0 penalty) [-]                      */
+    double sldthk, sldstf;       /* optional card B: solid contact thickness [m], stiffness  */
+    fe_kw_loc loc;               /* card 1                                                    */
+} fe_kw_contact;
+
+/* *SET_SEGMENT: quadrilaterals (a triangle repeats N3) by node ID */
+typedef struct {
+    int id;
+    int n;
+    int *node;                   /* (n x 4) node IDs                                          */
+    fe_kw_loc loc;
+} fe_kw_segset;
+
+/* *INITIAL_VELOCITY_NODE */
+typedef struct {
+    int nid;
+    double v[3], vr[3];          /* [m/s], [rad/s]                                            */
+    fe_kw_loc loc;
+} fe_kw_nodevel;
+
+/* *BOUNDARY_PRESCRIBED_MOTION_NODE | _SET | _RIGID: ID DOF VAD LCID SF VID DEATH BIRTH */
+typedef struct {
+    fe_kw_target on;             /* FE_KW_ON_NODE, _NODESET or _PART (_RIGID)                 */
+    int id, dof, vad, lcid;      /* [-]                                                       */
+    double sf;                   /* scale on the curve [-]                                    */
+    double death, birth;         /* [s] (death 0: never)                                      */
+    fe_kw_loc loc;
+} fe_kw_pmotion;
+
+/* *LOAD_NODE_POINT, *LOAD_NODE_SET (NID|NSID DOF LCID SF), *LOAD_SEGMENT (LCID SF AT N1..N4) */
+typedef struct {
+    int segment;                 /* 0: a node, 1: a pressure on a segment, 2: a node set [-]  */
+    int nid, dof, lcid;          /* node or set, direction 1 x 2 y 3 z [-]; the curve [-]     */
+    double sf, at;               /* scale [-], arrival time [s]                               */
+    int node[4];                 /* segment nodes [-]                                         */
+    fe_kw_loc loc;
+} fe_kw_load;
+
+/* ---- joints and constraints (fe_kw_cards_joint.c; kernel: fe_joint.h) ---- */
+
+/* *CONSTRAINED_JOINT_SPHERICAL|REVOLUTE|CYLINDRICAL|TRANSLATIONAL(_ID): N1..N6 RPS DAMP */
+typedef struct {
+    int id;                      /* JID of the _ID card, else its number among the joints   */
+    char title[FE_KW_TITLE_MAX]; /* the _ID card's heading                                  */
+    int type;                    /* fe_joint_type: 0 spherical 1 revolute 2 cyl. 3 transl.   */
+    int node[6];                 /* N1..N6 (0: blank) [-]                                   */
+    double rps, damp;            /* relative penalty stiffness, damping scale (default 1)   */
+    fe_kw_loc loc;               /* the node card                                           */
+} fe_kw_joint;
+
+/* *CONSTRAINED_NODAL_RIGID_BODY (PID CID NSID ...), *CONSTRAINED_EXTRA_NODES_NODE|SET
+ * (PID NID|NSID) */
+typedef struct {
+    int kind;                    /* 0 nodal rigid body (id: its node set), 1 extra node (id: a
+                                    node), 2 extra nodes (id: a node set) [-]                */
+    int pid;                     /* the body's ID / the rigid part's ID [-]                  */
+    int id;
+    fe_kw_loc loc;
+} fe_kw_nrb;
+
+/* *CONSTRAINED_JOINT_STIFFNESS_GENERALIZED (phi, theta, psi) | _TRANSLATIONAL (x, y, z) */
+typedef struct {
+    int translational;           /* 0 generalized (rotations), 1 translational [-]           */
+    int jsid, pida, pidb, cida, cidb, jid;
+    int lc[3], dlc[3];           /* stiffness and damping curves per axis (0: none) [-]       */
+    double es[3], ff[3];         /* stop stiffness, friction limit per axis, as written      */
+    double neg[3], pos[3];       /* stops per axis [rad | m] (0: none)                       */
+    fe_kw_loc loc;
+} fe_kw_jstiff;
+
 /* a keyword outside the subset: one entry per distinct name, in the order first met */
 typedef struct {
     char name[FE_KW_NAME_MAX + 16]; /* as written, without the "*" */
@@ -178,6 +281,16 @@ typedef struct fe_kw_deck {
     int nunknown, cap_unknown; fe_kw_unknown *unknown;
     double unit[3];       /* SI value of the deck's length [m], time [s], mass [kg] units  */
     int nwmotion, cap_wmotion; fe_kw_wmotion *wmotion; /* rigid wall motions              */
+    int ncontact, cap_contact; fe_kw_contact *contact; /* *CONTACT_* (fe_kw_cards_contact.c) */
+    int nsegset, cap_segset;   fe_kw_segset *segset;   /* *SET_SEGMENT                         */
+    int nnodevel, cap_nodevel; fe_kw_nodevel *nodevel; /* *INITIAL_VELOCITY_NODE               */
+    int npmotion, cap_pmotion; fe_kw_pmotion *pmotion; /* *BOUNDARY_PRESCRIBED_MOTION_*        */
+    int nload, cap_load;       fe_kw_load *load;       /* *LOAD_NODE_POINT, *LOAD_SEGMENT      */
+    double end_time;      /* *CONTROL_TERMINATION ENDTIM [s] (0: not given)                    */
+    /* joints and constraints (fe_kw_cards_joint.c) */
+    int njoint, cap_joint;     fe_kw_joint *joint;     /* *CONSTRAINED_JOINT_*                 */
+    int nnrb, cap_nrb;         fe_kw_nrb *nrb;         /* nodal rigid bodies, extra nodes       */
+    int njstiff, cap_jstiff;   fe_kw_jstiff *jstiff;   /* *CONSTRAINED_JOINT_STIFFNESS_*       */
 } fe_kw_deck;
 
 typedef struct {

@@ -130,10 +130,8 @@ static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_ma
     m->density = k->ro;
     m->youngs_modulus = k->e;
     m->poisson = k->pr;
-    if (k->type == FE_KW_MAT_RIGID) { /* the kernel says whether it builds rigid parts */
-        m->model = FE_MAT_RIGID;
-        return MCS_OK;
-    }
+    mcs_status st;
+    if (kw_mat_desc(dk, k, m, err, &st)) return st; /* fe_kw_cards_mat.c */
     if (k->type == FE_KW_MAT_ELASTIC) {
         m->model = FE_MAT_ELASTIC;
         return MCS_OK;
@@ -549,8 +547,11 @@ mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
         }
         if (!st) st = fe_kw_add_part(b, dk, p->id, &d, 1, map, NULL, err);
     }
+    if (!st) st = kw_add_deck_joint_nodes(b, dk, map, err); /* fe_kw_build_joint.c */
     if (!st) st = add_spcs(b, dk, map, err);
     if (!st) st = add_walls(b, dk, names, err);
+    if (!st) st = kw_add_deck_more(b, dk, (const char(*)[FE_NAME_MAX])names, map, err);
+    if (!st) st = kw_add_deck_joints(b, dk, (const char(*)[FE_NAME_MAX])names, map, err);
     free(map);
     free(names);
     return st;

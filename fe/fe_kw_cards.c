@@ -448,18 +448,6 @@ static mcs_status h_mat_damper(kw_ctx *c, const kw_card *cd, int n)
     return h_mat_discrete(c, cd, n, FE_KW_MAT_DAMPER);
 }
 
-static mcs_status h_mat_rigid(kw_ctx *c, const kw_card *cd, int n)
-{
-    for (int i = 0; i < n;) {
-        i = title_card(c, i);
-        TRY(need(c, cd, n, i, 3));
-        mcs_status st = MCS_OK;
-        if (!new_mat(c, &cd[i], FE_KW_MAT_RIGID, &st)) return st;
-        i += 3;
-    }
-    return MCS_OK;
-}
-
 static mcs_status h_mat_plp(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
@@ -802,8 +790,16 @@ static const struct {
     {"MAT_001", h_mat_elastic, 0},
     {"MAT_PIECEWISE_LINEAR_PLASTICITY", h_mat_plp, 0},
     {"MAT_024", h_mat_plp, 0},
-    {"MAT_RIGID", h_mat_rigid, 0},
-    {"MAT_020", h_mat_rigid, 0},
+    {"MAT_RIGID", kw_h_mat_rigid, 0}, /* fe_kw_cards_mat.c */
+    {"MAT_020", kw_h_mat_rigid, 0},
+    {"MAT_PLASTIC_KINEMATIC", kw_h_mat_pk, 0},
+    {"MAT_003", kw_h_mat_pk, 0},
+    {"MAT_NULL", kw_h_mat_null, 0},
+    {"MAT_009", kw_h_mat_null, 0},
+    {"MAT_MOONEY-RIVLIN_RUBBER", kw_h_mat_mr, 0},
+    {"MAT_027", kw_h_mat_mr, 0},
+    {"MAT_LOW_DENSITY_FOAM", kw_h_mat_ldf, 0},
+    {"MAT_057", kw_h_mat_ldf, 0},
     {"DEFINE_CURVE", h_curve, 0},
     {"SET_NODE", h_set_node, 0},
     {"SET_NODE_LIST", h_set_node, 0},
@@ -816,6 +812,32 @@ static const struct {
     {"BOUNDARY_SPC_NODE", h_spc_node, 1},
     {"BOUNDARY_SPC_SET", h_spc_set, 1},
     {"BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL", h_wall_motion, 1},
+    {"CONTACT_AUTOMATIC_SINGLE_SURFACE", kw_h_contact_single, 1},
+    {"CONTACT_AUTOMATIC_GENERAL", kw_h_contact_general, 1},
+    {"CONTACT_SURFACE_TO_SURFACE", kw_h_contact_s2s, 1},
+    {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", kw_h_contact_auto_s2s, 1},
+    {"CONTACT_NODES_TO_SURFACE", kw_h_contact_n2s, 1},
+    {"CONTACT_AUTOMATIC_NODES_TO_SURFACE", kw_h_contact_auto_n2s, 1},
+    {"SET_NODE_LIST_GENERATE", kw_h_set_node_gen, 0},
+    {"SET_PART_LIST_GENERATE", kw_h_set_part_gen, 0},
+    {"SET_SEGMENT", kw_h_set_segment, 0},
+    {"INITIAL_VELOCITY_NODE", kw_h_initvel_node, 0},
+    {"BOUNDARY_PRESCRIBED_MOTION_NODE", kw_h_pmotion_node, 1},
+    {"BOUNDARY_PRESCRIBED_MOTION_SET", kw_h_pmotion_set, 1},
+    {"BOUNDARY_PRESCRIBED_MOTION_RIGID", kw_h_pmotion_rigid, 1},
+    {"LOAD_NODE_POINT", kw_h_load_node_point, 0},
+    {"LOAD_NODE_SET", kw_h_load_node_set, 0},
+    {"LOAD_SEGMENT", kw_h_load_segment, 0},
+    {"CONTROL_TERMINATION", kw_h_control_termination, 0},
+    {"CONSTRAINED_JOINT_SPHERICAL", kw_h_joint_spherical, 1}, /* fe_kw_cards_joint.c */
+    {"CONSTRAINED_JOINT_REVOLUTE", kw_h_joint_revolute, 1},
+    {"CONSTRAINED_JOINT_CYLINDRICAL", kw_h_joint_cylindrical, 1},
+    {"CONSTRAINED_JOINT_TRANSLATIONAL", kw_h_joint_translational, 1},
+    {"CONSTRAINED_NODAL_RIGID_BODY", kw_h_nodal_rigid_body, 0},
+    {"CONSTRAINED_EXTRA_NODES_NODE", kw_h_extra_nodes_node, 0},
+    {"CONSTRAINED_EXTRA_NODES_SET", kw_h_extra_nodes_set, 0},
+    {"CONSTRAINED_JOINT_STIFFNESS_GENERALIZED", kw_h_jstiff_generalized, 0},
+    {"CONSTRAINED_JOINT_STIFFNESS_TRANSLATIONAL", kw_h_jstiff_translational, 0},
 };
 
 int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st)

@@ -95,6 +95,8 @@ void fe_kw_deck_destroy(fe_kw_deck **p)
     free(d->iv);
     free(d->spc);
     free(d->unknown);
+    kw_contact_free(d); /* fe_kw_cards_contact.c */
+    kw_joint_free(d);   /* fe_kw_cards_joint.c */
     free(d);
     *p = NULL;
 }

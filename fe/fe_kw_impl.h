@@ -117,6 +117,66 @@ int kw_expr_eval(const char *s, int (*look)(void *user, const char *name, double
 /* ---- handlers (fe_kw_cards.c): cards of one keyword; 1 = handled, 0 = unknown keyword ---- */
 int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st);
 
+/* ---- material handlers (fe_kw_cards_mat.c): *MAT_PLASTIC_KINEMATIC, *MAT_NULL, *MAT_RIGID,
+ * *MAT_MOONEY-RIVLIN_RUBBER, *MAT_LOW_DENSITY_FOAM; kw_mat_desc: their kernel descriptors
+ * (1 when k is one of them, *st the status; 0 otherwise) ---- */
+mcs_status kw_h_mat_pk(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_null(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_rigid(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_mr(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_mat_ldf(kw_ctx *c, const kw_card *cd, int n);
+int kw_mat_desc(const fe_kw_deck *dk, const fe_kw_mat *k, fe_material_desc *m, mcs_error *err,
+                mcs_status *st);
+
+/* ---- handlers of fe_kw_cards_contact.c (contacts, sets, node velocities, prescribed
+ * motions, loads, termination) and the deck memory they own ---- */
+mcs_status kw_h_contact_single(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_general(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_s2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_auto_s2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_n2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_auto_n2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_set_node_gen(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_set_part_gen(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_set_segment(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_initvel_node(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_pmotion_node(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_pmotion_set(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_pmotion_rigid(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_load_node_point(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_load_node_set(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_load_segment(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_control_termination(kw_ctx *c, const kw_card *cd, int n);
+void kw_contact_free(fe_kw_deck *d);
+/* the deck's contacts, node velocities, prescribed motions and loads into a builder once its
+ * parts are in (fe_kw_build_contact.c): names[k] is deck part k's builder name, map the deck
+ * node -> builder node map (-1: not in the model) */
+mcs_status kw_add_deck_more(fe_builder *b, const fe_kw_deck *dk, const char (*names)[FE_NAME_MAX],
+                            const int *map, mcs_error *err);
+
+/* ---- joints and constraints (fe_kw_cards_joint.c) ---- */
+mcs_status kw_h_joint_spherical(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_joint_revolute(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_joint_cylindrical(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_joint_translational(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_nodal_rigid_body(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_extra_nodes_node(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_extra_nodes_set(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_jstiff_generalized(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_jstiff_translational(kw_ctx *c, const kw_card *cd, int n);
+void kw_joint_free(fe_kw_deck *d);
+/* before the constraints: the deck nodes the joints and extra nodes name that no element
+ * holds join the builder (map updated); after everything: nodal rigid bodies, extra nodes,
+ * joints and their stiffness (fe_kw_build_joint.c) */
+mcs_status kw_add_deck_joint_nodes(fe_builder *b, const fe_kw_deck *dk, int *map,
+                                   mcs_error *err);
+mcs_status kw_add_deck_joints(fe_builder *b, const fe_kw_deck *dk,
+                              const char (*names)[FE_NAME_MAX], const int *map, mcs_error *err);
+/* the joints, nodal rigid bodies and extra nodes of a model into its deck (node i has ID i+1,
+ * part i ID i+1; new nodes, sets and curves numbered after the deck's) */
+mcs_status kw_joints_from_model(const fe_model *m, const double *x, fe_kw_deck *d,
+                                mcs_error *err);
+
 /* ---- unit conversions (SI value of the deck's unit of each quantity) ---- */
 static inline double kw_u_len(const fe_kw_deck *d) { return d->unit[0]; }
 static inline double kw_u_vel(const fe_kw_deck *d) { return d->unit[0] / d->unit[1]; }

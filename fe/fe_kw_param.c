@@ -97,8 +97,8 @@ mcs_status kw_param_num(kw_ctx *c, const kw_card *cd, const char *p, int n, cons
 }
 
 /* a new parameter in the current scope, after the duplication rule; *slot NULL when ignored */
-static mcs_status define(kw_ctx *c, const kw_card *cd, const char *name, char type, int local,
-                         kw_param **slot)
+static mcs_status define(kw_ctx *c, const kw_card *cd, int col, const char *name, char type,
+                         int local, kw_param **slot)
 {
     *slot = NULL;
     if (!c->par && !(c->par = calloc(1, sizeof *c->par)))
@@ -110,13 +110,15 @@ static mcs_status define(kw_ctx *c, const kw_card *cd, const char *name, char ty
             old = &c->par->p[i];
     int flag = c->par->dflag ? c->par->dflag : 1;
     if (old && flag == 3)
-        return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_FORMAT,
+        return kw_fail(c, cd->file, cd->line, col, MCS_ERR_FORMAT,
                        "parameter '%s' defined twice (first at %s:%d; *PARAMETER_DUPLICATION 3)",
                        name, c->d->file[old->loc.file], old->loc.line);
     if (old && (flag == 1 || flag == 2) && !c->o->quiet)
-        mcs_log(MCS_LOG_WARN, "%s:%d: warning: *%s: parameter '%s' defined again (first at %s:%d)%s",
+        mcs_log(MCS_LOG_WARN,
+                "%s:%d: warning: *%s: parameter '%s' defined again (first at %s:%d): the %s value "
+                "is used",
                 c->d->file[cd->file], cd->line, c->kw, name, c->d->file[old->loc.file],
-                old->loc.line, flag == 1 ? ": the first value is kept" : ": the new value is used");
+                old->loc.line, flag == 1 ? "first" : "new");
     if (old && (flag == 1 || flag == 4)) return MCS_OK;
     kw_param *q = old;
     if (!q) q = kw_push((void **)&c->par->p, &c->par->n, &c->par->cap, sizeof *q);
@@ -155,7 +157,7 @@ static mcs_status params(kw_ctx *c, const kw_card *cards, int ncard, int local)
             if (!txt[0]) continue;
             kw_param *q;
             mcs_status st = prmr(c, cd, txt, col, &type, name);
-            if (!st) st = define(c, cd, name, type, local, &q);
+            if (!st) st = define(c, cd, col, name, type, local, &q);
             if (st) return st;
             if (!q) continue;
             int iv = 0;
@@ -202,7 +204,7 @@ static mcs_status expressions(kw_ctx *c, const kw_card *cards, int ncard, int lo
         if (!st && kw_expr_eval(ex, look, c, &v, &pos, msg, sizeof msg))
             return kw_fail(c, cd->file, cd->line, at + pos + 1, MCS_ERR_FORMAT,
                            "parameter '%s': %s", name, msg);
-        if (!st) st = define(c, cd, name, type, local, &q);
+        if (!st) st = define(c, cd, 1, name, type, local, &q);
         if (st) return st;
         if (!q) continue;
         /* I: toward zero as Fortran's INT, after a rounding-noise guard */

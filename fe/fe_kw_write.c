@@ -145,6 +145,37 @@ static void w_sections(kw_out *o, const fe_kw_deck *d)
     }
 }
 
+/* *MAT_NULL, *MAT_LOW_DENSITY_FOAM, *MAT_PLASTIC_KINEMATIC (fe_kw_cards_mat.c); 0 for the rest */
+static int w_mat_more(kw_out *o, const fe_kw_deck *d, const fe_kw_mat *m)
+{
+    const double R = kw_u_dens(d), S = kw_u_stress(d);
+    if (m->type == FE_KW_MAT_NULL) { /* MID RO PC MU TEROD CEROD YM PR */
+        kw(o, "MAT_NULL");
+        put_int(o, 10, m->id), put_real(o, 10, m->ro / R);
+        for (int k = 0; k < 4; k++) put_real(o, 10, 0);
+        put_real(o, 10, m->e / S), put_real(o, 10, m->pr), endl(o);
+        return 1;
+    }
+    if (m->type == FE_KW_MAT_LDF) { /* MID RO E LCID TC HU BETA DAMP / SHAPE */
+        kw(o, "MAT_LOW_DENSITY_FOAM");
+        put_int(o, 10, m->id), put_real(o, 10, m->ro / R), put_real(o, 10, m->e / S);
+        put_int(o, 10, m->lcid), put_real(o, 10, m->tc > 0 ? m->tc / S : 1e20);
+        put_real(o, 10, m->hu), put_real(o, 10, 0), put_real(o, 10, 0), endl(o);
+        put_real(o, 10, m->shape), endl(o);
+        return 1;
+    }
+    if (m->type == FE_KW_MAT_PK) { /* MID RO E PR SIGY ETAN BETA / SRC SRP FS VP */
+        kw(o, "MAT_PLASTIC_KINEMATIC");
+        put_int(o, 10, m->id), put_real(o, 10, m->ro / R), put_real(o, 10, m->e / S);
+        put_real(o, 10, m->pr), put_real(o, 10, m->sigy / S), put_real(o, 10, m->etan / S);
+        put_real(o, 10, m->beta), endl(o);
+        put_real(o, 10, m->c * d->unit[1]), put_real(o, 10, m->p), put_real(o, 10, m->fail);
+        endl(o);
+        return 1;
+    }
+    return 0;
+}
+
 static void w_mats(kw_out *o, const fe_kw_deck *d)
 {
     double R = kw_u_dens(d), S = kw_u_stress(d);
@@ -158,13 +189,18 @@ static void w_mats(kw_out *o, const fe_kw_deck *d)
             endl(o);
             continue;
         }
+        if (w_mat_more(o, d, m)) continue; /* null, foam, plastic kinematic */
         kw(o, m->type == FE_KW_MAT_ELASTIC ? "MAT_ELASTIC"
               : m->type == FE_KW_MAT_RIGID ? "MAT_RIGID" : "MAT_PIECEWISE_LINEAR_PLASTICITY");
         put_int(o, 10, m->id), put_real(o, 10, m->ro / R), put_real(o, 10, m->e / S);
         put_real(o, 10, m->pr);
         if (m->type == FE_KW_MAT_PLP) put_real(o, 10, m->sigy / S), put_real(o, 10, m->etan / S);
+        if (m->type == FE_KW_MAT_PLP && m->fail > 0) put_real(o, 10, m->fail);
         endl(o);
-        if (m->type == FE_KW_MAT_RIGID) fprintf(o->f, "\n\n");
+        if (m->type == FE_KW_MAT_RIGID) { /* CMO CON1 CON2, then the third card blank */
+            put_real(o, 10, m->cmo), put_int(o, 10, m->con1), put_int(o, 10, m->con2), endl(o);
+            fprintf(o->f, "\n");
+        }
         if (m->type != FE_KW_MAT_PLP) continue;
         put_real(o, 10, m->c * d->unit[1]), put_real(o, 10, m->p), put_int(o, 10, m->lcss);
         endl(o);
@@ -282,6 +318,110 @@ static void w_conditions(kw_out *o, const fe_kw_deck *d)
     }
 }
 
+/* nodal rigid bodies, extra nodes, joints and joint stiffnesses (fe_kw_cards_joint.c) */
+static void w_constrained(kw_out *o, const fe_kw_deck *d)
+{
+    static const char *const jk[4] = {"SPHERICAL", "REVOLUTE", "CYLINDRICAL", "TRANSLATIONAL"};
+    static const char *const nk[3] = {"NODAL_RIGID_BODY", "EXTRA_NODES_NODE", "EXTRA_NODES_SET"};
+    char name[64];
+    for (int i = 0; i < d->nnrb; i++) {
+        const fe_kw_nrb *r = &d->nrb[i];
+        snprintf(name, sizeof name, "CONSTRAINED_%s", nk[r->kind]);
+        kw(o, name);
+        put_int(o, 10, r->pid);
+        if (r->kind == 0) put_int(o, 10, 0);
+        put_int(o, 10, r->id), endl(o);
+    }
+    for (int i = 0; i < d->njoint; i++) {
+        const fe_kw_joint *j = &d->joint[i];
+        snprintf(name, sizeof name, "CONSTRAINED_JOINT_%s_ID", jk[j->type]);
+        kw(o, name);
+        fprintf(o->f, "%10d%.70s\n", j->id, j->title); /* I10 + A70 in every format */
+        for (int k = 0; k < 6; k++) put_int(o, 10, j->node[k]);
+        put_real(o, 10, j->rps), put_real(o, 10, j->damp), endl(o);
+    }
+    for (int i = 0; i < d->njstiff; i++) {
+        const fe_kw_jstiff *s = &d->jstiff[i];
+        kw(o, s->translational ? "CONSTRAINED_JOINT_STIFFNESS_TRANSLATIONAL"
+                               : "CONSTRAINED_JOINT_STIFFNESS_GENERALIZED");
+        const int c1[6] = {s->jsid, s->pida, s->pidb, s->cida, s->cidb, s->jid};
+        for (int k = 0; k < 6; k++) put_int(o, 10, c1[k]);
+        endl(o);
+        for (int k = 0; k < 3; k++) put_int(o, 10, s->lc[k]);
+        for (int k = 0; k < 3; k++) put_int(o, 10, s->dlc[k]);
+        endl(o);
+        for (int k = 0; k < 3; k++) put_real(o, 10, s->es[k]), put_real(o, 10, s->ff[k]);
+        endl(o);
+        /* stops: degrees (generalized) or the deck's length */
+        const double u = s->translational ? kw_u_len(d) : M_PI / 180;
+        for (int k = 0; k < 3; k++) put_real(o, 10, s->neg[k] / u), put_real(o, 10, s->pos[k] / u);
+        endl(o);
+    }
+}
+
+/* contacts, segment sets, node velocities, prescribed motions, loads, the end time
+ * (fe_kw_cards_contact.c reads them back) */
+static void w_contacts(kw_out *o, const fe_kw_deck *d)
+{
+    static const char *const nm[2][4] = {
+        {"CONTACT_SINGLE_SURFACE", "CONTACT_GENERAL", "CONTACT_SURFACE_TO_SURFACE",
+         "CONTACT_NODES_TO_SURFACE"},
+        {"CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_AUTOMATIC_GENERAL",
+         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_NODES_TO_SURFACE"}};
+    const double T = d->unit[1], L = kw_u_len(d);
+    if (d->end_time > 0) kw(o, "CONTROL_TERMINATION"), put_real(o, 10, d->end_time / T), endl(o);
+    for (int i = 0; i < d->nsegset; i++) {
+        const fe_kw_segset *s = &d->segset[i];
+        kw(o, "SET_SEGMENT"), put_int(o, 10, s->id), endl(o);
+        for (int k = 0; k < s->n; k++) {
+            for (int j = 0; j < 4; j++) put_int(o, 10, s->node[4 * k + j]);
+            endl(o);
+        }
+    }
+    for (int i = 0; i < d->nnodevel; i++) {
+        const fe_kw_nodevel *v = &d->nodevel[i];
+        if (i == 0) kw(o, "INITIAL_VELOCITY_NODE");
+        put_int(o, 10, v->nid);
+        for (int k = 0; k < 3; k++) put_real(o, 10, v->v[k] / kw_u_vel(d));
+        for (int k = 0; k < 3; k++) put_real(o, 10, v->vr[k] * T);
+        endl(o);
+    }
+    for (int i = 0; i < d->npmotion; i++) {
+        const fe_kw_pmotion *m = &d->pmotion[i];
+        kw(o, m->on == FE_KW_ON_NODE      ? "BOUNDARY_PRESCRIBED_MOTION_NODE"
+              : m->on == FE_KW_ON_NODESET ? "BOUNDARY_PRESCRIBED_MOTION_SET"
+                                          : "BOUNDARY_PRESCRIBED_MOTION_RIGID");
+        put_int(o, 10, m->id), put_int(o, 10, m->dof), put_int(o, 10, m->vad);
+        put_int(o, 10, m->lcid), put_real(o, 10, m->sf), endl(o);
+    }
+    for (int i = 0; i < d->nload; i++) {
+        const fe_kw_load *l = &d->load[i];
+        if (l->segment == 1) {
+            kw(o, "LOAD_SEGMENT"), put_int(o, 10, l->lcid), put_real(o, 10, l->sf);
+            put_real(o, 10, l->at / T);
+            for (int j = 0; j < 4; j++) put_int(o, 10, l->node[j]);
+        } else {
+            kw(o, l->segment ? "LOAD_NODE_SET" : "LOAD_NODE_POINT");
+            put_int(o, 10, l->nid), put_int(o, 10, l->dof), put_int(o, 10, l->lcid);
+            put_real(o, 10, l->sf);
+        }
+        endl(o);
+    }
+    for (int i = 0; i < d->ncontact; i++) {
+        const fe_kw_contact *c = &d->contact[i];
+        char name[64];
+        snprintf(name, sizeof name, "%s%s", nm[c->automatic ? 1 : 0][c->type],
+                 c->id || c->title[0] ? "_ID" : "");
+        kw(o, name);
+        if (c->id || c->title[0]) fprintf(o->f, "%10d%.70s\n", c->id, c->title);
+        put_int(o, 10, c->ssid), put_int(o, 10, c->msid), put_int(o, 10, c->sstyp);
+        put_int(o, 10, c->mstyp), endl(o);
+        put_real(o, 10, c->fs), put_real(o, 10, c->fd), put_real(o, 10, c->dc * L / T), endl(o);
+        put_real(o, 10, c->sfs), put_real(o, 10, c->sfm), put_real(o, 10, 0), put_real(o, 10, 0);
+        put_real(o, 10, c->sfst), put_real(o, 10, c->sfmt), put_real(o, 10, c->fsf), endl(o);
+    }
+}
+
 mcs_status fe_kw_write_stream(const fe_kw_deck *d, FILE *f, fe_kw_format fmt, mcs_error *err)
 {
     kw_out o = {.f = f, .fmt = fmt};
@@ -297,6 +437,8 @@ mcs_status fe_kw_write_stream(const fe_kw_deck *d, FILE *f, fe_kw_format fmt, mc
     w_nodes(&o, d);
     w_elems(&o, d);
     w_conditions(&o, d);
+    w_contacts(&o, d); /* contacts, segment sets, node velocities, motions, loads, end time */
+    w_constrained(&o, d);
     fprintf(f, "*END\n");
     if (o.bad_id)
         return MCS_ERR(err, MCS_ERR_RANGE,
@@ -350,11 +492,43 @@ static mcs_status model_props(const fe_model *m, int ip, fe_kw_deck *d, mcs_erro
     k->ro = md->density, k->e = md->youngs_modulus, k->pr = md->poisson;
     k->type = md->model == FE_MAT_ELASTIC_PLASTIC ? FE_KW_MAT_PLP
               : md->model == FE_MAT_RIGID         ? FE_KW_MAT_RIGID
+              : md->model == FE_MAT_NULL          ? FE_KW_MAT_NULL
                                                   : FE_KW_MAT_ELASTIC;
+    if (md->model == FE_MAT_RIGID && md->rigid_fix) { /* CMO 1: CON1 and CON2 codes */
+        static const unsigned con[8] = {0, 1, 2, 4, 3, 6, 5, 7};
+        k->cmo = 1;
+        for (int i = 0; i < 8; i++)
+            if (con[i] == (md->rigid_fix & FE_DOF_TRANS)) k->con1 = i;
+        k->con2 = md->rigid_fix & FE_DOF_ROT ? 7 : 0;
+    }
+    if (md->model == FE_MAT_FOAM && md->nfoam_curve == 1 && md->poisson == 0) {
+        /* *MAT_LOW_DENSITY_FOAM: its one loading curve, stress in Pa as the deck's curves */
+        fe_kw_curve *c = kw_push((void **)&d->curve, &d->ncurve, &d->cap_curve, sizeof *c);
+        const int np = md->foam_npoint[0];
+        if (!c || !(c->xy = malloc(2 * sizeof(double) * (size_t)(np + 1))))
+            return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+        k->type = FE_KW_MAT_LDF;
+        c->id = k->lcid = ip + 1;
+        c->xy[0] = c->xy[1] = 0;
+        c->n = 1;
+        for (int i = 0; i < np; i++)
+            if (md->foam_curve[0][i][0] > 0) {
+                c->xy[2 * c->n] = md->foam_curve[0][i][0];
+                c->xy[2 * c->n + 1] = md->foam_curve[0][i][1] / kw_u_stress(d);
+                c->n++;
+            }
+        k->hu = md->foam_hysteresis > 0 ? md->foam_hysteresis : 1;
+        k->shape = md->foam_shape > 0 ? md->foam_shape : 1;
+        k->tc = md->foam_tension_cutoff;
+        return MCS_OK;
+    }
     if (md->model == FE_MAT_FOAM || md->model == FE_MAT_FABRIC)
         mcs_log(MCS_LOG_WARN, "keyword: part '%s': %s material written as *MAT_ELASTIC (RO, E, "
-                              "PR only): the subset has no foam or fabric card",
-                p->name, md->model == FE_MAT_FOAM ? "foam" : "fabric");
+                              "PR only): %s",
+                p->name, md->model == FE_MAT_FOAM ? "foam" : "fabric",
+                md->model == FE_MAT_FOAM ? "*MAT_LOW_DENSITY_FOAM holds one curve and no Poisson "
+                                           "effect"
+                                         : "the subset has no fabric card");
     if (k->type != FE_KW_MAT_PLP) return MCS_OK;
     k->sigy = md->nhardening > 0 ? md->hardening[0][1] : md->yield_stress;
     k->c = md->cowper_symonds_c, k->p = md->cowper_symonds_p;
@@ -407,6 +581,7 @@ mcs_status fe_kw_from_model(const fe_model *m, const double *x, const char *titl
         if (!s) st = MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
         else *s = (fe_kw_spc){FE_KW_ON_NODE, i + 1, m->node_fix[i], {0, 0}};
     }
+    if (!st) st = kw_joints_from_model(m, xs, d, err); /* fe_kw_joint_model.c */
     if (st) fe_kw_deck_destroy(&d);
     *out = d;
     return st;

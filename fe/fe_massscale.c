@@ -7,16 +7,16 @@
  * lumped to its nodes as its own mass is (hex 1/8, shell 1/3 or 1/4 with the rotary inertia
  * scaled alike, truss 1/2). The element's step is multiplied by f in the time loop
  * (elem_dt_factor), so the run goes at dt_t as long as the scaled elements set the step.
- * The element step is the one of fe_part_dt (hex V / largest face over the dilatational speed,
- * shell area / longest side over the plate speed, truss length over the bar speed). Rigid
- * parts and membranes are not scaled. The added mass is reported (m->mass_added; /stage3
- * attributes and the run summary) because it changes the dynamics: keep it small where
- * things happen.
+ * The element step is the one of fe_part_dt (hex V / largest face over the dilatational speed
+ * with the linear bulk viscosity, fe_bulk_dt; shell area / longest side over the plate speed,
+ * truss length over the bar speed). Rigid parts and membranes are not scaled. The added mass
+ * is reported (m->mass_added; /stage3 attributes and the run summary) because it changes the
+ * dynamics: keep it small where things happen.
  *
  * During the run (opts.mass_scaling_interval = N > 0; LS-DYNA re-checks as elements deform):
  * every N cycles each scaled-capable element's current step, the kernel's formula from the
  * current geometry (hex L/(Q + sqrt(Q^2 + c^2)) with the bulk-viscosity rate Q from the
- * current volumetric strain rate, shell and truss as above) times its step factor and
+ * current volumetric strain rate, fe_bulk_dt, shell and truss as above) times its step factor and
  * sqrt(F/F0) (F its density factor now, F0 the t = 0 one), is compared with dt_t / dt_scale;
  * below it, F rises to F0 (dt_t / (dt_scale dt_e factor))^2 and the element's mass by
  * M_e (F_new - F_old), lumped as above into state arrays (node_dm, node_din) the kernel adds to
@@ -47,7 +47,7 @@ static double elem_step(const fe_model *m, const fe_part *p, int e, double *mass
         int u[8];
         *nn = fe_hex_distinct(c, u); /* tetrahedra, pentahedra: distinct nodes (fe_tet.c) */
         memcpy(c, u, sizeof u);
-        return fe_hex_length(xe, vol) / p->wave_speed;
+        return fe_bulk_dt(m, fe_hex_length(xe, vol), p->wave_speed, 0);
     }
     if (p->elem_kind == FE_KIND_SHELL) {
         double xe[4][3], fr[3][3], xl[4], yl[4];
@@ -105,7 +105,8 @@ mcs_status fe_massscale_build(fe_model *m, mcs_error *err)
     for (int ip = 0; ip < m->npart; ip++) {
         const fe_part *p = &m->part[ip];
         /* tet10 parts are not scaled (their step is their own frequency's: fe_tet10.c) */
-        if (p->material.model == FE_MAT_RIGID || p->section.type == FE_SECTION_MEMBRANE ||
+        if (p->material.model == FE_MAT_RIGID || p->material.model == FE_MAT_NULL ||
+            p->section.type == FE_SECTION_MEMBRANE ||
             p->elem_kind == FE_KIND_TET10)
             continue;
         const int off = p->elem_kind == FE_KIND_HEX     ? 0
@@ -152,7 +153,8 @@ void fe_massscale_reset(const fe_model *m, fe_state *s)
 
 static int scalable(const fe_part *p)
 {
-    return p->material.model != FE_MAT_RIGID && p->section.type != FE_SECTION_MEMBRANE &&
+    return p->material.model != FE_MAT_RIGID && p->material.model != FE_MAT_NULL &&
+           p->section.type != FE_SECTION_MEMBRANE &&
            p->elem_kind != FE_KIND_TET10;
 }
 
@@ -168,9 +170,8 @@ static double step_now(const fe_model *m, const fe_state *s, const fe_part *p, i
         for (int n = 0; n < 8; n++) memcpy(xe[n], x + 3 * h[n], sizeof xe[n]);
         double vol = fe_hex_gradients(xe, b, a), len = fe_hex_length(xe, vol);
         for (int n = 0; n < 8; n++) ev += fe_dot(b[n], s->node_v + 3 * h[n]);
-        double q = ev < 0 ? m->opts.bulk_q1 * len * -ev + m->opts.bulk_q2 * c0 : 0;
         *nn = fe_hex_distinct(h, c);
-        return len / (q + sqrt(q * q + c0 * c0));
+        return fe_bulk_dt(m, len, c0, ev);
     }
     if (p->elem_kind == FE_KIND_SHELL) {
         double xe[4][3], fr[3][3], xl[4], yl[4];

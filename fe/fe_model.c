@@ -3,6 +3,7 @@
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
+#include "fe/fe_joint.h"
 #include "fe/fe_membrane.h"
 #include "fe/fe_restraint.h"
 #include "fe/fe_slipring.h"
@@ -430,6 +431,8 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
             if (m->node_part[n] >= 0)
                 memcpy(m->node_v0 + 3 * n, b->part[m->node_part[n]].initial_velocity,
                        3 * sizeof(double));
+        for (int i = 0; i < b->nvel; i++) /* single nodes' (fe_builder_node_velocity) */
+            memcpy(m->node_v0 + 3 * b->vel[i].node, b->vel[i].v, 3 * sizeof(double));
         st = apply_boundaries(b, m, err);
     }
     if (st == MCS_OK) st = resolve_loads(b, m, err);
@@ -452,7 +455,8 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
         m->bytes += sizeof(fe_part) * (size_t)m->npart + sizeof(fe_wall) * (size_t)m->nwall +
                     sizeof(fe_nodal_load) * (size_t)m->nnodal_load +
                     sizeof(fe_load_curve) * (size_t)m->nload;
-        st = fe_contact_model_build(b, m, err);
+        st = fe_joints_build(b, m, err); /* penalties scaled to dt_initial */
+        if (st == MCS_OK) st = fe_contact_model_build(b, m, err);
     }
     if (st == MCS_OK) {
         *out = m;

@@ -83,7 +83,9 @@ typedef enum {
     FE_MAT_ELASTIC_PLASTIC,
     FE_MAT_FABRIC, /* membranes only: no compressive stress (fe_fabric.c) */
     FE_MAT_FOAM,   /* hex8: rate-dependent hysteretic foam (fe_foam.c) */
-    FE_MAT_RIGID   /* any element: the part is one 6-DOF body (fe_rigid.c) */
+    FE_MAT_RIGID,  /* any element: the part is one 6-DOF body (fe_rigid.c) */
+    FE_MAT_NULL    /* any element: no stress, mass only (LS-DYNA *MAT_NULL without an
+                      equation of state); youngs_modulus (may be 0) serves contact only */
 } fe_mat_model;
 
 #define FE_FOAM_NCURVE 8 /* most loading curves (strain rates) of a foam */
@@ -114,6 +116,8 @@ typedef struct {
     double foam_hysteresis;            /* unloading factor HU in (0, 1]; 1: no hysteresis [-]  */
     double foam_shape;                 /* unloading shape exponent (> 0; 0 takes 1) [-]        */
     double foam_tension_cutoff;        /* largest tensile stress (0: no cutoff) [Pa]           */
+    unsigned rigid_fix;                /* rigid: FE_DOF_* held on the body, global axes (LS-DYNA
+                                          *MAT_RIGID CMO 1 CON1/CON2); rotations all or none */
 } fe_material_desc;
 
 typedef struct {
@@ -351,6 +355,8 @@ typedef struct fe_model {
     int nwall_slave;       /* slave nodes of kinematic walls with mass, all walls [-]      */
     int *wall_slave;       /* (nwall_slave) node indices                                   */
     int wall_slave_off[FE_WALL_MAX + 1]; /* wall w's slaves: wall_slave_off[w] ..[w+1] [-]  */
+    int njoint;            /* joints between rigid bodies (fe_joint.h) [-]                 */
+    struct fe_joint *joint; /* (njoint)                                                    */
 } fe_model;
 
 #define FE_CHUNK_ELEMS 128 /* elements per chunk of a threaded element loop [-]            */
@@ -382,6 +388,8 @@ mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_er
 mcs_status fe_builder_add_boundary(fe_builder *b, const fe_boundary_desc *d, mcs_error *err);
 mcs_status fe_builder_fix_node(fe_builder *b, int node, unsigned fix, const double vel[3],
                                mcs_error *err);
+/* the initial velocity of one node, replacing its part's (LS-DYNA *INITIAL_VELOCITY_NODE) */
+mcs_status fe_builder_node_velocity(fe_builder *b, int node, const double v[3], mcs_error *err);
 mcs_status fe_builder_add_load(fe_builder *b, const fe_load_desc *d, mcs_error *err);
 /* one node's share of a load; curve as in fe_load_desc (ncurve 0: constant) */
 mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force[3], int ncurve,

@@ -7,6 +7,7 @@
 #define FE_OUT_H
 
 #include "fe/fe_out_contact.h"
+#include "fe/fe_out_joint.h"
 #include "fe/fe_out_mesh.h"
 #include "fe/fe_out_motion.h"
 #include "fe/fe_out_parts.h"
@@ -20,13 +21,14 @@ typedef struct {
     fe_out_slipring rings;  /* /stage<N>/slipring                                */
     fe_out_parts parts;     /* /stage<N>/parts/<part>/energy                     */
     fe_out_motion motion;   /* /stage<N>/parts/<part>/{mass, motion} (fe_out_motion.h) */
+    fe_out_joint joints;    /* /stage<N>/joints, /stage<N>/bodies (fe_out_joint.h)  */
 } fe_out;
 
 /* every series of m into /stage<stage> of r */
 mcs_status fe_out_open(mcs_results *r, int stage, const fe_model *m, fe_out *o, mcs_error *err);
 /* one row of all but the fields (fe_out_field_sample, at the caller's rate): at the state's
  * energy time */
-mcs_status fe_out_sample(const fe_model *m, const fe_state *s, const fe_out *o, mcs_error *err);
+mcs_status fe_out_sample(const fe_model *m, const fe_state *s, fe_out *o, mcs_error *err);
 void fe_out_free(fe_out *o);
 
 #endif

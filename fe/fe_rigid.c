@@ -21,9 +21,11 @@
  * kinematic ones (rejected at build). */
 #include "fe/fe_builder_impl.h" /* fe_kind_nnode */
 #include "fe/fe_elem.h"
+#include "fe/fe_joint.h"
 #include "fe/fe_solid.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,13 +46,14 @@ static void inv3(const double a[3][3], double r[3][3])
         }
 }
 
-/* the nodes of each rigid part become one body */
-mcs_status fe_rigid_build(fe_model *m, mcs_error *err)
+/* the nodes of each rigid part become one body; then extra nodes and nodal rigid bodies */
+mcs_status fe_rigid_build(const fe_builder *bld, fe_model *m, mcs_error *err)
 {
     int nb = 0;
     for (int ip = 0; ip < m->npart; ip++)
         if (m->part[ip].material.model == FE_MAT_RIGID) m->part[ip].body = nb++;
-    if (nb == 0) return MCS_OK;
+    const int nrigid = nb, nnrb = fe_nrb_count(bld);
+    if (nb + nnrb == 0) return MCS_OK;
     for (int ip = 0; ip < m->npart; ip++) {
         const fe_part *p = &m->part[ip];
         if (p->body < 0) continue;
@@ -66,33 +69,50 @@ mcs_status fe_rigid_build(fe_model *m, mcs_error *err)
                 *nb_ = p->body;
             }
     }
+    char(*names)[FE_NAME_MAX] = calloc((size_t)(nb + nnrb), FE_NAME_MAX);
+    if (!names) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (rigid bodies)");
+    mcs_status st = fe_nrb_assign(bld, m, &nb, names, nrigid + nnrb, err);
+    if (st) {
+        free(names);
+        return st;
+    }
     m->nbody = nb;
     int cnt = 0;
     for (int n = 0; n < m->nnode; n++) cnt += m->node_body[n] >= 0;
     m->nbody_node = cnt;
     m->body = calloc((size_t)nb, sizeof *m->body);
-    m->body_node = malloc(sizeof(int) * (size_t)cnt);
-    m->body_r0 = malloc(3 * sizeof(double) * (size_t)cnt);
-    if (!m->body || !m->body_node || !m->body_r0)
+    m->body_node = malloc(sizeof(int) * (size_t)(cnt ? cnt : 1));
+    m->body_r0 = malloc(3 * sizeof(double) * (size_t)(cnt ? cnt : 1));
+    if (!m->body || !m->body_node || !m->body_r0) {
+        free(names);
         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (rigid bodies)");
+    }
     m->bytes += sizeof *m->body * (size_t)nb + (sizeof(int) + 3 * sizeof(double)) * (size_t)cnt;
+    for (int b = 0; b < nb; b++) m->body[b].part = -1;
+    for (int ip = 0; ip < m->npart; ip++)
+        if (m->part[ip].body >= 0) {
+            m->body[m->part[ip].body].part = ip;
+            snprintf(names[m->part[ip].body], FE_NAME_MAX, "%s", m->part[ip].name);
+        }
     int at = 0;
-    for (int ip = 0; ip < m->npart; ip++) {
-        const fe_part *p = &m->part[ip];
-        if (p->body < 0) continue;
-        fe_body *B = &m->body[p->body];
-        B->part = ip;
+    for (int bi = 0; bi < nb; bi++) {
+        fe_body *B = &m->body[bi];
+        memcpy(B->name, names[bi], FE_NAME_MAX);
+        const char *pname = B->name;
         B->node_begin = at;
         double mx[3] = {0, 0, 0};
         for (int n = 0; n < m->nnode; n++)
-            if (m->node_body[n] == p->body) {
+            if (m->node_body[n] == bi) {
                 m->body_node[at++] = n;
                 B->mass += m->node_mass[n];
                 for (int i = 0; i < 3; i++) mx[i] += m->node_mass[n] * m->node_x0[3 * n + i];
             }
         B->node_end = at;
-        if (!(B->mass > 0))
-            return MCS_ERR(err, MCS_ERR_RANGE, "fe: rigid part '%s' has no mass", p->name);
+        if (!(B->mass > 0)) {
+            free(names);
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: rigid %s '%s' has no mass",
+                           B->part >= 0 ? "part" : "body", pname);
+        }
         for (int i = 0; i < 3; i++) B->x0[i] = mx[i] / B->mass;
         double trace_scale = 0;
         for (int j = B->node_begin; j < B->node_end; j++) {
@@ -107,12 +127,15 @@ mcs_status fe_rigid_build(fe_model *m, mcs_error *err)
             trace_scale += mn * rr;
         }
         double d = det3(B->inertia0), ref = trace_scale * trace_scale * trace_scale;
-        if (!(d > 1e-12 * ref) || !(ref > 0))
+        if (!(d > 1e-12 * ref) || !(ref > 0)) {
+            free(names);
             return MCS_ERR(err, MCS_ERR_RANGE,
-                           "fe: rigid part '%s': its nodes lie on a line (singular inertia)",
-                           p->name);
+                           "fe: rigid %s '%s': its nodes lie on a line (singular inertia)",
+                           B->part >= 0 ? "part" : "body", pname);
+        }
         inv3(B->inertia0, B->inertia0_inv);
     }
+    free(names);
     return MCS_OK;
 }
 
@@ -120,11 +143,16 @@ mcs_status fe_rigid_build(fe_model *m, mcs_error *err)
 mcs_status fe_rigid_finish(fe_model *m, mcs_error *err)
 {
     int deformable = m->nspring > 0;
-    for (int ip = 0; ip < m->npart; ip++) deformable |= m->part[ip].body < 0;
-    if (m->nbody > 0 && !deformable && !(m->opts.dt_max > 0))
+    int nnull = 0;
+    for (int ip = 0; ip < m->npart; ip++) {
+        const int null = m->part[ip].material.model == FE_MAT_NULL;
+        deformable |= m->part[ip].body < 0 && !null;
+        nnull += null;
+    }
+    if ((m->nbody > 0 || nnull > 0) && !deformable && !(m->opts.dt_max > 0))
         return MCS_ERR(err, MCS_ERR_RANGE,
-                       "fe: every part is rigid, so nothing sets the stable step: give a time "
-                       "step (fe_opts.dt_max, simulation.time_step)");
+                       "fe: every part is rigid or null, so nothing sets the stable step: give "
+                       "a time step (fe_opts.dt_max, simulation.time_step)");
     unsigned kin = 0;
     for (int w = 0; w < m->nwall; w++)
         if (m->wall[w].method == FE_WALL_KINEMATIC) kin |= 1u << w;
@@ -138,18 +166,20 @@ mcs_status fe_rigid_finish(fe_model *m, mcs_error *err)
                 return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
                                "fe: rigid wall '%s' (kinematic) cannot stop rigid part '%s': "
                                "use method penalty or list the wall's parts",
-                               m->wall[w].name, m->part[B->part].name);
+                               m->wall[w].name, B->name);
             }
             for (int i = 0; i < 3; i++)
                 if (f & (1u << i)) {
                     if ((B->fix & (1u << i)) && B->vfix[i] != m->node_vfix[3 * n + i])
                         return MCS_ERR(err, MCS_ERR_RANGE,
-                                       "fe: rigid part '%s': conflicting prescribed velocities",
-                                       m->part[B->part].name);
+                                       "fe: rigid body '%s': conflicting prescribed velocities",
+                                       B->name);
                     B->vfix[i] = m->node_vfix[3 * n + i];
                 }
             B->fix |= f;
         }
+        /* the part's own constraints (*MAT_RIGID CMO 1), held at rest */
+        B->fix |= m->part[B->part].material.rigid_fix;
         if (B->fix & FE_DOF_ROT) B->fix |= FE_DOF_ROT;
     }
     return MCS_OK;
@@ -261,6 +291,11 @@ static void body_loads(const fe_model *m, const fe_state *s, int b, double fe_[3
         /* shell nodes carry moments: the element's resisting moment acts on the body */
         for (int i = 0; i < 3; i++) mt[i] -= s->node_mint[3 * n + i];
     }
+    /* joint loads (fe_joint_step.c) */
+    for (int i = 0; m->njoint && i < 3; i++) {
+        ft[i] += s->body_fj[6 * b + i];
+        mt[i] += s->body_fj[6 * b + 3 + i];
+    }
 }
 
 void fe_rigid_integrate(const fe_model *m, fe_state *s)
@@ -321,7 +356,9 @@ void fe_rigid_integrate(const fe_model *m, fe_state *s)
         for (int i = 0; i < 3; i++) xc[i] += dt * Vn[i];
         place_nodes(m, s, b, R, xc, dt);
         if (!isfinite(ke) && s->bad_node < 0) s->bad_node = m->body_node[B->node_begin];
-        s->part_energy[FE_NENERGY * B->part + FE_E_kinetic] = ke;
+        const int kp = B->part >= 0 ? B->part : m->node_part[m->body_node[B->node_begin]];
+        if (B->part >= 0) s->part_energy[FE_NENERGY * kp + FE_E_kinetic] = ke;
+        else if (kp >= 0) s->part_energy[FE_NENERGY * kp + FE_E_kinetic] += ke; /* nodal body */
         ke_all += ke;
     }
     s->energy[FE_E_kinetic] += ke_all;

@@ -5,9 +5,11 @@
 #include "fe/fe_scn_build.h"
 #include "fe/fe_scn_node.h"
 #include "fe/fe_scn_contact.h"
+#include "fe/fe_scn_joint.h"
 #include "fe/fe_scn_solid.h"
 #include "fe/fe_scn_restraints.h"
 #include "fe/fe_scn_slipring.h"
+#include "fe/fe_scn_deck.h"
 #include "fe/fe_scn_keyword.h"
 #include "fe/fe_scn_place.h"
 #include "fe/fe_scn_pad.h"
@@ -537,13 +539,15 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     opts.energy_growth_limit = mcs_node_num_or(fe, "energy_growth_limit", opts.energy_growth_limit);
     out->end_time = mcs_node_num(fe_scn_get(sim, "end_time"));
     out->output_rate = mcs_node_num_or(sim, "output_rate", FE_SCN_OUTPUT_RATE_DEFAULT);
-    out->field_rate = mcs_node_num_or(sim, "field_rate", out->output_rate);
+    out->field_rate = mcs_node_num_or(sim, "field_rate", 0); /* 0: fe_scn_field_rate */
 
     fe_builder *b = NULL;
     mcs_error kerr = {0};
     st = fe_builder_create(&b, &kerr);
     if (st) return fe_scn_relocate(st, fe, &kerr, err);
-    st = add_parts(b, root, fe_scn_get(fe, "parts"), err);
+    if (fe_scn_given(fe, "keyword")) /* a whole deck (fe_scn_deck.c) */
+        st = fe_scn_deck_add(b, fe, sim, &out->end_time, err);
+    if (!st) st = add_parts(b, root, fe_scn_get(fe, "parts"), err);
     if (!st) st = add_attach(b, root, fe_scn_get(fe, "parts"), out, err);
     if (!st) st = add_ring_bodies(b, fe_scn_get(fe, "sliprings"), out, err);
     if (!st) st = add_boundaries(b, fe_scn_get(fe, "boundary"), out, err);
@@ -552,15 +556,17 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
     if (!st) st = fe_scn_solid_add(b, fe, err); /* springs, point masses */
     if (!st) st = fe_scn_add_restraints(b, fe, err); /* airbags, retractors (fe_scn_restraints.c) */
     if (!st) st = fe_scn_add_sliprings(b, fe, err);  /* belt slip rings (fe_scn_slipring.c) */
+    if (!st) st = fe_scn_add_joints(b, fe, err);     /* joints (fe_scn_joint.c) */
     if (!st) st = fe_scn_contact_add(b, fe, hook != NULL, err); /* contacts, ellipsoids */
     if (!st && place) st = fe_scn_place_apply(b, fe, place, out, err); /* fe_scn_place.c */
     if (!st && hook) st = hook(b, fe, ctx, err);
     if (!st) {
         st = fe_model_create(b, &opts, &out->model, &kerr);
-        if (st)
-            fe_scn_relocate(st,
-                            fe_scn_slipring_node(fe, kerr.msg, fe_scn_restraint_node(fe, kerr.msg)),
-                            &kerr, err);
+        if (st) {
+            const mcs_node *at = fe_scn_restraint_node(fe, kerr.msg);
+            at = fe_scn_joint_node(fe, kerr.msg, fe_scn_slipring_node(fe, kerr.msg, at));
+            fe_scn_relocate(st, at, &kerr, err);
+        }
     }
     fe_builder_destroy(&b);
     return st;
@@ -575,4 +581,11 @@ void fe_problem_free(fe_problem *p)
     p->part_carrier = NULL;
     p->att = NULL;
     p->natt = 0;
+}
+
+double fe_scn_field_rate(const fe_problem *p)
+{
+    if (p->field_rate > 0) return p->field_rate;
+    const double r = p->end_time > 0 ? FE_SCN_FIELD_FRAMES / p->end_time : p->output_rate;
+    return r < p->output_rate ? r : p->output_rate;
 }

@@ -4,7 +4,8 @@
  *
  * What it reads: simulation.{end_time, time_step (upper bound on the stable step),
  * time_step_scale (safety factor, default 0.9), output_rate (default 10 kHz), field_rate
- * (of the displacement fields, default output_rate)}; fe.parts with generated meshes (box,
+ * (of the displacement fields, default FE_SCN_FIELD_FRAMES per run: fe_scn_field_rate)};
+ * fe.parts with generated meshes (box,
  * plate, square_tube, circular_tube, cylinder_shell, sphere_shell, line),
  * keyword meshes (fe_scn_keyword.h: section and material may then come from the deck),
  * shell/solid/membrane/truss sections (hourglass form and coefficient, shear_factor,
@@ -57,8 +58,15 @@ typedef struct {
                                       placement                                        */
     double end_time;      /* simulated duration [s]                                 */
     double output_rate;   /* sampling rate of the results [Hz]                      */
-    double field_rate;    /* sampling rate of the displacement fields [Hz]          */
+    double field_rate;    /* sampling rate of the displacement fields; 0: the default [Hz] */
 } fe_problem;
+
+/* fields per run without simulation.field_rate (LS-DYNA's d3plot interval of a run: a few
+ * hundred frames animate a crash; the channels and energies keep output_rate) */
+#define FE_SCN_FIELD_FRAMES 200
+/* the rate of p's displacement fields: simulation.field_rate, else FE_SCN_FIELD_FRAMES over
+ * end_time, at most output_rate [Hz] */
+double fe_scn_field_rate(const fe_problem *p);
 
 /* build the model of a validated scenario; errors name FILE:LINE:COL and the key. A contact of
  * `type: bodies` (FE nodes against stage-1 bodies) needs the coupling: refused here */

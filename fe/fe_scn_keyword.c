@@ -109,3 +109,51 @@ mcs_status fe_scn_kw_add_part(fe_scn_kw_cache **cache, fe_builder *b, const mcs_
     if (st) return mcs_node_error(pn, err, st, "%s", kerr.msg);
     return MCS_OK;
 }
+
+/* the maps under n that name a keyword deck, depth first */
+static mcs_status check_node(fe_scn_kw_cache **cache, const mcs_node *n, const mcs_node *parent,
+                             fe_scn_kw_visit fn, void *user, mcs_error *err)
+{
+    mcs_kind k = mcs_node_kind(n);
+    if (k != MCS_NODE_MAP && k != MCS_NODE_SEQ) return MCS_OK;
+    if (k == MCS_NODE_MAP && mcs_node_kind(mcs_node_get(n, "keyword")) == MCS_NODE_STR) {
+        int before = *cache ? (*cache)->n : 0;
+        fe_scn_kw_entry *e = NULL;
+        mcs_status st = deck_of(cache, n, &e, err);
+        if (st) return st;
+        const mcs_node *pn = mcs_node_get(n, "part");
+        if (pn) {
+            int pid = (int)mcs_node_num(pn), found = 0;
+            const fe_kw_deck *d = e->deck;
+            /* as the build: the deck's section and material when the scenario's part lacks one */
+            if (mcs_node_kind(mcs_node_get(parent, "section")) != MCS_NODE_MAP ||
+                mcs_node_kind(mcs_node_get(parent, "material")) != MCS_NODE_MAP) {
+                fe_part_desc pd = fe_part_desc_default();
+                mcs_error kerr = {0};
+                st = fe_kw_part_props(d, pid, &pd, &kerr);
+                if (st) return mcs_node_error(pn, err, st, "%s", kerr.msg);
+            }
+            for (int t = 0; t < FE_KW_NETYPE && !found; t++)
+                for (int i = 0; i < d->elem[t].n && !found; i++) found = d->elem[t].pid[i] == pid;
+            char skip[400];
+            if (!found)
+                return mcs_node_error(pn, err, MCS_ERR_KEY, "%s: no element has part ID %d%s",
+                                      e->path, pid,
+                                      fe_kw_skipped(d, "ELEMENT_", skip, sizeof skip));
+        }
+        if (fn && (*cache)->n > before) fn(e->path, n, e->deck, user);
+    }
+    for (int i = 0; i < mcs_node_len(n); i++) {
+        mcs_status st = check_node(cache, mcs_node_at(n, i), n, fn, user, err);
+        if (st) return st;
+    }
+    return MCS_OK;
+}
+
+mcs_status fe_scn_kw_check(const mcs_node *root, fe_scn_kw_visit fn, void *user, mcs_error *err)
+{
+    fe_scn_kw_cache *cache = NULL;
+    mcs_status st = check_node(&cache, root, NULL, fn, user, err);
+    fe_scn_kw_cache_free(&cache);
+    return st;
+}

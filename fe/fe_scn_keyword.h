@@ -17,4 +17,15 @@ mcs_status fe_scn_kw_add_part(fe_scn_kw_cache **cache, fe_builder *b, const mcs_
                           const fe_part_desc *d, mcs_error *err);
 void fe_scn_kw_cache_free(fe_scn_kw_cache **cache);
 
+struct fe_kw_deck;
+/* called per keyword deck a scenario names: its resolved path, the scenario node naming it */
+typedef void (*fe_scn_kw_visit)(const char *path, const mcs_node *at, const struct fe_kw_deck *d,
+                                void *user);
+
+/* read every keyword deck the scenario names (each map with a `keyword:` file: fe.parts[].mesh
+ * and a whole-deck fe:) with its units, as a build would; a `part:` beside it must be the part
+ * ID of some element of the deck. Errors name the scenario node and the deck's file:line. fn
+ * (may be NULL) sees each deck once. Used by `mcrash check`. */
+mcs_status fe_scn_kw_check(const mcs_node *root, fe_scn_kw_visit fn, void *user, mcs_error *err);
+
 #endif

@@ -47,7 +47,7 @@ mcs_status fe_solid_build(const fe_builder *b, fe_model *m, mcs_error *err)
     if (!st) st = fe_tet10_dt_build(m, err);
     if (!st) st = fe_massscale_build(m, err);
     if (!st) st = fe_hex_dt_build(m, err);
-    if (!st) st = fe_rigid_build(m, err);
+    if (!st) st = fe_rigid_build(b, m, err);
     if (!st) st = fe_discrete_steps(m, err);
     return st;
 }
@@ -65,6 +65,9 @@ void fe_solid_free(fe_model *m)
     free(m->body);
     free(m->body_node);
     free(m->body_r0);
+    free(m->joint);
+    m->joint = NULL;
+    m->njoint = 0;
     free(m->elem_dt_factor);
     free(m->elem_ms0);
     free(m->elem_mass0);

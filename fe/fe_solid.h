@@ -23,7 +23,8 @@ typedef struct fe_spring {
 
 /* a rigid body: one rigid part's nodes moving as one 6-DOF body */
 typedef struct fe_body {
-    int part;                 /* the rigid part [-]                                          */
+    char name[FE_NAME_MAX];   /* its rigid part's, or the nodal rigid body's (fe_joint.h)    */
+    int part;                 /* the rigid part; -1: a nodal rigid body [-]                  */
     int node_begin, node_end; /* its nodes in m->body_node / m->body_r0 [-]                  */
     double mass;              /* sum of the nodal masses [kg]                                */
     double x0[3];             /* centre of mass at t = 0 [m]                                 */
@@ -47,7 +48,7 @@ void fe_foam_derive(fe_part *p);
 mcs_status fe_discrete_build(const fe_builder *b, fe_model *m, mcs_error *err);
 /* stable step of the springs (m->dt_discrete) from the final nodal masses */
 mcs_status fe_discrete_steps(fe_model *m, mcs_error *err);
-mcs_status fe_rigid_build(fe_model *m, mcs_error *err);
+mcs_status fe_rigid_build(const fe_builder *b, fe_model *m, mcs_error *err);
 /* fe_model_create calls this last: checks and constraints that need boundaries and walls */
 mcs_status fe_solid_finish(fe_model *m, mcs_error *err);
 mcs_status fe_rigid_finish(fe_model *m, mcs_error *err);

@@ -2,6 +2,7 @@
  * accelerations, integration, stable step). Each reads and writes only what its comment says. */
 #include "fe/fe_contact.h"
 #include "fe/fe_elem.h"
+#include "fe/fe_joint.h"
 #include "fe/fe_membrane.h"
 #include "fe/fe_parallel.h"
 #include "fe/fe_restraint.h"
@@ -83,7 +84,8 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
     const int nch = m->nchunk;
     /* parts without a chunked kernel: whole part at a time, before the gather */
     for (int ip = 0; ip < m->npart; ip++)
-        if (m->part[ip].body >= 0) s->part_dt[ip] = INFINITY; /* rigid: no step limit */
+        if (m->part[ip].body >= 0 || m->part[ip].material.model == FE_MAT_NULL)
+            s->part_dt[ip] = INFINITY; /* rigid or null: no element work, no step limit */
         else if (m->part[ip].elem_kind == FE_KIND_SHELL && m->part[ip].section.type == FE_SECTION_MEMBRANE)
             fe_membrane_part(m, s, ip);
     fe_chunk_acc *ca = s->chunk_acc;
@@ -113,6 +115,7 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
         if (chunked_part(m->part + ip)) fe_chunk_commit(s, ip, &acc);
     }
     fe_discrete_forces(m, s); /* springs and dampers add to node_fint */
+    fe_joint_forces(m, s);    /* joints: loads on the rigid bodies (body_fj) */
 }
 
 /* reads x, time; adds the contact and penalty rigid-wall forces to node_fext (zeroed by
@@ -444,6 +447,11 @@ mcs_status fe_stable_step(const fe_model *m, fe_state *s)
     s->dt_prev = s->dt;
     s->nstep++;
     if (m->nms_elem) dtmin = fe_massscale_run(m, s, dtmin); /* mass scaling in the run */
+    /* the smallest estimate of the last FE_DT_WINDOW steps: a step that follows the element
+     * lengths and strain rates step by step oscillates with the highest mode and pumps it
+     * (docs/fe.md, rigid walls) */
+    s->dt_win[s->nstep % FE_DT_WINDOW] = dtmin;
+    for (int k = 0; k < FE_DT_WINDOW; k++) dtmin = fmin(dtmin, s->dt_win[k]);
     double dt = m->opts.dt_scale * dtmin;
     if (m->opts.dt_max > 0) dt = fmin(dt, m->opts.dt_max);
     if (!(dt >= m->opts.dt_min)) {

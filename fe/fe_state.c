@@ -84,6 +84,7 @@ void fe_state_reset(const fe_model *m, fe_state *s)
     for (int ip = 0; ip < m->npart; ip++) s->part_bad_elem[ip] = -1;
     s->time = s->dt_prev = s->energy_time = 0;
     s->dt = m->dt_initial;
+    for (int k = 0; k < FE_DT_WINDOW; k++) s->dt_win[k] = INFINITY;
     s->nstep = 0;
     memset(s->energy, 0, sizeof s->energy);
     memset(s->work_pending, 0, sizeof s->work_pending);

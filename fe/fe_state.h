@@ -113,6 +113,8 @@ typedef struct {
     X(double, body_l, nbody, 3, "N m s", "rigid body angular momentum at t + dt/2")                \
     X(double, body_w, nbody, 3, "rad/s", "rigid body angular velocity at t + dt/2")                \
     X(double, body_fm, nbody, 6, "N, N m", "force and moment on the body at t")                    \
+    X(double, body_fj, nbody, 6, "N, N m", "joint force and moment on the body at t (fe_joint.h)") \
+    X(double, joint_out, njoint, 10, "-", "joint loads, free coordinates, energies (FE_JOUT_*)")  \
     X(double, hex_gp, nhex_gp, 7, "Pa", "full hex: stress (6), plastic strain or foam history")   \
     X(double, tet10_gp, ntet10, 32, "Pa", "tet10: per point stress (6), plastic strain, bulk q") \
     X(double, tet10_sig, ntet10, 6, "Pa", "tet10: volume-mean Cauchy stress xx yy zz xy yz zx")  \
@@ -126,10 +128,14 @@ typedef struct {
 
 struct fe_contact_state;
 
+/* steps over which the stable step takes its smallest estimate (fe_stable_step) */
+#define FE_DT_WINDOW 8
+
 typedef struct fe_state {
     double time;                  /* t [s]                                                     */
     double dt;                    /* step from t to t + dt, used by the next fe_step [s]       */
     double dt_prev;               /* step from t - dt_prev to t [s]                            */
+    double dt_win[FE_DT_WINDOW];  /* the last stable-step estimates, ring by nstep [s]         */
     long nstep;                   /* steps taken [-]                                           */
     double energy[FE_NENERGY];    /* global energies at t [J]                                  */
     double energy0;               /* total energy at t = 0 [J]                                 */

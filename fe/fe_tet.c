@@ -165,7 +165,9 @@ mcs_status fe_tet_dt_build(fe_model *m, mcs_error *err)
 {
     for (int ip = 0; ip < m->npart; ip++) {
         const fe_part *p = &m->part[ip];
-        if (p->elem_kind != FE_KIND_HEX || p->material.model == FE_MAT_RIGID) continue;
+        if (p->elem_kind != FE_KIND_HEX || p->material.model == FE_MAT_RIGID ||
+            p->material.model == FE_MAT_NULL)
+            continue;
         /* the elastic constants behind the part's wave speed (foam: lambda 0, 2 mu = rho c^2) */
         const double rho = p->material.density, rc2 = rho * p->wave_speed * p->wave_speed;
         double lam = p->lambda, mu = p->mu;

@@ -220,7 +220,7 @@ double fe_tet10_dt(const fe_model *m, const fe_part *p, int e, const double *x)
 {
     double xe[10][3];
     gather10(x, m->tet10_node + 10 * e, xe);
-    return m->tet10_dtf[e] * fe_tet10_length(xe) / p->wave_speed;
+    return m->tet10_dtf[e] * fe_bulk_dt(m, fe_tet10_length(xe), p->wave_speed, 0);
 }
 
 /* one Gauss point: stress update, its forces into f, energies; returns det J (<= 0: inverted) */
@@ -325,8 +325,7 @@ void fe_tet10_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
         for (int i = 0; i < 6; i++) s->tet10_sig[6 * (size_t)e + i] = k.sum[i] / k.vol;
         s->tet10_epsp[e] = k.epsp;
         /* step: the t = 0 frequency ratio on the current length, less the viscosity's share */
-        const double qr = k.theta_min < 0 ? k.q1 * k.len * -k.theta_min + k.q2 * k.c0 : 0;
-        const double dte = m->tet10_dtf[e] * k.len / (qr + sqrt(qr * qr + k.c0 * k.c0));
+        const double dte = m->tet10_dtf[e] * fe_bulk_dt(m, k.len, k.c0, k.theta_min);
         if (dte < dtmin) dtmin = dte, dtel = e;
     }
     acc->e_int = e_int;

@@ -62,13 +62,15 @@ void fe_truss_part(const fe_model *m, fe_state *s, int ip)
     fe_chunk_commit(s, ip, &acc);
 }
 
-/* element steps from geometry alone (model build and state reset; no bulk viscosity) */
+/* element steps from geometry alone (model build and state reset; solids with the linear bulk
+ * viscosity, fe_bulk_dt) */
 double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem)
 {
     const fe_part *p = &m->part[ip];
     double dtmin = INFINITY;
     *elem = -1;
-    if (p->body >= 0) return INFINITY; /* rigid parts do not limit the step */
+    /* rigid and null parts do not limit the step */
+    if (p->body >= 0 || p->material.model == FE_MAT_NULL) return INFINITY;
     for (int e = p->elem_begin; e < p->elem_end; e++) {
         double len = 0;
         if (p->elem_kind == FE_KIND_TET10) { /* its own frequency ratio (fe_tet10.c) */
@@ -94,7 +96,9 @@ double fe_part_dt(const fe_model *m, int ip, const double *x, int *elem)
             }
             len = sqrt(d2);
         }
-        double dte = len / p->wave_speed * fe_dt_factor(m, p->elem_kind, e);
+        double dte = (p->elem_kind == FE_KIND_HEX ? fe_bulk_dt(m, len, p->wave_speed, 0)
+                                                  : len / p->wave_speed) *
+                     fe_dt_factor(m, p->elem_kind, e);
         if (dte < dtmin) dtmin = dte, *elem = e;
     }
     return dtmin;

@@ -36,7 +36,7 @@ struct mb_couple_contact {
     int nbody; /* bodies any surface belongs to [-]                        */
     int *body; /* their mb body index (nbody)                              */
     int ncontact;
-    char (*name)[FE_NAME_MAX]; /* each bodies contact's name (ncontact)     */
+    char (*name)[FE_NAME_MAX];  /* each bodies contact's name (ncontact)     */
     char (*label)[FE_NAME_MAX]; /* its name if given, else its parts joined by '+' (ncontact) */
     char (*part0)[FE_NAME_MAX]; /* its first part (ncontact)                 */
 };
@@ -128,8 +128,7 @@ static const char *const unsupported_keys[] = {"friction_dynamic", "friction_dec
                                                "thickness_scale", "fabric_thickness", NULL};
 
 /* the label and first part of the contact about to be added (cc->ncontact) */
-static int label_contact(mb_couple_contact *cc, const char *nm, char (*parts)[FE_NAME_MAX],
-                         int np)
+static int label_contact(mb_couple_contact *cc, const char *nm, char (*parts)[FE_NAME_MAX], int np)
 {
     const size_t n = (size_t)cc->ncontact + 1;
     char(*nl)[FE_NAME_MAX] = realloc(cc->label, sizeof *nl * n);
@@ -149,11 +148,18 @@ static int label_contact(mb_couple_contact *cc, const char *nm, char (*parts)[FE
 }
 
 /* body_characteristic: the bodies' surface compliance in series (docs/contracts.md "Soft body
- * surfaces in bodies contacts") */
-static mcs_status body_law(const mcs_node *n, fe_body_law_desc *law, mcs_error *err)
+ * surfaces in bodies contacts"), inline or the name of one of fe.body_characteristics */
+static mcs_status body_law(const mcs_node *fe, const mcs_node *n, fe_body_law_desc *law,
+                           mcs_error *err)
 {
     memset(law, 0, sizeof *law);
     if (mcs_node_kind(n) == MCS_NODE_NULL) return MCS_OK;
+    if (mcs_node_kind(n) == MCS_NODE_STR) {
+        const mcs_node *named =
+            mcs_node_get(mcs_node_get(fe, "body_characteristics"), mcs_node_str(n));
+        if (!named) return mcs_node_error(n, err, MCS_ERR_KEY, "unknown body characteristic");
+        n = named;
+    }
     const mcs_node *c = mcs_node_get(n, "stress");
     const int len = mcs_node_curve_len(c);
     if (len < 2 || len > FE_BODY_LAW_PTS)
@@ -166,8 +172,8 @@ static mcs_status body_law(const mcs_node *n, fe_body_law_desc *law, mcs_error *
     return MCS_OK;
 }
 
-static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc, const mcs_node *n,
-                              int index, mcs_error *err)
+static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc,
+                              const mcs_node *fe, const mcs_node *n, int index, mcs_error *err)
 {
     for (int i = 0; unsupported_keys[i]; i++)
         if (mcs_node_kind(mcs_node_get(n, unsupported_keys[i])) != MCS_NODE_NULL)
@@ -193,7 +199,7 @@ static mcs_status add_contact(fe_builder *fb, mb_model *m, mb_couple_contact *cc
     const double mu = mcs_node_num_or(n, "friction", 0);
     const double scale = mcs_node_num_or(n, "penalty_scale", 0);
     fe_body_law_desc law;
-    mcs_status lst = body_law(mcs_node_get(n, "body_characteristic"), &law, err);
+    mcs_status lst = body_law(fe, mcs_node_get(n, "body_characteristic"), &law, err);
     if (lst) return lst;
     for (int j = 0; j < mcs_node_len(bl); j++) {
         const mcs_node *bn = mcs_node_at(bl, j);
@@ -236,7 +242,7 @@ mcs_status mb_couple_contact_add(fe_builder *fb, const mcs_node *fe, void *ctx, 
             if (!cc) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
             m->couple->contact = cc;
         }
-        mcs_status st = add_contact(fb, m, cc, n, i, err);
+        mcs_status st = add_contact(fb, m, cc, fe, n, i, err);
         if (st) return st;
     }
     if (!cc) return MCS_OK;

@@ -91,11 +91,10 @@ mcs_status mb_couple_out_open(const mb_model *m, mcs_results *r, mb_couple_out *
     mb_couple_out *o = calloc(1, sizeof *o);
     if (!o) return MCS_ERR(err, MCS_ERR_NOMEM, "stage 1: out of memory");
     *out = o;
-    /* field_rate (its default: output_rate, every row) -> every k-th output row */
+    /* field_rate (its default: FE_SCN_FIELD_FRAMES per run, fe_scn_field_rate) -> every k-th
+     * output row */
     const fe_problem *p = &m->couple->fe;
-    o->field_every = 1;
-    if (p->field_rate != p->output_rate && p->field_rate > 0)
-        o->field_every = lround(fmax(1.0, m->output_rate / p->field_rate));
+    o->field_every = lround(fmax(1.0, m->output_rate / fe_scn_field_rate(p)));
     int stage = mb_out_stage(m);
     mcs_status st = fe_out_meshes(r, stage, fm, err);
     if (!st) st = fe_out_open(r, stage, fm, &o->fe, err);

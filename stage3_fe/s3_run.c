@@ -69,7 +69,7 @@ static mcs_status loop(const fe_problem *p, const s3_run_opts *ro, fe_state *s, 
 {
     const fe_model *m = p->model;
     const double every = 1.0 / p->output_rate;
-    const double fevery = p->field_rate > 0 ? 1.0 / p->field_rate : every; /* fields */
+    const double fevery = 1.0 / fe_scn_field_rate(p); /* fields: their own rate */
     double next_e = 0, next_f = fevery;
     mcs_progress prog;
     mcs_progress_opts po = mcs_progress_opts_default();

@@ -11,6 +11,7 @@
  * calculation in a comment. The figure "N of M corpus decks read" (docs/keyword.md) follows:
  * run `make figures` (or edit the marker) after adding rows. */
 #include "fe/fe_kw_impl.h" /* kw_expr_eval, the evaluator on its own */
+#include "cli_util.h"
 #include "harness.h"
 
 #include <math.h>
@@ -94,6 +95,46 @@ static void check_unknown_many(const fe_kw_deck *d)
     CHECK(strcmp(d->unknown[2].name, "DATABASE_MATSUM") == 0 && d->unknown[2].count == 1);
 }
 
+/* param_dup.k: X = 1 then 2: the first kept (node 1 x = 1); after DFLAG 2, X = 3 is taken */
+static void check_param_dup(const fe_kw_deck *d)
+{
+    const double *x1 = node_at(d, 1), *x2 = node_at(d, 2);
+    CHECK(x1 && x1[0] == 1 && x2 && x2[0] == 3);
+}
+
+/* contact_plates.k (mm-s-t), by hand: three contacts (all parts, 2 on 1 with FS 0.3, nodes of
+ * part 2 on part set 5 = parts 1..2); set 5 = {1, 2}, set 7 = {1, 2, 3, 4}; nodes 5..8 at
+ * -1000 mm/s = -1 m/s; the motion on set 7: d = 1 mm/s t, v = 1e-3 m/s (SF 0 takes 1); node 6
+ * loaded by -5 x 1 N; ENDTIM 1.5 ms */
+static void check_contact_plates(const fe_kw_deck *d)
+{
+    CHECK(d->ncontact == 3);
+    if (d->ncontact != 3) return;
+    CHECK(d->contact[0].type == FE_KW_CT_SINGLE && d->contact[0].sstyp == 5 &&
+          d->contact[0].id == 1 && strcmp(d->contact[0].title, "all parts") == 0);
+    CHECK(d->contact[0].fs == 0.2 && d->contact[0].dt == 0);
+    CHECK(d->contact[1].type == FE_KW_CT_S2S && d->contact[1].fs == 0.3 &&
+          strcmp(d->contact[1].title, "upper on lower") == 0);
+    CHECK(d->contact[2].type == FE_KW_CT_N2S && !d->contact[2].automatic &&
+          d->contact[2].msid == 5 && d->contact[2].mstyp == 2);
+    const fe_kw_set *s5 = fe_kw_find_set(d, 5, 1), *s7 = fe_kw_find_set(d, 7, 0);
+    CHECK(s5 && s5->n == 2 && s7 && s7->n == 4 && s7->ids[3] == 4);
+    CHECK(d->nnodevel == 4 && fabs(d->nodevel[3].v[2] + 1) < 1e-12);
+    CHECK(d->npmotion == 1 && d->pmotion[0].sf == 1 && d->pmotion[0].vad == 2);
+    CHECK(d->nload == 1 && d->load[0].nid == 6 && d->load[0].sf == -5);
+    CHECK(fabs(d->end_time - 1.5e-3) < 1e-15);
+}
+
+/* contact_segment_set.k: segment set 3 = the block's bottom face (5 6 7 8), node set 4 = its
+ * nodes; three contacts on them (the model's passes: tests/test_kw_contact.c) */
+static void check_contact_sets(const fe_kw_deck *d)
+{
+    CHECK(d->ncontact == 3 && d->nsegset == 1 && d->segset[0].n == 1);
+    if (d->ncontact != 3) return;
+    CHECK(d->contact[0].sstyp == 0 && d->contact[0].ssid == 3 && d->contact[1].sstyp == 4 &&
+          d->contact[2].type == FE_KW_CT_SINGLE && d->contact[2].sstyp == 0);
+}
+
 static const corpus_row corpus[] = {
     /* parameters */
     {"param_basic.k", "mm-s-t", BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, check_param_basic},
@@ -103,6 +144,12 @@ static const corpus_row corpus[] = {
      "*NODE: field X: parameter 'THIK' is not defined", "param_undefined.k:7:20:", NULL},
     {"param_bad_expr.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*PARAMETER_EXPRESSION: parameter 'A'",
      "param_bad_expr.k:3:", NULL},
+    {"param_dup.k", NULL, READ_ONLY, 2, {0}, 0, 0, NULL, NULL, check_param_dup},
+    {"param_dup_refused.k", NULL, READ_ONLY, 0, {0}, 0, 0,
+     "parameter 'N' defined twice (first at " CD "param_dup_refused.k:6",
+     "param_dup_refused.k:6:21:", NULL},
+    {"param_not_int.k", NULL, READ_ONLY, 0, {0}, 0, 0,
+     "*PART: field PID: parameter 'PID' = 1.5 is not an integer", "param_not_int.k:7:7:", NULL},
     /* includes */
     {"include_nested.k", NULL, BUILD_DECK, 6, {2}, 1, 1, NULL, NULL, NULL},
     {"include_missing_nested.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*INCLUDE: cannot open",
@@ -111,6 +158,12 @@ static const corpus_row corpus[] = {
     {"include_path.k", NULL, READ_ONLY, 3, {0}, 0, 0, NULL, NULL, check_include_path},
     {"include_circular.k", NULL, READ_ONLY, 0, {0}, 0, 0, "circular include",
      "inc/circ_b.k:3:1:", NULL},
+    /* contacts, boundary, loads */
+    {"contact_plates.k", "mm-s-t", BUILD_DECK, 8, {2}, 2, 1, NULL, NULL, check_contact_plates},
+    {"contact_segment_set.k", "mm-s-t", BUILD_DECK, 12, {1, 1}, 2, 1, NULL, NULL,
+     check_contact_sets},
+    {"contact_damped.k", NULL, READ_ONLY, 0, {0}, 0, 0,
+     "*CONTACT_AUTOMATIC_SINGLE_SURFACE: field VDC", "contact_damped.k:7:41:", NULL},
     /* unknown and refused keywords */
     {"unknown_many.k", NULL, READ_ONLY, 1, {0}, 0, 0, NULL, NULL, check_unknown_many},
     {"sph_refused.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*SECTION_SPH: not supported (SPH",
@@ -238,9 +291,42 @@ static void test_expressions(void)
     }
 }
 
+/* mcrash check reads the decks a scenario names: a missing deck and a part ID the deck lacks
+ * (no *PART 5, as the build would say) are errors (exit 2) at the scenario key; --json lists
+ * each deck's unknown keywords once (check_deck.k: *USER_LOADING on lines 4 and 23,
+ * *EOS_GRUNEISEN on line 14) */
+static void test_check_cli(void)
+{
+    const char *scn = CD "scn/";
+    char args[512];
+    snprintf(args, sizeof args, "check %scheck_ok.yaml", scn);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->err, "*USER_LOADING x2, first at " CD "scn/check_deck.k:4");
+    snprintf(args, sizeof args, "check --json %scheck_ok.yaml", scn);
+    r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "\"keyword_decks\": [");
+    CHECK_STR_CONTAINS(r->out, "\"nodes\": 4, \"elements\": 1, \"parts\": 1");
+    CHECK_STR_CONTAINS(r->out, "{\"keyword\": \"*USER_LOADING\", \"count\": 2, \"first\": \"" CD
+                               "scn/check_deck.k:4\"}");
+    CHECK_STR_CONTAINS(r->out, "{\"keyword\": \"*EOS_GRUNEISEN\", \"count\": 1");
+    snprintf(args, sizeof args, "check %scheck_badpid.yaml", scn);
+    r = cli_run(args);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "check_badpid.yaml:7:43: error: fe.parts[0].mesh.part: ");
+    CHECK_STR_CONTAINS(r->err, "check_deck.k: error: no *PART 5");
+    snprintf(args, sizeof args, "check %scheck_nodeck.yaml", scn);
+    r = cli_run(args);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, "check_nodeck.yaml:7:23: error: fe.parts[0].mesh.keyword: ");
+    CHECK_STR_CONTAINS(r->err, "no_such_deck.k: cannot open");
+}
+
 int main(void)
 {
     RUN(test_corpus);
+    RUN(test_check_cli);
     RUN(test_expressions);
     TEST_END();
 }

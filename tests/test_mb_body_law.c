@@ -121,8 +121,10 @@ static void test_flat_punch_force_is_stress_times_area(void)
     double lo = 0, hi = 10e-3;
     for (int i = 0; i < 200; i++) {
         double mid = 0.5 * (lo + hi);
-        if (A * sigma_int(mid) < 0.5 * v0 * v0) lo = mid;
-        else hi = mid;
+        if (A * sigma_int(mid) < 0.5 * v0 * v0)
+            lo = mid;
+        else
+            hi = mid;
     }
     const double fref = A * sigma(lo), vend = punch_vz(s), drift = mb_energy_drift(m, s);
     const double ferr = 100 * emax / fref, perr = 100 * (fpeak / fref - 1);
@@ -273,6 +275,54 @@ static void test_stiff_law_keeps_the_step(void)
     mb_model_destroy(&m);
 }
 
+/* the law named once (fe.body_characteristics) and given by its name: the run of the law
+ * written inline (the rebound case above), bit for bit; an unknown name is refused at its place
+ * with the closest name (the reference: the name's line and column counted in the text) */
+static void test_named_law(void)
+{
+    const char *law = "{stress: [[0, 0], [10 mm, 100 kPa]], unloading_slope: 40 MPa/m}";
+    char y[2][4096], t[4096];
+    double vend[2] = {0, 1}, ec[2] = {0, 1};
+    snprintf(y[0], sizeof y[0], PLATE_YAML, 0.02, SEMI_C + 1.2e-3, -1.0, law);
+    snprintf(t, sizeof t, PLATE_YAML, 0.02, SEMI_C + 1.2e-3, -1.0, "flesh");
+    const char *fe = strstr(t, "fe:\n");
+    CHECK(fe != NULL);
+    if (!fe) return;
+    snprintf(y[1], sizeof y[1], "%.*sfe:\n  body_characteristics: {flesh: %s}\n%s", (int)(fe - t),
+             t, law, fe + 4);
+    for (int k = 0; k < 2; k++) {
+        mb_model *m = mc_model(k ? "punch_named.yaml" : "punch_inline.yaml", y[k]);
+        if (!m) return;
+        mb_state *s = run_punch(m, NULL);
+        vend[k] = punch_vz(s);
+        ec[k] = fe_contact_energy(m->couple->fe.model, s->couple->fe);
+        mb_state_destroy(&s);
+        mb_model_destroy(&m);
+    }
+    printf("named law: rebound %.9f m/s, contact energy %.9f J (inline: %.9f, %.9f)\n", vend[1],
+           ec[1], vend[0], ec[0]);
+    CHECK(vend[0] == vend[1] && ec[0] == ec[1]);
+    char *at = strstr(y[1], "body_characteristic: flesh");
+    CHECK(at != NULL);
+    if (!at) return;
+    at += strlen("body_characteristic: ");
+    at[4] = 'c'; /* "flesh" -> "flesc" */
+    int line = 1, col = 1;
+    for (const char *q = y[1]; q < at; q++)
+        col = *q == '\n' ? (line++, 1) : col + 1;
+    char want[256];
+    snprintf(want, sizeof want,
+             "named_law.yaml:%d:%d: error: fe.contacts[0].body_characteristic: unknown body "
+             "characteristic 'flesc' (did you mean 'flesh'?)",
+             line, col);
+    mcs_error err = {0};
+    mb_model *m = mt_model_text("named_law.yaml", y[1], &err);
+    CHECK(m == NULL);
+    printf("unknown named law: %s\n", err.msg);
+    CHECK_STR_CONTAINS(err.msg, want);
+    mb_model_destroy(&m);
+}
+
 /* a body law on a facet surface is refused, naming the surface (the facet search reaches 10 mm
  * behind the mesh, short of a flesh's travel) */
 static void test_body_law_errors(void)
@@ -307,6 +357,7 @@ int main(void)
     RUN(test_hysteresis_rebound_and_dissipation);
     RUN(test_series_pad_and_body_law);
     RUN(test_stiff_law_keeps_the_step);
+    RUN(test_named_law);
     RUN(test_body_law_errors);
     TEST_END();
 }

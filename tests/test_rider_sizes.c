@@ -434,44 +434,99 @@ static void test_scenario_pairs(void)
     }
 }
 
-/* ---- stage 2 of the concept case with the 5th female ---- */
-
-/* iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml: compiles (stage2_fe/s2_scenario.h)
- * and builds with the 5th female seated, her dummy size kept; the tank foam pads (placed for
- * the 50th's thighs, 22 mm clear) clear hers at t = 0 too (thigh ellipsoid to the pads' outer
- * nodes). The stage-2 run: tests/test_stage2_verify.c. */
-static void test_stage2_05f(void)
+/* the concept 95th includes the concept motorcycle and overrides the belts' routing by name
+ * (core/mcs_scenario.h, the include rule): the overridden keys are its own (the values written
+ * in the scenario), every other key of the belts and retractors is the model's (the values
+ * written in models/motorcycles/sport_208kg_concept.yaml), and no entity was added */
+static void test_concept_95m_overrides(void)
 {
-    mcs_scenario *s2 = NULL, *c2 = NULL;
+    mcs_scenario *s = NULL;
     mcs_error err = {0};
-    mb_model *m = NULL;
-    if (mcs_scenario_load("scenarios/iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml", &s2,
-                          &err))
+    if (mcs_scenario_load("scenarios/iso13232_413-0_13.4_sedan_rider_concept_95m.yaml", &s, &err))
         fprintf(stderr, "%s\n", err.msg);
-    CHECK(s2 != NULL);
-    if (s2) CHECK(s2_scenario_compile(s2, &c2, &err) == MCS_OK);
-    if (c2 && mb_model_build(c2, NULL, &m, &err)) fprintf(stderr, "%s\n", err.msg);
-    CHECK(m != NULL && m->couple != NULL);
-    if (!m || !m->couple) goto done;
-    CHECK(strcmp(m->rider_dummy, "5th_female") == 0);
-    CHECK_NEAR(mt_rider_mass(m, &(int){0}), 108.03 * LB, 1e-3);
-    const fe_model *fm = m->couple->fe.model;
-    const char *pads[2] = {"pad_tank_l", "pad_tank_r"},
-               *thigh[2] = {"rider_thigh_l", "rider_thigh_r"};
-    double gap = INFINITY;
-    for (int k = 0; k < 2; k++) {
-        int ip = -1;
-        double g = mt_hex_face_gap(m, fm, pads[k], thigh[k], &ip);
-        CHECK(ip >= 0);
-        if (ip >= 0) gap = fmin(gap, g);
+    CHECK(s != NULL);
+    if (!s) return;
+    const mcs_node *fe = mcs_node_get(mcs_scenario_root(s), "fe");
+    const mcs_node *parts = mcs_node_get(fe, "parts"), *ret = mcs_node_get(fe, "retractors");
+    CHECK(mcs_node_len(parts) == 5 && mcs_node_len(ret) == 2);
+    const double y0[2] = {0.062, -0.278}, y1[2] = {0.278, -0.062}, ya[2] = {0.288, -0.288};
+    for (int k = 0; k < 2 && mcs_node_len(parts) >= 2 && mcs_node_len(ret) == 2; k++) {
+        const mcs_node *b = mcs_node_at(parts, k), *m = mcs_node_get(b, "mesh");
+        const mcs_node *r = mcs_node_at(ret, k);
+        CHECK(strcmp(mcs_node_str(mcs_node_get(b, "name")), k ? "belt_r" : "belt_l") == 0);
+        double o[3], e[3], a[3];
+        CHECK(!mcs_node_vec3(mcs_node_get(m, "origin"), o, &err) &&
+              !mcs_node_vec3(mcs_node_get(m, "end"), e, &err) &&
+              !mcs_node_vec3(mcs_node_get(r, "anchor"), a, &err));
+        CHECK_NEAR(o[0], 0.715, 1e-15);
+        CHECK_NEAR(o[1], y0[k], 1e-15);
+        CHECK_NEAR(o[2], 0.869, 1e-15);
+        CHECK_NEAR(e[1], y1[k], 1e-15);
+        CHECK_NEAR(a[0], 0.715, 1e-15);
+        CHECK_NEAR(a[1], ya[k], 1e-15);
+        CHECK_NEAR(a[2], 0.62, 1e-15);
+        /* from the model: mesh generator and divisions, section, retractor limit and payin */
+        CHECK(strcmp(mcs_node_str(mcs_node_get(m, "generate")), "line") == 0);
+        CHECK_NEAR(mcs_node_num(mcs_node_get(m, "divisions")), 10, 0);
+        CHECK_NEAR(mcs_node_num(mcs_node_get(mcs_node_get(b, "section"), "area")), 60e-6, 1e-18);
+        CHECK_NEAR(mcs_node_num(mcs_node_get(r, "load_limit")), 2000, 0);
+        CHECK(mcs_node_curve_len(mcs_node_get(r, "payin")) == 2);
+        CHECK_STR_CONTAINS(mcs_node_file(mcs_node_get(m, "divisions")), "sport_208kg_concept.yaml");
+        CHECK_STR_CONTAINS(mcs_node_file(mcs_node_get(m, "origin")), "concept_95m.yaml");
     }
-    printf("  5th female stage 2: tank pads %.1f mm from her thighs at t = 0\n", gap * 1e3);
-    FIG("rider.size_05f_pad_gap_mm", "%.0f", gap * 1e3);
-    CHECK(gap > 0);
-done:
-    mb_model_destroy(&m);
-    mcs_scenario_destroy(&c2);
-    mcs_scenario_destroy(&s2);
+    mcs_scenario_destroy(&s);
+}
+
+/* ---- stage 2 of the concept case with the 5th female and the 95th male ---- */
+
+/* iso13232_413-0_13.4_sedan_rider_concept_{05f,95m}_stage2.yaml: compiles
+ * (stage2_fe/s2_scenario.h) and builds with the size seated, its dummy size kept (mass: the
+ * published total, sizes[] above, within 0.1 %); the tank foam pads (placed for the 50th's
+ * thighs, 22 mm clear) clear its thighs at t = 0 too (thigh ellipsoid to the pads' outer
+ * nodes). The stage-2 runs: tests/test_stage2_verify.c. */
+static void test_stage2_sizes(void)
+{
+    static const struct {
+        const char *file, *dummy;
+        const size_ref *size;
+        const char *fig; /* pad gap [mm] */
+    } s2[2] = {
+        {"scenarios/iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml", "5th_female",
+         &sizes[0], "rider.size_05f_pad_gap_mm"},
+        {"scenarios/iso13232_413-0_13.4_sedan_rider_concept_95m_stage2.yaml", "95th_male",
+         &sizes[2], "rider.size_95m_pad_gap_mm"},
+    };
+    for (int z = 0; z < 2; z++) {
+        mcs_scenario *sc = NULL, *c2 = NULL;
+        mcs_error err = {0};
+        mb_model *m = NULL;
+        if (mcs_scenario_load(s2[z].file, &sc, &err)) fprintf(stderr, "%s\n", err.msg);
+        CHECK(sc != NULL);
+        if (sc) CHECK(s2_scenario_compile(sc, &c2, &err) == MCS_OK);
+        if (c2 && mb_model_build(c2, NULL, &m, &err)) fprintf(stderr, "%s\n", err.msg);
+        CHECK(m != NULL && m->couple != NULL);
+        if (m && m->couple) {
+            CHECK(strcmp(m->rider_dummy, s2[z].dummy) == 0);
+            CHECK(fabs(mt_rider_mass(m, &(int){0}) / s2[z].size->mass - 1) < 1e-3);
+            const fe_model *fm = m->couple->fe.model;
+            const char *pads[2] = {"pad_tank_l", "pad_tank_r"},
+                       *thigh[2] = {"rider_thigh_l", "rider_thigh_r"};
+            double gap = INFINITY;
+            for (int k = 0; k < 2; k++) {
+                int ip = -1;
+                double g = mt_hex_face_gap(m, fm, pads[k], thigh[k], &ip);
+                CHECK(ip >= 0);
+                if (ip >= 0) gap = fmin(gap, g);
+            }
+            printf("  %s stage 2: tank pads %.1f mm from the thighs at t = 0\n", s2[z].dummy,
+                   gap * 1e3);
+            FIG(s2[z].fig, "%.0f", gap * 1e3);
+            CHECK(gap > 0);
+        }
+        mb_model_destroy(&m);
+        mcs_scenario_destroy(&c2);
+        mcs_scenario_destroy(&sc);
+    }
 }
 
 int main(void)
@@ -481,6 +536,7 @@ int main(void)
     RUN(test_seated);
     RUN(test_limits_scaling);
     RUN(test_scenario_pairs);
-    RUN(test_stage2_05f);
+    RUN(test_concept_95m_overrides);
+    RUN(test_stage2_sizes);
     TEST_END();
 }

@@ -69,7 +69,7 @@ static void test_bar_into_wall(void)
         FIG("readme.s3_bar_contact_err_pct", "%+.2f", 100 * (dur / tc - 1));
         FIG("readme.s3_bar_rebound_err_pct", "%+.0f", 100 * (vr / v - 1));
         CHECK_REL(mean, F0, 1.5e-3); /* +0.04 % */
-        CHECK_REL(dur, tc, 3e-3);    /* -0.09 % */
+        CHECK_REL(dur, tc, 1e-2);    /* +0.74 % (the step at 0.85 of the bar's limit) */
         CHECK_REL(vr, v, 0.09);      /* -3 % */
     }
     for (size_t i = 0; i < d.n; i++) CHECK(d.v[i] == 0); /* a fixed wall */
@@ -300,6 +300,49 @@ static void test_line_mesh_step_load(void)
     mcs_results_close(&h);
 }
 
+/* issue 15 item 7: fields at their own rate, channels and energies at output_rate. A 2-element
+ * bar, 10 ms at 100 kHz (1000 rows of /stage3/time, time_step 5 us): without field_rate the
+ * fields are FE_SCN_FIELD_FRAMES = 200 per run, every 50 us (the first step at or after each),
+ * with field_rate 1 kHz every 1 ms (11 frames with t = 0), with field_rate above output_rate
+ * at their own rate all the same (one per step at 200 kHz: the steps + 1). Counted by hand. */
+static void test_field_rate_default(void)
+{
+    const char *rates[3] = {"", ", field_rate: 1 kHz", ", field_rate: 200 kHz"};
+    const size_t lo[3] = {200, 11, 0}, hi[3] = {201, 11, 0};
+    for (int k = 0; k < 3; k++) {
+        char scn[128], out[128], text[1024];
+        snprintf(scn, sizeof scn, "%s/fr%d.yaml", tmpdir, k);
+        snprintf(out, sizeof out, "%s/fr%d.h5", tmpdir, k);
+        snprintf(text, sizeof text,
+                 "mcrash: 1\nname: fields\n"
+                 "simulation: {end_time: 10 ms, time_step: 5 us, output_rate: 100 kHz%s}\n"
+                 "fe:\n  parts:\n    - name: bar\n"
+                 "      mesh: {generate: line, origin: [0, 0, 0], end: [1, 0, 0], divisions: 2}\n"
+                 "      section: {type: truss, area: 40 mm^2}\n"
+                 "      material: {model: elastic, density: 1000, youngs_modulus: 10 GPa,"
+                 " poisson: 0}\n"
+                 "      initial_velocity: [1, 0, 0]\n",
+                 rates[k]);
+        write_text(scn, text);
+        s3_summary sum;
+        mcs_error err = {0};
+        CHECK(run_file(scn, out, &sum, &err) == MCS_OK);
+        mcs_results *h = NULL;
+        CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+        if (!h) continue;
+        mcs_array t = {0}, ft = {0}, d = {0};
+        CHECK(rd(h, "/stage3/time", &t) && rd(h, "/stage3/fields/time", &ft) &&
+              rd(h, "/stage3/fields/displacement", &d));
+        printf("  fields%s: %zu frames, %zu rows of /stage3/time\n", rates[k], ft.n, t.n);
+        CHECK(t.n >= 1000 && t.n <= 1001);
+        if (k == 2) CHECK(ft.n == (size_t)sum.steps + 1);
+        else CHECK(ft.n >= lo[k] && ft.n <= hi[k]);
+        CHECK(d.dims[0] == ft.n);
+        mcs_array_free(&t), mcs_array_free(&ft), mcs_array_free(&d);
+        mcs_results_close(&h);
+    }
+}
+
 static void test_cli_json_and_run(void)
 {
     char args[512], out[128];
@@ -395,6 +438,7 @@ int main(void)
     RUN(test_square_tube_crush);
     RUN(test_tube_crush_full);
     RUN(test_line_mesh_step_load);
+    RUN(test_field_rate_default);
     RUN(test_cli_json_and_run);
     RUN(test_numerical_failure_leaves_no_file);
     RUN(test_unsupported_is_located);

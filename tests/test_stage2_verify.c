@@ -16,6 +16,8 @@
 #define CONCEPT_S2 "scenarios/iso13232_413-0_13.4_sedan_rider_concept_stage2.yaml"
 #define CONCEPT_05F "scenarios/iso13232_413-0_13.4_sedan_rider_concept_05f.yaml"
 #define CONCEPT_05F_S2 "scenarios/iso13232_413-0_13.4_sedan_rider_concept_05f_stage2.yaml"
+#define CONCEPT_95M "scenarios/iso13232_413-0_13.4_sedan_rider_concept_95m.yaml"
+#define CONCEPT_95M_S2 "scenarios/iso13232_413-0_13.4_sedan_rider_concept_95m_stage2.yaml"
 
 static void fig23_50th(const char *h2);
 
@@ -145,22 +147,14 @@ static void rate_regions(const char *h2, double rating[3])
     }
 }
 
-/* scenario text t without its body_characteristic entries (", body_characteristic: {...}"
- * cut from the comma before the key to the brace that closes its value), in place */
+/* scenario text t with the pads' contacts no longer naming the thigh's flesh
+ * (", body_characteristic: thigh_flesh" cut; the named law stays, unused), in place */
 static void strip_body_laws(char *t)
 {
-    const char *key = "body_characteristic: {"; /* the key with its value (comments name it) */
-    for (char *at; (at = strstr(t, key));) {
-        char *c = at, *e = strchr(at, '{');
-        while (c > t && *c != ',') c--;
-        int depth = 0;
-        for (; e && *e; e++) {
-            depth += (*e == '{') - (*e == '}');
-            if (*e == '}' && depth == 0) break;
-        }
-        if (!e || !*e || *c != ',') return;
-        memmove(c, e + 1, strlen(e + 1) + 1);
-    }
+    const char *key = ", body_characteristic: thigh_flesh";
+    const size_t n = strlen(key);
+    for (char *at; (at = strstr(t, key));)
+        memmove(at, at + n, strlen(at + n) + 1);
 }
 
 /* the tank pads' largest contact force on the rider (both pads) [N] and its time [s] in h2 */
@@ -219,7 +213,7 @@ static void test_consistency_413(void)
     free(y);
     /* the pads with the thigh's flesh (the shipped scenario) */
     y = text_with(CONCEPT_S2, NULL, NULL, "");
-    CHECK(y && strstr(y, "body_characteristic: {"));
+    CHECK(y && strstr(y, "body_characteristic: thigh_flesh}"));
     CHECK(y && run_s2(CONCEPT_S2, y, h1, h2, &sum, &err) == MCS_OK);
     rate_regions(h2, foam);
     double fpk = 0, tpk = 0, nt2 = neck_tension(h2), nt1 = 0;
@@ -228,7 +222,7 @@ static void test_consistency_413(void)
     unlink(h2);
     /* the same pads against a rigid thigh */
     if (y) strip_body_laws(y);
-    CHECK(y && !strstr(y, "body_characteristic: {") && strstr(y, "friction: 0.5}"));
+    CHECK(y && !strstr(y, "body_characteristic: thigh_flesh}") && strstr(y, "friction: 0.5}"));
     CHECK(y && run_s2(CONCEPT_S2, y, h1, h2, &sum, &err) == MCS_OK);
     rate_regions(h2, hard);
     double hpk = 0, htpk = 0, nth = neck_tension(h2);
@@ -274,16 +268,16 @@ static void test_consistency_413(void)
  * contact energy by partner category */
 static void fig23_50th(const char *h2)
 {
-    static const char *const k1[10] = {
-        "fig23.p50_s1_slip_100_mm", "fig23.p50_s1_slip_200_mm", "fig23.p50_s1_slip_300_mm",
-        "fig23.p50_s1_up_100_mm", "fig23.p50_s1_up_200_mm", "fig23.p50_s1_up_300_mm",
-        "fig23.p50_s1_head_peak_mm", "fig23.p50_s1_head_fwd_mm", "fig23.p50_s1_pelvis_fwd_mm",
-        "fig23.p50_s1_pelvis_off_mm"};
-    static const char *const k2[10] = {
-        "fig23.p50_s2_slip_100_mm", "fig23.p50_s2_slip_200_mm", "fig23.p50_s2_slip_300_mm",
-        "fig23.p50_s2_up_100_mm", "fig23.p50_s2_up_200_mm", "fig23.p50_s2_up_300_mm",
-        "fig23.p50_s2_head_peak_mm", "fig23.p50_s2_head_fwd_mm", "fig23.p50_s2_pelvis_fwd_mm",
-        "fig23.p50_s2_pelvis_off_mm"};
+    static const char *const k1[10] = {"fig23.p50_s1_slip_100_mm",   "fig23.p50_s1_slip_200_mm",
+                                       "fig23.p50_s1_slip_300_mm",   "fig23.p50_s1_up_100_mm",
+                                       "fig23.p50_s1_up_200_mm",     "fig23.p50_s1_up_300_mm",
+                                       "fig23.p50_s1_head_peak_mm",  "fig23.p50_s1_head_fwd_mm",
+                                       "fig23.p50_s1_pelvis_fwd_mm", "fig23.p50_s1_pelvis_off_mm"};
+    static const char *const k2[10] = {"fig23.p50_s2_slip_100_mm",   "fig23.p50_s2_slip_200_mm",
+                                       "fig23.p50_s2_slip_300_mm",   "fig23.p50_s2_up_100_mm",
+                                       "fig23.p50_s2_up_200_mm",     "fig23.p50_s2_up_300_mm",
+                                       "fig23.p50_s2_head_peak_mm",  "fig23.p50_s2_head_fwd_mm",
+                                       "fig23.p50_s2_pelvis_fwd_mm", "fig23.p50_s2_pelvis_off_mm"};
     /* the rider stays on the motorcycle: the pelvis within F23_LEAVE of its seated place */
     CHECK(f23_fig(h1, 1, "50th, stage 1", k1) < F23_LEAVE);
     CHECK(f23_fig(h2, 2, "50th, stage 2", k2) < F23_LEAVE);
@@ -316,44 +310,86 @@ static void fig23_50th(const char *h2)
     FIG_TOL("fig23.p50_s2_rank_foam", "%.0f", (double)rank[3], 0.1);
 }
 
-/* item 6 in stage 2: the 5th female's concept case, stage 1 then its stage-2 scenario on that
- * run; kinematics and injury criteria of both stages */
-static void test_fig23_05f(void)
+/* item 6 in stage 2: a rider size's concept case (stage-1 scenario, its stage-2 scenario on
+ * that run) and the keys of its figures (literal: tests/test_figures.c) */
+typedef struct {
+    const char *label, *s1, *s2;
+    const char *pad_fig;         /* the tank pads' peak contact force [N] */
+    const char *k1[10], *k2[10]; /* kinematics (s2_fig23.h f23_fig) of stage 1, stage 2 */
+    const char *crit_fig[2][7];  /* [stage][criterion] of crit[] below */
+} size_case;
+
+static const size_case sizes[2] = {
+    {"5th",
+     CONCEPT_05F,
+     CONCEPT_05F_S2,
+     "fig23.p05_s2_pad_peak_n",
+     {"fig23.p05_s1_slip_100_mm", "fig23.p05_s1_slip_200_mm", "fig23.p05_s1_slip_300_mm",
+      "fig23.p05_s1_up_100_mm", "fig23.p05_s1_up_200_mm", "fig23.p05_s1_up_300_mm",
+      "fig23.p05_s1_head_peak_mm", "fig23.p05_s1_head_fwd_mm", "fig23.p05_s1_pelvis_fwd_mm",
+      "fig23.p05_s1_pelvis_off_mm"},
+     {"fig23.p05_s2_slip_100_mm", "fig23.p05_s2_slip_200_mm", "fig23.p05_s2_slip_300_mm",
+      "fig23.p05_s2_up_100_mm", "fig23.p05_s2_up_200_mm", "fig23.p05_s2_up_300_mm",
+      "fig23.p05_s2_head_peak_mm", "fig23.p05_s2_head_fwd_mm", "fig23.p05_s2_pelvis_fwd_mm",
+      "fig23.p05_s2_pelvis_off_mm"},
+     {{"fig23.p05_s1_hic15", "fig23.p05_s1_head_a3ms", "fig23.p05_s1_nij",
+       "fig23.p05_s1_neck_tension_kn", "fig23.p05_s1_chest_a3ms", "fig23.p05_s1_pelvis_a3ms",
+       "fig23.p05_s1_tibia_index"},
+      {"fig23.p05_s2_hic15", "fig23.p05_s2_head_a3ms", "fig23.p05_s2_nij",
+       "fig23.p05_s2_neck_tension_kn", "fig23.p05_s2_chest_a3ms", "fig23.p05_s2_pelvis_a3ms",
+       "fig23.p05_s2_tibia_index"}}},
+    {"95th",
+     CONCEPT_95M,
+     CONCEPT_95M_S2,
+     "fig23.p95_s2_pad_peak_n",
+     {"fig23.p95_s1_slip_100_mm", "fig23.p95_s1_slip_200_mm", "fig23.p95_s1_slip_300_mm",
+      "fig23.p95_s1_up_100_mm", "fig23.p95_s1_up_200_mm", "fig23.p95_s1_up_300_mm",
+      "fig23.p95_s1_head_peak_mm", "fig23.p95_s1_head_fwd_mm", "fig23.p95_s1_pelvis_fwd_mm",
+      "fig23.p95_s1_pelvis_off_mm"},
+     {"fig23.p95_s2_slip_100_mm", "fig23.p95_s2_slip_200_mm", "fig23.p95_s2_slip_300_mm",
+      "fig23.p95_s2_up_100_mm", "fig23.p95_s2_up_200_mm", "fig23.p95_s2_up_300_mm",
+      "fig23.p95_s2_head_peak_mm", "fig23.p95_s2_head_fwd_mm", "fig23.p95_s2_pelvis_fwd_mm",
+      "fig23.p95_s2_pelvis_off_mm"},
+     {{"fig23.p95_s1_hic15", "fig23.p95_s1_head_a3ms", "fig23.p95_s1_nij",
+       "fig23.p95_s1_neck_tension_kn", "fig23.p95_s1_chest_a3ms", "fig23.p95_s1_pelvis_a3ms",
+       "fig23.p95_s1_tibia_index"},
+      {"fig23.p95_s2_hic15", "fig23.p95_s2_head_a3ms", "fig23.p95_s2_nij",
+       "fig23.p95_s2_neck_tension_kn", "fig23.p95_s2_chest_a3ms", "fig23.p95_s2_pelvis_a3ms",
+       "fig23.p95_s2_tibia_index"}}},
+};
+
+/* the criteria `mcrash injury OUT.h5 --stage N` prints (/stageN/injury/<name>), the format of
+ * their figures and the factor to the figure's unit (neck tension in kN) */
+static const char *const crit[7] = {"hic15",      "head_a3ms",   "nij",        "neck_tension",
+                                    "chest_a3ms", "pelvis_a3ms", "tibia_index"};
+static const char *const crit_fmt[7] = {"%.0f", "%.1f", "%.2f", "%.2f", "%.1f", "%.1f", "%.2f"};
+static const double crit_unit[7] = {1, 1, 1, 1e-3, 1, 1, 1};
+
+/* the size's stage 1 then its stage-2 scenario on that run; kinematics and injury criteria of
+ * both stages */
+static void fig23_size(const size_case *z)
 {
-    if (!th_verify() || !tdir[0]) return;
-    char s1[128], s2[128];
-    snprintf(s1, sizeof s1, "%s/s1_05f.h5", tdir);
-    snprintf(s2, sizeof s2, "%s/s2_05f.h5", tdir);
-    mb_model *m = mt_model_file(CONCEPT_05F);
+    char s1[128], s2[128], what[64];
+    snprintf(s1, sizeof s1, "%s/s1_size.h5", tdir);
+    snprintf(s2, sizeof s2, "%s/s2_size.h5", tdir);
+    mb_model *m = mt_model_file(z->s1);
     mcs_error err = {0};
     mb_run_opts o = {.out_path = s1, .quiet = 1};
     CHECK(m && mb_run(m, &o, NULL, &err) == MCS_OK);
     mb_model_destroy(&m);
-    char *y = text_with(CONCEPT_05F_S2, NULL, NULL, "");
+    char *y = text_with(z->s2, NULL, NULL, "");
     s2_summary sum = {0};
-    CHECK(y && run_s2(CONCEPT_05F_S2, y, s1, s2, &sum, &err) == MCS_OK);
-    CHECK(y && strstr(y, "body_characteristic: {")); /* the thigh's flesh on the pads */
+    CHECK(y && run_s2(z->s2, y, s1, s2, &sum, &err) == MCS_OK);
+    CHECK(y && strstr(y, "body_characteristic: thigh_flesh}")); /* the thigh's flesh on the pads */
     free(y);
     double fpk = 0, tpk = 0;
     pad_peak(s2, &fpk, &tpk);
-    printf("5th, stage 2, tank pads: contact force peak %.4g N at %.4g s\n", fpk, tpk);
-    FIG("fig23.p05_s2_pad_peak_n", "%.0f", fpk);
-    static const char *const k1[10] = {
-        "fig23.p05_s1_slip_100_mm", "fig23.p05_s1_slip_200_mm", "fig23.p05_s1_slip_300_mm",
-        "fig23.p05_s1_up_100_mm", "fig23.p05_s1_up_200_mm", "fig23.p05_s1_up_300_mm",
-        "fig23.p05_s1_head_peak_mm", "fig23.p05_s1_head_fwd_mm", "fig23.p05_s1_pelvis_fwd_mm",
-        "fig23.p05_s1_pelvis_off_mm"};
-    static const char *const k2[10] = {
-        "fig23.p05_s2_slip_100_mm", "fig23.p05_s2_slip_200_mm", "fig23.p05_s2_slip_300_mm",
-        "fig23.p05_s2_up_100_mm", "fig23.p05_s2_up_200_mm", "fig23.p05_s2_up_300_mm",
-        "fig23.p05_s2_head_peak_mm", "fig23.p05_s2_head_fwd_mm", "fig23.p05_s2_pelvis_fwd_mm",
-        "fig23.p05_s2_pelvis_off_mm"};
-    CHECK(f23_fig(s1, 1, "5th, stage 1", k1) < F23_LEAVE);
-    CHECK(f23_fig(s2, 2, "5th, stage 2", k2) < F23_LEAVE);
-    /* the criteria `mcrash injury OUT.h5 --stage N` prints (/stageN/injury/<name>) */
-    const char *crit[7] = {"hic15",       "head_a3ms",  "nij",      "neck_tension",
-                           "chest_a3ms", "pelvis_a3ms", "tibia_index"};
-    double v[2][7];
+    printf("%s, stage 2, tank pads: contact force peak %.4g N at %.4g s\n", z->label, fpk, tpk);
+    FIG(z->pad_fig, "%.0f", fpk);
+    snprintf(what, sizeof what, "%s, stage 1", z->label);
+    CHECK(f23_fig(s1, 1, what, z->k1) < F23_LEAVE);
+    snprintf(what, sizeof what, "%s, stage 2", z->label);
+    CHECK(f23_fig(s2, 2, what, z->k2) < F23_LEAVE);
     for (int st = 0; st < 2; st++)
         for (int i = 0; i < 7; i++) {
             char ds[96];
@@ -361,32 +397,26 @@ static void test_fig23_05f(void)
             snprintf(ds, sizeof ds, "/stage%d/injury/%s", st + 1, crit[i]);
             double *a = read_ds(st ? s2 : s1, ds, &n);
             CHECK(a && n == 1);
-            v[st][i] = a && n == 1 ? a[0] : NAN;
+            double v = a && n == 1 ? a[0] : NAN;
             free(a);
-            printf("5th, stage %d, %s: %.4g\n", st + 1, crit[i], v[st][i]);
+            printf("%s, stage %d, %s: %.4g\n", z->label, st + 1, crit[i], v);
+            FIG(z->crit_fig[st][i], crit_fmt[i], crit_unit[i] * v);
         }
-    FIG("fig23.p05_s1_hic15", "%.0f", v[0][0]);
-    FIG("fig23.p05_s2_hic15", "%.0f", v[1][0]);
-    FIG("fig23.p05_s1_head_a3ms", "%.1f", v[0][1]);
-    FIG("fig23.p05_s2_head_a3ms", "%.1f", v[1][1]);
-    FIG("fig23.p05_s1_nij", "%.2f", v[0][2]);
-    FIG("fig23.p05_s2_nij", "%.2f", v[1][2]);
-    FIG("fig23.p05_s1_neck_tension_kn", "%.2f", 1e-3 * v[0][3]);
-    FIG("fig23.p05_s2_neck_tension_kn", "%.2f", 1e-3 * v[1][3]);
-    FIG("fig23.p05_s1_chest_a3ms", "%.1f", v[0][4]);
-    FIG("fig23.p05_s2_chest_a3ms", "%.1f", v[1][4]);
-    FIG("fig23.p05_s1_pelvis_a3ms", "%.1f", v[0][5]);
-    FIG("fig23.p05_s2_pelvis_a3ms", "%.1f", v[1][5]);
-    FIG("fig23.p05_s1_tibia_index", "%.2f", v[0][6]);
-    FIG("fig23.p05_s2_tibia_index", "%.2f", v[1][6]);
     unlink(s1), unlink(s2);
+}
+
+static void test_fig23_sizes(void)
+{
+    if (!th_verify() || !tdir[0]) return;
+    for (int k = 0; k < 2; k++)
+        fig23_size(&sizes[k]);
 }
 
 int main(void)
 {
     RUN(test_replay_413);
     RUN(test_consistency_413);
-    RUN(test_fig23_05f);
+    RUN(test_fig23_sizes);
     if (h1[0]) unlink(h1), rmdir(tdir);
     TEST_END();
 }

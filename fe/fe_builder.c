@@ -53,6 +53,7 @@ void fe_builder_destroy(fe_builder **p)
         free(b->epart[k]);
     }
     free(b->part);
+    free(b->shell_t);
     free(b->bc);
     free(b->fix);
     free(b->vel);
@@ -174,6 +175,11 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
         m->model != FE_MAT_FABRIC && m->model != FE_MAT_FOAM && m->model != FE_MAT_RIGID &&
         m->model != FE_MAT_NULL)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED, "fe: part '%s': material.model not built yet", n);
+    if (m->failure_strain != 0 && m->model != FE_MAT_ELASTIC_PLASTIC)
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "fe: part '%s': material.failure_strain (element erosion) needs material "
+                       "model elastic_plastic",
+                       n);
     if ((m->model == FE_MAT_FABRIC) != (d->section.type == FE_SECTION_MEMBRANE))
         return MCS_ERR(err, MCS_ERR_TYPE,
                        "fe: part '%s': a membrane section takes material.model fabric, and "
@@ -216,6 +222,17 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
     if (m->cowper_symonds_c < 0 || (m->cowper_symonds_c > 0 && !(m->cowper_symonds_p > 0)))
         return MCS_ERR(err, MCS_ERR_RANGE,
                        "fe: part '%s': material.cowper_symonds: need c >= 0 and p > 0", n);
+    if (!(m->failure_strain >= 0) || !isfinite(m->failure_strain))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.failure_strain must be >= 0",
+                       n);
+    const fe_section_desc *sc = &d->section;
+    if (m->failure_strain > 0 &&
+        !(sc->type == FE_SECTION_SHELL ||
+          (sc->type == FE_SECTION_SOLID && sc->formulation == FE_HEX_ONE_POINT)))
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "fe: part '%s': element erosion (material.failure_strain) is built for "
+                       "one-point hexahedra and shells only",
+                       n);
     return MCS_OK;
 }
 
@@ -361,6 +378,27 @@ mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force
     return push_load(b, node, &d, err);
 }
 
+mcs_status fe_builder_add_pressure(fe_builder *b, const int nodes[4], double p, int ncurve,
+                                   const double (*curve)[2], mcs_error *err)
+{
+    for (int i = 0; i < 4; i++)
+        if (nodes[i] < 0 || nodes[i] >= b->nnode)
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure on node %d: no such node",
+                           nodes[i]);
+    if (nodes[0] == nodes[1] || nodes[1] == nodes[2] || nodes[0] == nodes[2])
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure segment: nodes 1, 2, 3 must differ");
+    if (ncurve < 0 || ncurve > FE_CURVE_MAX)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure: curve needs 0..%d points", FE_CURVE_MAX);
+    fe_load_desc d;
+    memset(&d, 0, sizeof d);
+    d.force[0] = p;
+    d.ncurve = ncurve;
+    if (ncurve) memcpy(d.curve, curve, (size_t)ncurve * sizeof d.curve[0]);
+    mcs_status st = push_load(b, -2, &d, err);
+    if (!st) memcpy(b->load[b->nload - 1].seg, nodes, sizeof b->load[0].seg);
+    return st;
+}
+
 mcs_status fe_builder_add_wall(fe_builder *b, const fe_wall_desc *d, mcs_error *err)
 {
     if (b->nwall >= FE_WALL_MAX)
@@ -442,4 +480,26 @@ int fe_builder_select(const fe_builder *b, int part, fe_where where, int *idx, i
     }
     free(mark);
     return cnt;
+}
+
+mcs_status fe_builder_add_shell(fe_builder *b, int part, const int nodes[4], double thickness,
+                                mcs_error *err)
+{
+    if (!(thickness > 0) || !isfinite(thickness))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: a shell's own thickness must be > 0, got %g",
+                       thickness);
+    if (part < 0 || part >= b->npart ||
+        fe_section_kind(b->part[part].section.type) != FE_KIND_SHELL)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: a shell of part index %d, which is no shell part",
+                       part);
+    int e0 = b->nelem[FE_KIND_SHELL];
+    mcs_status st = fe_builder_add_elem(b, part, nodes, err);
+    if (st) return st;
+    int e1 = b->nelem[FE_KIND_SHELL]; /* a membrane quad made two triangles */
+    if (grow((void **)&b->shell_t, &b->cap_shell_t, e1, sizeof(double)))
+        return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory adding a shell");
+    for (int e = b->nshell_t; e < e0; e++) b->shell_t[e] = 0; /* the section's */
+    for (int e = e0; e < e1; e++) b->shell_t[e] = thickness;
+    b->nshell_t = e1;
+    return MCS_OK;
 }

@@ -12,8 +12,9 @@ typedef struct {
 } fe_node_fix;
 
 typedef struct {
-    int node;        /* one node, or -1: the part/where selection of d      */
-    fe_load_desc d;
+    int node;        /* one node, or -1: the part/where selection of d; -2: a pressure */
+    fe_load_desc d;  /* a pressure's: force[0] the pressure [Pa], its curve             */
+    int seg[4];      /* a pressure's segment nodes                                      */
 } fe_bload;
 
 struct fe_builder {
@@ -27,6 +28,8 @@ struct fe_builder {
     int nelem[FE_NKIND], cap_conn[FE_NKIND], cap_epart[FE_NKIND];
     int *conn[FE_NKIND];                          /* connectivity per kind */
     int *epart[FE_NKIND];                         /* part per element      */
+    double *shell_t;  /* own thickness of shells (nshell_t; 0: the section's) [m] */
+    int nshell_t, cap_shell_t;
     int npart, cap_part;
     fe_part_desc *part;
     int nbc, cap_bc;

@@ -32,11 +32,14 @@
 
 /* FE_KW_TET10: 10-node tetrahedra of *ELEMENT_SOLID (two-card form, N1..N10; or
  * *ELEMENT_SOLID_TET4TOTET10, whose mid-edge nodes the reader adds: fe_kw_tet10.c) */
+/* FE_KW_TSHELL: *ELEMENT_TSHELL (8-node thick shells): read and counted, refused when built
+ * (docs/keyword.md says why) */
 typedef enum {
-    FE_KW_SHELL, FE_KW_SOLID, FE_KW_BEAM, FE_KW_DISCRETE, FE_KW_TET10, FE_KW_NETYPE
+    FE_KW_SHELL, FE_KW_SOLID, FE_KW_BEAM, FE_KW_DISCRETE, FE_KW_TET10, FE_KW_TSHELL, FE_KW_NETYPE
 } fe_kw_etype;
 
-/* nodes per element of each type as stored (shell 4, solid 8, beam 2, discrete 2, tet10 10) */
+/* nodes per element of each type as stored (shell 4, solid 8, beam 2, discrete 2, tet10 10,
+ * tshell 8) */
 int fe_kw_etype_nnode(fe_kw_etype t);
 const char *fe_kw_etype_name(fe_kw_etype t); /* "SHELL", "SOLID", ... */
 
@@ -53,15 +56,46 @@ typedef struct {
     int *node;     /* node IDs (n x fe_kw_etype_nnode); a triangle repeats N3 as N4    */
     double *dval;  /* discrete only: scale factor S [-], offset [m] (n x 2)             */
     fe_kw_loc *loc;/* (n)                                                              */
+    int nthick;    /* shells: elements thick has room for (the first nthick) [-]        */
+    double *thick; /* shells: THIC1..THIC4 of *ELEMENT_SHELL_THICKNESS, 0 = the section's
+                      Ti (nthick x 4; NULL: none given) [m]                              */
 } fe_kw_elems;
+
+/* *PART_INERTIA: a rigid part's given mass properties and initial velocity (SI) */
+typedef struct {
+    int given;       /* 1: the card was read [-]                                           */
+    double mass;     /* TM [kg]                                                            */
+    double cg[3];    /* XC YC ZC (or NODEID's position) [m]                                */
+    int nodeid;      /* NODEID (0: none) [-]                                               */
+    double i[6];     /* IXX IXY IXZ IYY IYZ IZZ about the CG, global axes [kg m^2]          */
+    double v[3];     /* VTX VTY VTZ [m/s]                                                  */
+    double w[3];     /* VRX VRY VRZ [rad/s]                                                */
+    int ircs;        /* IRCS (1: principal moments + orientation; refused when built) [-]   */
+} fe_kw_inertia;
+
+/* *PART_CONTACT: the part's contact parameters (used by contacts that ask for them) */
+typedef struct {
+    int given;       /* 1: the card was read [-]                                           */
+    double fs, fd;   /* static, dynamic friction [-]                                       */
+    double dc;       /* exponential decay coefficient [s/m]                                 */
+    double vc;       /* viscous friction coefficient [Pa]                                   */
+    double optt;     /* contact thickness (0: the default) [m]                              */
+    double sft, ssf; /* thickness and penalty scale factors (0: 1) [-]                       */
+} fe_kw_pcontact;
 
 typedef struct {
     int id, secid, mid;
     char title[FE_KW_TITLE_MAX];
     fe_kw_loc loc;
+    int eosid;              /* EOSID: *EOS ID (0: none) [-]                               */
+    int hgid;               /* HGID: *HOURGLASS ID (0: *CONTROL_HOURGLASS or the default) [-] */
+    fe_kw_inertia inertia;  /* *PART_INERTIA                                               */
+    fe_kw_pcontact contact; /* *PART_CONTACT                                               */
 } fe_kw_part;
 
-typedef enum { FE_KW_SEC_SHELL, FE_KW_SEC_SOLID, FE_KW_SEC_BEAM, FE_KW_SEC_DISCRETE } fe_kw_sec_kind;
+typedef enum {
+    FE_KW_SEC_SHELL, FE_KW_SEC_SOLID, FE_KW_SEC_BEAM, FE_KW_SEC_DISCRETE, FE_KW_SEC_TSHELL
+} fe_kw_sec_kind;
 
 typedef struct {
     int id;
@@ -70,9 +104,45 @@ typedef struct {
     double shrf;    /* shell shear factor (0: default) [-]                            */
     int nip;        /* shell through-thickness points (0: the default, 2) [-]         */
     double t[4];    /* shell thickness at N1..N4 [m]                                  */
-    double area;    /* beam ELFORM 3 (truss) cross-section area [m^2]                 */
+    double area;    /* beam: A of ELFORM 2, 3 (and 12, 13) [m^2]                      */
+    int cst;        /* beam: cross-section type CST (0 rectangle, 1 tube, 2 arbitrary) [-] */
+    int irid;       /* beam: QR/IRID (< 0: a user integration rule) [-]               */
+    double ts[2], tt[2]; /* beam ELFORM 1, 4, 5, 9, 11: TS1 TS2 TT1 TT2 (thicknesses, or
+                            tube outer/inner diameters) [m]                             */
+    double iss, itt, jt; /* beam ELFORM 2: ISS ITT J [m^4]                                */
+    int user;       /* solid: ELFORM 101..105 (user element): its NIP and LMC cards were
+                       consumed [-]                                                      */
     fe_kw_loc loc;
 } fe_kw_section;
+
+/* *HOURGLASS: HGID IHQ QM IBQ Q1 Q2 QB/VDC QW */
+typedef struct {
+    int id;
+    int ihq;        /* hourglass type (0: the *CONTROL_HOURGLASS / default) [-]          */
+    double qm;      /* hourglass coefficient (0: the default) [-]                       */
+    double q1, q2;  /* quadratic, linear bulk viscosity (0: the defaults 1.5, 0.06) [-]  */
+    double qb, qw;  /* shell bending, warping coefficients (0: QM) [-]                   */
+    fe_kw_loc loc;
+} fe_kw_hourglass;
+
+/* *CONTROL_HOURGLASS and *CONTROL_TIMESTEP, as read (SI) */
+typedef struct {
+    int hg_given;            /* *CONTROL_HOURGLASS read [-]                                */
+    int hg_ihq;              /* IHQ [-]                                                     */
+    double hg_qh;            /* QH (0: the default) [-]                                     */
+    fe_kw_loc hg_loc;
+    int ts_given;            /* *CONTROL_TIMESTEP read [-]                                  */
+    double dtinit;           /* DTINIT (ignored: the kernel computes the first step) [s]    */
+    double tssfac;           /* TSSFAC (0: the default 0.9) [-]                             */
+    int isdo;                /* ISDO [-]                                                    */
+    double tslimt;           /* TSLIMT [s]                                                  */
+    double dt2ms;            /* DT2MS [s]                                                   */
+    int lctm;                /* LCTM [-]                                                    */
+    int ms1st;               /* MS1ST [-]                                                   */
+    double dt2msf;           /* card 2: DT2MSF [-]                                          */
+    int dt2mslc, imscl;      /* card 2: DT2MSLC, IMSCL [-]                                  */
+    fe_kw_loc ts_loc;
+} fe_kw_control;
 
 typedef enum {
     FE_KW_MAT_ELASTIC = 1,
@@ -281,12 +351,20 @@ typedef struct fe_kw_deck {
     int nunknown, cap_unknown; fe_kw_unknown *unknown;
     double unit[3];       /* SI value of the deck's length [m], time [s], mass [kg] units  */
     int nwmotion, cap_wmotion; fe_kw_wmotion *wmotion; /* rigid wall motions              */
+    int nhg, cap_hg;           fe_kw_hourglass *hg;       /* *HOURGLASS                    */
+    fe_kw_control ctl;    /* *CONTROL_HOURGLASS, *CONTROL_TIMESTEP                          */
+    int beams_as_trusses; /* set by the caller: build *SECTION_BEAM ELFORM 1 and 2 beams as
+                             trusses of their area (axial force only) instead of refusing */
     int ncontact, cap_contact; fe_kw_contact *contact; /* *CONTACT_* (fe_kw_cards_contact.c) */
     int nsegset, cap_segset;   fe_kw_segset *segset;   /* *SET_SEGMENT                         */
     int nnodevel, cap_nodevel; fe_kw_nodevel *nodevel; /* *INITIAL_VELOCITY_NODE               */
     int npmotion, cap_pmotion; fe_kw_pmotion *pmotion; /* *BOUNDARY_PRESCRIBED_MOTION_*        */
     int nload, cap_load;       fe_kw_load *load;       /* *LOAD_NODE_POINT, *LOAD_SEGMENT      */
     double end_time;      /* *CONTROL_TERMINATION ENDTIM [s] (0: not given)                    */
+    double slsfac;        /* *CONTROL_CONTACT SLSFAC: penalty scale (0: not given, 0.1) [-]   */
+    double rwpnal;        /* RWPNAL: > 0 asks penalty rigid walls [-]                          */
+    int shlthk;           /* SHLTHK: shell thickness in non-automatic contacts (0: not) [-]    */
+    fe_kw_loc control_contact; /* its card (line 0: none)                                       */
     /* joints and constraints (fe_kw_cards_joint.c) */
     int njoint, cap_joint;     fe_kw_joint *joint;     /* *CONSTRAINED_JOINT_*                 */
     int nnrb, cap_nrb;         fe_kw_nrb *nrb;         /* nodal rigid bodies, extra nodes       */
@@ -324,6 +402,11 @@ const fe_kw_section *fe_kw_find_section(const fe_kw_deck *d, int secid);
 const fe_kw_mat *fe_kw_find_mat(const fe_kw_deck *d, int mid);
 const fe_kw_curve *fe_kw_find_curve(const fe_kw_deck *d, int lcid);
 const fe_kw_set *fe_kw_find_set(const fe_kw_deck *d, int sid, int is_part);
+const fe_kw_hourglass *fe_kw_find_hourglass(const fe_kw_deck *d, int hgid);
+
+/* the model options a deck sets (*CONTROL_TIMESTEP: TSSFAC -> dt_scale, DT2MS < 0 -> mass
+ * scaling to TSSFAC |DT2MS|); what the kernel does not build is refused with its line */
+mcs_status fe_kw_deck_opts(const fe_kw_deck *dk, fe_opts *o, mcs_error *err);
 
 /* the section and material of a deck part as kernel descriptors (into d->section and
  * d->material; name and mesh untouched) */

@@ -41,13 +41,24 @@ static mcs_status section_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_sec
         s->thickness = k->t[0];
         s->integration_points = k->nip > 0 ? k->nip : 2; /* LS-DYNA's default NIP */
         s->shear_factor = k->shrf > 0 && k->shrf <= 1 ? k->shrf : 0;
-        if (!(k->t[0] > 0))
-            return at(dk, k->loc, err, MCS_ERR_RANGE, "*SECTION_SHELL %d: T1 must be > 0", k->id);
-        for (int i = 1; i < 4; i++)
-            if (k->t[i] != 0 && fabs(k->t[i] - k->t[0]) > 1e-12 * k->t[0])
-                mcs_log(MCS_LOG_WARN, "%s:%d: warning: *SECTION_SHELL %d: T%d differs from T1; "
-                                      "the kernel uses the constant thickness T1",
-                        dk->file[k->loc.file], k->loc.line, k->id, i + 1);
+        /* T1 blank: every shell of the part gives its own (*ELEMENT_SHELL_THICKNESS); the
+         * part's nominal thickness is then its first shell's. T1..T4 or THIC1..THIC4 that
+         * differ: each shell gets the mean of its nodes' (add_elems) */
+        for (int i = 0; i < dk->elem[FE_KW_SHELL].n && !(s->thickness > 0); i++)
+            if (dk->elem[FE_KW_SHELL].pid[i] == p->id) s->thickness = kw_shell_thickness(dk, k, i);
+        if (!(s->thickness > 0))
+            return at(dk, k->loc, err, MCS_ERR_RANGE,
+                      "*SECTION_SHELL %d: T1 must be > 0 (or every shell give THIC1..THIC4)",
+                      k->id);
+    } else if (k->kind == FE_KW_SEC_TSHELL) {
+        return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+                  "*SECTION_TSHELL %d: thick shells are not built (docs/keyword.md: one hexahedron "
+                  "through the thickness would not bend like them)",
+                  k->id);
+    } else if (k->kind == FE_KW_SEC_SOLID && k->user) {
+        return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+                  "*SECTION_SOLID %d: ELFORM %d (a user-defined element) is not built", k->id,
+                  k->elform);
     } else if (k->kind == FE_KW_SEC_SOLID) {
         /* ELFORM 16/17 (10-node tetrahedra): fe_kw_add_part decides by the elements */
         if (k->elform != 0 && k->elform != 1 && k->elform != 16 && k->elform != 17)
@@ -59,14 +70,9 @@ static mcs_status section_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_sec
         return at(dk, k->loc, err, MCS_ERR_TYPE,
                   "*SECTION_DISCRETE %d belongs to *ELEMENT_DISCRETE parts", k->id);
     } else {
-        if (k->elform != 3)
-            return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
-                      "*SECTION_BEAM %d: ELFORM %d not built (only 3, the truss)", k->id,
-                      k->elform);
-        s->type = FE_SECTION_TRUSS;
-        s->area = k->area;
+        return kw_beam_section(dk, k, s, err); /* fe_kw_build_elem.c */
     }
-    return MCS_OK;
+    return kw_part_hourglass(dk, p, s, err); /* *HOURGLASS, *CONTROL_HOURGLASS */
 }
 
 /* MAT_024 hardening: LCSS curve, else the EPS/ES table, else ETAN (bilinear) */
@@ -140,6 +146,7 @@ static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_ma
     m->yield_stress = k->sigy;
     m->cowper_symonds_c = k->c;
     m->cowper_symonds_p = k->c > 0 ? k->p : 0;
+    m->failure_strain = k->fail; /* FAIL: element erosion */
     return hardening(dk, k, m, err);
 }
 
@@ -153,6 +160,7 @@ mcs_status fe_kw_part_props(const fe_kw_deck *dk, int pid, fe_part_desc *d, mcs_
                        fe_kw_skipped(dk, "PART", skip, sizeof skip));
     mcs_status st = section_desc(dk, p, &d->section, err);
     if (!st) st = material_desc(dk, p, &d->material, err);
+    if (!st) st = kw_part_inertia(dk, p, d, err); /* *PART_INERTIA */
     return st;
 }
 
@@ -171,10 +179,14 @@ static int part_etype(const fe_kw_deck *dk, int pid)
 }
 
 static const fe_section_type etype_section[FE_KW_NETYPE] = {
-    FE_SECTION_SHELL, FE_SECTION_SOLID, FE_SECTION_TRUSS, FE_SECTION_TRUSS, FE_SECTION_TET10};
+    FE_SECTION_SHELL, FE_SECTION_SOLID, FE_SECTION_TRUSS, FE_SECTION_TRUSS, FE_SECTION_TET10,
+    FE_SECTION_SOLID};
 
+/* shells of a part whose section is the deck's (sec; NULL otherwise) get their own thickness
+ * where it differs from the part's (nominal) */
 static mcs_status add_elems(fe_builder *b, const fe_kw_deck *dk, int pid, fe_kw_etype t, int ip,
-                            const int *map, mcs_error *err)
+                            const int *map, const fe_kw_section *sec, double nominal,
+                            mcs_error *err)
 {
     const fe_kw_elems *e = &dk->elem[t];
     const int k = fe_kw_etype_nnode(t);
@@ -184,7 +196,16 @@ static mcs_status add_elems(fe_builder *b, const fe_kw_deck *dk, int pid, fe_kw_
         for (int j = 0; j < k; j++) c[j] = map[fe_kw_node_index(dk, e->node[(size_t)k * i + j])];
         /* solids: tetrahedra and pentahedra are checked and reordered by the builder */
         mcs_error kerr = {0};
-        mcs_status st = fe_builder_add_elem(b, ip, c, &kerr);
+        mcs_status st;
+        double th = t == FE_KW_SHELL && sec ? kw_shell_thickness(dk, sec, i) : 0;
+        if (t == FE_KW_SHELL && sec && !(th > 0))
+            return at(dk, e->loc[i], err, MCS_ERR_RANGE,
+                      "*ELEMENT_SHELL %d: no thickness (THIC1..THIC4 blank, section T1 0)",
+                      e->id[i]);
+        if (th > 0 && fabs(th - nominal) > 1e-12 * nominal)
+            st = fe_builder_add_shell(b, ip, c, th, &kerr); /* a thickness of its own */
+        else
+            st = fe_builder_add_elem(b, ip, c, &kerr);
         if (st)
             return at(dk, e->loc[i], err, st, "*ELEMENT_%s %d: %s", fe_kw_etype_name(t), e->id[i],
                       kerr.msg);
@@ -204,6 +225,17 @@ mcs_status fe_kw_add_part(fe_builder *b, const fe_kw_deck *dk, int pid, const fe
     if (t == -2)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
                        "%s: error: part %d mixes element types; a part holds one type", fn, pid);
+    if (t == FE_KW_TSHELL) {
+        const fe_kw_elems *e = &dk->elem[FE_KW_TSHELL];
+        int i = 0;
+        while (e->pid[i] != pid) i++;
+        const char *efn = e->loc[i].file < dk->nfile ? dk->file[e->loc[i].file] : fn;
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "%s:%d: error: *ELEMENT_TSHELL %d (part %d): thick shells are not built "
+                       "(one hexahedron through the thickness would not bend like them: "
+                       "docs/keyword.md)",
+                       efn, e->loc[i].line, e->id[i], pid);
+    }
     if (t == FE_KW_DISCRETE)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
                        "%s: error: part %d holds *ELEMENT_DISCRETE springs, not a continuum "
@@ -244,7 +276,14 @@ mcs_status fe_kw_add_part(fe_builder *b, const fe_kw_deck *dk, int pid, const fe
         for (int i = 0; i < dk->nnode && !st; i++)
             if (used[i] && map[i] < 0) st = fe_builder_add_node(b, dk->node_x + 3 * i, &map[i], err);
     }
-    if (!st) st = add_elems(b, dk, pid, (fe_kw_etype)t, ip, map, err);
+    if (!st) {
+        const fe_kw_part *kp = fe_kw_find_part(dk, pid);
+        const fe_kw_section *sec =
+            props_from_deck && kp && d.section.type == FE_SECTION_SHELL
+                ? fe_kw_find_section(dk, kp->secid)
+                : NULL;
+        st = add_elems(b, dk, pid, (fe_kw_etype)t, ip, map, sec, d.section.thickness, err);
+    }
     if (!st && index) *index = ip;
     free(used);
     if (map != node_map) free(map);
@@ -291,7 +330,10 @@ static mcs_status set_ids(const fe_kw_deck *dk, int sid, fe_kw_loc l, int **ids,
     *n = -1;
     if (sid == 0) return MCS_OK;
     const fe_kw_set *s = fe_kw_find_set(dk, sid, 0);
-    if (!s) return at(dk, l, err, MCS_ERR_KEY, "node set %d is not defined", sid);
+    char skip[400];
+    if (!s)
+        return at(dk, l, err, MCS_ERR_KEY, "node set %d is not defined%s", sid,
+                  fe_kw_skipped(dk, "SET_", skip, sizeof skip));
     *ids = malloc(sizeof(int) * (size_t)(s->n ? s->n : 1));
     if (!*ids) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
     memcpy(*ids, s->ids, sizeof(int) * (size_t)s->n);
@@ -311,7 +353,10 @@ static mcs_status covers(const fe_kw_deck *dk, fe_kw_target on, int id, fe_kw_lo
     }
     if (on == FE_KW_ON_PARTSET) {
         const fe_kw_set *s = fe_kw_find_set(dk, id, 1);
-        if (!s) return at(dk, l, err, MCS_ERR_KEY, "part set %d is not defined", id);
+        char skip[400];
+        if (!s)
+            return at(dk, l, err, MCS_ERR_KEY, "part set %d is not defined%s", id,
+                      fe_kw_skipped(dk, "SET_", skip, sizeof skip));
         *out = 0;
         for (int i = 0; i < s->n; i++) *out |= s->ids[i] == pid;
         return MCS_OK;
@@ -395,7 +440,10 @@ static mcs_status wall_motions(const fe_kw_deck *dk, int w, fe_wall_desc *d, mcs
         if (j < 0) return at(dk, mo->loc, err, MCS_ERR_KEY, "rigid wall %d is not defined", mo->wall);
         if (j != w) continue;
         const fe_kw_curve *c = fe_kw_find_curve(dk, mo->lcid);
-        if (!c) return at(dk, mo->loc, err, MCS_ERR_KEY, "LCID %d is not defined", mo->lcid);
+        char skip[400];
+        if (!c)
+            return at(dk, mo->loc, err, MCS_ERR_KEY, "LCID %d is not defined%s", mo->lcid,
+                      fe_kw_skipped(dk, "DEFINE_", skip, sizeof skip));
         if (d->nmotion >= FE_WALL_NMOTION || c->n > FE_CURVE_MAX)
             return at(dk, mo->loc, err, MCS_ERR_RANGE,
                       "a wall takes at most %d motions of at most %d curve points",

@@ -36,7 +36,7 @@ static int blank_card(const kw_card *cd)
 }
 
 static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
+    __attribute__((format(printf, 3, 4), unused));
 static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
 {
     if (c->o->quiet) return;
@@ -257,26 +257,6 @@ static mcs_status h_discrete(kw_ctx *c, const kw_card *cd, int n)
 
 /* ---- *PART, *SECTION_* ---- */
 
-static mcs_status h_part(kw_ctx *c, const kw_card *cd, int n)
-{
-    for (int i = 0; i < n; i += 2) {
-        if (blank_card(&cd[i]) && i + 1 >= n) break;
-        TRY(need(c, cd, n, i, 2));
-        fe_kw_part *p = kw_push((void **)&c->d->part, &c->d->npart, &c->d->cap_part, sizeof *p);
-        if (!p) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-        kw_text(&cd[i], 0, 80, p->title, sizeof p->title);
-        TRY(kw_int(c, &cd[i + 1], &KW_L10, 0, "PID", 0, &p->id));
-        TRY(kw_int(c, &cd[i + 1], &KW_L10, 1, "SECID", 0, &p->secid));
-        TRY(kw_int(c, &cd[i + 1], &KW_L10, 2, "MID", 0, &p->mid));
-        p->loc = loc_of(&cd[i + 1]);
-        for (int k = 0; k < c->d->npart - 1; k++)
-            if (c->d->part[k].id == p->id)
-                return kw_fail(c, cd[i + 1].file, cd[i + 1].line, 1, MCS_ERR_FORMAT,
-                               "part %d is defined twice", p->id);
-    }
-    return MCS_OK;
-}
-
 /* a section card's SECID (field 1), checked unique, and a new section of that kind */
 static mcs_status new_section(kw_ctx *c, const kw_card *cd, fe_kw_sec_kind kind,
                               fe_kw_section **out)
@@ -318,36 +298,6 @@ static mcs_status h_section_shell(kw_ctx *c, const kw_card *cd, int n)
         for (int k = 0; k < 4; k++) {
             TRY(kw_real(c, &cd[i + 1], &KW_L10, k, tn[k], 0, &s->t[k]));
             s->t[k] *= kw_u_len(c->d);
-        }
-        i += 2;
-    }
-    return MCS_OK;
-}
-
-static mcs_status h_section_solid(kw_ctx *c, const kw_card *cd, int n)
-{
-    for (int i = 0; i < n;) {
-        i = title_card(c, i);
-        TRY(need(c, cd, n, i, 1));
-        fe_kw_section *s;
-        TRY(new_section(c, &cd[i], FE_KW_SEC_SOLID, &s));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
-        i++;
-    }
-    return MCS_OK;
-}
-
-static mcs_status h_section_beam(kw_ctx *c, const kw_card *cd, int n)
-{
-    for (int i = 0; i < n;) {
-        i = title_card(c, i);
-        TRY(need(c, cd, n, i, 2));
-        fe_kw_section *s;
-        TRY(new_section(c, &cd[i], FE_KW_SEC_BEAM, &s));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
-        if (s->elform == 3) { /* truss: A RAMPT STRESS */
-            TRY(kw_real(c, &cd[i + 1], &KW_L10, 0, "A", 0, &s->area));
-            s->area *= kw_u_len(c->d) * kw_u_len(c->d);
         }
         i += 2;
     }
@@ -462,8 +412,10 @@ static mcs_status h_mat_plp(kw_ctx *c, const kw_card *cd, int n)
         TRY(kw_real(c, &cd[i], &KW_L10, 6, "FAIL", 0, &fail));
         m->sigy *= kw_u_stress(c->d);
         m->etan *= kw_u_stress(c->d);
-        if (fail > 0 && fail < 1e20)
-            warn(c, &cd[i], "FAIL = %g ignored: element erosion is not built", fail);
+        if (fail < 0)
+            return unsupported_field(c, &cd[i], &KW_L10, 6, "FAIL",
+                                     "a user failure subroutine (FAIL < 0) is not built");
+        m->fail = fail < 1e20 ? fail : 0; /* element erosion at this plastic strain */
         TRY(kw_real(c, &cd[i + 1], &KW_L10, 0, "C", 0, &m->c));
         TRY(kw_real(c, &cd[i + 1], &KW_L10, 1, "P", 0, &m->p));
         TRY(kw_int(c, &cd[i + 1], &KW_L10, 2, "LCSS", 0, &m->lcss));
@@ -777,10 +729,10 @@ static const struct {
     {"ELEMENT_SOLID_TET4TOTET10", h_solid_tet10, 0},
     {"ELEMENT_BEAM", h_beam, 0},
     {"ELEMENT_DISCRETE", h_discrete, 0},
-    {"PART", h_part, 0},
+    {"PART", kw_h_part, 0},
     {"SECTION_SHELL", h_section_shell, 0},
-    {"SECTION_SOLID", h_section_solid, 0},
-    {"SECTION_BEAM", h_section_beam, 0},
+    {"SECTION_SOLID", kw_h_section_solid, 0},
+    {"SECTION_BEAM", kw_h_section_beam, 0},
     {"SECTION_DISCRETE", h_section_discrete, 0},
     {"MAT_SPRING_ELASTIC", h_mat_spring, 0},
     {"MAT_S01", h_mat_spring, 0},
@@ -812,12 +764,44 @@ static const struct {
     {"BOUNDARY_SPC_NODE", h_spc_node, 1},
     {"BOUNDARY_SPC_SET", h_spc_set, 1},
     {"BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL", h_wall_motion, 1},
+    /* fe_kw_cards_elem.c */
+    {"ELEMENT_SHELL_THICKNESS", kw_h_shell_opt, 0},
+    {"ELEMENT_SHELL_BETA", kw_h_shell_opt, 0},
+    {"ELEMENT_SHELL_MCID", kw_h_shell_opt, 0},
+    {"ELEMENT_SHELL_THICKNESS_BETA", kw_h_shell_opt, 0},
+    {"ELEMENT_SHELL_THICKNESS_MCID", kw_h_shell_opt, 0},
+    {"ELEMENT_SHELL_OFFSET", kw_h_shell_opt, 0},
+    {"ELEMENT_SHELL_THICKNESS_OFFSET", kw_h_shell_opt, 0},
+    {"ELEMENT_SHELL_BETA_OFFSET", kw_h_shell_opt, 0},
+    {"ELEMENT_SHELL_MCID_OFFSET", kw_h_shell_opt, 0},
+    {"ELEMENT_TSHELL", kw_h_tshell, 0},
+    {"ELEMENT_TSHELL_BETA", kw_h_tshell, 0},
+    {"SECTION_TSHELL", kw_h_section_tshell, 0},
+    {"PART_INERTIA", kw_h_part, 0},
+    {"PART_CONTACT", kw_h_part, 0},
+    {"PART_INERTIA_CONTACT", kw_h_part, 0},
+    {"HOURGLASS", kw_h_hourglass, 0},
+    {"CONTROL_HOURGLASS", kw_h_control_hourglass, 0},
+    {"CONTROL_TIMESTEP", kw_h_control_timestep, 0},
     {"CONTACT_AUTOMATIC_SINGLE_SURFACE", kw_h_contact_single, 1},
     {"CONTACT_AUTOMATIC_GENERAL", kw_h_contact_general, 1},
     {"CONTACT_SURFACE_TO_SURFACE", kw_h_contact_s2s, 1},
     {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", kw_h_contact_auto_s2s, 1},
     {"CONTACT_NODES_TO_SURFACE", kw_h_contact_n2s, 1},
     {"CONTACT_AUTOMATIC_NODES_TO_SURFACE", kw_h_contact_auto_n2s, 1},
+    {"CONTACT_AUTOMATIC_SINGLE_SURFACE_MPP", kw_h_contact_mpp, 1},
+    {"CONTACT_AUTOMATIC_SINGLE_SURFACE_ID_MPP", kw_h_contact_mpp, 0},
+    {"CONTACT_AUTOMATIC_GENERAL_MPP", kw_h_contact_mpp, 1},
+    {"CONTACT_AUTOMATIC_GENERAL_ID_MPP", kw_h_contact_mpp, 0},
+    {"CONTACT_SURFACE_TO_SURFACE_MPP", kw_h_contact_mpp, 1},
+    {"CONTACT_SURFACE_TO_SURFACE_ID_MPP", kw_h_contact_mpp, 0},
+    {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MPP", kw_h_contact_mpp, 1},
+    {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_ID_MPP", kw_h_contact_mpp, 0},
+    {"CONTACT_NODES_TO_SURFACE_MPP", kw_h_contact_mpp, 1},
+    {"CONTACT_NODES_TO_SURFACE_ID_MPP", kw_h_contact_mpp, 0},
+    {"CONTACT_AUTOMATIC_NODES_TO_SURFACE_MPP", kw_h_contact_mpp, 1},
+    {"CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID_MPP", kw_h_contact_mpp, 0},
+    {"CONTROL_CONTACT", kw_h_control_contact, 0},
     {"SET_NODE_LIST_GENERATE", kw_h_set_node_gen, 0},
     {"SET_PART_LIST_GENERATE", kw_h_set_part_gen, 0},
     {"SET_SEGMENT", kw_h_set_segment, 0},
@@ -842,7 +826,9 @@ static const struct {
 
 int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st)
 {
-    static const char *titled[] = {"PART", "TITLE", "KEYWORD", "COMMENT", "NODE"};
+    static const char *titled[] = {"PART", "TITLE", "KEYWORD", "COMMENT", "NODE",
+                                   "PART_INERTIA", "PART_CONTACT", "PART_INERTIA_CONTACT",
+                                   "CONTROL_HOURGLASS", "CONTROL_TIMESTEP"};
     for (size_t i = 0; i < sizeof table / sizeof table[0]; i++) {
         if (strcmp(c->kw, table[i].name) != 0) continue;
         if (c->has_id && !table[i].id_ok) return 0;

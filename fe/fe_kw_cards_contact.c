@@ -212,11 +212,31 @@ static mcs_status contact_optional(kw_ctx *c, const kw_card *cd, int n, fe_kw_co
     return MCS_OK;
 }
 
-static mcs_status h_contact(kw_ctx *c, const kw_card *cd, int n, fe_kw_ctype type, int automatic)
+/* the _MPP option's cards after the ID card: IGNORE BCKT LCBCKT NS2TRK INITITR PARMAX - CPARM8,
+ * and a second (CHKSEGS PENSF GRPABLE) when the next card starts with '&': parallel search
+ * settings, read over */
+static mcs_status mpp_cards(kw_ctx *c, const kw_card *cd, int n, int *i)
+{
+    TRY(need(c, cd, n, *i, 1));
+    int ignore;
+    TRY(kw_int(c, &cd[*i], &KW_L10, 0, "IGNORE", 0, &ignore));
+    (*i)++;
+    if (*i < n) {
+        const char *p = cd[*i].s;
+        while (*p == ' ')
+            p++;
+        if (*p == '&') (*i)++;
+    }
+    return MCS_OK;
+}
+
+static mcs_status h_contact_mpp(kw_ctx *c, const kw_card *cd, int n, fe_kw_ctype type,
+                                int automatic, int mpp)
 {
     fe_kw_contact k = {.type = type, .automatic = automatic};
     int i = 0;
     TRY(id_card(c, cd, n, &i, &k.id, k.title));
+    if (mpp) TRY(mpp_cards(c, cd, n, &i));
     TRY(need(c, cd, n, i, 1));
     k.loc = loc_of(&cd[i]);
     TRY(contact_card1(c, &cd[i], &k));
@@ -232,6 +252,40 @@ static mcs_status h_contact(kw_ctx *c, const kw_card *cd, int n, fe_kw_ctype typ
     if (!p) return nomem(c);
     *p = k;
     return MCS_OK;
+}
+
+static mcs_status h_contact(kw_ctx *c, const kw_card *cd, int n, fe_kw_ctype type, int automatic)
+{
+    return h_contact_mpp(c, cd, n, type, automatic, 0);
+}
+
+/* *CONTACT_<type>_MPP(_ID, _TITLE) and *CONTACT_<type>_ID_MPP: the type from the name */
+mcs_status kw_h_contact_mpp(kw_ctx *c, const kw_card *cd, int n)
+{
+    static const struct {
+        const char *name;
+        fe_kw_ctype type;
+        int automatic;
+    } base[] = {{"CONTACT_AUTOMATIC_SINGLE_SURFACE", FE_KW_CT_SINGLE, 1},
+                {"CONTACT_AUTOMATIC_GENERAL", FE_KW_CT_GENERAL, 1},
+                {"CONTACT_SURFACE_TO_SURFACE", FE_KW_CT_S2S, 0},
+                {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", FE_KW_CT_S2S, 1},
+                {"CONTACT_NODES_TO_SURFACE", FE_KW_CT_N2S, 0},
+                {"CONTACT_AUTOMATIC_NODES_TO_SURFACE", FE_KW_CT_N2S, 1}};
+    char name[FE_KW_NAME_MAX];
+    snprintf(name, sizeof name, "%s", c->kw);
+    size_t len = strlen(name);
+    int id = len > 7 && strcmp(name + len - 7, "_ID_MPP") == 0;
+    name[len - (id ? 7 : 4)] = 0; /* the table sends only names ending in _MPP */
+    for (size_t k = 0; k < sizeof base / sizeof base[0]; k++) {
+        if (strcmp(name, base[k].name) != 0) continue;
+        int had = c->has_id;
+        c->has_id = had || id;
+        mcs_status st = h_contact_mpp(c, cd, n, base[k].type, base[k].automatic, 1);
+        c->has_id = had;
+        return st;
+    }
+    return kw_fail(c, c->kwloc.file, c->kwloc.line, 1, MCS_ERR_FORMAT, "not a contact type");
 }
 
 mcs_status kw_h_contact_single(kw_ctx *c, const kw_card *cd, int n)
@@ -519,6 +573,28 @@ mcs_status kw_h_control_termination(kw_ctx *c, const kw_card *cd, int n)
              "and stops on its own checks (time-step collapse, energy growth)");
     if (nosol) return refuse(c, &cd[0], 5, "NOSOL", "a run without solution is not built");
     c->d->end_time = endtim * c->d->unit[1];
+    return MCS_OK;
+}
+
+/* ---- *CONTROL_CONTACT: SLSFAC RWPNAL ISLCHK SHLTHK PENOPT THKCHG ORIEN ENMASS / ... ---- */
+
+mcs_status kw_h_control_contact(kw_ctx *c, const kw_card *cd, int n)
+{
+    if (n < 1) return MCS_OK;
+    TRY(kw_real(c, &cd[0], &KW_L10, 0, "SLSFAC", 0, &c->d->slsfac));
+    TRY(kw_real(c, &cd[0], &KW_L10, 1, "RWPNAL", 0, &c->d->rwpnal));
+    int v[6];
+    static const char *const nm[6] = {"ISLCHK", "SHLTHK", "PENOPT", "THKCHG", "ORIEN", "ENMASS"};
+    for (int k = 0; k < 6; k++)
+        TRY(kw_int(c, &cd[0], &KW_L10, 2 + k, nm[k], 0, &v[k]));
+    if (c->d->slsfac < 0) return refuse(c, &cd[0], 0, "SLSFAC", "must be >= 0");
+    c->d->shlthk = v[1];
+    c->d->control_contact = loc_of(&cd[0]);
+    if (v[2] || v[3] || v[4] || v[5])
+        warn(c, &cd[0],
+             "PENOPT, THKCHG, ORIEN, ENMASS read and ignored: the kernel's penalty "
+             "is the segment's (docs/fe.md, Contact), shell thickness constant, "
+             "segments oriented by their elements, no erosion");
     return MCS_OK;
 }
 

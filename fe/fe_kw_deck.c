@@ -5,9 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const int etype_nnode[FE_KW_NETYPE] = {4, 8, 2, 2, 10};
+static const int etype_nnode[FE_KW_NETYPE] = {4, 8, 2, 2, 10, 8};
 static const char *const etype_name[FE_KW_NETYPE] = {"SHELL", "SOLID", "BEAM", "DISCRETE",
-                                                     "SOLID"};
+                                                     "SOLID", "TSHELL"};
 
 int fe_kw_etype_nnode(fe_kw_etype t) { return etype_nnode[t]; }
 const char *fe_kw_etype_name(fe_kw_etype t) { return etype_name[t]; }
@@ -82,6 +82,7 @@ void fe_kw_deck_destroy(fe_kw_deck **p)
         free(d->elem[t].node);
         free(d->elem[t].dval);
         free(d->elem[t].loc);
+        free(d->elem[t].thick);
     }
     for (int i = 0; i < d->ncurve; i++) free(d->curve[i].xy);
     for (int i = 0; i < d->nset; i++) free(d->set[i].ids);
@@ -95,6 +96,7 @@ void fe_kw_deck_destroy(fe_kw_deck **p)
     free(d->iv);
     free(d->spc);
     free(d->unknown);
+    free(d->hg);
     kw_contact_free(d); /* fe_kw_cards_contact.c */
     kw_joint_free(d);   /* fe_kw_cards_joint.c */
     free(d);

@@ -117,6 +117,26 @@ int kw_expr_eval(const char *s, int (*look)(void *user, const char *name, double
 /* ---- handlers (fe_kw_cards.c): cards of one keyword; 1 = handled, 0 = unknown keyword ---- */
 int kw_dispatch(kw_ctx *c, const kw_card *cards, int ncard, mcs_status *st);
 
+/* ---- element, section, part and control handlers (fe_kw_cards_elem.c) ---- */
+mcs_status kw_h_shell_opt(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_tshell(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_section_solid(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_section_tshell(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_section_beam(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_part(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_hourglass(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_control_hourglass(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_control_timestep(kw_ctx *c, const kw_card *cd, int n);
+/* builder side (fe_kw_build_elem.c): the deck part's hourglass form, its beam section, its
+ * *PART_INERTIA (and the refusal of an EOSID), the thickness of shell element i of the deck
+ * (0: the section's T1 applies) */
+mcs_status kw_part_hourglass(const fe_kw_deck *dk, const fe_kw_part *p, fe_section_desc *s,
+                             mcs_error *err);
+mcs_status kw_beam_section(const fe_kw_deck *dk, const fe_kw_section *k, fe_section_desc *s,
+                           mcs_error *err);
+mcs_status kw_part_inertia(const fe_kw_deck *dk, const fe_kw_part *p, fe_part_desc *d,
+                           mcs_error *err);
+double kw_shell_thickness(const fe_kw_deck *dk, const fe_kw_section *k, int i);
 /* ---- material handlers (fe_kw_cards_mat.c): *MAT_PLASTIC_KINEMATIC, *MAT_NULL, *MAT_RIGID,
  * *MAT_MOONEY-RIVLIN_RUBBER, *MAT_LOW_DENSITY_FOAM; kw_mat_desc: their kernel descriptors
  * (1 when k is one of them, *st the status; 0 otherwise) ---- */
@@ -136,6 +156,8 @@ mcs_status kw_h_contact_s2s(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_contact_auto_s2s(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_contact_n2s(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_contact_auto_n2s(kw_ctx *c, const kw_card *cd, int n);
+mcs_status kw_h_contact_mpp(kw_ctx *c, const kw_card *cd, int n); /* _MPP, _ID_MPP */
+mcs_status kw_h_control_contact(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_set_node_gen(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_set_part_gen(kw_ctx *c, const kw_card *cd, int n);
 mcs_status kw_h_set_segment(kw_ctx *c, const kw_card *cd, int n);

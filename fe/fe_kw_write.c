@@ -105,18 +105,75 @@ static void comment(kw_out *o, const char *const *names, const int *w, int n)
 
 /* ---- blocks ---- */
 
+/* *PART_INERTIA's three cards and *PART_CONTACT's card */
+static void w_part_options(kw_out *o, const fe_kw_deck *d, const fe_kw_part *p)
+{
+    const double L = kw_u_len(d), M = d->unit[2];
+    if (p->inertia.given) {
+        const fe_kw_inertia *in = &p->inertia;
+        for (int k = 0; k < 3; k++) put_real(o, 10, in->cg[k] / L);
+        put_real(o, 10, in->mass / M), put_int(o, 10, in->ircs), put_int(o, 10, in->nodeid);
+        endl(o);
+        for (int k = 0; k < 6; k++) put_real(o, 10, in->i[k] / (M * L * L));
+        endl(o);
+        for (int k = 0; k < 3; k++) put_real(o, 10, in->v[k] / kw_u_vel(d));
+        for (int k = 0; k < 3; k++) put_real(o, 10, in->w[k] / kw_u_rate(d));
+        endl(o);
+        if (in->ircs == 1) endl(o); /* the orientation card was not kept */
+    }
+    if (p->contact.given) {
+        const fe_kw_pcontact *c = &p->contact;
+        put_real(o, 10, c->fs), put_real(o, 10, c->fd), put_real(o, 10, c->dc * kw_u_vel(d));
+        put_real(o, 10, c->vc / kw_u_stress(d)), put_real(o, 10, c->optt / L);
+        put_real(o, 10, c->sft), put_real(o, 10, c->ssf), endl(o);
+    }
+}
+
 static void w_parts(kw_out *o, const fe_kw_deck *d)
 {
-    static const char *h[] = {"pid", "secid", "mid"};
-    static const int w[] = {10, 10, 10};
+    static const char *h[] = {"pid", "secid", "mid", "eosid", "hgid"};
+    static const int w[] = {10, 10, 10, 10, 10};
     for (int i = 0; i < d->npart; i++) {
-        kw(o, "PART");
-        fprintf(o->f, "%s\n", d->part[i].title[0] ? d->part[i].title : "part");
-        comment(o, h, w, 3);
-        put_int(o, 10, d->part[i].id);
-        put_int(o, 10, d->part[i].secid);
-        put_int(o, 10, d->part[i].mid);
+        const fe_kw_part *p = &d->part[i];
+        kw(o, p->inertia.given && p->contact.given ? "PART_INERTIA_CONTACT"
+              : p->inertia.given                    ? "PART_INERTIA"
+              : p->contact.given                    ? "PART_CONTACT"
+                                                    : "PART");
+        fprintf(o->f, "%s\n", p->title[0] ? p->title : "part");
+        comment(o, h, w, p->hgid || p->eosid ? 5 : 3);
+        put_int(o, 10, p->id);
+        put_int(o, 10, p->secid);
+        put_int(o, 10, p->mid);
+        if (p->hgid || p->eosid) put_int(o, 10, p->eosid), put_int(o, 10, p->hgid);
         endl(o);
+        w_part_options(o, d, p);
+    }
+}
+
+/* *HOURGLASS, *CONTROL_HOURGLASS, *CONTROL_TIMESTEP */
+static void w_controls(kw_out *o, const fe_kw_deck *d)
+{
+    for (int i = 0; i < d->nhg; i++) {
+        const fe_kw_hourglass *h = &d->hg[i];
+        kw(o, "HOURGLASS");
+        put_int(o, 10, h->id), put_int(o, 10, h->ihq), put_real(o, 10, h->qm);
+        put_int(o, 10, 0), put_real(o, 10, h->q1), put_real(o, 10, h->q2);
+        put_real(o, 10, h->qb), put_real(o, 10, h->qw), endl(o);
+    }
+    const fe_kw_control *k = &d->ctl;
+    if (k->hg_given) {
+        kw(o, "CONTROL_HOURGLASS");
+        put_int(o, 10, k->hg_ihq), put_real(o, 10, k->hg_qh), endl(o);
+    }
+    if (k->ts_given) {
+        const double T = d->unit[1];
+        kw(o, "CONTROL_TIMESTEP");
+        put_real(o, 10, k->dtinit / T), put_real(o, 10, k->tssfac), put_int(o, 10, k->isdo);
+        put_real(o, 10, k->tslimt / T), put_real(o, 10, k->dt2ms / T), put_int(o, 10, k->lctm);
+        put_int(o, 10, 0), put_int(o, 10, k->ms1st), endl(o);
+        if (k->dt2msf != 0 || k->dt2mslc || k->imscl)
+            put_real(o, 10, k->dt2msf), put_int(o, 10, k->dt2mslc), put_int(o, 10, k->imscl),
+                endl(o);
     }
 }
 
@@ -134,13 +191,29 @@ static void w_sections(kw_out *o, const fe_kw_deck *d)
         } else if (s->kind == FE_KW_SEC_SOLID) {
             kw(o, "SECTION_SOLID");
             put_int(o, 10, s->id), put_int(o, 10, s->elform), endl(o);
+            if (s->user) put_int(o, 10, 0), endl(o); /* user parameters were not kept */
+        } else if (s->kind == FE_KW_SEC_TSHELL) {
+            kw(o, "SECTION_TSHELL");
+            put_int(o, 10, s->id), put_int(o, 10, s->elform), put_real(o, 10, s->shrf);
+            put_real(o, 10, s->nip), endl(o);
         } else if (s->kind == FE_KW_SEC_DISCRETE) {
             kw(o, "SECTION_DISCRETE");
             put_int(o, 10, s->id), put_int(o, 10, s->elform), endl(o);
         } else {
+            const int f = s->elform;
             kw(o, "SECTION_BEAM");
-            put_int(o, 10, s->id), put_int(o, 10, s->elform), endl(o);
-            put_real(o, 10, s->area / (L * L)), endl(o);
+            put_int(o, 10, s->id), put_int(o, 10, f), put_real(o, 10, s->shrf);
+            put_real(o, 10, s->irid), put_real(o, 10, s->cst), endl(o);
+            if (f == 2 || f == 3 || f == 12 || f == 13) put_real(o, 10, s->area / (L * L));
+            if (f == 2 || f == 12 || f == 13) {
+                const double L4 = L * L * L * L;
+                put_real(o, 10, s->iss / L4), put_real(o, 10, s->itt / L4);
+                put_real(o, 10, s->jt / L4);
+            } else if (f != 3) {
+                put_real(o, 10, s->ts[0] / L), put_real(o, 10, s->ts[1] / L);
+                put_real(o, 10, s->tt[0] / L), put_real(o, 10, s->tt[1] / L);
+            }
+            endl(o);
         }
     }
 }
@@ -248,16 +321,47 @@ static void w_nodes(kw_out *o, const fe_kw_deck *d)
     }
 }
 
+/* does shell i carry THIC1..THIC4 of its own? */
+static int has_thick(const fe_kw_elems *e, int i)
+{
+    if (!e->thick || i >= e->nthick) return 0;
+    const double *t = e->thick + 4 * (size_t)i;
+    return t[0] > 0 || t[1] > 0 || t[2] > 0 || t[3] > 0;
+}
+
+/* the shells with a thickness of their own: *ELEMENT_SHELL_THICKNESS */
+static void w_thick_shells(kw_out *o, const fe_kw_deck *d)
+{
+    const fe_kw_elems *e = &d->elem[FE_KW_SHELL];
+    int any = 0;
+    for (int i = 0; i < e->n && !any; i++) any = has_thick(e, i);
+    if (!any) return;
+    kw(o, "ELEMENT_SHELL_THICKNESS");
+    for (int i = 0; i < e->n; i++) {
+        if (!has_thick(e, i)) continue;
+        put_int(o, 8, e->id[i]), put_int(o, 8, e->pid[i]);
+        for (int j = 0; j < 4; j++) put_int(o, 8, e->node[4 * (size_t)i + j]);
+        endl(o);
+        for (int j = 0; j < 4; j++) put_real(o, 16, e->thick[4 * (size_t)i + j] / kw_u_len(d));
+        endl(o);
+    }
+}
+
 static void w_elems(kw_out *o, const fe_kw_deck *d)
 {
-    static const char *names[FE_KW_NETYPE] = {"ELEMENT_SHELL", "ELEMENT_SOLID", "ELEMENT_BEAM",
-                                              "ELEMENT_DISCRETE", "ELEMENT_SOLID"};
+    static const char *names[FE_KW_NETYPE] = {"ELEMENT_SHELL",    "ELEMENT_SOLID",
+                                              "ELEMENT_BEAM",     "ELEMENT_DISCRETE",
+                                              "ELEMENT_SOLID",    "ELEMENT_TSHELL"};
+    w_thick_shells(o, d);
     for (int t = 0; t < FE_KW_NETYPE; t++) {
         const fe_kw_elems *e = &d->elem[t];
-        if (e->n == 0) continue;
+        int nplain = 0;
+        for (int i = 0; i < e->n; i++) nplain += !(t == FE_KW_SHELL && has_thick(e, i));
+        if (nplain == 0) continue;
         kw(o, names[t]);
         int k = fe_kw_etype_nnode((fe_kw_etype)t);
         for (int i = 0; i < e->n; i++) {
+            if (t == FE_KW_SHELL && has_thick(e, i)) continue;
             put_int(o, 8, e->id[i]), put_int(o, 8, e->pid[i]);
             if (t == FE_KW_TET10) endl(o); /* the two-card form: EID PID, then N1..N10 */
             for (int j = 0; j < k; j++) put_int(o, 8, e->node[(size_t)k * i + j]);
@@ -370,6 +474,10 @@ static void w_contacts(kw_out *o, const fe_kw_deck *d)
          "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_NODES_TO_SURFACE"}};
     const double T = d->unit[1], L = kw_u_len(d);
     if (d->end_time > 0) kw(o, "CONTROL_TERMINATION"), put_real(o, 10, d->end_time / T), endl(o);
+    if (d->slsfac > 0 || d->shlthk) { /* SLSFAC RWPNAL ISLCHK SHLTHK */
+        kw(o, "CONTROL_CONTACT"), put_real(o, 10, d->slsfac), put_real(o, 10, d->rwpnal);
+        put_int(o, 10, 0), put_int(o, 10, d->shlthk), endl(o);
+    }
     for (int i = 0; i < d->nsegset; i++) {
         const fe_kw_segset *s = &d->segset[i];
         kw(o, "SET_SEGMENT"), put_int(o, 10, s->id), endl(o);
@@ -432,6 +540,7 @@ mcs_status fe_kw_write_stream(const fe_kw_deck *d, FILE *f, fe_kw_format fmt, mc
     w_parts(&o, d);
     w_sections(&o, d);
     w_mats(&o, d);
+    w_controls(&o, d);
     w_curves(&o, d);
     w_sets(&o, d);
     w_nodes(&o, d);
@@ -466,6 +575,49 @@ mcs_status fe_kw_write(const fe_kw_deck *d, const char *path, fe_kw_format fmt, 
 }
 
 /* ---- the deck of a model ---- */
+
+/* what the element keywords carry: shells of their own thickness (*ELEMENT_SHELL_THICKNESS),
+ * each deformable hex or shell part's hourglass form (*HOURGLASS IHQ 2 viscous or 4
+ * stiffness, QM its coefficient; HGID = PID) and rigid parts' given mass properties
+ * (*PART_INERTIA) */
+static mcs_status model_elem_extras(const fe_model *m, fe_kw_deck *d, mcs_error *err)
+{
+    fe_kw_elems *e = &d->elem[FE_KW_SHELL];
+    int own = 0;
+    for (int i = 0; i < m->nshell; i++)
+        own |= m->shell_t[i] != m->part[m->shell_part[i]].section.thickness;
+    if (own && e->n == m->nshell) {
+        e->thick = calloc(4 * (size_t)e->n, sizeof(double));
+        if (!e->thick) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+        e->nthick = e->n;
+        for (int i = 0; i < m->nshell; i++)
+            if (m->shell_t[i] != m->part[m->shell_part[i]].section.thickness)
+                for (int j = 0; j < 4; j++) e->thick[4 * (size_t)i + j] = m->shell_t[i];
+    }
+    for (int ip = 0; ip < m->npart; ip++) {
+        const fe_part *p = &m->part[ip];
+        fe_kw_part *kp = &d->part[ip];
+        if (p->rigid.given) {
+            const fe_rigid_inertia *g = &p->rigid;
+            fe_kw_inertia *in = &kp->inertia;
+            in->given = 1, in->mass = g->mass;
+            memcpy(in->cg, g->cg, sizeof in->cg);
+            memcpy(in->v, g->velocity, sizeof in->v);
+            memcpy(in->w, g->omega, sizeof in->w);
+            const double I[6] = {g->inertia[0][0], g->inertia[0][1], g->inertia[0][2],
+                                 g->inertia[1][1], g->inertia[1][2], g->inertia[2][2]};
+            memcpy(in->i, I, sizeof I);
+        }
+        if (p->body >= 0 || (p->elem_kind != FE_KIND_HEX && p->elem_kind != FE_KIND_SHELL))
+            continue;
+        fe_kw_hourglass *h = kw_push((void **)&d->hg, &d->nhg, &d->cap_hg, sizeof *h);
+        if (!h) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
+        h->id = kp->hgid = ip + 1;
+        h->ihq = p->section.hourglass == FE_HG_VISCOUS ? 2 : 4;
+        h->qm = p->hg_coef;
+    }
+    return MCS_OK;
+}
 
 static mcs_status model_props(const fe_model *m, int ip, fe_kw_deck *d, mcs_error *err)
 {
@@ -532,6 +684,7 @@ static mcs_status model_props(const fe_model *m, int ip, fe_kw_deck *d, mcs_erro
     if (k->type != FE_KW_MAT_PLP) return MCS_OK;
     k->sigy = md->nhardening > 0 ? md->hardening[0][1] : md->yield_stress;
     k->c = md->cowper_symonds_c, k->p = md->cowper_symonds_p;
+    k->fail = md->failure_strain;
     if (md->nhardening == 0) return MCS_OK;
     fe_kw_curve *c = kw_push((void **)&d->curve, &d->ncurve, &d->cap_curve, sizeof *c);
     if (!c || !(c->xy = malloc(2 * sizeof(double) * (size_t)md->nhardening)))
@@ -581,6 +734,7 @@ mcs_status fe_kw_from_model(const fe_model *m, const double *x, const char *titl
         if (!s) st = MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
         else *s = (fe_kw_spc){FE_KW_ON_NODE, i + 1, m->node_fix[i], {0, 0}};
     }
+    if (!st) st = model_elem_extras(m, d, err);
     if (!st) st = kw_joints_from_model(m, xs, d, err); /* fe_kw_joint_model.c */
     if (st) fe_kw_deck_destroy(&d);
     *out = d;

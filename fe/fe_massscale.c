@@ -56,7 +56,7 @@ static double elem_step(const fe_model *m, const fe_part *p, int e, double *mass
             memcpy(xe[n], x + 3 * c[n], sizeof xe[n]);
         }
         double area = fe_shell_frame(xe, fr, xl, yl);
-        *mass = p->material.density * p->section.thickness * area;
+        *mass = p->material.density * m->shell_t[e] * area;
         *nn = c[2] == c[3] ? 3 : 4;
         return fe_shell_length(xe, area) / p->wave_speed;
     }
@@ -217,6 +217,7 @@ double fe_massscale_run(const fe_model *m, fe_state *s, double dtmin)
                                                             : m->nhex + m->nshell;
             for (int e = p->elem_begin; e < p->elem_end; e++) {
                 const int k = off + e;
+                if (m->nerode && k < m->nerode && s->elem_dead[k]) continue; /* eroded */
                 int c[8], nn;
                 double dte = step_now(m, s, p, e, c, &nn) * m->elem_dt_factor[k] *
                              sqrt(s->elem_ms[k] / m->elem_ms0[k]);

@@ -111,7 +111,7 @@ void fe_membrane_references(fe_model *m)
 void fe_membrane_part(const fe_model *m, fe_state *s, int ip)
 {
     const fe_part *p = &m->part[ip];
-    const double dt = s->dt_prev, t = p->section.thickness, c0 = p->wave_speed;
+    const double dt = s->dt_prev, c0 = p->wave_speed;
     const double zeta = p->material.fabric_damping;
     const int stride = m->nip_max;
     fe_fabric_c fc;
@@ -153,7 +153,7 @@ void fe_membrane_part(const fe_model *m, fe_state *s, int ip)
             S[i] += sv;
             sg[i] = S[i];
         }
-        const double vol = r.area * t;
+        const double vol = r.area * m->shell_t[e];
         e_int += vol * w_el;
         e_diss += vol * w_v;
         for (int k = 0; k < 3; k++)

@@ -118,7 +118,22 @@ typedef struct {
     double foam_tension_cutoff;        /* largest tensile stress (0: no cutoff) [Pa]           */
     unsigned rigid_fix;                /* rigid: FE_DOF_* held on the body, global axes (LS-DYNA
                                           *MAT_RIGID CMO 1 CON1/CON2); rotations all or none */
+    double failure_strain;             /* elastic_plastic, one-point hex and shell parts: an
+                                          element whose plastic strain reaches this (a shell: at
+                                          any point through the thickness) is deleted, element
+                                          erosion (fe_stages.c); 0: never [-]                 */
 } fe_material_desc;
+
+/* a rigid part's given mass properties (LS-DYNA *PART_INERTIA), used instead of the sums
+ * over its nodes (fe_rigid.c) */
+typedef struct {
+    int given;                 /* 1: use these [-]                                          */
+    double mass;               /* [kg]                                                      */
+    double cg[3];              /* centre of mass at t = 0 [m]                               */
+    double inertia[3][3];      /* about cg, global axes, symmetric positive definite [kg m^2] */
+    double velocity[3];        /* initial velocity of the centre of mass [m/s]              */
+    double omega[3];           /* initial angular velocity [rad/s]                          */
+} fe_rigid_inertia;
 
 typedef struct {
     char name[FE_NAME_MAX];     /* unique part name                                        */
@@ -126,6 +141,7 @@ typedef struct {
     fe_section_desc section;    /* element type and its properties                         */
     fe_material_desc material;  /* constitutive model                                      */
     double initial_velocity[3]; /* of every node of the part [m/s]                         */
+    fe_rigid_inertia rigid;     /* rigid parts: given mass properties (rigid.given 0: none) */
 } fe_part_desc;
 
 /* degrees of freedom, as a mask for `fix` */
@@ -235,6 +251,7 @@ typedef struct {
     int gp_begin;       /* fully integrated hex: first of its 8 x nelem Gauss points in hex_gp */
     int body;           /* rigid part: its body (fe_rigid.c); -1 otherwise [-]          */
     int foam_begin;     /* foam hex: first of its points (1 or 8 per element) in foam_hist [-] */
+    fe_rigid_inertia rigid; /* rigid part: given mass properties (rigid.given 0: none)    */
 } fe_part;
 
 enum { FE_KIND_HEX, FE_KIND_SHELL, FE_KIND_TRUSS, FE_KIND_TET10, FE_NKIND };
@@ -261,6 +278,14 @@ typedef struct {
     double curve[FE_CURVE_MAX][2];
 } fe_load_curve;
 
+/* a pressure on a segment (LS-DYNA *LOAD_SEGMENT): p x scale(t) over the segment's current
+ * area, against its normal (right-hand rule over node[0..3]), shared equally by its nodes */
+typedef struct {
+    int node[4];           /* segment nodes (a triangle repeats its 3rd) [-]                */
+    double p;              /* pressure at scale 1 [Pa]                                      */
+    int load;              /* index of its load curve [-]                                  */
+} fe_pressure;
+
 /* the model's arrays: X(type, name, count (a size field), components, unit, what).
  * Drives the struct layout, allocation, freeing and the memory count (STYLE.md §4). */
 #define FE_MODEL_ARRAYS(X)                                                                         \
@@ -279,6 +304,7 @@ typedef struct {
     X(int, hex_part, nhex, 1, "-", "part of each hex")                                             \
     X(int, shell_node, nshell, 4, "-", "shell connectivity, counter-clockwise about the normal")   \
     X(int, shell_part, nshell, 1, "-", "part of each shell")                                       \
+    X(double, shell_t, nshell, 1, "m", "shell thickness (its own, else its section's)")            \
     X(int, truss_node, ntruss, 2, "-", "truss connectivity")                                       \
     X(int, truss_part, ntruss, 1, "-", "part of each truss")                                     \
     X(int, tet10_node, ntet10, 10, "-", "tet10 connectivity: corners 1-4, then mid-edges 12 23 31 14 24 34") \
@@ -313,6 +339,8 @@ typedef struct fe_model {
     fe_wall *wall;         /* (nwall)                                                     */
     fe_nodal_load *nodal_load; /* (nnodal_load)                                           */
     fe_load_curve *load_curve; /* (nload)                                                 */
+    int npressure;             /* pressure segments [-]                                   */
+    fe_pressure *pressure;     /* (npressure)                                             */
 
     fe_opts opts;
     double dt_initial;     /* stable step of the undeformed mesh, safety factor applied [s] */
@@ -352,6 +380,8 @@ typedef struct fe_model {
     int nfoam_ip;          /* integration points of foam hexes (1 or 8 per element) [-]    */
     struct fe_sliprings *sliprings; /* belt slip rings (fe_slipring.h), NULL if none      */
     /* kinematic walls with mass (fe_wall_kin.c): their slave nodes, wall by wall */
+    int nerode;            /* element erosion: nhex + nshell when a part has a failure
+                              strain (element e of kind k at e, nhex + e for shells), else 0 */
     int nwall_slave;       /* slave nodes of kinematic walls with mass, all walls [-]      */
     int *wall_slave;       /* (nwall_slave) node indices                                   */
     int wall_slave_off[FE_WALL_MAX + 1]; /* wall w's slaves: wall_slave_off[w] ..[w+1] [-]  */
@@ -385,6 +415,9 @@ mcs_status fe_builder_add_part(fe_builder *b, const fe_part_desc *d, int *index,
  * A shell with its 3rd and 4th node equal is a degenerate triangle. */
 mcs_status fe_builder_add_node(fe_builder *b, const double x[3], int *index, mcs_error *err);
 mcs_status fe_builder_add_elem(fe_builder *b, int part, const int *nodes, mcs_error *err);
+/* a shell of its own thickness [m] (> 0; the section's thickness is the others') */
+mcs_status fe_builder_add_shell(fe_builder *b, int part, const int nodes[4], double thickness,
+                                mcs_error *err);
 mcs_status fe_builder_add_boundary(fe_builder *b, const fe_boundary_desc *d, mcs_error *err);
 mcs_status fe_builder_fix_node(fe_builder *b, int node, unsigned fix, const double vel[3],
                                mcs_error *err);
@@ -394,6 +427,10 @@ mcs_status fe_builder_add_load(fe_builder *b, const fe_load_desc *d, mcs_error *
 /* one node's share of a load; curve as in fe_load_desc (ncurve 0: constant) */
 mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force[3], int ncurve,
                                      const double (*curve)[2], mcs_error *err);
+/* a pressure p [Pa] on segment nodes[4] (fe_pressure), times the curve (time [s], scale)
+ * (ncurve 0: constant) */
+mcs_status fe_builder_add_pressure(fe_builder *b, const int nodes[4], double p, int ncurve,
+                                   const double (*curve)[2], mcs_error *err);
 mcs_status fe_builder_add_wall(fe_builder *b, const fe_wall_desc *d, mcs_error *err);
 int fe_builder_nnode(const fe_builder *b);
 /* index of a part by name, -1 if none */

@@ -18,7 +18,10 @@
  * (at the prescribed velocity), any fixed rotation holds all three. Kinetic energy
  * 1/2 M V(n-1/2).V(n+1/2) + the mean of 1/2 L.w at n-1/2 and n+1/2; external work with the
  * trapezoidal weights of fe_integrate. Rigid parts feel penalty rigid walls (forces), not
- * kinematic ones (rejected at build). */
+ * kinematic ones (rejected at build).
+ * Given mass properties (fe_part_desc.rigid, LS-DYNA *PART_INERTIA) replace M, c and I0, and
+ * the given velocity and angular velocity (L = I0 w) the nodes' initial velocities; the nodes
+ * keep their own masses for the contact and wall stiffnesses. */
 #include "fe/fe_builder_impl.h" /* fe_kind_nnode */
 #include "fe/fe_elem.h"
 #include "fe/fe_joint.h"
@@ -44,6 +47,30 @@ static void inv3(const double a[3][3], double r[3][3])
             int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
             r[i][j] = (a[i1][j1] * a[i2][j2] - a[i1][j2] * a[i2][j1]) / d;
         }
+}
+
+/* body B of part p with its given mass, centre of mass and inertia: the nodes keep their
+ * masses (contact and wall stiffnesses use them), the body moves with the given ones */
+static mcs_status given_inertia(fe_model *m, const fe_part *p, fe_body *B, mcs_error *err)
+{
+    const fe_rigid_inertia *g = &p->rigid;
+    const double (*I)[3] = g->inertia;
+    double m2 = I[0][0] * I[1][1] - I[0][1] * I[1][0];
+    if (!(g->mass > 0) || !(I[0][0] > 0) || !(m2 > 0) || !(det3(I) > 0) ||
+        I[0][1] != I[1][0] || I[0][2] != I[2][0] || I[1][2] != I[2][1])
+        return MCS_ERR(err, MCS_ERR_RANGE,
+                       "fe: rigid part '%s': the given mass must be > 0 and the inertia "
+                       "symmetric positive definite",
+                       p->name);
+    m->mass_total += g->mass - B->mass;
+    B->mass = g->mass;
+    memcpy(B->x0, g->cg, sizeof B->x0);
+    memcpy(B->inertia0, g->inertia, sizeof B->inertia0);
+    for (int j = B->node_begin; j < B->node_end; j++)
+        for (int i = 0; i < 3; i++)
+            m->body_r0[3 * j + i] = m->node_x0[3 * m->body_node[j] + i] - B->x0[i];
+    inv3(B->inertia0, B->inertia0_inv);
+    return MCS_OK;
 }
 
 /* the nodes of each rigid part become one body; then extra nodes and nodal rigid bodies */
@@ -114,6 +141,14 @@ mcs_status fe_rigid_build(const fe_builder *bld, fe_model *m, mcs_error *err)
                            B->part >= 0 ? "part" : "body", pname);
         }
         for (int i = 0; i < 3; i++) B->x0[i] = mx[i] / B->mass;
+        if (B->part >= 0 && m->part[B->part].rigid.given) { /* LS-DYNA *PART_INERTIA */
+            mcs_status gst = given_inertia(m, &m->part[B->part], B, err);
+            if (gst) {
+                free(names);
+                return gst;
+            }
+            continue;
+        }
         double trace_scale = 0;
         for (int j = B->node_begin; j < B->node_end; j++) {
             int n = m->body_node[j];
@@ -243,16 +278,23 @@ void fe_rigid_reset(const fe_model *m, fe_state *s)
         memcpy(s->body_x + 3 * b, B->x0, sizeof B->x0);
         for (int i = 0; i < 9; i++) R[i] = i % 4 == 0;
         double p[3] = {0, 0, 0};
+        static const fe_rigid_inertia none = {0};
+        const fe_rigid_inertia *g = B->part >= 0 ? &m->part[B->part].rigid : &none;
         for (int j = B->node_begin; j < B->node_end; j++) {
             int n = m->body_node[j];
             for (int i = 0; i < 3; i++) p[i] += m->node_mass[n] * m->node_v0[3 * n + i];
         }
         for (int i = 0; i < 3; i++) {
-            V[i] = p[i] / B->mass;
-            L[i] = 0;
+            V[i] = g->given ? g->velocity[i] : p[i] / B->mass;
+            /* given: L = I0 w at t = 0 (R = 1) */
+            L[i] = g->given && !(B->fix & FE_DOF_ROT)
+                       ? B->inertia0[i][0] * g->omega[0] + B->inertia0[i][1] * g->omega[1] +
+                             B->inertia0[i][2] * g->omega[2]
+                       : 0;
             if (B->fix & (1u << i)) V[i] = B->vfix[i];
         }
-        for (int j = B->node_begin; j < B->node_end && !(B->fix & FE_DOF_ROT); j++) {
+        for (int j = B->node_begin; j < B->node_end && !(B->fix & FE_DOF_ROT) && !g->given;
+             j++) {
             int n = m->body_node[j];
             double dv[3], c[3];
             for (int i = 0; i < 3; i++) dv[i] = m->node_v0[3 * n + i] - V[i];

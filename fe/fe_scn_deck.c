@@ -12,7 +12,7 @@
 #include <string.h>
 
 mcs_status fe_scn_deck_add(fe_builder *b, const mcs_node *fe, const mcs_node *sim, double *end_time,
-                           mcs_error *err)
+                           fe_opts *opts, mcs_error *err)
 {
     const mcs_node *kn = fe_scn_get(fe, "keyword");
     const char *name = mcs_node_str(kn), *from = mcs_node_file(kn);
@@ -32,6 +32,13 @@ mcs_status fe_scn_deck_add(fe_builder *b, const mcs_node *fe, const mcs_node *si
     mcs_error kerr = {0};
     mcs_status st = fe_kw_read(path, &o, &d, &kerr);
     if (!st) st = fe_kw_add_deck(b, d, &kerr);
+    fe_opts deck = *opts; /* *CONTROL_TIMESTEP, under the scenario's own keys */
+    if (!st) st = fe_kw_deck_opts(d, &deck, &kerr);
+    if (!st && !fe_scn_given(sim, "time_step_scale")) opts->dt_scale = deck.dt_scale;
+    if (!st && !fe_scn_given(fe, "mass_scaling")) {
+        opts->mass_scaling_dt = deck.mass_scaling_dt;
+        opts->mass_scaling_interval = deck.mass_scaling_interval;
+    }
     if (!st && !fe_scn_given(sim, "end_time")) {
         if (!(d->end_time > 0))
             st = MCS_ERR(&kerr, MCS_ERR_KEY,

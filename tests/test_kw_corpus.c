@@ -95,11 +95,13 @@ static void check_unknown_many(const fe_kw_deck *d)
     CHECK(strcmp(d->unknown[2].name, "DATABASE_MATSUM") == 0 && d->unknown[2].count == 1);
 }
 
-/* param_dup.k: X = 1 then 2: the first kept (node 1 x = 1); after DFLAG 2, X = 3 is taken */
+/* param_dup.k: X = 1 then 2: the first kept (node 1 x = 1); after DFLAG 2, X = 3 is taken
+ * (node 2); after DFLAG 5, X = 4 is not (node 3 x = 3); after DFLAG 4, X = 5 is (node 4) */
 static void check_param_dup(const fe_kw_deck *d)
 {
-    const double *x1 = node_at(d, 1), *x2 = node_at(d, 2);
-    CHECK(x1 && x1[0] == 1 && x2 && x2[0] == 3);
+    const double *x1 = node_at(d, 1), *x2 = node_at(d, 2), *x3 = node_at(d, 3),
+                 *x4 = node_at(d, 4);
+    CHECK(x1 && x1[0] == 1 && x2 && x2[0] == 3 && x3 && x3[0] == 3 && x4 && x4[0] == 5);
 }
 
 /* contact_plates.k (mm-s-t), by hand: three contacts (all parts, 2 on 1 with FS 0.3, nodes of
@@ -125,6 +127,14 @@ static void check_contact_plates(const fe_kw_deck *d)
     CHECK(fabs(d->end_time - 1.5e-3) < 1e-15);
 }
 
+/* param_formats.k: LONGX = 2.5, LONGN = 4 (long format), FREE = 1.25, K = 9 (free format):
+ * node &longn = 4 at (2.5, 1.25, -9) */
+static void check_param_formats(const fe_kw_deck *d)
+{
+    const double *x = node_at(d, 4);
+    CHECK(x && x[0] == 2.5 && x[1] == 1.25 && x[2] == -9);
+}
+
 /* contact_segment_set.k: segment set 3 = the block's bottom face (5 6 7 8), node set 4 = its
  * nodes; three contacts on them (the model's passes: tests/test_kw_contact.c) */
 static void check_contact_sets(const fe_kw_deck *d)
@@ -133,6 +143,17 @@ static void check_contact_sets(const fe_kw_deck *d)
     if (d->ncontact != 3) return;
     CHECK(d->contact[0].sstyp == 0 && d->contact[0].ssid == 3 && d->contact[1].sstyp == 4 &&
           d->contact[2].type == FE_KW_CT_SINGLE && d->contact[2].sstyp == 0);
+}
+
+/* contact_mpp.k (mm-s-t): SLSFAC 0.075, SHLTHK 1; contact 1000001 "all" (single surface, all
+ * parts, FS 0.125) and 1000002 (nodes of part 1 on part 1), their MPP cards read over */
+static void check_contact_mpp(const fe_kw_deck *d)
+{
+    CHECK(d->slsfac == 0.075 && d->shlthk == 1 && d->ncontact == 2);
+    if (d->ncontact != 2) return;
+    CHECK(d->contact[0].id == 1000001 && strcmp(d->contact[0].title, "all") == 0);
+    CHECK(d->contact[0].sstyp == 5 && d->contact[0].fs == 0.125 && d->contact[0].dt == 0);
+    CHECK(d->contact[1].id == 1000002 && d->contact[1].type == FE_KW_CT_N2S);
 }
 
 static const corpus_row corpus[] = {
@@ -144,7 +165,8 @@ static const corpus_row corpus[] = {
      "*NODE: field X: parameter 'THIK' is not defined", "param_undefined.k:7:20:", NULL},
     {"param_bad_expr.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*PARAMETER_EXPRESSION: parameter 'A'",
      "param_bad_expr.k:3:", NULL},
-    {"param_dup.k", NULL, READ_ONLY, 2, {0}, 0, 0, NULL, NULL, check_param_dup},
+    {"param_formats.k", NULL, READ_ONLY, 1, {0}, 0, 0, NULL, NULL, check_param_formats},
+    {"param_dup.k", NULL, READ_ONLY, 4, {0}, 0, 0, NULL, NULL, check_param_dup},
     {"param_dup_refused.k", NULL, READ_ONLY, 0, {0}, 0, 0,
      "parameter 'N' defined twice (first at " CD "param_dup_refused.k:6",
      "param_dup_refused.k:6:21:", NULL},
@@ -162,15 +184,30 @@ static const corpus_row corpus[] = {
     {"contact_plates.k", "mm-s-t", BUILD_DECK, 8, {2}, 2, 1, NULL, NULL, check_contact_plates},
     {"contact_segment_set.k", "mm-s-t", BUILD_DECK, 12, {1, 1}, 2, 1, NULL, NULL,
      check_contact_sets},
+    {"contact_mpp.k", "mm-s-t", BUILD_DECK, 4, {1}, 1, 1, NULL, NULL, check_contact_mpp},
     {"contact_damped.k", NULL, READ_ONLY, 0, {0}, 0, 0,
      "*CONTACT_AUTOMATIC_SINGLE_SURFACE: field VDC", "contact_damped.k:7:41:", NULL},
     /* unknown and refused keywords */
     {"unknown_many.k", NULL, READ_ONLY, 1, {0}, 0, 0, NULL, NULL, check_unknown_many},
     {"sph_refused.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*SECTION_SPH: not supported (SPH",
      "sph_refused.k:6:1:", NULL},
+    {"skipped_set.k", NULL, BUILD_DECK, 8, {0, 1}, 1, 1,
+     "node set 5 is not defined (skipped as not supported: *SET_NODE_GENERAL at",
+     "skipped_set.k:11)", NULL},
     {"skipped_element.k", NULL, BUILD_PART1, 2, {0}, 1, 1,
      "no element has part ID 1 (skipped as not supported: *ELEMENT_SEATBELT at",
      "skipped_element.k:14)", NULL},
+    /* elements, sections, parts, controls (values and closed forms: test_fe_kw_elem.c) */
+    {"shell_thickness.k", "mm-s-t", BUILD_DECK, 9, {4}, 1, 1, NULL, NULL, NULL},
+    {"tshell.k", NULL, BUILD_DECK, 0, {0}, 0, 0, "*ELEMENT_TSHELL 1 (part 1): thick shells",
+     "tshell.k:25:", NULL},
+    {"solid_user.k", NULL, BUILD_DECK, 0, {0}, 0, 0, "*SECTION_SOLID 1: ELFORM 102",
+     "solid_user.k:11:", NULL},
+    {"beams.k", "mm-s-t", BUILD_DECK, 0, {0}, 0, 0, "*SECTION_BEAM 1: ELFORM 2",
+     "beams.k:13:", NULL},
+    {"part_inertia.k", NULL, BUILD_DECK, 16, {0, 2}, 2, 2, NULL, NULL, NULL},
+    {"hourglass.k", NULL, BUILD_DECK, 40, {0, 5}, 5, 1, NULL, NULL, NULL},
+    {"timestep.k", NULL, BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, NULL},
 };
 
 #define NROW ((int)(sizeof corpus / sizeof corpus[0]))

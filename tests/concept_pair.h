@@ -99,9 +99,9 @@ static double check_belt(mcs_results *h, const char *name, double t_fire, const 
             if (tau > 0.0152) end_err = fmax(end_err, fabs(pre.v[i] - eq3(tau)));
             fpk = fmax(fpk, f.v[i]);
             /* a dip of one sample (>= 85 %: a belt node slipping over the thigh) keeps the run */
-            int on = f.v[i] >= 0.95 * F_LIM ||
-                     (f.v[i] >= 0.85 * F_LIM && f.v[i - 1] >= 0.95 * F_LIM && i + 1 < f.n &&
-                      f.v[i + 1] >= 0.95 * F_LIM);
+            int on =
+                f.v[i] >= 0.95 * F_LIM || (f.v[i] >= 0.85 * F_LIM && f.v[i - 1] >= 0.95 * F_LIM &&
+                                           i + 1 < f.n && f.v[i + 1] >= 0.95 * F_LIM);
             run = on ? run + dt : 0;
             plateau = fmax(plateau, run);
         }

@@ -31,7 +31,7 @@
     X(compare, "mcrash compare REF CMP | OUT.h5 --stages A,B [--method iso18571|cora] [--json]",   \
       "objective rating of one curve against another")                                             \
     X(export, "mcrash export OUT.h5 --xdmf [FILE.xmf] [--stride N] | --xdmf2 [FILE.xmf] | "         \
-              "--csv DIR | --mme DIR | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long|--i10]",                                                  \
+              "--csv DIR | --mme DIR [--stage N] | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long|--i10]",                                                  \
       "write a results file in other formats (XDMF for ParaView, CSV, LS-DYNA keyword mesh)")                            \
     X(report, "mcrash report OUT.h5 -o DIR", "HTML page with plots")                               \
     X(study, "mcrash study STUDY.yaml [-o STUDY.h5]", "design of experiments")

@@ -608,7 +608,8 @@ static const mcs_skey plastic_keys[] = {
     /* true stress vs. effective plastic strain (LS-DYNA *MAT_024 LCSS) */
     C("hardening", NONE, PRS, 1, GE, 0, "hardening curve [[plastic strain, stress Pa], ...]"),
     Q("tangent_modulus", PRS, GE, 0, 0, "bilinear hardening modulus [Pa] (without a curve)"),
-    Q("failure_strain", NONE, GT, 0, 0, "effective plastic strain at erosion"),
+    Q("failure_strain", NONE, GT, 0, 0,
+      "effective plastic strain that deletes an element (erosion; one-point hex, shell)"),
     /* strain-rate factor 1 + (rate/C)^(1/p) on the flow stress (mild steel: C 40.4/s, p 5) */
     Q("cowper_symonds_c", MCS_DIM_FREQ, GT, 0, 0, "Cowper-Symonds C [1/s]"),
     Q("cowper_symonds_p", NONE, GT, 0, 0, "Cowper-Symonds p"),

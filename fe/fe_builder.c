@@ -175,6 +175,11 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
         m->model != FE_MAT_FABRIC && m->model != FE_MAT_FOAM && m->model != FE_MAT_RIGID &&
         m->model != FE_MAT_NULL)
         return MCS_ERR(err, MCS_ERR_UNSUPPORTED, "fe: part '%s': material.model not built yet", n);
+    if (m->failure_strain != 0 && m->model != FE_MAT_ELASTIC_PLASTIC)
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "fe: part '%s': material.failure_strain (element erosion) needs material "
+                       "model elastic_plastic",
+                       n);
     if ((m->model == FE_MAT_FABRIC) != (d->section.type == FE_SECTION_MEMBRANE))
         return MCS_ERR(err, MCS_ERR_TYPE,
                        "fe: part '%s': a membrane section takes material.model fabric, and "
@@ -217,6 +222,17 @@ static mcs_status check_material(const fe_part_desc *d, mcs_error *err)
     if (m->cowper_symonds_c < 0 || (m->cowper_symonds_c > 0 && !(m->cowper_symonds_p > 0)))
         return MCS_ERR(err, MCS_ERR_RANGE,
                        "fe: part '%s': material.cowper_symonds: need c >= 0 and p > 0", n);
+    if (!(m->failure_strain >= 0) || !isfinite(m->failure_strain))
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: part '%s': material.failure_strain must be >= 0",
+                       n);
+    const fe_section_desc *sc = &d->section;
+    if (m->failure_strain > 0 &&
+        !(sc->type == FE_SECTION_SHELL ||
+          (sc->type == FE_SECTION_SOLID && sc->formulation == FE_HEX_ONE_POINT)))
+        return MCS_ERR(err, MCS_ERR_UNSUPPORTED,
+                       "fe: part '%s': element erosion (material.failure_strain) is built for "
+                       "one-point hexahedra and shells only",
+                       n);
     return MCS_OK;
 }
 
@@ -360,6 +376,27 @@ mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force
     d.ncurve = ncurve;
     if (ncurve) memcpy(d.curve, curve, (size_t)ncurve * sizeof d.curve[0]);
     return push_load(b, node, &d, err);
+}
+
+mcs_status fe_builder_add_pressure(fe_builder *b, const int nodes[4], double p, int ncurve,
+                                   const double (*curve)[2], mcs_error *err)
+{
+    for (int i = 0; i < 4; i++)
+        if (nodes[i] < 0 || nodes[i] >= b->nnode)
+            return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure on node %d: no such node",
+                           nodes[i]);
+    if (nodes[0] == nodes[1] || nodes[1] == nodes[2] || nodes[0] == nodes[2])
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure segment: nodes 1, 2, 3 must differ");
+    if (ncurve < 0 || ncurve > FE_CURVE_MAX)
+        return MCS_ERR(err, MCS_ERR_RANGE, "fe: pressure: curve needs 0..%d points", FE_CURVE_MAX);
+    fe_load_desc d;
+    memset(&d, 0, sizeof d);
+    d.force[0] = p;
+    d.ncurve = ncurve;
+    if (ncurve) memcpy(d.curve, curve, (size_t)ncurve * sizeof d.curve[0]);
+    mcs_status st = push_load(b, -2, &d, err);
+    if (!st) memcpy(b->load[b->nload - 1].seg, nodes, sizeof b->load[0].seg);
+    return st;
 }
 
 mcs_status fe_builder_add_wall(fe_builder *b, const fe_wall_desc *d, mcs_error *err)

@@ -12,8 +12,9 @@ typedef struct {
 } fe_node_fix;
 
 typedef struct {
-    int node;        /* one node, or -1: the part/where selection of d      */
-    fe_load_desc d;
+    int node;        /* one node, or -1: the part/where selection of d; -2: a pressure */
+    fe_load_desc d;  /* a pressure's: force[0] the pressure [Pa], its curve             */
+    int seg[4];      /* a pressure's segment nodes                                      */
 } fe_bload;
 
 struct fe_builder {

@@ -311,6 +311,7 @@ static void entry_forces(const fe_model *m, fe_state *s, int e, fe_contact_slot 
         for (int k = b0; k < b1; k++) {
             int sg = item[k];
             if (!fe_contact_in_box(cs->seg_box + 6 * sg, x)) continue;
+            if (fe_contact_seg_gone(m, s, sg)) continue; /* eroded */
             const int *q = c->seg_node + 4 * sg;
             /* a bucket also holds the node's own segments and (self contact) its
              * neighbours', which its candidate list already left out */

@@ -179,6 +179,8 @@ typedef struct fe_contact_model {
     unsigned char *seg_solid;    /* (nseg) 1: hex face (one-sided), 0: shell (two-sided)       */
     double *seg_ht;              /* (nseg) half thickness of the surface offset [m]            */
     double *seg_k;               /* (nseg) penalty stiffness (LS-DYNA form) [N/m]              */
+    int *seg_elem;               /* (nseg) its element in the erosion flags (hex e, shell
+                                    nhex + e; fe_state.elem_gone): an eroded one is left out  */
     int *ent_node;               /* (nent) slave node of each entry                            */
     double *ent_ht;              /* (nent) half shell thickness at the slave node (0 solid) [m] */
     int *nbr_off, *nbr;          /* (nnode + 1), (...) nodes sharing an element with a node    */

@@ -247,17 +247,19 @@ static int grow_arrays(cbuild *cb, int nseg, int nent)
     fe_contact_model *c = cb->c;
     if (nseg > cb->cap_seg) {
         int n = nseg * 2;
-        void *p[5] = {realloc(c->seg_node, sizeof(int) * 4 * (size_t)n),
+        void *p[6] = {realloc(c->seg_node, sizeof(int) * 4 * (size_t)n),
                       realloc(c->seg_part, sizeof(int) * (size_t)n),
                       realloc(c->seg_solid, (size_t)n),
                       realloc(c->seg_ht, sizeof(double) * (size_t)n),
-                      realloc(c->seg_k, sizeof(double) * (size_t)n)};
+                      realloc(c->seg_k, sizeof(double) * (size_t)n),
+                      realloc(c->seg_elem, sizeof(int) * (size_t)n)};
         if (p[0]) c->seg_node = p[0];
         if (p[1]) c->seg_part = p[1];
         if (p[2]) c->seg_solid = p[2];
         if (p[3]) c->seg_ht = p[3];
         if (p[4]) c->seg_k = p[4];
-        for (int i = 0; i < 5; i++)
+        if (p[5]) c->seg_elem = p[5];
+        for (int i = 0; i < 6; i++)
             if (!p[i]) return -1;
         cb->cap_seg = n;
     }
@@ -282,8 +284,9 @@ static int in_list(int part, const int *list, int n)
 }
 
 static void set_seg(fe_contact_model *c, int sg, const int nodes[4], int part, int solid,
-                    double ht, double k)
+                    double ht, double k, int elem)
 {
+    c->seg_elem[sg] = elem;
     memcpy(c->seg_node + 4 * sg, nodes, 4 * sizeof(int));
     c->seg_part[sg] = part;
     c->seg_solid[sg] = (unsigned char)solid;
@@ -374,7 +377,7 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
                 double ht = p->section.type == FE_SECTION_MEMBRANE
                                 ? 0.5 * fabric_contact_thickness(d, m->shell_t[e])
                                 : 0.5 * tscale * m->shell_t[e];
-                set_seg(c, c->nseg++, q, ip, 0, ht, scale * K * A / dmax);
+                set_seg(c, c->nseg++, q, ip, 0, ht, scale * K * A / dmax, m->nhex + e);
             } else if (p->elem_kind == FE_KIND_HEX) {
                 double xe[8][3], bb[8][3], aa[8][3];
                 const int *h = m->hex_node + 8 * e;
@@ -402,7 +405,7 @@ static mcs_status add_segments(cbuild *cb, const fe_model *m, const int *list, i
                     if (grow_arrays(cb, c->nseg + 1, 0))
                         return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory (contact segments)");
                     /* LS-DYNA solids: k = s K A^2 / V */
-                    set_seg(c, c->nseg++, q, ip, 1, 0, scale * K * A * A / V);
+                    set_seg(c, c->nseg++, q, ip, 1, 0, scale * K * A * A / V, e);
                 }
             }
         }
@@ -726,7 +729,7 @@ void fe_contact_model_free(fe_model *m)
     fe_contact_model *c = m->contact;
     if (!c) return;
     free(c->iface), free(c->pass), free(c->seg_node), free(c->seg_part), free(c->seg_solid);
-    free(c->seg_ht), free(c->seg_k);
+    free(c->seg_ht), free(c->seg_k), free(c->seg_elem);
     free(c->ent_node), free(c->ent_ht), free(c->nbr_off), free(c->nbr);
     for (int i = 0; c->ell && i < c->nell; i++) mcs_curve_destroy(&c->ell[i].law_curve);
     free(c->touch), free(c->ell), free(c->ell_node), free(c->ell_ht), free(c->area_off);
@@ -796,7 +799,7 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
         c->dt0 = m->dt_initial;
         c->bytes += sizeof *c + sizeof *c->iface * (size_t)c->nif +
                     sizeof *c->pass * (size_t)c->npass +
-                    (size_t)c->nseg * (4 * sizeof(int) + sizeof(int) + 1 + 2 * sizeof(double)) +
+                    (size_t)c->nseg * (4 * sizeof(int) + 2 * sizeof(int) + 1 + 2 * sizeof(double)) +
                     (size_t)c->nent * (sizeof(int) + sizeof(double)) +
                     sizeof(int) * ((size_t)c->nnode_touch + (size_t)c->nell_node) +
                     sizeof(double) * (size_t)c->nell_node +

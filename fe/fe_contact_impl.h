@@ -64,6 +64,12 @@ static inline double fe_contact_seg_depth(const fe_contact_model *c, const fe_mo
     return 0.5 * sqrt(a);
 }
 
+/* whether segment sg's element was deleted by erosion before this step (fe_stages.c) */
+static inline int fe_contact_seg_gone(const fe_model *m, const fe_state *s, int sg)
+{
+    return m->nerode > 0 && s->elem_gone[m->contact->seg_elem[sg]];
+}
+
 /* whether x lies in a (float) grown box */
 static inline int fe_contact_in_box(const float *b, const double x[3])
 {

@@ -113,9 +113,14 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
     const double mod = p->lambda + 2 * p->mu, qhg = p->hg_coef;
     const int visc = p->section.hourglass == FE_HG_VISCOUS;
     const int cs = p->material.cowper_symonds_c > 0;
-    double e_int = 0, e_hg = 0, e_diss = 0, dtmin = INFINITY;
-    int dtel = -1, bad = -1;
+    const double fail = p->material.failure_strain; /* erosion (m->nerode > 0 then) */
+    double e_int = 0, e_hg = 0, e_diss = 0, dtmin = INFINITY, e_erode = 0;
+    int dtel = -1, bad = -1, nerode = 0;
     for (int e = e0; e < e1; e++) {
+        if (fail > 0 && s->elem_dead[e]) { /* deleted: no forces, no step limit */
+            memset(s->slot_f + 3 * (8 * e), 0, 24 * sizeof(double));
+            continue;
+        }
         const int *c = m->hex_node + 8 * e;
         double xe[8][3], ve[8][3], b[8][3], a[8][3];
         gather8(s->node_x, c, xe);
@@ -161,6 +166,11 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
         for (int i = 0; i < 3; i++) w += (old[i] + sg[i]) * de[i];
         for (int i = 3; i < 6; i++) w += 2 * (old[i] + sg[i]) * de[i];
         e_int += 0.5 * w * vol;
+        int erode = 0;
+        if (fail > 0) {
+            s->elem_eint[e] += 0.5 * w * vol;
+            erode = s->hex_epsp[e] >= fail; /* its forces act this step, then it is gone */
+        }
         /* bulk viscosity in compression */
         double len = fe_hex_length(xe, vol), q = 0, evr = 0;
         if (dt > 0 && dv < 0) {
@@ -217,7 +227,14 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
             for (int i = 0; i < 3; i++)
                 f[3 * n + i] += fh[0][i] * gam[0][n] + fh[1][i] * gam[1][n] +
                                 fh[2][i] * gam[2][n] + fh[3][i] * gam[3][n];
+        if (erode) {
+            s->elem_dead[e] = 1;
+            e_erode += s->elem_eint[e];
+            nerode++;
+        }
     }
+    acc->e_erode = e_erode;
+    acc->nerode = nerode;
     acc->e_int = e_int;
     acc->e_hg = e_hg;
     acc->e_diss = e_diss;
@@ -228,7 +245,7 @@ void fe_hex_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_chu
 
 void fe_hex_part(const fe_model *m, fe_state *s, int ip)
 {
-    fe_chunk_acc acc;
+    fe_chunk_acc acc = {0};
     fe_hex_range(m, s, ip, m->part[ip].elem_begin, m->part[ip].elem_end, &acc);
     fe_chunk_commit(s, ip, &acc);
 }

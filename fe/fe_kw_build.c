@@ -146,6 +146,7 @@ static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_ma
     m->yield_stress = k->sigy;
     m->cowper_symonds_c = k->c;
     m->cowper_symonds_p = k->c > 0 ? k->p : 0;
+    m->failure_strain = k->fail; /* FAIL: element erosion */
     return hardening(dk, k, m, err);
 }
 
@@ -572,6 +573,7 @@ mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
     char(*names)[FE_NAME_MAX] = calloc((size_t)(dk->npart ? dk->npart : 1), FE_NAME_MAX);
     mcs_status st = map && names ? MCS_OK : MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
     for (int i = 0; i < dk->nnode && map; i++) map[i] = -1;
+    int nempty = 0;
     for (int k = 0; k < dk->npart && !st; k++) {
         const fe_kw_part *p = &dk->part[k];
         fe_part_desc d = fe_part_desc_default();
@@ -590,6 +592,10 @@ mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
             mcs_log(MCS_LOG_WARN, "%s:%d: warning: *PART %d has no elements: skipped%s",
                     dk->file[p->loc.file], p->loc.line, p->id,
                     fe_kw_skipped(dk, "ELEMENT_", skip, sizeof skip));
+            /* every part empty: say why here rather than "the model has no parts" later */
+            if (++nempty == dk->npart)
+                st = MCS_ERR(err, MCS_ERR_KEY, "%s: error: no *PART has elements%s", dk->file[0],
+                             fe_kw_skipped(dk, "ELEMENT_", skip, sizeof skip));
             continue;
         }
         if (!st) st = fe_kw_add_part(b, dk, p->id, &d, 1, map, NULL, err);

@@ -152,9 +152,11 @@ static mcs_status set_side(const kb *c, const fe_kw_contact *k, const char *what
     for (int i = 0; i < dk->nsegset && typ == 0; i++)
         if (dk->segset[i].id == id) ss = &dk->segset[i];
     const fe_kw_set *ns = typ == 4 ? fe_kw_find_set(dk, id, 0) : NULL;
+    char skip[400];
     if (!ss && !ns)
-        return at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: %s %d is not defined", ct_name(k),
-                  what, typ == 0 ? "segment set" : "node set", id);
+        return at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: %s %d is not defined%s",
+                  ct_name(k), what, typ == 0 ? "segment set" : "node set", id,
+                  fe_kw_skipped(dk, "SET_", skip, sizeof skip));
     const int nn = ss ? 4 * ss->n : ns->n;
     s->node = malloc(sizeof(int) * (size_t)(nn ? nn : 1));
     s->face = ss ? malloc(sizeof(int) * (size_t)(nn ? nn : 1)) : NULL;
@@ -224,9 +226,11 @@ static mcs_status side_parts(const kb *c, const fe_kw_contact *k, const char *wh
     const fe_kw_set *set = NULL;
     if ((typ == 2 || typ == 6) && !(single && id == 0)) {
         set = fe_kw_find_set(dk, id, 1);
-        if (!set)
-            return at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: part set %d is not defined",
-                      ct_name(k), what, id);
+        if (!set) {
+            char skip[400];
+            return at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: part set %d is not defined%s",
+                      ct_name(k), what, id, fe_kw_skipped(dk, "SET_", skip, sizeof skip));
+        }
     }
     if (typ == 3 && !(single && id == 0)) {
         int pk = deck_part_index(dk, id);
@@ -383,9 +387,10 @@ static mcs_status motion_velocity(const kb *c, const fe_kw_pmotion *m, double *v
 {
     const fe_kw_deck *dk = c->dk;
     const fe_kw_curve *cv = fe_kw_find_curve(dk, m->lcid);
+    char skip[400];
     if (!cv)
-        return at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: LCID %d is not defined", pm_name(m->on),
-                  m->lcid);
+        return at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: LCID %d is not defined%s", pm_name(m->on),
+                  m->lcid, fe_kw_skipped(dk, "DEFINE_", skip, sizeof skip));
     double ymax = 0, k = 0;
     for (int i = 0; i < cv->n; i++)
         ymax = fmax(ymax, fabs(cv->xy[2 * i + 1]));
@@ -455,9 +460,10 @@ static mcs_status add_motion(const kb *c, const fe_kw_pmotion *m)
         return st ? st : fix_nodes(c, m, &node, 1, v);
     }
     const fe_kw_set *s = fe_kw_find_set(dk, m->id, 0);
+    char skip[400];
     if (!s)
-        return at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: node set %d is not defined",
-                  pm_name(m->on), m->id);
+        return at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: node set %d is not defined%s",
+                  pm_name(m->on), m->id, fe_kw_skipped(dk, "SET_", skip, sizeof skip));
     for (int i = 0; i < s->n && !st; i++) {
         int node = -1;
         st = node_of(c, s->ids[i], m->loc, pm_name(m->on), &node);
@@ -472,12 +478,14 @@ static mcs_status add_load(const kb *c, const fe_kw_load *l)
     const char *kw = l->segment == 1 ? "LOAD_SEGMENT"
                      : l->segment    ? "LOAD_NODE_SET"
                                      : "LOAD_NODE_POINT";
-    if (l->segment == 1)
+    if (l->segment == 1 && l->at != 0)
         return at(dk, l->loc, c->err, MCS_ERR_UNSUPPORTED,
-                  "*LOAD_SEGMENT: a pressure on a segment is not built (the kernel's loads are "
-                  "nodal forces of fixed direction; a pressure follows the segment)");
+                  "*LOAD_SEGMENT: field AT: an arrival time is not built (leave 0)");
     const fe_kw_curve *cv = fe_kw_find_curve(dk, l->lcid);
-    if (!cv) return at(dk, l->loc, c->err, MCS_ERR_KEY, "*%s: LCID %d is not defined", kw, l->lcid);
+    char skip[400];
+    if (!cv)
+        return at(dk, l->loc, c->err, MCS_ERR_KEY, "*%s: LCID %d is not defined%s", kw, l->lcid,
+                  fe_kw_skipped(dk, "DEFINE_", skip, sizeof skip));
     if (cv->n > FE_CURVE_MAX)
         return at(dk, l->loc, c->err, MCS_ERR_RANGE,
                   "*%s: curve %d has %d points; a load takes "
@@ -486,11 +494,26 @@ static mcs_status add_load(const kb *c, const fe_kw_load *l)
     double curve[FE_CURVE_MAX][2], f[3] = {0, 0, 0};
     for (int i = 0; i < cv->n; i++)
         curve[i][0] = cv->xy[2 * i] * dk->unit[1], curve[i][1] = cv->xy[2 * i + 1];
+    if (l->segment == 1) { /* a pressure SF x curve(t) [force / length^2], follows the segment */
+        int q[4];
+        for (int j = 0; j < 4; j++) {
+            mcs_status st = node_of(c, l->node[j] ? l->node[j] : l->node[2], l->loc, kw, &q[j]);
+            if (st) return st;
+            if (q[j] < 0)
+                return at(dk, l->loc, c->err, MCS_ERR_KEY,
+                          "*LOAD_SEGMENT: node %d belongs to no element", l->node[j]);
+        }
+        mcs_error kerr = {0};
+        mcs_status st = fe_builder_add_pressure(c->b, q, l->sf * kw_u_stress(dk), cv->n,
+                                                (const double(*)[2])curve, &kerr);
+        return st ? at(dk, l->loc, c->err, st, "*LOAD_SEGMENT: %s", kerr.msg) : MCS_OK;
+    }
     /* force unit: mass x length / time^2 */
     f[l->dof - 1] = l->sf * dk->unit[2] * dk->unit[0] / (dk->unit[1] * dk->unit[1]);
     const fe_kw_set *s = l->segment == 2 ? fe_kw_find_set(dk, l->nid, 0) : NULL;
     if (l->segment == 2 && !s)
-        return at(dk, l->loc, c->err, MCS_ERR_KEY, "*%s: node set %d is not defined", kw, l->nid);
+        return at(dk, l->loc, c->err, MCS_ERR_KEY, "*%s: node set %d is not defined%s", kw, l->nid,
+                  fe_kw_skipped(dk, "SET_", skip, sizeof skip));
     int n = s ? s->n : 1;
     for (int i = 0; i < n; i++) { /* LOAD_NODE_SET: each node of the set takes the load */
         int node = -1;

@@ -36,7 +36,7 @@ static int blank_card(const kw_card *cd)
 }
 
 static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
+    __attribute__((format(printf, 3, 4), unused));
 static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
 {
     if (c->o->quiet) return;
@@ -412,8 +412,10 @@ static mcs_status h_mat_plp(kw_ctx *c, const kw_card *cd, int n)
         TRY(kw_real(c, &cd[i], &KW_L10, 6, "FAIL", 0, &fail));
         m->sigy *= kw_u_stress(c->d);
         m->etan *= kw_u_stress(c->d);
-        if (fail > 0 && fail < 1e20)
-            warn(c, &cd[i], "FAIL = %g ignored: element erosion is not built", fail);
+        if (fail < 0)
+            return unsupported_field(c, &cd[i], &KW_L10, 6, "FAIL",
+                                     "a user failure subroutine (FAIL < 0) is not built");
+        m->fail = fail < 1e20 ? fail : 0; /* element erosion at this plastic strain */
         TRY(kw_real(c, &cd[i + 1], &KW_L10, 0, "C", 0, &m->c));
         TRY(kw_real(c, &cd[i + 1], &KW_L10, 1, "P", 0, &m->p));
         TRY(kw_int(c, &cd[i + 1], &KW_L10, 2, "LCSS", 0, &m->lcss));

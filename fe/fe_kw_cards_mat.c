@@ -115,10 +115,8 @@ mcs_status kw_h_mat_pk(kw_ctx *c, const kw_card *cd, int n)
                           "field VP: %g: the viscoplastic rate formulation is not built (VP = 0 "
                           "scales the yield stress by the Cowper-Symonds factor)",
                           w[3]);
-        if (m->fail > 0)
-            return refuse(c, &cd[i + 1], 2,
-                          "field FS: %g: element erosion (failure strain) is not built yet",
-                          m->fail);
+        if (m->fail < 0)
+            return refuse(c, &cd[i + 1], 2, "field FS: %g: a failure strain is >= 0", m->fail);
         if (!(m->c > 0 && m->p > 0)) m->c = m->p = 0; /* SRC or SRP 0: no rate effects */
         i += 2;
     }
@@ -341,6 +339,7 @@ int kw_mat_desc(const fe_kw_deck *dk, const fe_kw_mat *k, fe_material_desc *m, m
         m->yield_stress = k->sigy;
         m->cowper_symonds_c = k->c;
         m->cowper_symonds_p = k->p;
+        m->failure_strain = k->fail; /* FS: element erosion */
         if (!(k->sigy > 0)) {
             *st = at(dk, k->loc, err, MCS_ERR_RANGE, "*MAT_PLASTIC_KINEMATIC %d: SIGY must be > 0",
                      k->id);

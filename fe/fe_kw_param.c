@@ -6,8 +6,9 @@
  * file read after it, a _LOCAL one in the file that defines it and the files it includes, until
  * that file ends; a local one hides a global one of the same name. Names are case-insensitive.
  * A second definition of a name in the same scope follows *PARAMETER_DUPLICATION's DFLAG:
- * 1 (the default) warn and keep the first, 2 warn and take the new, 3 refuse, 4 keep the first
- * silently, 5 take the new silently. */
+ * 1 (the default) warn and keep the first, 2 warn and take the new, 3 refuse, 4 take the new
+ * silently, 5 keep the first silently (the DFLAG values of ansys/pydyna's keyword class
+ * ParameterDuplication, which quotes the LS-DYNA manual). */
 #include "fe/fe_kw_impl.h"
 
 #include <ctype.h>
@@ -119,7 +120,7 @@ static mcs_status define(kw_ctx *c, const kw_card *cd, int col, const char *name
                 "is used",
                 c->d->file[cd->file], cd->line, c->kw, name, c->d->file[old->loc.file],
                 old->loc.line, flag == 1 ? "first" : "new");
-    if (old && (flag == 1 || flag == 4)) return MCS_OK;
+    if (old && (flag == 1 || flag == 5)) return MCS_OK;
     kw_param *q = old;
     if (!q) q = kw_push((void **)&c->par->p, &c->par->n, &c->par->cap, sizeof *q);
     if (!q) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");

@@ -684,6 +684,7 @@ static mcs_status model_props(const fe_model *m, int ip, fe_kw_deck *d, mcs_erro
     if (k->type != FE_KW_MAT_PLP) return MCS_OK;
     k->sigy = md->nhardening > 0 ? md->hardening[0][1] : md->yield_stress;
     k->c = md->cowper_symonds_c, k->p = md->cowper_symonds_p;
+    k->fail = md->failure_strain;
     if (md->nhardening == 0) return MCS_OK;
     fe_kw_curve *c = kw_push((void **)&d->curve, &d->ncurve, &d->cap_curve, sizeof *c);
     if (!c || !(c->xy = malloc(2 * sizeof(double) * (size_t)md->nhardening)))

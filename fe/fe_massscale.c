@@ -217,6 +217,7 @@ double fe_massscale_run(const fe_model *m, fe_state *s, double dtmin)
                                                             : m->nhex + m->nshell;
             for (int e = p->elem_begin; e < p->elem_end; e++) {
                 const int k = off + e;
+                if (m->nerode && k < m->nerode && s->elem_dead[k]) continue; /* eroded */
                 int c[8], nn;
                 double dte = step_now(m, s, p, e, c, &nn) * m->elem_dt_factor[k] *
                              sqrt(s->elem_ms[k] / m->elem_ms0[k]);

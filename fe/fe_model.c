@@ -37,6 +37,7 @@ void fe_model_destroy(fe_model **p)
     free(m->wall);
     free(m->nodal_load);
     free(m->load_curve);
+    free(m->pressure);
     fe_restraints_destroy(&m->restraints);
     fe_sliprings_destroy(&m->sliprings);
     fe_solid_free(m);
@@ -271,7 +272,10 @@ static mcs_status resolve_loads(const fe_builder *b, fe_model *m, mcs_error *err
             m->nload = b->nload;
             m->nodal_load = calloc((size_t)(total ? total : 1), sizeof *m->nodal_load);
             m->load_curve = calloc((size_t)(b->nload ? b->nload : 1), sizeof *m->load_curve);
-            if (!m->nodal_load || !m->load_curve) {
+            int np = 0; /* pressure segments (fe_builder_add_pressure) */
+            for (int i = 0; i < b->nload; i++) np += b->load[i].node == -2;
+            m->pressure = calloc((size_t)(np ? np : 1), sizeof *m->pressure);
+            if (!m->nodal_load || !m->load_curve || !m->pressure) {
                 st = MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
                 break;
             }
@@ -280,6 +284,17 @@ static mcs_status resolve_loads(const fe_builder *b, fe_model *m, mcs_error *err
         for (int i = 0; i < b->nload; i++) {
             const fe_bload *l = &b->load[i];
             int cnt = 1;
+            if (l->node == -2) { /* a pressure: its curve, its segment */
+                if (pass == 1) {
+                    m->load_curve[i].ncurve = l->d.ncurve;
+                    memcpy(m->load_curve[i].curve, l->d.curve, sizeof l->d.curve);
+                    fe_pressure *pr = &m->pressure[m->npressure++];
+                    memcpy(pr->node, l->seg, sizeof pr->node);
+                    pr->p = l->d.force[0];
+                    pr->load = i;
+                }
+                continue;
+            }
             if (l->node < 0) {
                 int ip = fe_builder_find_part(b, l->d.part);
                 if (ip < 0) {
@@ -416,6 +431,8 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
             m->nshell_rate = m->nshell_ip;
     for (int ip = 0; ip < m->npart; ip++)
         if (m->part[ip].section.type == FE_SECTION_MEMBRANE) m->nshell_mref = m->nshell;
+    for (int ip = 0; ip < m->npart; ip++) /* element erosion: flags of every hex and shell */
+        if (m->part[ip].material.failure_strain > 0) m->nerode = m->nhex + m->nshell;
     if (st == MCS_OK) st = alloc_arrays(m, err);
     if (st == MCS_OK) {
         /* masses and the membranes' reference metric from the reference positions; the nodes
@@ -459,7 +476,8 @@ mcs_status fe_model_create(const fe_builder *b, const fe_opts *opts, fe_model **
         if (m->opts.dt_max > 0) m->dt_initial = fmin(m->dt_initial, m->opts.dt_max);
         m->bytes += sizeof(fe_part) * (size_t)m->npart + sizeof(fe_wall) * (size_t)m->nwall +
                     sizeof(fe_nodal_load) * (size_t)m->nnodal_load +
-                    sizeof(fe_load_curve) * (size_t)m->nload;
+                    sizeof(fe_load_curve) * (size_t)m->nload +
+                    sizeof(fe_pressure) * (size_t)m->npressure;
         st = fe_joints_build(b, m, err); /* penalties scaled to dt_initial */
         if (st == MCS_OK) st = fe_contact_model_build(b, m, err);
     }

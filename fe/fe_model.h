@@ -118,6 +118,10 @@ typedef struct {
     double foam_tension_cutoff;        /* largest tensile stress (0: no cutoff) [Pa]           */
     unsigned rigid_fix;                /* rigid: FE_DOF_* held on the body, global axes (LS-DYNA
                                           *MAT_RIGID CMO 1 CON1/CON2); rotations all or none */
+    double failure_strain;             /* elastic_plastic, one-point hex and shell parts: an
+                                          element whose plastic strain reaches this (a shell: at
+                                          any point through the thickness) is deleted, element
+                                          erosion (fe_stages.c); 0: never [-]                 */
 } fe_material_desc;
 
 /* a rigid part's given mass properties (LS-DYNA *PART_INERTIA), used instead of the sums
@@ -274,6 +278,14 @@ typedef struct {
     double curve[FE_CURVE_MAX][2];
 } fe_load_curve;
 
+/* a pressure on a segment (LS-DYNA *LOAD_SEGMENT): p x scale(t) over the segment's current
+ * area, against its normal (right-hand rule over node[0..3]), shared equally by its nodes */
+typedef struct {
+    int node[4];           /* segment nodes (a triangle repeats its 3rd) [-]                */
+    double p;              /* pressure at scale 1 [Pa]                                      */
+    int load;              /* index of its load curve [-]                                  */
+} fe_pressure;
+
 /* the model's arrays: X(type, name, count (a size field), components, unit, what).
  * Drives the struct layout, allocation, freeing and the memory count (STYLE.md §4). */
 #define FE_MODEL_ARRAYS(X)                                                                         \
@@ -327,6 +339,8 @@ typedef struct fe_model {
     fe_wall *wall;         /* (nwall)                                                     */
     fe_nodal_load *nodal_load; /* (nnodal_load)                                           */
     fe_load_curve *load_curve; /* (nload)                                                 */
+    int npressure;             /* pressure segments [-]                                   */
+    fe_pressure *pressure;     /* (npressure)                                             */
 
     fe_opts opts;
     double dt_initial;     /* stable step of the undeformed mesh, safety factor applied [s] */
@@ -366,6 +380,8 @@ typedef struct fe_model {
     int nfoam_ip;          /* integration points of foam hexes (1 or 8 per element) [-]    */
     struct fe_sliprings *sliprings; /* belt slip rings (fe_slipring.h), NULL if none      */
     /* kinematic walls with mass (fe_wall_kin.c): their slave nodes, wall by wall */
+    int nerode;            /* element erosion: nhex + nshell when a part has a failure
+                              strain (element e of kind k at e, nhex + e for shells), else 0 */
     int nwall_slave;       /* slave nodes of kinematic walls with mass, all walls [-]      */
     int *wall_slave;       /* (nwall_slave) node indices                                   */
     int wall_slave_off[FE_WALL_MAX + 1]; /* wall w's slaves: wall_slave_off[w] ..[w+1] [-]  */
@@ -411,6 +427,10 @@ mcs_status fe_builder_add_load(fe_builder *b, const fe_load_desc *d, mcs_error *
 /* one node's share of a load; curve as in fe_load_desc (ncurve 0: constant) */
 mcs_status fe_builder_add_nodal_load(fe_builder *b, int node, const double force[3], int ncurve,
                                      const double (*curve)[2], mcs_error *err);
+/* a pressure p [Pa] on segment nodes[4] (fe_pressure), times the curve (time [s], scale)
+ * (ncurve 0: constant) */
+mcs_status fe_builder_add_pressure(fe_builder *b, const int nodes[4], double p, int ncurve,
+                                   const double (*curve)[2], mcs_error *err);
 mcs_status fe_builder_add_wall(fe_builder *b, const fe_wall_desc *d, mcs_error *err);
 int fe_builder_nnode(const fe_builder *b);
 /* index of a part by name, -1 if none */

@@ -61,7 +61,9 @@ void fe_count_chunked(fe_model *m)
 void fe_chunk_commit(fe_state *s, int ip, const fe_chunk_acc *acc)
 {
     double *pe = s->part_energy + FE_NENERGY * ip;
-    pe[FE_E_internal] += acc->e_int;
+    /* an eroded element's internal energy moves to the eroded term (the balance keeps it) */
+    pe[FE_E_internal] += acc->e_int - acc->e_erode;
+    pe[FE_E_eroded] += acc->e_erode;
     pe[FE_E_hourglass] += acc->e_hg;
     pe[FE_E_dissipated] += acc->e_diss;
     s->part_dt[ip] = acc->dtmin;
@@ -76,6 +78,8 @@ void fe_chunk_merge(fe_chunk_acc *into, const fe_chunk_acc *a)
     into->e_int += a->e_int;
     into->e_hg += a->e_hg;
     into->e_diss += a->e_diss;
+    into->e_erode += a->e_erode;
+    into->nerode += a->nerode;
     if (a->dtmin < into->dtmin) into->dtmin = a->dtmin, into->dtel = a->dtel;
     if (into->bad < 0) into->bad = a->bad;
 }

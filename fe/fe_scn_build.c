@@ -130,9 +130,7 @@ static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_er
     d->youngs_modulus = mcs_node_num(fe_scn_get(mat, "youngs_modulus"));
     d->poisson = mcs_node_num(fe_scn_get(mat, "poisson"));
     if (!plastic) return MCS_OK;
-    if (fe_scn_given(mat, "failure_strain"))
-        return unsupported(fe_scn_get(mat, "failure_strain"), err,
-                           "failure_strain (element erosion)");
+    d->failure_strain = mcs_node_num_or(mat, "failure_strain", 0); /* element erosion */
     d->yield_stress = mcs_node_num(fe_scn_get(mat, "yield_stress"));
     d->cowper_symonds_c = mcs_node_num_or(mat, "cowper_symonds_c", 0);
     d->cowper_symonds_p = mcs_node_num_or(mat, "cowper_symonds_p", 0);

@@ -117,8 +117,12 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
     thickness_consts(p, t, qhg, E, G, ks, zt, wt, wz, &km0, &kw0, &kr0);
     const double *restrict X = s->node_x, *restrict V = s->node_v, *restrict W = s->node_w;
     double *restrict sig_all = s->shell_sig, *restrict epsp_all = s->shell_epsp;
-    double e_int = 0, e_hg = 0, dtmin = INFINITY;
-    int dtel = -1, bad = -1;
+    double e_int = 0, e_hg = 0, dtmin = INFINITY, e_erode = 0;
+    int dtel = -1, bad = -1, nerode = 0;
+    /* erosion (m->nerode > 0 then): shell e's flags at nhex + e */
+    const double fail = p->material.failure_strain;
+    unsigned char *dead = fail > 0 ? s->elem_dead + m->nhex : NULL;
+    double *eint = fail > 0 ? s->elem_eint + m->nhex : NULL;
     for (int e = e0; e < e1; e++) {
         if (m->shell_t[e] != t) { /* a shell of its own thickness (*ELEMENT_SHELL_THICKNESS) */
             t = m->shell_t[e];
@@ -126,10 +130,15 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
         }
         const int *c = m->shell_node + 4 * e;
         double xe[4][3], fr[3][3], xl[4], yl[4];
-        for (int q = 0; q < 4; q++) memcpy(xe[q], X + 3 * c[q], sizeof xe[q]);
-        double A = shell_frame(xe, fr, xl, yl);
         double *restrict f = s->slot_f + 3 * ((size_t)m->slot_base[FE_KIND_SHELL] + 4 * (size_t)e);
         double *restrict mo = s->shell_m + 12 * (size_t)e;
+        if (dead && dead[e]) { /* deleted: no forces, no step limit */
+            memset(f, 0, 12 * sizeof(double));
+            memset(mo, 0, 12 * sizeof(double));
+            continue;
+        }
+        for (int q = 0; q < 4; q++) memcpy(xe[q], X + 3 * c[q], sizeof xe[q]);
+        double A = shell_frame(xe, fr, xl, yl);
         if (!(A > 0)) {
             if (bad < 0) bad = e;
             memset(f, 0, 12 * sizeof(double));
@@ -222,6 +231,11 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
             Q[i] = t * tau[i];
         }
         e_int += 0.5 * A * w_int;
+        int erode = 0;
+        if (dead) { /* any point through the thickness (LS-DYNA NUMFIP 1) */
+            eint[e] += 0.5 * A * w_int;
+            for (int g = 0; g < nip; g++) erode |= ep[g] >= fail;
+        }
         /* hourglass */
         const double hx = xl[0] - xl[1] + xl[2] - xl[3], hy = yl[0] - yl[1] + yl[2] - yl[3];
         double bb = 0;
@@ -267,7 +281,14 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
         }
         const double dts = dte * fe_dt_factor(m, FE_KIND_SHELL, e); /* mass scaling */
         if (dts < dtmin) dtmin = dts, dtel = e;
+        if (erode) { /* its forces act this step, then it is gone */
+            dead[e] = 1;
+            e_erode += eint[e];
+            nerode++;
+        }
     }
+    acc->e_erode = e_erode;
+    acc->nerode = nerode;
     acc->e_int = e_int;
     acc->e_hg = e_hg;
     acc->e_diss = 0;
@@ -278,7 +299,7 @@ void fe_shell_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
 
 void fe_shell_part(const fe_model *m, fe_state *s, int ip)
 {
-    fe_chunk_acc acc;
+    fe_chunk_acc acc = {0};
     fe_shell_range(m, s, ip, m->part[ip].elem_begin, m->part[ip].elem_end, &acc);
     fe_chunk_commit(s, ip, &acc);
 }

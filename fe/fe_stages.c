@@ -32,6 +32,7 @@ static void elem_share(const fe_model *m, fe_state *s, int t, int timed)
                                                                  : m->part[ip].elem_end;
         if (!chunked_part(m->part + ip)) continue;
         const double t0 = timed ? fe_par_clock() : 0;
+        s->chunk_acc[k].e_erode = 0, s->chunk_acc[k].nerode = 0; /* set by eroding parts */
         switch (m->part[ip].elem_kind) {
         case FE_KIND_HEX: fe_hex_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
         case FE_KIND_SHELL: fe_shell_range(m, s, ip, e0, e1, s->chunk_acc + k); break;
@@ -108,11 +109,18 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
     }
     if (live) s->contact->live_done = 1;
     /* partial sums of each part in chunk order */
+    int nerode = 0;
     for (int k = 0; k < nch;) {
         const int ip = m->chunk_part[k];
         fe_chunk_acc acc = ca[k++];
         while (k < nch && m->chunk_part[k] == ip) fe_chunk_merge(&acc, ca + k++);
-        if (chunked_part(m->part + ip)) fe_chunk_commit(s, ip, &acc);
+        if (chunked_part(m->part + ip)) fe_chunk_commit(s, ip, &acc), nerode += acc.nerode;
+    }
+    if (nerode > 0) { /* elements deleted this step: contacts leave them out from the next */
+        memcpy(s->elem_gone, s->elem_dead, (size_t)m->nerode);
+        if (s->neroded == 0) s->erode_first = s->time;
+        s->neroded += nerode;
+        s->erode_last = s->time;
     }
     fe_discrete_forces(m, s); /* springs and dampers add to node_fint */
     fe_joint_forces(m, s);    /* joints: loads on the rigid bodies (body_fj) */
@@ -151,22 +159,42 @@ void fe_contact_forces(const fe_model *m, fe_state *s)
     if (m->nwall_slave) fe_wall_penalty_friction(m, s); /* after the normal forces */
 }
 
-/* reads time, the load curves; adds nodal loads to node_fext */
+/* a load curve's scale at t (constant beyond its ends; no points: 1) */
+static double load_scale(const fe_load_curve *c, double t)
+{
+    double sc = 1;
+    if (c->ncurve == 1 || (c->ncurve > 1 && t <= c->curve[0][0])) sc = c->curve[0][1];
+    else if (c->ncurve > 1 && t >= c->curve[c->ncurve - 1][0]) sc = c->curve[c->ncurve - 1][1];
+    else if (c->ncurve > 1) {
+        int k = 0;
+        while (t > c->curve[k + 1][0]) k++;
+        double u = (t - c->curve[k][0]) / (c->curve[k + 1][0] - c->curve[k][0]);
+        sc = c->curve[k][1] + u * (c->curve[k + 1][1] - c->curve[k][1]);
+    }
+    return sc;
+}
+
+/* reads time, the load curves, x (pressures); adds nodal loads and pressures to node_fext */
 void fe_external_forces(const fe_model *m, fe_state *s)
 {
     for (int i = 0; i < m->nnodal_load; i++) {
         const fe_nodal_load *l = &m->nodal_load[i];
-        const fe_load_curve *c = &m->load_curve[l->load];
-        double sc = 1, t = s->time;
-        if (c->ncurve == 1 || (c->ncurve > 1 && t <= c->curve[0][0])) sc = c->curve[0][1];
-        else if (c->ncurve > 1 && t >= c->curve[c->ncurve - 1][0]) sc = c->curve[c->ncurve - 1][1];
-        else if (c->ncurve > 1) {
-            int k = 0;
-            while (t > c->curve[k + 1][0]) k++;
-            double u = (t - c->curve[k][0]) / (c->curve[k + 1][0] - c->curve[k][0]);
-            sc = c->curve[k][1] + u * (c->curve[k + 1][1] - c->curve[k][1]);
-        }
+        const double sc = load_scale(&m->load_curve[l->load], s->time);
         for (int j = 0; j < 3; j++) s->node_fext[3 * l->node + j] += sc * l->force[j];
+    }
+    /* pressures: -p A n over the current segment, A n = (x3 - x1) x (x4 - x2) / 2 (a
+     * triangle's too, x4 = x3), shared by its 4 (3) nodes */
+    for (int i = 0; i < m->npressure; i++) {
+        const fe_pressure *pr = &m->pressure[i];
+        const double p = pr->p * load_scale(&m->load_curve[pr->load], s->time);
+        const double *x1 = s->node_x + 3 * pr->node[0], *x2 = s->node_x + 3 * pr->node[1];
+        const double *x3 = s->node_x + 3 * pr->node[2], *x4 = s->node_x + 3 * pr->node[3];
+        double d1[3], d2[3], an[3];
+        for (int j = 0; j < 3; j++) d1[j] = x3[j] - x1[j], d2[j] = x4[j] - x2[j];
+        fe_cross(d1, d2, an);
+        const int tri = pr->node[3] == pr->node[2], nn = tri ? 3 : 4;
+        for (int k = 0; k < nn; k++)
+            for (int j = 0; j < 3; j++) s->node_fext[3 * pr->node[k] + j] -= 0.5 * p * an[j] / nn;
     }
     /* gas bag pressures and retractor pulls (fe_restraint_step.c); errors go to s->err */
     if (m->restraints) fe_restraint_forces(m, s);
@@ -389,13 +417,14 @@ static void record_history(const fe_model *m, fe_state *s)
 mcs_status fe_stable_step(const fe_model *m, fe_state *s)
 {
     const double t = s->time;
-    double e_int = s->free_energy[FE_E_internal], e_hg = 0;
+    double e_int = s->free_energy[FE_E_internal], e_hg = 0, e_erode = 0;
     double e_diss = s->work_damp + s->free_energy[FE_E_dissipated], dtmin = m->dt_discrete;
     for (int ip = 0; ip < m->npart; ip++) {
         const double *pe = s->part_energy + FE_NENERGY * ip;
         e_int += pe[FE_E_internal];
         e_hg += pe[FE_E_hourglass];
         e_diss += pe[FE_E_dissipated];
+        e_erode += pe[FE_E_eroded];
         if (s->part_bad_elem[ip] >= 0)
             return MCS_ERR(&s->err, MCS_ERR_NUMERIC,
                            "fe: part '%s': element %d inverted or degenerate at t = %.6g s",
@@ -418,10 +447,11 @@ mcs_status fe_stable_step(const fe_model *m, fe_state *s)
     en[FE_E_contact] = m->contact ? fe_contact_energy(m, s) : 0;
     en[FE_E_hourglass] = e_hg;
     en[FE_E_dissipated] = e_diss;
+    en[FE_E_eroded] = e_erode;
     /* contact forces are internal to the structure: their work leaves the external work */
     en[FE_E_external_work] = s->work_ext - (m->contact ? fe_contact_work(m, s) : 0);
     en[FE_E_total] = en[FE_E_kinetic] + en[FE_E_potential] + e_int + en[FE_E_contact] + e_hg +
-                     e_diss - en[FE_E_external_work];
+                     e_diss + e_erode - en[FE_E_external_work];
     s->energy_time = t;
     if (s->nstep == 0) s->energy0 = en[FE_E_total];
     double ref = fmax(fmax(en[FE_E_kinetic], e_int + e_hg), fabs(en[FE_E_external_work]));
@@ -454,6 +484,7 @@ mcs_status fe_stable_step(const fe_model *m, fe_state *s)
     for (int k = 0; k < FE_DT_WINDOW; k++) dtmin = fmin(dtmin, s->dt_win[k]);
     double dt = m->opts.dt_scale * dtmin;
     if (m->opts.dt_max > 0) dt = fmin(dt, m->opts.dt_max);
+    if (isinf(dt) && s->neroded > 0) dt = s->dt_prev; /* every element eroded: the last step */
     if (!(dt >= m->opts.dt_min)) {
         int ip = s->dt_part;
         return MCS_ERR(&s->err, MCS_ERR_NUMERIC,

@@ -92,6 +92,8 @@ void fe_state_reset(const fe_model *m, fe_state *s)
     memset(s->timer, 0, sizeof s->timer);
     s->work_ext = s->work_damp = s->energy0 = s->energy_ref = 0;
     s->bad_node = -1;
+    s->neroded = 0;
+    s->erode_first = s->erode_last = 0;
     s->dt_part = s->dt_elem = -1;
     s->nhist = 0;
     s->hist_dropped = 0;

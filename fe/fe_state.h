@@ -22,8 +22,10 @@
     X(contact)       /* contact interfaces: elastic + frictional (fe_contact.h)          */        \
     X(hourglass)     /* work of the hourglass forces                                     */        \
     X(dissipated)    /* bulk viscosity and mass damping                                  */        \
+    X(eroded)        /* internal energy of the elements deleted by erosion, at deletion  */        \
     X(external_work) /* loads, prescribed motion and rigid walls on the structure        */        \
-    X(total)         /* kinetic + potential + internal + contact + hourglass + dissipated - external_work */
+    X(total)         /* kinetic + potential + internal + contact + hourglass + dissipated + eroded
+                        - external_work */
 
 typedef enum {
 #define FE_X_EN(name) FE_E_##name,
@@ -58,6 +60,8 @@ typedef struct {
     double e_int, e_hg, e_diss; /* internal, hourglass, dissipated energy this step [J]     */
     double dtmin;               /* smallest element step, no safety factor [s]              */
     int dtel, bad;              /* element giving dtmin; first inverted element, -1 none [-] */
+    double e_erode;             /* internal energy of the elements eroded this step [J]     */
+    int nerode;                 /* elements eroded this step [-]                            */
 } fe_chunk_acc;
 
 /* the state's arrays: X(type, name, count (a model size), components, unit, what) */
@@ -121,6 +125,9 @@ typedef struct {
     X(double, tet10_epsp, ntet10, 1, "-", "tet10: mean equivalent plastic strain of the points")  \
     X(double, tet10_rate, ntet10, 1, "1/s", "tet10: filtered effective strain rate")              \
     X(fe_chunk_acc, chunk_acc, nchunk, 1, "-", "partial sums of each element chunk")             \
+    X(unsigned char, elem_dead, nerode, 1, "-", "erosion: 1 once the element is deleted")        \
+    X(unsigned char, elem_gone, nerode, 1, "-", "erosion: elem_dead as of the last step (contact)") \
+    X(double, elem_eint, nerode, 1, "J", "erosion: internal energy of each element")             \
     X(double, node_acc, nnode_acc, 1, "-", "partial sums of each node chunk (fe_integrate)")     \
     X(double, chunk_cost, nchunk, 1, "s", "time of each element chunk, summed since the last balance") \
     X(double, foam_hist, nfoam_ip, 6, "-", "foam: largest-strain tensor, t = 0 frame (fe_foam.c)") \
@@ -170,6 +177,8 @@ typedef struct fe_state {
                                      balance (fe_parallel.c) [-]                               */
     int par_nbal;                 /* balances since the team was formed [-]                  */
     double mass_added_run;        /* mass added by mass scaling during the run [kg]           */
+    int neroded;                  /* elements deleted by erosion so far [-]                   */
+    double erode_first, erode_last; /* times of the first and the last erosion [s]           */
     double dt_ms;                 /* smallest scaled step of the scaled parts at the last check,
                                      no safety factor [s]                                    */
     struct fe_slipring_state *slipring; /* slip rings (fe_slipring.h); NULL none            */

@@ -57,7 +57,7 @@ void fe_truss_range(const fe_model *m, fe_state *s, int ip, int e0, int e1, fe_c
 
 void fe_truss_part(const fe_model *m, fe_state *s, int ip)
 {
-    fe_chunk_acc acc;
+    fe_chunk_acc acc = {0};
     fe_truss_range(m, s, ip, m->part[ip].elem_begin, m->part[ip].elem_end, &acc);
     fe_chunk_commit(s, ip, &acc);
 }

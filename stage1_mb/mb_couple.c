@@ -260,7 +260,7 @@ double mb_couple_energy(const mb_model *m, const mb_state *s, double e[7])
         }
     }
     e[1] = E[FE_E_potential];
-    e[2] = E[FE_E_internal] + E[FE_E_hourglass];
+    e[2] = E[FE_E_internal] + E[FE_E_hourglass] + E[FE_E_eroded]; /* eroded: fe_stages.c */
     e[3] = E[FE_E_contact];
     e[4] = E[FE_E_dissipated];
     /* loads other than the bodies', and the retractors' on the bodies carrying their anchors */

@@ -24,6 +24,7 @@ static double now_s(void)
 
 typedef struct {
     mcs_results_series *time, *energy[FE_NENERGY], *wall_f[FE_WALL_MAX], *wall_d[FE_WALL_MAX];
+    mcs_results_series *eroded; /* elements deleted so far (erosion only), NULL without */
     fe_out fe; /* fields, contacts, restraints, slip rings, parts (fe/fe_out.h) */
 } s3_out;
 
@@ -41,6 +42,9 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
         snprintf(path, sizeof path, "/stage3/rigidwall/%s/displacement", m->wall[w].name);
         if (!st) st = mcs_results_series_create(r, path, 1, NULL, "m", 0, &o->wall_d[w], err);
     }
+    if (!st && m->nerode > 0)
+        st = mcs_results_series_create(r, "/stage3/erosion/count", 1, NULL, "-", 0, &o->eroded,
+                                       err);
     if (!st) st = fe_out_open(r, 3, m, &o->fe, err);
     return st;
 }
@@ -53,6 +57,10 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
     for (int w = 0; w < m->nwall && !st; w++) {
         st = mcs_results_series_append(o->wall_f[w], &s->wall_normal[w], err);
         if (!st) st = mcs_results_series_append(o->wall_d[w], &s->wall_disp[w], err);
+    }
+    if (!st && o->eroded) {
+        double n = s->neroded;
+        st = mcs_results_series_append(o->eroded, &n, err);
     }
     if (!st) st = fe_out_sample(m, s, &o->fe, err);
     return st;
@@ -127,6 +135,15 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
         if (!st) st = mcs_results_set_attr_int(r, "/stage3", "nodes", m->nnode, err);
         if (!st) st = mcs_results_set_attr_double(r, "/stage3", "energy_drift", sum->energy_drift, err);
         if (!st) st = mcs_results_set_attr_double(r, "/stage3", "output_rate", p->output_rate, err);
+        if (!st && m->nerode > 0) { /* element erosion: how many, first and last time */
+            st = mcs_results_set_attr_int(r, "/stage3/erosion", "eroded", s->neroded, err);
+            if (!st)
+                st = mcs_results_set_attr_double(r, "/stage3/erosion", "first_time",
+                                                 s->neroded ? s->erode_first : NAN, err);
+            if (!st)
+                st = mcs_results_set_attr_double(r, "/stage3/erosion", "last_time",
+                                                 s->neroded ? s->erode_last : NAN, err);
+        }
         sum->mass_added = m->mass_added + s->mass_added_run; /* at t = 0 and during the run */
         sum->mass_added_fraction = sum->mass_added / fmax(m->mass_total - m->mass_added, DBL_MIN);
         if (!st) st = mcs_results_set_attr_double(r, "/stage3", "mass_added", sum->mass_added, err);

@@ -95,11 +95,13 @@ static void check_unknown_many(const fe_kw_deck *d)
     CHECK(strcmp(d->unknown[2].name, "DATABASE_MATSUM") == 0 && d->unknown[2].count == 1);
 }
 
-/* param_dup.k: X = 1 then 2: the first kept (node 1 x = 1); after DFLAG 2, X = 3 is taken */
+/* param_dup.k: X = 1 then 2: the first kept (node 1 x = 1); after DFLAG 2, X = 3 is taken
+ * (node 2); after DFLAG 5, X = 4 is not (node 3 x = 3); after DFLAG 4, X = 5 is (node 4) */
 static void check_param_dup(const fe_kw_deck *d)
 {
-    const double *x1 = node_at(d, 1), *x2 = node_at(d, 2);
-    CHECK(x1 && x1[0] == 1 && x2 && x2[0] == 3);
+    const double *x1 = node_at(d, 1), *x2 = node_at(d, 2), *x3 = node_at(d, 3),
+                 *x4 = node_at(d, 4);
+    CHECK(x1 && x1[0] == 1 && x2 && x2[0] == 3 && x3 && x3[0] == 3 && x4 && x4[0] == 5);
 }
 
 /* contact_plates.k (mm-s-t), by hand: three contacts (all parts, 2 on 1 with FS 0.3, nodes of
@@ -164,7 +166,7 @@ static const corpus_row corpus[] = {
     {"param_bad_expr.k", NULL, READ_ONLY, 0, {0}, 0, 0, "*PARAMETER_EXPRESSION: parameter 'A'",
      "param_bad_expr.k:3:", NULL},
     {"param_formats.k", NULL, READ_ONLY, 1, {0}, 0, 0, NULL, NULL, check_param_formats},
-    {"param_dup.k", NULL, READ_ONLY, 2, {0}, 0, 0, NULL, NULL, check_param_dup},
+    {"param_dup.k", NULL, READ_ONLY, 4, {0}, 0, 0, NULL, NULL, check_param_dup},
     {"param_dup_refused.k", NULL, READ_ONLY, 0, {0}, 0, 0,
      "parameter 'N' defined twice (first at " CD "param_dup_refused.k:6",
      "param_dup_refused.k:6:21:", NULL},
@@ -192,6 +194,9 @@ static const corpus_row corpus[] = {
     {"skipped_set.k", NULL, BUILD_DECK, 8, {0, 1}, 1, 1,
      "node set 5 is not defined (skipped as not supported: *SET_NODE_GENERAL at",
      "skipped_set.k:11)", NULL},
+    {"skipped_deck.k", NULL, BUILD_DECK, 2, {0}, 1, 1,
+     "no *PART has elements (skipped as not supported: *ELEMENT_SEATBELT at",
+     "skipped_deck.k:15)", NULL},
     {"skipped_element.k", NULL, BUILD_PART1, 2, {0}, 1, 1,
      "no element has part ID 1 (skipped as not supported: *ELEMENT_SEATBELT at",
      "skipped_element.k:14)", NULL},

@@ -146,7 +146,7 @@ static void test_refusals(void)
     /* kinematic hardening: BETA blank (0) with ETAN > 0 */
     refused("*MAT_PLASTIC_KINEMATIC\n1,7850,2e11,0.3,2e8,1e9\n\n", "field BETA", 3);
     refused("*MAT_003\n1,7850,2e11,0.3,2e8,1e9,1\n40,5,0,1\n", "field VP", 4);
-    refused("*MAT_003\n1,7850,2e11,0.3,2e8,0,0\n0,0,0.3\n", "field FS", 4);
+    refused("*MAT_003\n1,7850,2e11,0.3,2e8,0,0\n0,0,-0.3\n", "field FS", 4);
     refused("*MAT_RIGID\n1,7850,2e11,0.3\n1,0,3\n\n", "field CON2", 4);
     refused("*MAT_RIGID\n1,7850,2e11,0.3\n-1,2,0\n\n", "field CMO", 4);
     refused("*MAT_NULL\n1,1000,0,1e-3\n", "field MU", 3);

@@ -56,6 +56,8 @@ static void test_pendulum_from_scenario(void)
     mcs_error err = {0};
     CHECK(run_file(scn, out, &sum, &err) == MCS_OK);
     if (err.status) printf("  %s\n", err.msg);
+    printf("  energy balance of the run: drift %.2e of the largest energy\n", sum.energy_drift);
+    CHECK(sum.energy_drift < 1e-3); /* the joint's penalty energy is in internal/dissipated */
     mcs_results *h = NULL;
     CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
     if (!h) return;
@@ -73,8 +75,8 @@ static void test_pendulum_from_scenario(void)
     double tb = NAN, vmax = 0, qerr = 1, fz = 0;
     for (size_t i = 1; i < t.n && i < ang.n; i++) {
         if (isnan(tb) && ang.v[i - 1] < M_PI / 2 && ang.v[i] >= M_PI / 2)
-            tb = t.v[i - 1] + (t.v[i] - t.v[i - 1]) * (M_PI / 2 - ang.v[i - 1]) /
-                                  (ang.v[i] - ang.v[i - 1]);
+            tb = t.v[i - 1] +
+                 (t.v[i] - t.v[i - 1]) * (M_PI / 2 - ang.v[i - 1]) / (ang.v[i] - ang.v[i - 1]);
         double s = sqrt(v.v[3 * i] * v.v[3 * i] + v.v[3 * i + 2] * v.v[3 * i + 2]);
         if (s > vmax) {
             vmax = s;
@@ -100,12 +102,13 @@ static void test_pendulum_from_scenario(void)
     mcs_results_close(&h);
 }
 
-/* a joint on a deformable part, or naming one part twice: exit at FILE:LINE:COL of parts */
+/* a joint on a deformable part, naming one part twice, or an unknown part: exit 2 at the
+ * FILE:LINE:COL of its parts */
 static void test_bad_joints_located(void)
 {
-    const char *parts[2] = {"rod, soft", "rod, rod"};
-    const char *want[2] = {"'soft' is no rigid part", "joins 'rod' to itself"};
-    for (int k = 0; k < 2; k++) {
+    const char *parts[3] = {"rod, soft", "rod, rod", "rod, frame"};
+    const char *want[3] = {"'soft' is no rigid part", "joins 'rod' to itself", "frame"};
+    for (int k = 0; k < 3; k++) {
         char scn[128], out[128];
         snprintf(scn, sizeof scn, "%s/bad%d.yaml", tmpdir, k);
         snprintf(out, sizeof out, "%s/bad%d.h5", tmpdir, k);
@@ -117,6 +120,7 @@ static void test_bad_joints_located(void)
         snprintf(loc, sizeof loc, "%s:17:", scn); /* the joint's line, parts' column */
         CHECK_STR_CONTAINS(err.msg, loc);
         CHECK_STR_CONTAINS(err.msg, want[k]);
+        if (k == 2) printf("  unknown part: %s\n", err.msg);
     }
 }
 

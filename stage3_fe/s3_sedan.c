@@ -5,7 +5,7 @@
 #include "stage3_fe/s3_sedan.h"
 
 #include "fe/fe_builder_impl.h" /* the body part's given mass properties, set after meshing */
-#include "fe/fe_elem.h" /* fe_shell_frame: the kernel's shell area, so the masses agree */
+#include "fe/fe_elem.h"         /* fe_shell_frame: the kernel's shell area, so the masses agree */
 #include "fe/fe_joint.h"
 #include "fe/fe_scn_build.h"
 
@@ -35,21 +35,23 @@
 #define RAIL_SY 590e6     /* [Pa] */
 #define GLASS_T 0.004     /* tempered soda-lime side glass, 4 mm [m] */
 #define GLASS_E 70e9      /* [Pa] */
+#define GLASS_SY 120e6    /* tempered glass characteristic bending strength (EN 12150-1) [Pa] */
+#define GLASS_FS 0.001    /* plastic strain at erosion: breaks just past its strength [-] */
 #define GLASS_NU 0.22
 #define GLASS_RHO 2500.0
 #define STEEL_E 210e9
 #define STEEL_NU 0.3
 #define STEEL_RHO 7850.0
-#define BODY_T 0.001      /* the rigid body's shells (contact thickness only) [m] */
+#define BODY_T 0.001 /* the rigid body's shells (contact thickness only) [m] */
 
 typedef struct {
     fe_builder *b;
     double h;
     const char *pre;
     const s3_sedan_opts *o;
-    int base, n, cap;      /* builder index of our first node; our nodes */
-    double *x, *m;         /* (cap x 3) positions, (cap) lumped masses of deformable shells */
-    char *tied;            /* (cap) 1: an extra node of the rigid body */
+    int base, n, cap; /* builder index of our first node; our nodes */
+    double *x, *m;    /* (cap x 3) positions, (cap) lumped masses of deformable shells */
+    char *tied;       /* (cap) 1: an extra node of the rigid body */
     double prho[64], pt[64];
     int prigid[64];
     mcs_error *err;
@@ -96,9 +98,11 @@ static void quad(gen *g, int part, int n0, int n1, int n2, int n3)
     g->st = fe_builder_add_elem(g->b, part, c, g->err);
     if (g->st || g->prigid[part]) return;
     double xe[4][3], fr[3][3], xl[4], yl[4];
-    for (int i = 0; i < 4; i++) memcpy(xe[i], g->x + 3 * (c[i] - g->base), sizeof xe[i]);
+    for (int i = 0; i < 4; i++)
+        memcpy(xe[i], g->x + 3 * (c[i] - g->base), sizeof xe[i]);
     double mn = g->prho[part] * g->pt[part] * fe_shell_frame(xe, fr, xl, yl) / 4;
-    for (int i = 0; i < 4; i++) g->m[c[i] - g->base] += mn;
+    for (int i = 0; i < 4; i++)
+        g->m[c[i] - g->base] += mn;
 }
 
 typedef enum { M_RIGID, M_PLASTIC, M_ELASTIC } mkind;
@@ -135,8 +139,7 @@ static void tie(gen *g, int idx)
 }
 
 /* a plate o + s u + r v (s, r in [0, 1]); its perimeter tied when `edges` */
-static void plate(gen *g, int p, const double o[3], const double u[3], const double v[3],
-                  int edges)
+static void plate(gen *g, int p, const double o[3], const double u[3], const double v[3], int edges)
 {
     double lu = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     double lv = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -145,7 +148,8 @@ static void plate(gen *g, int p, const double o[3], const double u[3], const dou
     for (int j = 0; j <= nv; j++)
         for (int i = 0; i <= nu; i++) {
             double x[3];
-            for (int k = 0; k < 3; k++) x[k] = o[k] + u[k] * i / nu + v[k] * j / nv;
+            for (int k = 0; k < 3; k++)
+                x[k] = o[k] + u[k] * i / nu + v[k] * j / nv;
             int id = node(g, x);
             if (edges && (i == 0 || j == 0 || i == nu || j == nv)) tie(g, id);
         }
@@ -165,7 +169,8 @@ static void tube(gen *g, int p, const double o[3], const double a[3], double L,
     for (int j = 0; j <= nl; j++)
         for (int i = 0; i < ns; i++) {
             double x[3];
-            for (int k = 0; k < 3; k++) x[k] = o[k] + a[k] * L * j / nl + sec[i][k];
+            for (int k = 0; k < 3; k++)
+                x[k] = o[k] + a[k] * L * j / nl + sec[i][k];
             int id = node(g, x);
             if (j == 0 || j == nl) tie(g, id);
         }
@@ -189,7 +194,8 @@ static int rect_section(double h, const double e1[3], const double e2[3], double
             double f = (double)i / nn[s];
             double s1 = c[s][0] + f * (c[(s + 1) % 4][0] - c[s][0]);
             double s2 = c[s][1] + f * (c[(s + 1) % 4][1] - c[s][1]);
-            for (int k = 0; k < 3; k++) sec[n][k] = s1 * e1[k] + s2 * e2[k];
+            for (int k = 0; k < 3; k++)
+                sec[n][k] = s1 * e1[k] + s2 * e2[k];
             n++;
         }
     return n;
@@ -207,7 +213,7 @@ static const mcs_node *find_named(const mcs_node *list, const char *name)
 
 /* the ellipsoid `name` of body B in world: centre c, semi-axes s */
 static mcs_status ellipsoid(const mcs_node *B, const double P[3], const char *name, double c[3],
-                           double s[3], mcs_error *err)
+                            double s[3], mcs_error *err)
 {
     const mcs_node *e = find_named(mcs_node_get(B, "surfaces"), name);
     if (!e)
@@ -215,7 +221,8 @@ static mcs_status ellipsoid(const mcs_node *B, const double P[3], const char *na
                               name);
     mcs_status st = mcs_node_vec3(mcs_node_get(e, "center"), c, err);
     if (!st) st = mcs_node_vec3(mcs_node_get(e, "semi_axes"), s, err);
-    for (int k = 0; k < 3; k++) c[k] += P[k];
+    for (int k = 0; k < 3; k++)
+        c[k] += P[k];
     return st;
 }
 
@@ -231,10 +238,12 @@ static mcs_status total_of(const mcs_node *bodies, s3_sedan_mass *t, mcs_error *
         if (st) return st;
         double m = mcs_node_num(mcs_node_get(B, "mass"));
         t->mass += m;
-        for (int k = 0; k < 3; k++) mx[k] += m * p[k];
+        for (int k = 0; k < 3; k++)
+            mx[k] += m * p[k];
     }
     if (!(t->mass > 0)) return MCS_ERR(err, MCS_ERR_RANGE, "sedan_side: the model has no mass");
-    for (int k = 0; k < 3; k++) t->cg[k] = mx[k] / t->mass;
+    for (int k = 0; k < 3; k++)
+        t->cg[k] = mx[k] / t->mass;
     for (int i = 0; i < nb; i++) {
         const mcs_node *B = mcs_node_at(bodies, i), *I = mcs_node_get(B, "inertia");
         double p[3], r[3];
@@ -244,10 +253,12 @@ static mcs_status total_of(const mcs_node *bodies, s3_sedan_mass *t, mcs_error *
                                   "sedan_side: give the body inertia as 3 principal values "
                                   "along the world axes");
         double m = mcs_node_num(mcs_node_get(B, "mass")), rr = 0;
-        for (int k = 0; k < 3; k++) r[k] = p[k] - t->cg[k], rr += r[k] * r[k];
+        for (int k = 0; k < 3; k++)
+            r[k] = p[k] - t->cg[k], rr += r[k] * r[k];
         for (int a = 0; a < 3; a++) {
             t->inertia[a][a] += mcs_node_num(mcs_node_at(I, a));
-            for (int c = 0; c < 3; c++) t->inertia[a][c] += m * ((a == c) * rr - r[a] * r[c]);
+            for (int c = 0; c < 3; c++)
+                t->inertia[a][c] += m * ((a == c) * rr - r[a] * r[c]);
         }
     }
     return MCS_OK;
@@ -270,15 +281,31 @@ mcs_status s3_sedan_build(fe_builder *b, const mcs_node *model, const s3_sedan_o
     if (!st) st = ellipsoid(car, P, "sedan_front_door", dc, ds, err);
     if (!st) st = ellipsoid(car, P, "sedan_sill", sc, ss, err);
     if (!st) st = ellipsoid(car, P, "sedan_b_pillar", pc, ps, err);
-    if (!st) st = ellipsoid(car, P, "sedan_roof_rail", rc, rs, err);
     const mcs_node *gl = find_named(mcs_node_get(upper, "surfaces"), "sedan_side_glass");
+    /* the roof rail: the bounding box of sedan_upper's facet surface sedan_roof_rail (its side
+     * strip and top), as centre and half extents */
+    const mcs_node *rf = find_named(mcs_node_get(upper, "surfaces"), "sedan_roof_rail");
+    const mcs_node *rv = mcs_node_get(rf, "vertices");
+    if (!st && (!rf || mcs_node_len(rv) < 3))
+        st = mcs_node_error(upper, err, MCS_ERR_KEY,
+                            "sedan_side: the model needs the facet surface 'sedan_roof_rail'");
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; !st && i < mcs_node_len(rv); i++) {
+        double q[3];
+        st = mcs_node_vec3(mcs_node_at(rv, i), q, err);
+        for (int k = 0; k < 3; k++)
+            lo[k] = fmin(lo[k], q[k] + Pu[k]), hi[k] = fmax(hi[k], q[k] + Pu[k]);
+    }
+    for (int k = 0; k < 3; k++)
+        rc[k] = 0.5 * (lo[k] + hi[k]), rs[k] = 0.5 * (hi[k] - lo[k]);
     double gv[4][3];
     if (!st && (!gl || mcs_node_len(mcs_node_get(gl, "vertices")) != 4))
         st = mcs_node_error(upper, err, MCS_ERR_KEY,
                             "sedan_side: the model needs the 4-vertex facet 'sedan_side_glass'");
     for (int i = 0; !st && i < 4; i++) {
         st = mcs_node_vec3(mcs_node_at(mcs_node_get(gl, "vertices"), i), gv[i], err);
-        for (int k = 0; k < 3; k++) gv[i][k] += Pu[k];
+        for (int k = 0; k < 3; k++)
+            gv[i][k] += Pu[k];
     }
     if (st) return st;
     if (total) *total = T;
@@ -294,11 +321,11 @@ mcs_status s3_sedan_build(fe_builder *b, const mcs_node *model, const s3_sedan_o
     int p_in = part(&g, "door_inner", M_PLASTIC, INNER_T, STEEL_RHO, STEEL_E, STEEL_NU, INNER_SY);
     int p_beam = part(&g, "door_beam", M_PLASTIC, BEAM_T, STEEL_RHO, STEEL_E, STEEL_NU, BEAM_SY);
     int p_sill = part(&g, "sill", M_PLASTIC, SILL_T, STEEL_RHO, STEEL_E, STEEL_NU, SILL_SY);
-    int p_pil =
-        part(&g, "b_pillar", M_PLASTIC, PILLAR_T, STEEL_RHO, STEEL_E, STEEL_NU, PILLAR_SY);
+    int p_pil = part(&g, "b_pillar", M_PLASTIC, PILLAR_T, STEEL_RHO, STEEL_E, STEEL_NU, PILLAR_SY);
     int p_rail = part(&g, "roof_rail", M_PLASTIC, RAIL_T, STEEL_RHO, STEEL_E, STEEL_NU, RAIL_SY);
-    int p_glass = part(&g, "glass", M_ELASTIC, GLASS_T, GLASS_RHO, GLASS_E, GLASS_NU, 0);
+    int p_glass = part(&g, "glass", M_PLASTIC, GLASS_T, GLASS_RHO, GLASS_E, GLASS_NU, GLASS_SY);
     if (g.st) return g.st;
+    b->part[p_glass].material.failure_strain = GLASS_FS; /* erodes (fe/fe_stages.c) */
 
     /* door panels: perimeters on the body (hinges, latch, frame) */
     double o1[3] = {xo, ya, zlo}, u[3] = {0, yb - ya, 0}, v[3] = {0, 0, zhi - zlo};
@@ -327,7 +354,8 @@ mcs_status s3_sedan_build(fe_builder *b, const mcs_node *model, const s3_sedan_o
     double orr[3] = {rc[0] - rs[0] + RAIL_DEPTH / 2, rc[1] - rs[1], rc[2]};
     tube(&g, p_rail, orr, ey, 2 * rs[1], (const double(*)[3])sec, ns);
     /* front side glass: the stage-1 glass facet (lower edge v0 v1, upper v3 v2) over the door */
-    double f0 = (ya - gv[0][1]) / (gv[1][1] - gv[0][1]), f1 = (yb - gv[0][1]) / (gv[1][1] - gv[0][1]);
+    double f0 = (ya - gv[0][1]) / (gv[1][1] - gv[0][1]),
+           f1 = (yb - gv[0][1]) / (gv[1][1] - gv[0][1]);
     double g0[3], gu[3], gw[3];
     for (int k = 0; k < 3; k++) {
         g0[k] = gv[0][k] + f0 * (gv[1][k] - gv[0][k]);
@@ -359,11 +387,14 @@ mcs_status s3_sedan_build(fe_builder *b, const mcs_node *model, const s3_sedan_o
             }
             const double *x = g.x + 3 * i;
             double r[3], rr = 0;
-            for (int k = 0; k < 3; k++) r[k] = x[k] - T.cg[k], rr += r[k] * r[k];
+            for (int k = 0; k < 3; k++)
+                r[k] = x[k] - T.cg[k], rr += r[k] * r[k];
             mf += g.m[i];
-            for (int k = 0; k < 3; k++) mx[k] += g.m[i] * r[k];
+            for (int k = 0; k < 3; k++)
+                mx[k] += g.m[i] * r[k];
             for (int a = 0; a < 3; a++)
-                for (int c = 0; c < 3; c++) J[a][c] += g.m[i] * ((a == c) * rr - r[a] * r[c]);
+                for (int c = 0; c < 3; c++)
+                    J[a][c] += g.m[i] * ((a == c) * rr - r[a] * r[c]);
         }
         fe_rigid_inertia gi = {.given = 1};
         gi.mass = T.mass - mf;
@@ -372,12 +403,14 @@ mcs_status s3_sedan_build(fe_builder *b, const mcs_node *model, const s3_sedan_o
             goto out;
         }
         double cr[3], rr = 0; /* the body's CG, from the total's */
-        for (int k = 0; k < 3; k++) cr[k] = -mx[k] / gi.mass, rr += cr[k] * cr[k];
-        for (int k = 0; k < 3; k++) gi.cg[k] = T.cg[k] + cr[k];
+        for (int k = 0; k < 3; k++)
+            cr[k] = -mx[k] / gi.mass, rr += cr[k] * cr[k];
+        for (int k = 0; k < 3; k++)
+            gi.cg[k] = T.cg[k] + cr[k];
         for (int a = 0; a < 3; a++)
             for (int c = 0; c < 3; c++)
-                gi.inertia[a][c] = T.inertia[a][c] - J[a][c] -
-                                   gi.mass * ((a == c) * rr - cr[a] * cr[c]);
+                gi.inertia[a][c] =
+                    T.inertia[a][c] - J[a][c] - gi.mass * ((a == c) * rr - cr[a] * cr[c]);
         memcpy(gi.velocity, o->velocity, sizeof gi.velocity);
         b->part[p_body].rigid = gi;
         int *tl = malloc(sizeof(int) * (size_t)(ntied ? ntied : 1)), nt = 0;

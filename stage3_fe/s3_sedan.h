@@ -38,8 +38,7 @@ mcs_status s3_sedan_build(fe_builder *b, const mcs_node *model, const s3_sedan_o
                           s3_sedan_mass *total, mcs_error *err);
 /* the fe.parts entry `part` (mesh: {generate: sedan_side, ...}): loads the model file (relative
  * to the scenario file) and builds it (fe_scn_generator of fe/fe_scn_build.h) */
-mcs_status s3_sedan_part(fe_builder *b, const mcs_node *root, const mcs_node *part,
-                         mcs_error *err);
+mcs_status s3_sedan_part(fe_builder *b, const mcs_node *root, const mcs_node *part, mcs_error *err);
 /* registers s3_sedan_part as the fe: builder's `sedan_side` generator */
 void s3_sedan_register(void);
 

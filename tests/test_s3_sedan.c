@@ -27,14 +27,17 @@ static void model_total(const fe_model *m, double *M, double c[3], double I[3][3
     *M = 0;
     for (int b = 0; b < m->nbody; b++) {
         *M += m->body[b].mass;
-        for (int k = 0; k < 3; k++) mx[k] += m->body[b].mass * m->body[b].x0[k];
+        for (int k = 0; k < 3; k++)
+            mx[k] += m->body[b].mass * m->body[b].x0[k];
     }
     for (int n = 0; n < m->nnode; n++)
         if (m->node_body[n] < 0) {
             *M += m->node_mass[n];
-            for (int k = 0; k < 3; k++) mx[k] += m->node_mass[n] * m->node_x0[3 * n + k];
+            for (int k = 0; k < 3; k++)
+                mx[k] += m->node_mass[n] * m->node_x0[3 * n + k];
         }
-    for (int k = 0; k < 3; k++) c[k] = mx[k] / *M;
+    for (int k = 0; k < 3; k++)
+        c[k] = mx[k] / *M;
     memset(I, 0, 9 * sizeof(double));
     for (int b = 0; b < m->nbody; b++) {
         const double *x = m->body[b].x0, mb = m->body[b].mass;
@@ -51,7 +54,8 @@ static void model_total(const fe_model *m, double *M, double c[3], double I[3][3
             double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2], mn = m->node_mass[n];
             for (int a = 0; a < 3; a++) {
                 I[a][a] += m->node_inertia[n];
-                for (int e = 0; e < 3; e++) I[a][e] += mn * ((a == e) * rr - r[a] * r[e]);
+                for (int e = 0; e < 3; e++)
+                    I[a][e] += mn * ((a == e) * rr - r[a] * r[e]);
             }
         }
 }
@@ -63,18 +67,20 @@ static void model_total(const fe_model *m, double *M, double c[3], double I[3][3
 static void stage1_by_hand(double *M, double c[3], double I[3])
 {
     const double m[6] = {1548, 40, 20, 20, 20, 20};
-    const double p[6][3] = {{2.6475, 0.30, 0.55},      {2.6475, 0.30, 1.35},
-                            {1.8575, -1.10, 0.22773},  {3.4375, -1.10, 0.22773},
-                            {1.8575, 1.70, 0.22773},   {3.4375, 1.70, 0.22773}};
+    const double p[6][3] = {{2.6475, 0.30, 0.55},     {2.6475, 0.30, 1.35},
+                            {1.8575, -1.10, 0.22773}, {3.4375, -1.10, 0.22773},
+                            {1.8575, 1.70, 0.22773},  {3.4375, 1.70, 0.22773}};
     const double i0[6][3] = {{2700, 580, 2900}, {8, 4, 11},        {0.9, 0.55, 0.55},
                              {0.9, 0.55, 0.55}, {0.9, 0.55, 0.55}, {0.9, 0.55, 0.55}};
     *M = 0;
     c[0] = c[1] = c[2] = 0;
     for (int i = 0; i < 6; i++) {
         *M += m[i];
-        for (int k = 0; k < 3; k++) c[k] += m[i] * p[i][k];
+        for (int k = 0; k < 3; k++)
+            c[k] += m[i] * p[i][k];
     }
-    for (int k = 0; k < 3; k++) c[k] /= *M;
+    for (int k = 0; k < 3; k++)
+        c[k] /= *M;
     for (int k = 0; k < 3; k++) {
         I[k] = 0;
         for (int i = 0; i < 6; i++) {
@@ -113,8 +119,8 @@ static void test_mass(void)
         printf("  %d nodes, %d shells; side %.2f kg free, total %.3f kg (hand %.3f), "
                "cg (%.4f %.4f %.4f) m (hand %.4f %.4f %.4f), I (%.1f %.1f %.1f) kg m^2 "
                "(hand %.1f %.1f %.1f), off-diagonal %.2g %.2g %.2g\n",
-               m->nnode, m->nshell, side, M, Mh, c[0], c[1], c[2], ch[0], ch[1], ch[2],
-               I[0][0], I[1][1], I[2][2], Ih[0], Ih[1], Ih[2], I[0][1], I[1][2], I[0][2]);
+               m->nnode, m->nshell, side, M, Mh, c[0], c[1], c[2], ch[0], ch[1], ch[2], I[0][0],
+               I[1][1], I[2][2], Ih[0], Ih[1], Ih[2], I[0][1], I[1][2], I[0][2]);
         /* the bound: mass and inertia within 2 %; the centre within 1 cm */
         CHECK(fabs(M / Mh - 1) < 0.02);
         CHECK(eI < 0.02);

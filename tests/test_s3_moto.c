@@ -130,6 +130,11 @@ static void test_mass_properties(void)
     FIG_TOL("moto.ixx_err_pct", "%.2f", 100 * (fe.I[0] / ref.I[0] - 1), 0.015);
     FIG_TOL("moto.iyy_err_pct", "%.2f", 100 * (fe.I[1] / ref.I[1] - 1), 0.015);
     FIG_TOL("moto.izz_err_pct", "%.2f", 100 * (fe.I[2] / ref.I[2] - 1), 0.015);
+    /* the step is the shells' (the 43 x 2 mm stanchions' 16 mm edges: l / c = 16 mm / 5.2 km/s
+       = 3 us, times the 0.9 safety factor), not the suspension springs' */
+    CHECK(m->dt_discrete > 2 * m->dt_initial);
+    CHECK(m->dt_initial > 1.5e-6);
+    FIG_TOL("moto.dt_coarse_us", "%.2f", 1e6 * m->dt_initial, 0.015);
     FIG("moto.elements_coarse", "%.0f", (double)m->nelem);
     FIG("moto.bodies", "%.0f", (double)m->nbody);
     FIG("moto.joints", "%.0f", (double)m->njoint);

@@ -260,7 +260,7 @@ static const char *mme_unit(const char *si)
 }
 
 static mcs_status write_channel(const char *path, const char *test, const an_signal *s,
-                                mcs_error *err)
+                                const an_mme_axes *ax, mcs_error *err)
 {
     FILE *f = fopen(path, "w");
     if (!f) return MCS_ERR(err, MCS_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
@@ -269,24 +269,27 @@ static mcs_status write_channel(const char *path, const char *test, const an_sig
     fprintf(f, "%-28s:%s\n", "Name of the channel", s->name);
     fprintf(f, "%-28s:%s\n", "Channel code", s->name);
     fprintf(f, "%-28s:%s\n", "Unit", mme_unit(s->unit));
+    if (ax) {
+        fprintf(f, "%-28s:%s\n", "Reference system", ax->frame[0] ? ax->frame : "NOVALUE");
+        fprintf(f, "%-28s:%c\n", "Direction", ax->direction ? ax->direction : '0');
+    }
     if (s->cfc > 0)
         fprintf(f, "%-28s:%d\n", "Channel frequency class", s->cfc);
     else
         fprintf(f, "%-28s:NOVALUE\n", "Channel frequency class");
-    fprintf(f, "%-28s:%.12g\n", "Time of first sample", s->t[0]);
-    fprintf(f, "%-28s:%.12g\n", "Sampling interval", dt);
+    fprintf(f, "%-28s:%.17g\n", "Time of first sample", s->t[0]);
+    fprintf(f, "%-28s:%.17g\n", "Sampling interval", dt);
     fprintf(f, "%-28s:%d\n", "Number of samples", s->n);
-    for (int i = 0; i < s->n; i++) fprintf(f, "%.10g\n", s->y[i]);
+    /* 17 significant digits: every double reads back bit for bit */
+    for (int i = 0; i < s->n; i++) fprintf(f, "%.17g\n", s->y[i]);
     int bad = ferror(f);
     if (fclose(f) != 0 || bad)
         return MCS_ERR(err, MCS_ERR_IO, "%s: write error", path);
     return MCS_OK;
 }
 
-mcs_status an_mme_write(const char *dir, const char *test, const an_signal *ch, int n,
-                        mcs_error *err)
+mcs_status an_mme_check(const an_signal *ch, int n, mcs_error *err)
 {
-    /* validate everything first, so nothing is written for bad input */
     if (n < 1 || n > 999) return MCS_ERR(err, MCS_ERR_RANGE, "ISO-MME: %d channels (1..999)", n);
     for (int c = 0; c < n; c++) {
         const an_signal *s = &ch[c];
@@ -300,7 +303,30 @@ mcs_status an_mme_write(const char *dir, const char *test, const an_signal *ch, 
                                "ISO-MME: channel %s is not uniformly sampled (sample %d at %g s); "
                                "ISO-MME needs a constant sampling interval",
                                s->name, i, s->t[i]);
+        /* the unit as written must read back as the same SI unit, unscaled */
+        double factor = 0;
+        const char *si = NULL;
+        if (!an_unit_to_si(mme_unit(s->unit), &factor, &si) || factor != 1 ||
+            strcmp(si, s->unit) != 0)
+            return MCS_ERR(err, MCS_ERR_UNIT,
+                           "ISO-MME: channel %s: unit \"%s\" is not an SI unit the reader knows",
+                           s->name, s->unit);
     }
+    return MCS_OK;
+}
+
+mcs_status an_mme_write(const char *dir, const char *test, const an_signal *ch, int n,
+                        mcs_error *err)
+{
+    return an_mme_write_axes(dir, test, ch, NULL, n, err);
+}
+
+mcs_status an_mme_write_axes(const char *dir, const char *test, const an_signal *ch,
+                             const an_mme_axes *axes, int n, mcs_error *err)
+{
+    /* validate everything first, so nothing is written for bad input */
+    mcs_status st0 = an_mme_check(ch, n, err);
+    if (st0) return st0;
     char path[4600];
     if (mkdir(dir, 0777) != 0 && errno != EEXIST)
         return MCS_ERR(err, MCS_ERR_IO, "%s: cannot create: %s", dir, strerror(errno));
@@ -329,7 +355,7 @@ mcs_status an_mme_write(const char *dir, const char *test, const an_signal *ch, 
     if (fclose(f) != 0) return MCS_ERR(err, MCS_ERR_IO, "%s: write error", path);
     for (int c = 0; c < n; c++) {
         snprintf(path, sizeof path, "%s/Channel/%s.%03d", dir, test, c + 1);
-        mcs_status st = write_channel(path, test, &ch[c], err);
+        mcs_status st = write_channel(path, test, &ch[c], axes ? &axes[c] : NULL, err);
         if (st) return st;
     }
     return MCS_OK;

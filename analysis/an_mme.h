@@ -22,4 +22,19 @@ mcs_status an_mme_read_file(const char *chan_path, an_signal *out, mcs_error *er
 mcs_status an_mme_write(const char *dir, const char *test, const an_signal *ch, int n,
                         mcs_error *err);
 
+/* a channel's axes for the channel file: `Reference system` (the frame's text, "" NOVALUE) and
+ * `Direction` (X, Y, Z, R for a resultant, 0 for none) */
+typedef struct {
+    char frame[64];
+    char direction;
+} an_mme_axes;
+
+/* the checks an_mme_write makes before writing: 1..999 channels, each of >= 2 uniform samples,
+ * a unit that reads back as itself */
+mcs_status an_mme_check(const an_signal *ch, int n, mcs_error *err);
+
+/* an_mme_write with axes[c] (may be NULL) written into channel c's file */
+mcs_status an_mme_write_axes(const char *dir, const char *test, const an_signal *ch,
+                             const an_mme_axes *axes, int n, mcs_error *err);
+
 #endif

@@ -17,8 +17,9 @@
       "run the FE rider-interaction model on stage-1 vehicle motion")                              \
     X(stage3, "mcrash stage3 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]",                        \
       "run the full FE vehicle model")                                                             \
-    X(retune, "mcrash retune STAGE3.h5 -o CURVES.yaml",                                            \
-      "turn stage-3 force-crush results into stage-1 characteristics")                             \
+    X(retune, "mcrash retune STAGE3.h5 --scenario STAGE1.yaml [-o CURVES.yaml] [--end-time T] "    \
+              "[--json]",                                                                          \
+      "fit stage-1 front characteristics to stage-3 wall force and fork angle")                    \
     X(loop, "mcrash loop SCENARIO.yaml [--max-iter N]",                                            \
       "stage 3 -> retune -> stage 1 -> stage 2 until the ratings settle")                          \
     X(injury, "mcrash injury OUT.h5 [B.h5 ...] [--stage N] [--dummy SIZE] [--json]",               \
@@ -30,7 +31,7 @@
     X(compare, "mcrash compare REF CMP | OUT.h5 --stages A,B [--method iso18571|cora] [--json]",   \
       "objective rating of one curve against another")                                             \
     X(export, "mcrash export OUT.h5 --xdmf [FILE.xmf] [--stride N] | --xdmf2 [FILE.xmf] | "         \
-              "--csv DIR | --mme DIR | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long|--i10]",                                                  \
+              "--csv DIR | --mme DIR [--stage N] | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long|--i10]",                                                  \
       "write a results file in other formats (XDMF for ParaView, CSV, LS-DYNA keyword mesh)")                            \
     X(report, "mcrash report OUT.h5 -o DIR", "HTML page with plots")                               \
     X(study, "mcrash study STUDY.yaml [-o STUDY.h5]", "design of experiments")

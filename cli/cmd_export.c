@@ -1,10 +1,12 @@
 /* cmd_export.c: `mcrash export OUT.h5 --csv DIR | --xdmf [FILE.xmf] [--stride N]`
  * (--xdmf2 [FILE.xmf] writes XDMF 2 for ParaView's legacy "XDMF Reader")
  * | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long | --i10] (LS-DYNA keyword mesh,
- * translators/tr_keyword.h) */
+ * translators/tr_keyword.h) | --mme DIR [--stage N] (ISO-MME, one test per stage,
+ * translators/tr_mme.h) */
 #include "cli/cli.h"
 #include "core/mcs_results_export.h"
 #include "translators/tr_keyword.h"
+#include "translators/tr_mme.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,6 +19,7 @@ typedef struct {
     const char *xmf;     /* its FILE.xmf, NULL: default */
     mcs_xdmf_opts xo;
     const char *k;       /* --k FILE                    */
+    const char *mme_dir; /* --mme DIR                   */
     tr_kw_export_opts ko;
 } export_args;
 
@@ -71,10 +74,8 @@ static int parse(int argc, char **argv, export_args *a)
         } else if (strcmp(s, "--long") == 0 || strcmp(s, "--i10") == 0) {
             a->ko.fmt = s[2] == 'l' ? FE_KW_FIXED_LONG : FE_KW_FIXED_I10;
         } else if (strcmp(s, "--mme") == 0) {
-            char what[32];
-            snprintf(what, sizeof what, "export %s", s);
-            cli_not_built(what, "translators/");
-            return 3;
+            if (i + 1 >= argc) return cli_usage(argv[0]);
+            a->mme_dir = argv[++i];
         } else if (s[0] == '-') {
             fprintf(stderr, "mcrash export: unknown option %s\n", s);
             return cli_usage(argv[0]);
@@ -85,7 +86,7 @@ static int parse(int argc, char **argv, export_args *a)
             return cli_usage(argv[0]);
         }
     }
-    if (!a->h5 || (!a->csv_dir && !a->xdmf && !a->k)) return cli_usage(argv[0]);
+    if (!a->h5 || (!a->csv_dir && !a->xdmf && !a->k && !a->mme_dir)) return cli_usage(argv[0]);
     return 0;
 }
 
@@ -139,6 +140,13 @@ int cli_export(int argc, char **argv)
         int nn = 0, ne = 0;
         st = tr_kw_export(r, a.k, &a.ko, &nn, &ne, &err);
         if (!st) printf("wrote %s (%d nodes, %d elements)\n", a.k, nn, ne);
+    }
+    if (!st && a.mme_dir) {
+        int ns = 0, nc = 0;
+        st = tr_mme_export(r, a.mme_dir, a.ko.stage, &ns, &nc, &err);
+        if (!st)
+            printf("wrote %d ISO-MME test%s (%d channels) in %s\n", ns, ns == 1 ? "" : "s", nc,
+                   a.mme_dir);
     }
     mcs_results_close(&r);
     if (st) {

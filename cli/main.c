@@ -1,6 +1,7 @@
 /* main.c: `mcrash` — dispatch to the subcommands of cli.h */
 #include "cli/cli.h"
 #include "core/mcs_version.h"
+#include "stage3_fe/s3_moto.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -63,6 +64,7 @@ int cli_not_built(const char *name, const char *where)
 
 int main(int argc, char **argv)
 {
+    s3_moto_register(); /* fe.parts mesh generate: motorcycle */
     if (argc < 2) {
         print_help(stderr);
         return 2;

@@ -508,6 +508,15 @@ static const mcs_smap sphere_shell_map = {.what = "sphere_shell mesh", .keys = s
 static const mcs_smap line_map = {.what = "line mesh", .keys = line_keys};
 static const mcs_smap flat_bag_map = {.what = "flat_bag mesh", .keys = flat_bag_keys};
 static const mcs_smap keyword_map = {.what = "keyword mesh", .keys = keyword_keys};
+/* the parametric FE motorcycle (stage3_fe/s3_moto.h): parts <name>_frame, ... from a stage-1
+ * motorcycle model; its sections and materials are its own */
+static const mcs_skey motorcycle_keys[] = {
+    /* relative to the YAML file that names it (scenarios/models/motorcycles/sport_208kg.yaml) */
+    S("model", REQ | NE, "stage-1 motorcycle model file (bodies, joints, characteristics)"),
+    Q("element_size", LEN, REQ | GT, 0, 0, "target element edge (coarse 0.04, fine 0.01) [m]"),
+    END,
+};
+static const mcs_smap motorcycle_map = {.what = "motorcycle mesh", .keys = motorcycle_keys};
 static const mcs_smap foam_pad_map = {
     .what = "foam_pad mesh", .keys = foam_pad_keys, .check = mcs_rule_surface_mesh};
 static const mcs_smap surface_shell_map = {
@@ -523,6 +532,7 @@ static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"line", &line_map},
                                              {"foam_pad", &foam_pad_map},
                                              {"surface_shell", &surface_shell_map},
+                                             {"motorcycle", &motorcycle_map},
                                              {"(keyword)", &keyword_map},
                                              {0}};
 /* the initial metric method (fe/fe_imm.c, docs/gasbag.md): membrane parts only */

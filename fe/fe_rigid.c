@@ -213,8 +213,9 @@ mcs_status fe_rigid_finish(fe_model *m, mcs_error *err)
                 }
             B->fix |= f;
         }
-        /* the part's own constraints (*MAT_RIGID CMO 1), held at rest */
-        B->fix |= m->part[B->part].material.rigid_fix;
+        /* the part's own constraints (*MAT_RIGID CMO 1), held at rest; a nodal rigid body
+           (part -1) has none */
+        if (B->part >= 0) B->fix |= m->part[B->part].material.rigid_fix;
         if (B->fix & FE_DOF_ROT) B->fix |= FE_DOF_ROT;
     }
     return MCS_OK;

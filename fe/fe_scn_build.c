@@ -202,11 +202,41 @@ static const mcs_node *material_of(const mcs_node *parts, const mcs_node *p, mcs
     return NULL;
 }
 
+static struct {
+    char name[32];
+    fe_scn_generator fn;
+} generator[4];
+
+void fe_scn_set_generator(const char *name, fe_scn_generator fn)
+{
+    for (int i = 0; i < 4; i++)
+        if (!generator[i].fn || strcmp(generator[i].name, name) == 0) {
+            snprintf(generator[i].name, sizeof generator[i].name, "%s", name);
+            generator[i].fn = fn;
+            return;
+        }
+}
+
+/* the registered generator of part p's mesh, NULL none */
+static fe_scn_generator generator_of(const mcs_node *p)
+{
+    const char *gen = mcs_node_str(fe_scn_get(fe_scn_get(p, "mesh"), "generate"));
+    for (int i = 0; gen && i < 4 && generator[i].fn; i++)
+        if (strcmp(generator[i].name, gen) == 0) return generator[i].fn;
+    return NULL;
+}
+
 static mcs_status add_parts_(fe_builder *b, const mcs_node *root, const mcs_node *parts,
                              fe_scn_kw_cache **kc, mcs_error *err)
 {
     for (int i = 0; i < mcs_node_len(parts); i++) {
         const mcs_node *p = mcs_node_at(parts, i);
+        fe_scn_generator gen = generator_of(p);
+        if (gen) { /* several parts from one entry (a motorcycle: stage3_fe/s3_moto.h) */
+            mcs_status st = gen(b, root, p, err);
+            if (st) return st;
+            continue;
+        }
         fe_part_desc d = fe_part_desc_default();
         snprintf(d.name, sizeof d.name, "%s", mcs_node_str(fe_scn_get(p, "name")));
         if (strlen(mcs_node_str(fe_scn_get(p, "name"))) >= sizeof d.name)

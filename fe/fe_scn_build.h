@@ -80,4 +80,11 @@ mcs_status fe_scn_build_with(const mcs_scenario *scn, const fe_scn_place *place,
                              fe_scn_hook hook, void *ctx, fe_problem *out, mcs_error *err);
 void fe_problem_free(fe_problem *p);
 
+/* a generator of several parts from one fe.parts entry (its mesh: {generate: <name>, ...}),
+ * outside fe/ (stage3_fe/s3_moto.c: `motorcycle`); registered once at start-up (cli main, the
+ * tests). An unregistered name is refused at its generate: key */
+typedef mcs_status (*fe_scn_generator)(fe_builder *b, const mcs_node *root, const mcs_node *part,
+                                       mcs_error *err);
+void fe_scn_set_generator(const char *name, fe_scn_generator fn);
+
 #endif

@@ -156,6 +156,36 @@ static void check_contact_mpp(const fe_kw_deck *d)
     CHECK(d->contact[1].id == 1000002 && d->contact[1].type == FE_KW_CT_N2S);
 }
 
+/* materials.k (mm-s-t), by hand: 7.85e-9 t/mm^3 = 7850 kg/m^3, 210000 MPa = 2.1e11 Pa,
+ * 350 MPa, 1200 MPa; SRC 40.4/s; foam 6e-11 t/mm^3 = 60 kg/m^3, E 5 MPa, TC 1e20 (none),
+ * its curve's compressive points (0.05, 0.04 MPa), (0.5, 0.08 MPa), (0.8, 0.6 MPa) (the tension
+ * point and (0, 0) left to E); null 1e-9 t/mm^3 = 1000 kg/m^3, YM 5 MPa; rigid CMO 1, 7, 7 */
+static void check_materials(const fe_kw_deck *d)
+{
+    const fe_kw_mat *pk = fe_kw_find_mat(d, 1), *fo = fe_kw_find_mat(d, 2);
+    const fe_kw_mat *nu = fe_kw_find_mat(d, 3), *ri = fe_kw_find_mat(d, 4);
+    CHECK(pk && pk->type == FE_KW_MAT_PK && fabs(pk->ro - 7850) < 1e-9 &&
+          fabs(pk->e - 2.1e11) < 1 && fabs(pk->sigy - 3.5e8) < 1e-3 &&
+          fabs(pk->etan - 1.2e9) < 1e-3 && pk->beta == 1 && pk->c == 40.4 && pk->p == 5 &&
+          pk->fail == 0.3);
+    CHECK(fo && fo->type == FE_KW_MAT_LDF && fabs(fo->ro - 60) < 1e-9 && fabs(fo->e - 5e6) < 1e-6 &&
+          fo->lcid == 10 && fo->tc == 0 && fo->hu == 0.25 && fo->shape == 4);
+    CHECK(nu && nu->type == FE_KW_MAT_NULL && fabs(nu->ro - 1000) < 1e-9 &&
+          fabs(nu->e - 5e6) < 1e-6 && nu->pr == 0.3);
+    CHECK(ri && ri->type == FE_KW_MAT_RIGID && ri->cmo == 1 && ri->con1 == 7 && ri->con2 == 7);
+    fe_part_desc a = fe_part_desc_default(), b = fe_part_desc_default();
+    fe_part_desc c = fe_part_desc_default(), r = fe_part_desc_default();
+    mcs_error err = {0};
+    CHECK(fe_kw_part_props(d, 1, &a, &err) == MCS_OK && fe_kw_part_props(d, 2, &b, &err) == MCS_OK);
+    CHECK(fe_kw_part_props(d, 3, &c, &err) == MCS_OK && fe_kw_part_props(d, 4, &r, &err) == MCS_OK);
+    /* bilinear: H = E Et / (E - Et) = 210000 * 1200 / 208800 MPa = 1206.896552 MPa */
+    CHECK(a.material.model == FE_MAT_ELASTIC_PLASTIC && a.material.failure_strain == 0.3 &&
+          fabs(a.material.hardening[1][1] - 3.5e8 - 1206.896552e6) < 1);
+    CHECK(b.material.model == FE_MAT_FOAM && b.material.foam_npoint[0] == 3 &&
+          fabs(b.material.foam_curve[0][0][1] - 4e4) < 1e-9 && b.material.poisson == 0);
+    CHECK(c.material.model == FE_MAT_NULL && r.material.rigid_fix == FE_DOF_ALL);
+}
+
 static const corpus_row corpus[] = {
     /* parameters */
     {"param_basic.k", "mm-s-t", BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, check_param_basic},
@@ -211,6 +241,14 @@ static const corpus_row corpus[] = {
     {"part_inertia.k", NULL, BUILD_DECK, 16, {0, 2}, 2, 2, NULL, NULL, NULL},
     {"hourglass.k", NULL, BUILD_DECK, 40, {0, 5}, 5, 1, NULL, NULL, NULL},
     {"timestep.k", NULL, BUILD_DECK, 8, {0, 1}, 1, 1, NULL, NULL, NULL},
+    /* materials (closed forms and refusals: test_kw_mat.c, test_fe_erosion.c) */
+    {"materials.k", "mm-s-t", BUILD_DECK, 20, {2, 2}, 4, 4, NULL, NULL, check_materials},
+    {"mooney_refused.k", "mm-s-t", READ_ONLY, 0, {0}, 0, 0,
+     "*MAT_MOONEY-RIVLIN_RUBBER: material 1: the Mooney-Rivlin hyperelastic solid is not built",
+     "mooney_refused.k:11:", NULL},
+    {"foam_damped.k", "mm-s-t", READ_ONLY, 0, {0}, 0, 0,
+     "*MAT_LOW_DENSITY_FOAM: field DAMP: 0.5: the foam's viscous damping is not built",
+     "foam_damped.k:6:71:", NULL},
 };
 
 #define NROW ((int)(sizeof corpus / sizeof corpus[0]))

@@ -1,0 +1,80 @@
+/* tr_retune.h: stage-3 results -> stage-1 characteristics (`mcrash retune`, docs/retune.md).
+ * The front's stage-1 characteristics are parameterised by four physical parameters
+ *   p[0] tyre force scale   on the tyre characteristic's loading forces          [-]
+ *   p[1] fork moment scale  on the fork hinge's elastic limit and plastic moments [-]
+ *   p[2] elastic limit angle of the fork hinge (its elastic slope M_e / phi_e)     [rad]
+ *   p[3] stop angle of the fork hinge: the wheel against the engine               [rad]
+ * and fitted by bounded least squares (tr_lm.h) so that stage-1 runs of the scenario reproduce
+ * the target's wall force and fork angle on a common CFC-filtered time grid. */
+#ifndef TR_RETUNE_H
+#define TR_RETUNE_H
+
+#include "core/mcs_error.h"
+
+#include <stdio.h>
+
+#define TR_RT_NPAR 4
+#define TR_RT_MAXPT 32
+
+typedef struct {
+    const char *scenario;  /* the stage-1 scenario file                                    */
+    const char *wall_body; /* stage-1 body the wall force acts on ("barrier")              */
+    const char *joint;     /* fork hinge joint ("moto_fork_deformation")                   */
+    const char *tyre_char; /* tyre characteristic ("tyre_front")                           */
+    const char *fork_char; /* fork hinge characteristic ("fork_deformation")               */
+    double end_time;       /* compared span [s]; 0: the target's and scenario's shorter    */
+    double cfc;            /* filter class on both signals (60)                            */
+    double dt;             /* common grid interval [s] (1e-4)                              */
+    int free_mask;         /* bit i: p[i] is fitted (all four: 0xf)                        */
+} tr_rt_opts;
+
+/* the scenario's characteristics as read (SI) */
+typedef struct {
+    int ntyre;
+    double tyre_x[TR_RT_MAXPT], tyre_y[TR_RT_MAXPT];
+    double m_e, phi_e, m_p, phi_s, k_stop; /* fork: elastic limit, plastic, stop, its slope  */
+} tr_rt_base;
+
+/* the target: wall force and fork angle on their own time grid */
+typedef struct {
+    int nt;
+    double *t, *force, *angle;
+} tr_rt_target;
+
+typedef struct {
+    double p0[TR_RT_NPAR], p[TR_RT_NPAR];  /* start (the scenario's) and fitted             */
+    double lo[TR_RT_NPAR], hi[TR_RT_NPAR]; /* bounds                                       */
+    double iso_force0, iso_angle0;         /* ISO/TS 18571 ratings before                  */
+    double iso_force, iso_angle;           /* and after                                    */
+    double cost0, cost;                    /* objective before / after                     */
+    int iter, nfev;
+    const char *why;
+} tr_rt_result;
+
+tr_rt_opts tr_rt_opts_default(void);
+const char *tr_rt_par_name(int i);
+
+/* read /stage3/time, the sum of /stage3/rigidwall/<wall>/force over every wall and
+ * /stage3/joints/<joint>/angle; missing ones fail naming file and key */
+mcs_status tr_rt_read_target(const char *h5, const char *joint, tr_rt_target *t, mcs_error *err);
+void tr_rt_target_free(tr_rt_target *t);
+
+/* the scenario's tyre and fork characteristics; missing ones fail naming file and key */
+mcs_status tr_rt_read_base(const tr_rt_opts *o, tr_rt_base *b, mcs_error *err);
+
+/* the characteristics at p as YAML (`characteristics:` of a file the scenario includes) */
+void tr_rt_write_yaml(FILE *f, const tr_rt_opts *o, const tr_rt_base *b, const double *p);
+
+/* stage 1 at p, sampled on the target's grid (force, angle: nt values each, CFC-filtered) */
+mcs_status tr_rt_stage1(const tr_rt_opts *o, const tr_rt_base *b, const double *p, int nt,
+                        double dt, double *force, double *angle, mcs_error *err);
+
+/* the fit; r->p0 is filled from b */
+mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_target *t,
+                     tr_rt_result *r, mcs_error *err);
+
+/* /curves/<characteristic>/{loading,unloading} of the fitted characteristics into h5 */
+mcs_status tr_rt_write_curves(const char *h5, const tr_rt_opts *o, const tr_rt_base *b,
+                              const double *p, mcs_error *err);
+
+#endif

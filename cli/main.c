@@ -2,6 +2,7 @@
 #include "cli/cli.h"
 #include "core/mcs_version.h"
 #include "stage3_fe/s3_moto.h"
+#include "stage3_fe/s3_sedan.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -65,6 +66,7 @@ int cli_not_built(const char *name, const char *where)
 int main(int argc, char **argv)
 {
     s3_moto_register(); /* fe.parts mesh generate: motorcycle */
+    s3_sedan_register(); /* fe.parts mesh generate: sedan_side */
     if (argc < 2) {
         print_help(stderr);
         return 2;

@@ -517,6 +517,15 @@ static const mcs_skey motorcycle_keys[] = {
     END,
 };
 static const mcs_smap motorcycle_map = {.what = "motorcycle mesh", .keys = motorcycle_keys};
+/* the sedan's side structure in FE (stage3_fe/s3_sedan.h): parts <name>_door_outer, ... and
+ * the rigid rest <name>_body from a stage-1 sedan model; its sections and materials are its own */
+static const mcs_skey sedan_side_keys[] = {
+    /* relative to the YAML file that names it (scenarios/models/opponents/sedan_1668kg.yaml) */
+    S("model", REQ | NE, "stage-1 sedan model file (bodies sedan, sedan_upper; side surfaces)"),
+    Q("element_size", LEN, REQ | GT, 0, 0, "target element edge (coarse 0.05, fine 0.01) [m]"),
+    END,
+};
+static const mcs_smap sedan_side_map = {.what = "sedan_side mesh", .keys = sedan_side_keys};
 static const mcs_smap foam_pad_map = {
     .what = "foam_pad mesh", .keys = foam_pad_keys, .check = mcs_rule_surface_mesh};
 static const mcs_smap surface_shell_map = {
@@ -533,6 +542,7 @@ static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"foam_pad", &foam_pad_map},
                                              {"surface_shell", &surface_shell_map},
                                              {"motorcycle", &motorcycle_map},
+                                             {"sedan_side", &sedan_side_map},
                                              {"(keyword)", &keyword_map},
                                              {0}};
 /* the initial metric method (fe/fe_imm.c, docs/gasbag.md): membrane parts only */

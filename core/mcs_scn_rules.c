@@ -179,9 +179,9 @@ mcs_status mcs_rule_fe_part(scn_walk *w, mcs_node *map)
         return scn_walk_fail(w, map, "material_from", MCS_ERR_KEY,
                              "give material or material_from, not both");
     if (mesh && given(mesh, "keyword")) return MCS_OK;
-    /* a generated motorcycle brings its own (stage3_fe/s3_moto.h) */
+    /* a generated motorcycle or sedan side brings its own (stage3_fe/s3_moto.h, s3_sedan.h) */
     const char *gen = mcs_node_str(given(mesh, "generate"));
-    if (gen && strcmp(gen, "motorcycle") == 0) return MCS_OK;
+    if (gen && (strcmp(gen, "motorcycle") == 0 || strcmp(gen, "sedan_side") == 0)) return MCS_OK;
     static const char *const keys[] = {"section", "material"};
     for (int i = 0; i < 2; i++)
         if (!given(map, keys[i]) && !(i == 1 && given(map, "material_from")))

@@ -315,6 +315,8 @@ static mcs_status add_contact_sides(const kb *c, int i, side *psl, side *pms)
     d.friction = k->fs * k->fsf;
     d.friction_dynamic = k->dc > 0 ? k->fd * k->fsf : -1;
     d.friction_decay = k->dc;
+    d.damping = k->vdc / 100; /* VDC: percent of critical -> fraction */
+    d.birth = k->bt, d.death = k->dt;
     if (k->dc > 0 && k->fd > k->fs)
         return at(dk, k->loc, c->err, MCS_ERR_UNSUPPORTED,
                   "*%s: FD %g > FS %g: friction that grows with the slip speed is not built",

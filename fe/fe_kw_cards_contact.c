@@ -141,19 +141,24 @@ static mcs_status contact_card2(kw_ctx *c, const kw_card *cd, fe_kw_contact *k)
                                   : 2,
                       "FS/FD/DC",
                       "friction from *PART_CONTACT or a table (negative values) is not built");
-    if (k->vc != 0 || k->vdc != 0)
-        return refuse(c, cd, k->vc != 0 ? 3 : 4, k->vc != 0 ? "VC" : "VDC",
-                      "viscous friction and contact damping are not built (leave 0)");
-    if (k->bt != 0) return refuse(c, cd, 6, "BT", "a contact birth time is not built (leave 0)");
+    if (k->vc != 0)
+        return refuse(c, cd, 3, "VC", "the viscous friction limit is not built (leave 0)");
+    /* VDC: normal contact damping in percent of critical (fe_contact_desc.damping) */
+    if (!(k->vdc >= 0 && k->vdc <= 100))
+        return refuse(c, cd, 4, "VDC", "contact damping is a percentage of critical: 0..100");
+    if (k->bt < 0)
+        return refuse(c, cd, 6, "BT", "a negative birth time (dynamic relaxation) is not built");
     if (k->dt >= 1e20) k->dt = 0; /* the default: never */
-    if (k->dt != 0)
-        return refuse(c, cd, 7, "DT", "a contact death time is not built (leave blank)");
+    if (k->dt < 0)
+        return refuse(c, cd, 7, "DT", "a negative death time (dynamic relaxation) is not built");
+    if (k->dt != 0 && k->dt <= k->bt)
+        return refuse(c, cd, 7, "DT", "the death time must come after the birth time BT");
     if (penchk != 0)
         warn(c, cd,
              "PENCHK %d read and ignored: the kernel never releases a penetrating node "
              "(docs/fe.md, Contact)",
              penchk);
-    k->bt *= c->d->unit[1];
+    k->bt *= c->d->unit[1], k->dt *= c->d->unit[1];
     return MCS_OK;
 }
 

@@ -112,7 +112,7 @@ static double slope(const double *t, const double *y, int i0, int i1)
  * velocity over [50, 300] ms), the slip of its centre of mass on the plate at 300 ms and the
  * largest, the mean of the acceleration channel over [50, 300] ms and (v(t1) - v(t0)) / T */
 static double plate_run(double a, double mu, double *m, double *cg, double *slip, double *slip_max,
-                        double *a_chan, double *dvdt)
+                        double *a_chan, double *dvdt, double split[3])
 {
     char motion[128], out[128], y[8192], body[2048];
     tpath(motion, sizeof motion, "plate1.h5");
@@ -143,6 +143,19 @@ static double plate_run(double a, double mu, double *m, double *cg, double *slip
         for (int i = 0; i <= i1; i++)
             *slip_max = fmax(*slip_max, fabs(r.x[3 * i] - r.x[0] - 0.5 * a * r.t[i] * r.t[i]));
         *dvdt = (r.v[3 * i1] - r.v[3 * i0]) / (r.t[i1] - r.t[i0]);
+        /* Newton on the block, x(T) - x0 - 0.5 mu g T^2 = int_0^T (T - t) (F_x / M - mu g) dt,
+         * split with the contact force channel F = (F_x, F_z) into the friction below mu F_z,
+         * int (T - t) (F_x - mu F_z) / M, and the normal force off M g,
+         * int (T - t) mu (F_z - M g) / M (trapezoid at 1 kHz), and the mean F_z */
+        const double T = r.t[i1], M = r.mass[0], g = 9.80665;
+        split[0] = split[1] = split[2] = 0;
+        for (int i = 0; i < i1; i++)
+            for (int j = i; j <= i + 1; j++) {
+                const double w = 0.5 * (r.t[i + 1] - r.t[i]), fx = r.f[3 * j], fz = r.f[3 * j + 2];
+                split[0] += w * (T - r.t[j]) * (fx - mu * fz) / M;
+                split[1] += w * (T - r.t[j]) * mu * (fz - M * g) / M;
+                split[2] += w * fz / T;
+            }
         printf(
             "plate at %g m/s^2, mu %g: block v_x %.4f m/s at %.0f ms (plate %.4f), mean a_x "
             "%.4f m/s^2 over [50, 300] ms (channel's mean %.4f, dv/dt %.4f), slip %.3g m (largest "
@@ -160,7 +173,8 @@ static void test_plate(void)
     const double g = 9.80665, mu = 0.5;
     double m = 0, cg[3] = {0}, ach, slip, slip_max = 0, dvdt;
     /* stuck: a = 2 < mu g = 4.90 */
-    double a_st = plate_run(2, mu, &m, cg, &slip, &slip_max, &ach, &dvdt);
+    double split[3];
+    double a_st = plate_run(2, mu, &m, cg, &slip, &slip_max, &ach, &dvdt, split);
     /* the deck by hand: 1000 kg/m^3 x 0.30 x 0.30 x 0.45 m; centre of the block */
     printf("deck: mass %.12g kg (hand 40.5), cg (%.3g, %.3g, %.12g) m (hand (0, 0, 0.225))\n", m,
            cg[0], cg[1], cg[2]);
@@ -184,15 +198,27 @@ static void test_plate(void)
     /* sliding: a = 8 > mu g; the friction mu M g gives a_x = mu g = 4.903, the block slips
      * back by 0.5 (a - mu g) t^2 = 0.139 m at 300 ms */
     slip_max = 0;
-    double a_sl = plate_run(8, mu, &m, cg, &slip, &slip_max, &ach, &dvdt);
+    double a_sl = plate_run(8, mu, &m, cg, &slip, &slip_max, &ach, &dvdt, split);
     const double e_sl = fabs(a_sl - mu * g) / (mu * g), slip_ref = -0.5 * (8 - mu * g) * 0.09;
     CHECK(e_sl < 0.03);
     CHECK(fabs(ach - dvdt) < 0.03 * mu * g);
-    /* the slip is 9 % over the closed form: the friction averages ~3 % below mu M g (the
-     * block rocks and its base nodes re-enter contact with their stick springs unloaded) */
+    /* the slip is 9 % over the closed form. Cause (docs/validation_stage2.md): in the first
+     * ~50 ms part of the base nodes stick to the plate (the block shears and its base spreads;
+     * a friction spring 10x stiffer or a 4x finer step changes nothing) and the friction is
+     * below mu F_z; after 60 ms every contact node slides at mu F_z. The normal force is not
+     * lost: its mean over the run is M g (z momentum: the block ends nearly at rest in z). So
+     * the friction term carries the slip excess and the normal term is small */
     CHECK(fabs(slip - slip_ref) < 0.15 * fabs(slip_ref));
-    printf("sliding: slip %.4f m, closed form %.4f m (%+.1f %%)\n", slip, slip_ref,
-           100 * (slip - slip_ref) / fabs(slip_ref));
+    const double exc = slip - slip_ref, Mg = 40.5 * g;
+    printf("sliding: slip %.4f m, closed form %.4f m (%+.1f %%); of the excess %.2f mm: friction "
+           "below mu N %.2f mm, normal force off M g %.2f mm; mean N %.1f N (M g %.1f)\n",
+           slip, slip_ref, 100 * exc / fabs(slip_ref), 1e3 * exc, 1e3 * split[0], 1e3 * split[1],
+           split[2], Mg);
+    CHECK(fabs(split[2] - Mg) < 0.02 * Mg);
+    CHECK(fabs(split[1]) < 0.25 * fabs(exc) && fabs(split[0] - exc) < 0.25 * fabs(exc));
+    FIG_TOL("stage2.ferider_slide_fric_mm", "%.1f", -1e3 * split[0], 0.3);
+    FIG_TOL("stage2.ferider_slide_normal_mm", "%.1f", 1e3 * split[1], 0.3);
+    FIG_TOL("stage2.ferider_slide_mean_n", "%.0f", split[2], 2);
     FIG_TOL("stage2.ferider_slide_err_pct", "%.1f", 100 * e_sl, 0.5);
     FIG_TOL("stage2.ferider_slide_slip_pct", "%.0f", 100 * (slip - slip_ref) / slip_ref, 2);
 }

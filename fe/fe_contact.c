@@ -304,6 +304,8 @@ static void entry_forces(const fe_model *m, fe_state *s, int e, fe_contact_slot 
     const int scan = cs->ent_flag[e] & FE_CFLAG_SCAN;
     const int *off = cs->cell_off + cs->pass_cell_base[p];
     if (scan) nb = fe_contact_buckets(cs, p, x, bk); /* too many candidates to keep */
+    /* before its birth or after its death the interface finds nothing (its nodes released) */
+    if (s->time < I->birth || (I->death > 0 && s->time > I->death)) nb = 0;
     for (int ib = 0; ib < nb; ib++) {
         const int *item = scan ? cs->cell_item : cs->ent_cand;
         const int b0 = scan ? off[bk[ib]] + P->seg_begin : cs->ent_cand_off[e];
@@ -356,12 +358,24 @@ static void entry_forces(const fe_model *m, fe_state *s, int e, fe_contact_slot 
         double kp = fmin(c->seg_k[sg], c->k_cap / (dt0 * dt0 * (minv + fe_contact_seg_minv(c, m, sg))));
         double fn = -kp * h->gap, el = 0.5 * kp * h->gap * h->gap;
         for (int i = 0; i < 3; i++) f[i] = fn * h->dir[i];
+        double vr[3];
+        for (int i = 0; i < 3; i++) {
+            vr[i] = s->node_v[3 * node + i];
+            for (int j = 0; j < 4; j++) vr[i] -= h->w[j] * s->node_v[3 * q[j] + i];
+        }
+        if (I->damping > 0) {
+            /* LS-DYNA's VDC: c = VDC/100 x 2 m omega, m = min(m_node, m_seg), omega =
+             * sqrt(k (m_node + m_seg) / (m_node m_seg)); the force -c v_n along the normal
+             * (not clipped: a linear Kelvin-Voigt contact), its work dissipated */
+            const double sminv = fe_contact_seg_minv(c, m, sg);
+            const double mm = fmin(1 / minv, sminv > 0 ? 1 / sminv : INFINITY);
+            const double omega = sqrt(kp * (minv + sminv));
+            const double cd = 2 * I->damping * mm * omega, vn = fe_dot(vr, h->dir);
+            for (int i = 0; i < 3; i++) f[i] -= cd * vn * h->dir[i];
+            r[k].d += cd * vn * vn * dtp;
+        }
         if (I->mu_s > 0) {
-            double vr[3], du[3];
-            for (int i = 0; i < 3; i++) {
-                vr[i] = s->node_v[3 * node + i];
-                for (int j = 0; j < 4; j++) vr[i] -= h->w[j] * s->node_v[3 * q[j] + i];
-            }
+            double du[3];
             double vn = fe_dot(vr, h->dir), vt = 0;
             for (int i = 0; i < 3; i++) {
                 du[i] = (vr[i] - vn * h->dir[i]) * dtp;
@@ -369,7 +383,7 @@ static void entry_forces(const fe_model *m, fe_state *s, int e, fe_contact_slot 
             }
             double mu = I->mu_d + (I->mu_s - I->mu_d) * exp(-I->decay * sqrt(vt)), taken;
             double et = fe_friction_update(ft, h->dir, du, kp, mu * fn, &taken);
-            r[k].d = taken - (et - cs->ent_et[slot]);
+            r[k].d += taken - (et - cs->ent_et[slot]);
             cs->ent_et[slot] = et;
             el += et;
             for (int i = 0; i < 3; i++) f[i] += ft[i];

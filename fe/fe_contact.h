@@ -49,6 +49,10 @@ typedef struct {
     double friction;                          /* static Coulomb coefficient mu_s [-]          */
     double friction_dynamic;                  /* dynamic mu_d; < 0 takes mu_s [-]             */
     double friction_decay;                    /* mu = mu_d + (mu_s - mu_d) exp(-dc |v_t|) [s/m] */
+    double damping; /* viscous damping normal to the contact, fraction of critical (LS-DYNA VDC
+                       / 100): c = damping 2 m omega per node, m the smaller of the node's and
+                       the segment's masses, omega = sqrt(k (m_n + m_s) / (m_n m_s)) [-] */
+    double birth, death; /* active from birth to death (death 0: never dies; LS-DYNA BT, DT) [s] */
     double penalty_scale;                     /* s of k = s K A^2/V, s K A/diag; 0 -> 0.1 [-] */
     double thickness_scale;                   /* on the shell offsets t/2; 0 -> 1 [-]         */
     double fabric_thickness;                  /* contact thickness of membrane (fabric) parts;
@@ -134,6 +138,8 @@ int fe_builder_nfacets(const fe_builder *b);
 typedef struct {
     char name[FE_NAME_MAX];
     double mu_s, mu_d, decay;  /* friction law [-], [-], [s/m]                                 */
+    double damping;            /* normal viscous damping, fraction of critical [-]             */
+    double birth, death;       /* active time span (death 0: none) [s]                         */
 } fe_contact_if;
 
 typedef struct {

@@ -59,10 +59,13 @@ mcs_status fe_builder_add_contact(fe_builder *b, const fe_contact_desc *d, mcs_e
     if (st) return st;
     if (!(d->friction >= 0) || !(d->friction_decay >= 0) || !(d->penalty_scale >= 0) ||
         !(d->thickness_scale >= 0) || !isfinite(d->friction_dynamic) ||
+        !(d->damping >= 0 && d->damping <= 1) || !(d->birth >= 0) || !(d->death >= 0) ||
+        (d->death > 0 && d->death <= d->birth) ||
         d->friction_dynamic > d->friction)
         return MCS_ERR(err, MCS_ERR_RANGE,
                        "fe: contact '%s': friction, decay, penalty_scale and thickness_scale "
-                       "must be >= 0 and friction_dynamic <= friction",
+                       "must be >= 0, friction_dynamic <= friction, damping in [0, 1], "
+                       "birth >= 0, death 0 or > birth",
                        d->name);
     if (!(d->fabric_thickness >= 0) || !isfinite(d->fabric_thickness))
         return MCS_ERR(err, MCS_ERR_RANGE, "fe: contact '%s': fabric_thickness must be >= 0",
@@ -776,6 +779,8 @@ mcs_status fe_contact_model_build(const fe_builder *b, fe_model *m, mcs_error *e
         I->mu_s = d->friction;
         I->mu_d = d->friction_dynamic >= 0 ? d->friction_dynamic : d->friction;
         I->decay = d->friction_decay;
+        I->damping = d->damping;
+        I->birth = d->birth, I->death = d->death;
         int sl[FE_CONTACT_PARTS], ma[FE_CONTACT_PARTS];
         int nsl = part_list(b, d->slave, d->nslave, sl), nma = part_list(b, d->master, d->nmaster, ma);
         if (d->type == FE_CONTACT_SINGLE_SURFACE) {

@@ -9,28 +9,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...) __attribute__((format(printf, 5, 6)));
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...)
-{
-    char what[800];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    const char *fn = l.file >= 0 && l.file < dk->nfile ? dk->file[l.file] : "(deck)";
-    if (l.line > 0) return MCS_ERR(err, st, "%s:%d: error: %s", fn, l.line, what);
-    return MCS_ERR(err, st, "%s: error: %s", fn, what);
-}
-
 static mcs_status section_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_section_desc *s,
                                mcs_error *err)
 {
     const fe_kw_section *k = fe_kw_find_section(dk, p->secid);
     char skip[400];
     if (!k)
-        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: section %d is not defined%s", p->id,
+        return kw_at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: section %d is not defined%s", p->id,
                   p->secid, fe_kw_skipped(dk, "SECTION_", skip, sizeof skip));
     if (k->kind == FE_KW_SEC_SHELL) {
         if (k->elform != 0 && k->elform != 2)
@@ -47,16 +32,16 @@ static mcs_status section_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_sec
         for (int i = 0; i < dk->elem[FE_KW_SHELL].n && !(s->thickness > 0); i++)
             if (dk->elem[FE_KW_SHELL].pid[i] == p->id) s->thickness = kw_shell_thickness(dk, k, i);
         if (!(s->thickness > 0))
-            return at(dk, k->loc, err, MCS_ERR_RANGE,
+            return kw_at(dk, k->loc, err, MCS_ERR_RANGE,
                       "*SECTION_SHELL %d: T1 must be > 0 (or every shell give THIC1..THIC4)",
                       k->id);
     } else if (k->kind == FE_KW_SEC_TSHELL) {
-        return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
                   "*SECTION_TSHELL %d: thick shells are not built (docs/keyword.md: one hexahedron "
                   "through the thickness would not bend like them)",
                   k->id);
     } else if (k->kind == FE_KW_SEC_SOLID && k->user) {
-        return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
                   "*SECTION_SOLID %d: ELFORM %d (a user-defined element) is not built", k->id,
                   k->elform);
     } else if (k->kind == FE_KW_SEC_SOLID) {
@@ -67,7 +52,7 @@ static mcs_status section_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_sec
                     dk->file[k->loc.file], k->loc.line, k->id, k->elform);
         s->type = FE_SECTION_SOLID;
     } else if (k->kind == FE_KW_SEC_DISCRETE) {
-        return at(dk, k->loc, err, MCS_ERR_TYPE,
+        return kw_at(dk, k->loc, err, MCS_ERR_TYPE,
                   "*SECTION_DISCRETE %d belongs to *ELEMENT_DISCRETE parts", k->id);
     } else {
         return kw_beam_section(dk, k, s, err); /* fe_kw_build_elem.c */
@@ -84,11 +69,11 @@ static mcs_status hardening(const fe_kw_deck *dk, const fe_kw_mat *k, fe_materia
     if (k->lcss) {
         const fe_kw_curve *c = fe_kw_find_curve(dk, k->lcss);
         if (!c)
-            return at(dk, k->loc, err, MCS_ERR_KEY,
+            return kw_at(dk, k->loc, err, MCS_ERR_KEY,
                       "*MAT_024 %d: LCSS %d is not a *DEFINE_CURVE (tables are not built)", k->id,
                       k->lcss);
         if (c->n > FE_CURVE_MAX)
-            return at(dk, c->loc, err, MCS_ERR_RANGE,
+            return kw_at(dk, c->loc, err, MCS_ERR_RANGE,
                       "*DEFINE_CURVE %d: %d points; a hardening curve holds at most %d", c->id,
                       c->n, FE_CURVE_MAX);
         for (int i = 0; i < c->n; i++) {
@@ -100,19 +85,19 @@ static mcs_status hardening(const fe_kw_deck *dk, const fe_kw_mat *k, fe_materia
     } else if (k->etan > 0) {
         /* bilinear: tangent modulus Et -> plastic modulus H = E Et / (E - Et) */
         if (!(k->etan < k->e))
-            return at(dk, k->loc, err, MCS_ERR_RANGE, "*MAT_024 %d: ETAN must be below E", k->id);
+            return kw_at(dk, k->loc, err, MCS_ERR_RANGE, "*MAT_024 %d: ETAN must be below E", k->id);
         x[0] = 0, y[0] = k->sigy, x[1] = 1, y[1] = k->sigy + k->e * k->etan / (k->e - k->etan);
         n = 2;
     }
     int off = n > 0 && x[0] > 0 ? 1 : 0; /* the table starts at zero plastic strain */
     if (n + off > FE_CURVE_MAX)
-        return at(dk, k->loc, err, MCS_ERR_RANGE, "*MAT_024 %d: more than %d hardening points",
+        return kw_at(dk, k->loc, err, MCS_ERR_RANGE, "*MAT_024 %d: more than %d hardening points",
                   k->id, FE_CURVE_MAX);
     if (off) m->hardening[0][0] = 0, m->hardening[0][1] = k->sigy;
     for (int i = 0; i < n; i++) m->hardening[off + i][0] = x[i], m->hardening[off + i][1] = y[i];
     m->nhardening = n + off;
     if (m->nhardening > 0 && !(m->hardening[0][1] > 0))
-        return at(dk, k->loc, err, MCS_ERR_RANGE,
+        return kw_at(dk, k->loc, err, MCS_ERR_RANGE,
                   "*MAT_024 %d: the yield stress (SIGY, or the curve at zero plastic strain) must "
                   "be > 0",
                   k->id);
@@ -126,10 +111,10 @@ static mcs_status material_desc(const fe_kw_deck *dk, const fe_kw_part *p, fe_ma
     const fe_kw_mat *k = fe_kw_find_mat(dk, p->mid);
     char skip[400];
     if (!k)
-        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: material %d is not defined%s", p->id,
+        return kw_at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: material %d is not defined%s", p->id,
                   p->mid, fe_kw_skipped(dk, "MAT", skip, sizeof skip));
     if (k->type == FE_KW_MAT_SPRING || k->type == FE_KW_MAT_DAMPER)
-        return at(dk, k->loc, err, MCS_ERR_TYPE,
+        return kw_at(dk, k->loc, err, MCS_ERR_TYPE,
                   "material %d is a spring or damper: it belongs to *ELEMENT_DISCRETE parts",
                   k->id);
     memset(m, 0, sizeof *m);
@@ -199,7 +184,7 @@ static mcs_status add_elems(fe_builder *b, const fe_kw_deck *dk, int pid, fe_kw_
         mcs_status st;
         double th = t == FE_KW_SHELL && sec ? kw_shell_thickness(dk, sec, i) : 0;
         if (t == FE_KW_SHELL && sec && !(th > 0))
-            return at(dk, e->loc[i], err, MCS_ERR_RANGE,
+            return kw_at(dk, e->loc[i], err, MCS_ERR_RANGE,
                       "*ELEMENT_SHELL %d: no thickness (THIC1..THIC4 blank, section T1 0)",
                       e->id[i]);
         if (th > 0 && fabs(th - nominal) > 1e-12 * nominal)
@@ -207,7 +192,7 @@ static mcs_status add_elems(fe_builder *b, const fe_kw_deck *dk, int pid, fe_kw_
         else
             st = fe_builder_add_elem(b, ip, c, &kerr);
         if (st)
-            return at(dk, e->loc[i], err, st, "*ELEMENT_%s %d: %s", fe_kw_etype_name(t), e->id[i],
+            return kw_at(dk, e->loc[i], err, st, "*ELEMENT_%s %d: %s", fe_kw_etype_name(t), e->id[i],
                       kerr.msg);
     }
     return MCS_OK;
@@ -332,7 +317,7 @@ static mcs_status set_ids(const fe_kw_deck *dk, int sid, fe_kw_loc l, int **ids,
     const fe_kw_set *s = fe_kw_find_set(dk, sid, 0);
     char skip[400];
     if (!s)
-        return at(dk, l, err, MCS_ERR_KEY, "node set %d is not defined%s", sid,
+        return kw_at(dk, l, err, MCS_ERR_KEY, "node set %d is not defined%s", sid,
                   fe_kw_skipped(dk, "SET_", skip, sizeof skip));
     *ids = malloc(sizeof(int) * (size_t)(s->n ? s->n : 1));
     if (!*ids) return MCS_ERR(err, MCS_ERR_NOMEM, "keyword: out of memory");
@@ -355,7 +340,7 @@ static mcs_status covers(const fe_kw_deck *dk, fe_kw_target on, int id, fe_kw_lo
         const fe_kw_set *s = fe_kw_find_set(dk, id, 1);
         char skip[400];
         if (!s)
-            return at(dk, l, err, MCS_ERR_KEY, "part set %d is not defined%s", id,
+            return kw_at(dk, l, err, MCS_ERR_KEY, "part set %d is not defined%s", id,
                       fe_kw_skipped(dk, "SET_", skip, sizeof skip));
         *out = 0;
         for (int i = 0; i < s->n; i++) *out |= s->ids[i] == pid;
@@ -377,12 +362,12 @@ static mcs_status part_velocity(const fe_kw_deck *dk, int k, double v[3], mcs_er
         mcs_status st = covers(dk, iv->on, iv->id, iv->loc, k, &c, err);
         if (st) return st;
         if (c < 0)
-            return at(dk, iv->loc, err, MCS_ERR_UNSUPPORTED,
+            return kw_at(dk, iv->loc, err, MCS_ERR_UNSUPPORTED,
                       "initial velocity on part of the nodes of part %d: only whole parts are "
                       "built",
                       dk->part[k].id);
         if (c && (iv->vr[0] != 0 || iv->vr[1] != 0 || iv->vr[2] != 0))
-            return at(dk, iv->loc, err, MCS_ERR_UNSUPPORTED,
+            return kw_at(dk, iv->loc, err, MCS_ERR_UNSUPPORTED,
                       "rotational initial velocity (VXR, VYR, VZR) is not built");
         if (c) memcpy(v, iv->v, 3 * sizeof(double));
     }
@@ -403,7 +388,7 @@ static mcs_status add_spcs(fe_builder *b, const fe_kw_deck *dk, const int *map, 
         for (int j = 0; j < n && !st; j++) {
             int nid = ids ? ids[j] : one, di = fe_kw_node_index(dk, nid);
             if (di < 0) {
-                st = at(dk, s->loc, err, MCS_ERR_KEY, "constraint on node %d, which is not "
+                st = kw_at(dk, s->loc, err, MCS_ERR_KEY, "constraint on node %d, which is not "
                                                       "defined",
                         nid);
             } else if (map[di] >= 0) {
@@ -437,15 +422,15 @@ static mcs_status wall_motions(const fe_kw_deck *dk, int w, fe_wall_desc *d, mcs
     for (int i = 0; i < dk->nwmotion; i++) {
         const fe_kw_wmotion *mo = &dk->wmotion[i];
         const int j = motion_wall(dk, mo->wall);
-        if (j < 0) return at(dk, mo->loc, err, MCS_ERR_KEY, "rigid wall %d is not defined", mo->wall);
+        if (j < 0) return kw_at(dk, mo->loc, err, MCS_ERR_KEY, "rigid wall %d is not defined", mo->wall);
         if (j != w) continue;
         const fe_kw_curve *c = fe_kw_find_curve(dk, mo->lcid);
         char skip[400];
         if (!c)
-            return at(dk, mo->loc, err, MCS_ERR_KEY, "LCID %d is not defined%s", mo->lcid,
+            return kw_at(dk, mo->loc, err, MCS_ERR_KEY, "LCID %d is not defined%s", mo->lcid,
                       fe_kw_skipped(dk, "DEFINE_", skip, sizeof skip));
         if (d->nmotion >= FE_WALL_NMOTION || c->n > FE_CURVE_MAX)
-            return at(dk, mo->loc, err, MCS_ERR_RANGE,
+            return kw_at(dk, mo->loc, err, MCS_ERR_RANGE,
                       "a wall takes at most %d motions of at most %d curve points",
                       FE_WALL_NMOTION, FE_CURVE_MAX);
         fe_wall_motion *m = &d->motion[d->nmotion++];
@@ -469,7 +454,7 @@ static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[F
     for (int w = 0; w < dk->nwall; w++) {
         const fe_kw_wall *k = &dk->wall[w];
         if (!(k->fric >= 0 && k->fric <= 1))
-            return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+            return kw_at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
                       "FRIC %g: 0 (frictionless), Coulomb 0 < FRIC < 1 and 1 (no sliding) are "
                       "built, not welding (2, 3)",
                       k->fric);
@@ -495,15 +480,15 @@ static mcs_status add_walls(fe_builder *b, const fe_kw_deck *dk, char (*names)[F
             mcs_status st = covers(dk, FE_KW_ON_NODESET, k->nsid, k->loc, p, &c, err);
             if (st) return st;
             if (c < 0)
-                return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+                return kw_at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
                           "NSID %d holds part of the nodes of part %d: walls stop whole parts",
                           k->nsid, dk->part[p].id);
             if (c && d.nparts >= 8)
-                return at(dk, k->loc, err, MCS_ERR_RANGE, "a wall stops at most 8 parts");
+                return kw_at(dk, k->loc, err, MCS_ERR_RANGE, "a wall stops at most 8 parts");
             if (c) snprintf(d.parts[d.nparts++], FE_NAME_MAX, "%s", names[p]);
         }
         if (k->nsid && d.nparts == 0)
-            return at(dk, k->loc, err, MCS_ERR_RANGE, "NSID %d holds no node of any part",
+            return kw_at(dk, k->loc, err, MCS_ERR_RANGE, "NSID %d holds no node of any part",
                       k->nsid);
         mcs_status st = fe_builder_add_wall(b, &d, err);
         if (st) return st;
@@ -519,14 +504,14 @@ static mcs_status add_springs(fe_builder *b, const fe_kw_deck *dk, const fe_kw_p
     const fe_kw_section *s = fe_kw_find_section(dk, p->secid);
     const fe_kw_mat *m = fe_kw_find_mat(dk, p->mid);
     if (!s || s->kind != FE_KW_SEC_DISCRETE)
-        return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: discrete elements need a "
+        return kw_at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: discrete elements need a "
                                                 "*SECTION_DISCRETE (SECID %d)",
                   p->id, p->secid);
     if (s->elform != 0)
-        return at(dk, s->loc, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, s->loc, err, MCS_ERR_UNSUPPORTED,
                   "*SECTION_DISCRETE %d: DRO %d (torsional) is not built", s->id, s->elform);
     if (!m || (m->type != FE_KW_MAT_SPRING && m->type != FE_KW_MAT_DAMPER))
-        return at(dk, p->loc, err, MCS_ERR_KEY,
+        return kw_at(dk, p->loc, err, MCS_ERR_KEY,
                   "*PART %d: discrete elements need *MAT_SPRING_ELASTIC or *MAT_DAMPER_VISCOUS "
                   "(MID %d)",
                   p->id, p->mid);
@@ -535,7 +520,7 @@ static mcs_status add_springs(fe_builder *b, const fe_kw_deck *dk, const fe_kw_p
         if (e->pid[i] != p->id) continue;
         double S = e->dval[2 * i];
         if (e->node[2 * i + 1] == 0 || e->dval[2 * i + 1] != 0 || !(S > 0))
-            return at(dk, e->loc[i], err, MCS_ERR_UNSUPPORTED,
+            return kw_at(dk, e->loc[i], err, MCS_ERR_UNSUPPORTED,
                       "*ELEMENT_DISCRETE %d: N2 = 0 (to ground), OFFSET and S <= 0 are not built",
                       e->id[i]);
         fe_spring_desc d;
@@ -553,7 +538,7 @@ static mcs_status add_springs(fe_builder *b, const fe_kw_deck *dk, const fe_kw_p
         else d.damping = S * m->k;
         mcs_error kerr = {0};
         mcs_status st = fe_builder_add_spring(b, &d, &kerr);
-        if (st) return at(dk, e->loc[i], err, st, "*ELEMENT_DISCRETE %d: %s", e->id[i], kerr.msg);
+        if (st) return kw_at(dk, e->loc[i], err, st, "*ELEMENT_DISCRETE %d: %s", e->id[i], kerr.msg);
     }
     return MCS_OK;
 }
@@ -564,7 +549,7 @@ mcs_status fe_kw_add_deck(fe_builder *b, const fe_kw_deck *dk, mcs_error *err)
         for (int i = 0; i < dk->elem[t].n; i++)
             if (!fe_kw_find_part(dk, dk->elem[t].pid[i])) {
                 char skip[400];
-                return at(dk, dk->elem[t].loc[i], err, MCS_ERR_KEY,
+                return kw_at(dk, dk->elem[t].loc[i], err, MCS_ERR_KEY,
                           "*ELEMENT_%s %d: part %d has no *PART card%s", fe_kw_etype_name(t),
                           dk->elem[t].id[i], dk->elem[t].pid[i],
                           fe_kw_skipped(dk, "PART", skip, sizeof skip));

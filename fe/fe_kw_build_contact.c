@@ -11,20 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...) __attribute__((format(printf, 5, 6)));
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...)
-{
-    char what[800];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    const char *fn = l.file >= 0 && l.file < dk->nfile ? dk->file[l.file] : "(deck)";
-    return MCS_ERR(err, st, "%s:%d: error: %s", fn, l.line, what);
-}
-
 typedef struct {
     fe_builder *b;
     const fe_kw_deck *dk;
@@ -76,7 +62,7 @@ static mcs_status side_add(const kb *c, const fe_kw_contact *k, const char *what
     for (int i = 0; i < s->n; i++)
         if (strcmp(s->part[i], c->names[pk]) == 0) return MCS_OK;
     if (s->n >= FE_CONTACT_PARTS)
-        return at(c->dk, k->loc, c->err, MCS_ERR_RANGE,
+        return kw_at(c->dk, k->loc, c->err, MCS_ERR_RANGE,
                   "*%s: the %s side holds more than %d parts; the kernel's contact takes at "
                   "most %d a side",
                   ct_name(k), what, FE_CONTACT_PARTS, FE_CONTACT_PARTS);
@@ -154,7 +140,7 @@ static mcs_status set_side(const kb *c, const fe_kw_contact *k, const char *what
     const fe_kw_set *ns = typ == 4 ? fe_kw_find_set(dk, id, 0) : NULL;
     char skip[400];
     if (!ss && !ns)
-        return at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: %s %d is not defined%s",
+        return kw_at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: %s %d is not defined%s",
                   ct_name(k), what, typ == 0 ? "segment set" : "node set", id,
                   fe_kw_skipped(dk, "SET_", skip, sizeof skip));
     const int nn = ss ? 4 * ss->n : ns->n;
@@ -172,14 +158,14 @@ static mcs_status set_side(const kb *c, const fe_kw_contact *k, const char *what
         }
         for (int j = 0; j < n && !st; j++)
             if (q[j] < 0 || c->map[q[j]] < 0)
-                st = at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: node %d of %s %d is %s",
+                st = kw_at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: node %d of %s %d is %s",
                         ct_name(k), what, ids[j], ss ? "segment set" : "node set", id,
                         q[j] < 0 ? "not defined" : "in no element");
         if (st) break;
         if (ss) { /* the part of the element whose face it is */
             int pk = face_part(dk, &ne, q);
             if (pk < 0 || model_part(c, pk) < 0) {
-                st = at(dk, ss->loc, c->err, MCS_ERR_KEY,
+                st = kw_at(dk, ss->loc, c->err, MCS_ERR_KEY,
                         "*SET_SEGMENT %d: segment %d %d %d %d is no face of a shell or solid of "
                         "the model",
                         id, ids[0], ids[1], ids[2], ids[3]);
@@ -202,7 +188,7 @@ static mcs_status set_side(const kb *c, const fe_kw_contact *k, const char *what
     }
     free(ne.off), free(ne.el);
     if (!st && s->n == 0)
-        st = at(dk, k->loc, c->err, MCS_ERR_RANGE,
+        st = kw_at(dk, k->loc, c->err, MCS_ERR_RANGE,
                 "*%s: %s side: set %d holds no node of a "
                 "shell or solid",
                 ct_name(k), what, id);
@@ -218,7 +204,7 @@ static mcs_status side_parts(const kb *c, const fe_kw_contact *k, const char *wh
     s->n = 0;
     int single = k->type == FE_KW_CT_SINGLE || k->type == FE_KW_CT_GENERAL;
     if (typ == 4 && k->type != FE_KW_CT_N2S)
-        return at(dk, k->loc, c->err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, k->loc, c->err, MCS_ERR_UNSUPPORTED,
                   "*%s: the %s side is a node set (SSTYP 4): node sets are for nodes-to-surface "
                   "contacts",
                   ct_name(k), what);
@@ -228,14 +214,14 @@ static mcs_status side_parts(const kb *c, const fe_kw_contact *k, const char *wh
         set = fe_kw_find_set(dk, id, 1);
         if (!set) {
             char skip[400];
-            return at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: part set %d is not defined%s",
+            return kw_at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: part set %d is not defined%s",
                       ct_name(k), what, id, fe_kw_skipped(dk, "SET_", skip, sizeof skip));
         }
     }
     if (typ == 3 && !(single && id == 0)) {
         int pk = deck_part_index(dk, id);
         if (pk < 0 || model_part(c, pk) < 0)
-            return at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: part %d %s", ct_name(k), what,
+            return kw_at(dk, k->loc, c->err, MCS_ERR_KEY, "*%s: %s side: part %d %s", ct_name(k), what,
                       id, pk < 0 ? "has no *PART card" : "has no elements in the model");
         return side_add(c, k, what, pk, s);
     }
@@ -243,7 +229,7 @@ static mcs_status side_parts(const kb *c, const fe_kw_contact *k, const char *wh
         for (int i = 0; i < set->n; i++) {
             int pk = deck_part_index(dk, set->ids[i]);
             if (pk < 0 || model_part(c, pk) < 0)
-                return at(dk, k->loc, c->err, MCS_ERR_KEY,
+                return kw_at(dk, k->loc, c->err, MCS_ERR_KEY,
                           "*%s: %s side: part %d of part set %d %s", ct_name(k), what, set->ids[i],
                           id, pk < 0 ? "has no *PART card" : "has no elements in the model");
             mcs_status st = side_add(c, k, what, pk, s);
@@ -262,7 +248,7 @@ static mcs_status side_parts(const kb *c, const fe_kw_contact *k, const char *wh
         if (st) return st;
     }
     if (s->n == 0)
-        return at(dk, k->loc, c->err, MCS_ERR_RANGE, "*%s: %s side holds no part", ct_name(k),
+        return kw_at(dk, k->loc, c->err, MCS_ERR_RANGE, "*%s: %s side holds no part", ct_name(k),
                   what);
     return MCS_OK;
 }
@@ -307,7 +293,7 @@ static mcs_status add_contact_sides(const kb *c, int i, side *psl, side *pms)
         int pk = deck_part_index(dk, be->pid[j]);
         for (int q = 0; q < sl->n && pk >= 0; q++)
             if (strcmp(sl->part[q], c->names[pk]) == 0)
-                return at(dk, k->loc, c->err, MCS_ERR_UNSUPPORTED,
+                return kw_at(dk, k->loc, c->err, MCS_ERR_UNSUPPORTED,
                           "*%s: part %d is of beams, whose edge contact is not built", ct_name(k),
                           be->pid[j]);
     }
@@ -315,8 +301,10 @@ static mcs_status add_contact_sides(const kb *c, int i, side *psl, side *pms)
     d.friction = k->fs * k->fsf;
     d.friction_dynamic = k->dc > 0 ? k->fd * k->fsf : -1;
     d.friction_decay = k->dc;
+    d.damping = k->vdc / 100; /* VDC: percent of critical -> fraction */
+    d.birth = k->bt, d.death = k->dt;
     if (k->dc > 0 && k->fd > k->fs)
-        return at(dk, k->loc, c->err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, k->loc, c->err, MCS_ERR_UNSUPPORTED,
                   "*%s: FD %g > FS %g: friction that grows with the slip speed is not built",
                   ct_name(k), k->fd, k->fs);
     /* the penalty k = SLSFAC x SFS x (K A^2 / V or K A / diagonal), SLSFAC 0.1 (*CONTROL_CONTACT
@@ -339,7 +327,7 @@ static mcs_status add_contact_sides(const kb *c, int i, side *psl, side *pms)
     d.thickness_scale = k->sfst;
     mcs_error kerr = {0};
     st = fe_builder_add_contact(c->b, &d, &kerr);
-    if (st) return at(dk, k->loc, c->err, st, "*%s: %s", ct_name(k), kerr.msg);
+    if (st) return kw_at(dk, k->loc, c->err, st, "*%s: %s", ct_name(k), kerr.msg);
     return MCS_OK;
 }
 
@@ -349,7 +337,7 @@ static mcs_status add_contact_sides(const kb *c, int i, side *psl, side *pms)
 static mcs_status node_of(const kb *c, int nid, fe_kw_loc l, const char *what, int *node)
 {
     int di = fe_kw_node_index(c->dk, nid);
-    if (di < 0) return at(c->dk, l, c->err, MCS_ERR_KEY, "*%s: node %d is not defined", what, nid);
+    if (di < 0) return kw_at(c->dk, l, c->err, MCS_ERR_KEY, "*%s: node %d is not defined", what, nid);
     *node = c->map[di];
     if (*node < 0)
         mcs_log(MCS_LOG_WARN, "%s:%d: warning: *%s: node %d belongs to no element: ignored",
@@ -362,7 +350,7 @@ static mcs_status add_node_velocities(const kb *c)
     for (int i = 0; i < c->dk->nnodevel; i++) {
         const fe_kw_nodevel *v = &c->dk->nodevel[i];
         if (v->vr[0] != 0 || v->vr[1] != 0 || v->vr[2] != 0)
-            return at(c->dk, v->loc, c->err, MCS_ERR_UNSUPPORTED,
+            return kw_at(c->dk, v->loc, c->err, MCS_ERR_UNSUPPORTED,
                       "*INITIAL_VELOCITY_NODE: node %d: rotational velocity (VXR, VYR, VZR) is "
                       "not built",
                       v->nid);
@@ -389,7 +377,7 @@ static mcs_status motion_velocity(const kb *c, const fe_kw_pmotion *m, double *v
     const fe_kw_curve *cv = fe_kw_find_curve(dk, m->lcid);
     char skip[400];
     if (!cv)
-        return at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: LCID %d is not defined%s", pm_name(m->on),
+        return kw_at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: LCID %d is not defined%s", pm_name(m->on),
                   m->lcid, fe_kw_skipped(dk, "DEFINE_", skip, sizeof skip));
     double ymax = 0, k = 0;
     for (int i = 0; i < cv->n; i++)
@@ -405,7 +393,7 @@ static mcs_status motion_velocity(const kb *c, const fe_kw_pmotion *m, double *v
             if (fabs(cv->xy[2 * i + 1] - k * cv->xy[2 * i]) > 1e-9 * ymax) k = NAN;
     }
     if (!isfinite(k))
-        return at(dk, m->loc, c->err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, m->loc, c->err, MCS_ERR_UNSUPPORTED,
                   "*%s: curve %d: a motion that varies in time is not built on nodes; a "
                   "constant velocity is (VAD 0 with a constant curve, VAD 2 with a "
                   "displacement d = v t)",
@@ -420,7 +408,7 @@ static mcs_status fix_nodes(const kb *c, const fe_kw_pmotion *m, const int *node
     double vel[3] = {0, 0, 0};
     if (m->dof <= 3) vel[m->dof - 1] = v;
     if (m->dof > 3 && v != 0)
-        return at(c->dk, m->loc, c->err, MCS_ERR_UNSUPPORTED,
+        return kw_at(c->dk, m->loc, c->err, MCS_ERR_UNSUPPORTED,
                   "*%s: DOF %d: a prescribed rotation rate is not built (a zero one, a fixed "
                   "rotation, is)",
                   pm_name(m->on), m->dof);
@@ -441,10 +429,10 @@ static mcs_status add_motion(const kb *c, const fe_kw_pmotion *m)
     if (m->on == FE_KW_ON_PART) {
         int pk = deck_part_index(dk, m->id), ip = pk < 0 ? -1 : model_part(c, pk);
         if (ip < 0)
-            return at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: part %d is not in the model",
+            return kw_at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: part %d is not in the model",
                       pm_name(m->on), m->id);
         if (!fe_builder_part_rigid(c->b, ip))
-            return at(dk, m->loc, c->err, MCS_ERR_TYPE, "*%s: part %d is not rigid (*MAT_RIGID)",
+            return kw_at(dk, m->loc, c->err, MCS_ERR_TYPE, "*%s: part %d is not rigid (*MAT_RIGID)",
                       pm_name(m->on), m->id);
         int nn = fe_builder_nnode(c->b);
         int *idx = malloc(sizeof(int) * (size_t)(nn ? nn : 1));
@@ -462,7 +450,7 @@ static mcs_status add_motion(const kb *c, const fe_kw_pmotion *m)
     const fe_kw_set *s = fe_kw_find_set(dk, m->id, 0);
     char skip[400];
     if (!s)
-        return at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: node set %d is not defined%s",
+        return kw_at(dk, m->loc, c->err, MCS_ERR_KEY, "*%s: node set %d is not defined%s",
                   pm_name(m->on), m->id, fe_kw_skipped(dk, "SET_", skip, sizeof skip));
     for (int i = 0; i < s->n && !st; i++) {
         int node = -1;
@@ -479,15 +467,15 @@ static mcs_status add_load(const kb *c, const fe_kw_load *l)
                      : l->segment    ? "LOAD_NODE_SET"
                                      : "LOAD_NODE_POINT";
     if (l->segment == 1 && l->at != 0)
-        return at(dk, l->loc, c->err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, l->loc, c->err, MCS_ERR_UNSUPPORTED,
                   "*LOAD_SEGMENT: field AT: an arrival time is not built (leave 0)");
     const fe_kw_curve *cv = fe_kw_find_curve(dk, l->lcid);
     char skip[400];
     if (!cv)
-        return at(dk, l->loc, c->err, MCS_ERR_KEY, "*%s: LCID %d is not defined%s", kw, l->lcid,
+        return kw_at(dk, l->loc, c->err, MCS_ERR_KEY, "*%s: LCID %d is not defined%s", kw, l->lcid,
                   fe_kw_skipped(dk, "DEFINE_", skip, sizeof skip));
     if (cv->n > FE_CURVE_MAX)
-        return at(dk, l->loc, c->err, MCS_ERR_RANGE,
+        return kw_at(dk, l->loc, c->err, MCS_ERR_RANGE,
                   "*%s: curve %d has %d points; a load takes "
                   "at most %d",
                   kw, l->lcid, cv->n, FE_CURVE_MAX);
@@ -500,19 +488,19 @@ static mcs_status add_load(const kb *c, const fe_kw_load *l)
             mcs_status st = node_of(c, l->node[j] ? l->node[j] : l->node[2], l->loc, kw, &q[j]);
             if (st) return st;
             if (q[j] < 0)
-                return at(dk, l->loc, c->err, MCS_ERR_KEY,
+                return kw_at(dk, l->loc, c->err, MCS_ERR_KEY,
                           "*LOAD_SEGMENT: node %d belongs to no element", l->node[j]);
         }
         mcs_error kerr = {0};
         mcs_status st = fe_builder_add_pressure(c->b, q, l->sf * kw_u_stress(dk), cv->n,
                                                 (const double(*)[2])curve, &kerr);
-        return st ? at(dk, l->loc, c->err, st, "*LOAD_SEGMENT: %s", kerr.msg) : MCS_OK;
+        return st ? kw_at(dk, l->loc, c->err, st, "*LOAD_SEGMENT: %s", kerr.msg) : MCS_OK;
     }
     /* force unit: mass x length / time^2 */
     f[l->dof - 1] = l->sf * dk->unit[2] * dk->unit[0] / (dk->unit[1] * dk->unit[1]);
     const fe_kw_set *s = l->segment == 2 ? fe_kw_find_set(dk, l->nid, 0) : NULL;
     if (l->segment == 2 && !s)
-        return at(dk, l->loc, c->err, MCS_ERR_KEY, "*%s: node set %d is not defined%s", kw, l->nid,
+        return kw_at(dk, l->loc, c->err, MCS_ERR_KEY, "*%s: node set %d is not defined%s", kw, l->nid,
                   fe_kw_skipped(dk, "SET_", skip, sizeof skip));
     int n = s ? s->n : 1;
     for (int i = 0; i < n; i++) { /* LOAD_NODE_SET: each node of the set takes the load */
@@ -530,7 +518,7 @@ mcs_status kw_add_deck_more(fe_builder *b, const fe_kw_deck *dk, const char (*na
 {
     kb c = {b, dk, names, map, err};
     if (dk->rwpnal > 0 && dk->nwall > 0)
-        return at(dk, dk->control_contact, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, dk->control_contact, err, MCS_ERR_UNSUPPORTED,
                   "*CONTROL_CONTACT: RWPNAL %g asks penalty rigid walls; the deck's walls are "
                   "built as constraint walls (leave RWPNAL 0)",
                   dk->rwpnal);

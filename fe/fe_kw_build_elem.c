@@ -11,21 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...) __attribute__((format(printf, 5, 6)));
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...)
-{
-    char what[800];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    const char *fn = l.file >= 0 && l.file < dk->nfile ? dk->file[l.file] : "(deck)";
-    if (l.line > 0) return MCS_ERR(err, st, "%s:%d: error: %s", fn, l.line, what);
-    return MCS_ERR(err, st, "%s: error: %s", fn, what);
-}
-
 static void warn_at(const fe_kw_deck *dk, fe_kw_loc l, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 static void warn_at(const fe_kw_deck *dk, fe_kw_loc l, const char *fmt, ...)
@@ -50,7 +35,7 @@ mcs_status kw_part_hourglass(const fe_kw_deck *dk, const fe_kw_part *p, fe_secti
     if (p->hgid) {
         h = fe_kw_find_hourglass(dk, p->hgid);
         if (!h)
-            return at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: HGID %d is not an *HOURGLASS",
+            return kw_at(dk, p->loc, err, MCS_ERR_KEY, "*PART %d: HGID %d is not an *HOURGLASS",
                       p->id, p->hgid);
     }
     if (!h && !dk->ctl.hg_given) return MCS_OK; /* the kernel's default form */
@@ -111,13 +96,13 @@ mcs_status kw_beam_section(const fe_kw_deck *dk, const fe_kw_section *k, fe_sect
         return MCS_OK;
     }
     if (f == 6 || f == 7 || f == 8 || f == 9 || f == 14 || f < 1 || f > 14)
-        return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
                   "*SECTION_BEAM %d: ELFORM %d (%s) is not built (ELFORM 3, the truss, is)",
                   k->id, f, beam_name(f));
     double A = k->area;
     if (f != 2 && f != 12 && f != 13) { /* from the cross-section dimensions */
         if (k->cst == 2 || k->irid < 0)
-            return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+            return kw_at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
                       "*SECTION_BEAM %d: an arbitrary cross-section (CST 2, or QR/IRID < 0: "
                       "*INTEGRATION_BEAM) is not built",
                       k->id);
@@ -128,13 +113,13 @@ mcs_status kw_beam_section(const fe_kw_deck *dk, const fe_kw_section *k, fe_sect
         A = 0.5 * (a[0] + a[1]); /* the mean of the two ends */
     }
     if (!dk->beams_as_trusses)
-        return at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, k->loc, err, MCS_ERR_UNSUPPORTED,
                   "*SECTION_BEAM %d: ELFORM %d (%s beam) carries bending and torsion; the "
                   "kernel builds 2-node trusses only (axial force). Give ELFORM 3 with A = %g "
                   "(deck units) to run it as a truss, or read with beams_as_trusses",
                   k->id, f, beam_name(f), A / (dk->unit[0] * dk->unit[0]));
     if (!(A > 0))
-        return at(dk, k->loc, err, MCS_ERR_RANGE,
+        return kw_at(dk, k->loc, err, MCS_ERR_RANGE,
                   "*SECTION_BEAM %d: the cross-section area is %g: not > 0", k->id, A);
     warn_at(dk, k->loc,
             "*SECTION_BEAM %d: ELFORM %d built as a truss of area %g m^2: axial force only, "
@@ -148,17 +133,17 @@ mcs_status kw_part_inertia(const fe_kw_deck *dk, const fe_kw_part *p, fe_part_de
                            mcs_error *err)
 {
     if (p->eosid) /* the pressure would come from it */
-        return at(dk, p->loc, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, p->loc, err, MCS_ERR_UNSUPPORTED,
                   "*PART %d: EOSID %d: equations of state are not built", p->id, p->eosid);
     const fe_kw_inertia *in = &p->inertia;
     if (!in->given) return MCS_OK;
     if (d->material.model != FE_MAT_RIGID)
-        return at(dk, p->loc, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, p->loc, err, MCS_ERR_UNSUPPORTED,
                   "*PART_INERTIA %d: given mass properties are built on rigid parts "
                   "(*MAT_RIGID) only",
                   p->id);
     if (in->ircs)
-        return at(dk, p->loc, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, p->loc, err, MCS_ERR_UNSUPPORTED,
                   "*PART_INERTIA %d: IRCS %d (principal moments with an orientation) is not "
                   "built: give the global tensor (IRCS 0)",
                   p->id, in->ircs);
@@ -170,7 +155,7 @@ mcs_status kw_part_inertia(const fe_kw_deck *dk, const fe_kw_part *p, fe_part_de
     if (in->nodeid) {
         int ni = fe_kw_node_index(dk, in->nodeid);
         if (ni < 0)
-            return at(dk, p->loc, err, MCS_ERR_KEY, "*PART_INERTIA %d: NODEID %d is not defined",
+            return kw_at(dk, p->loc, err, MCS_ERR_KEY, "*PART_INERTIA %d: NODEID %d is not defined",
                       p->id, in->nodeid);
         memcpy(g->cg, dk->node_x + 3 * ni, sizeof g->cg);
     }
@@ -181,7 +166,7 @@ mcs_status kw_part_inertia(const fe_kw_deck *dk, const fe_kw_part *p, fe_part_de
     memcpy(g->velocity, in->v, sizeof g->velocity);
     memcpy(g->omega, in->w, sizeof g->omega);
     if (!(g->mass > 0) || !(I[0] > 0 && I[3] > 0 && I[5] > 0))
-        return at(dk, p->loc, err, MCS_ERR_RANGE,
+        return kw_at(dk, p->loc, err, MCS_ERR_RANGE,
                   "*PART_INERTIA %d: TM and IXX, IYY, IZZ must be > 0", p->id);
     return MCS_OK;
 }
@@ -208,19 +193,19 @@ mcs_status fe_kw_deck_opts(const fe_kw_deck *dk, fe_opts *o, mcs_error *err)
     if (!k->ts_given) return MCS_OK;
     const fe_kw_loc l = k->ts_loc;
     if (k->tslimt > 0)
-        return at(dk, l, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, l, err, MCS_ERR_UNSUPPORTED,
                   "*CONTROL_TIMESTEP: TSLIMT (shells' minimum step by softened material) is not "
                   "built: use DT2MS < 0 (mass scaling)");
     if (k->lctm)
-        return at(dk, l, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, l, err, MCS_ERR_UNSUPPORTED,
                   "*CONTROL_TIMESTEP: LCTM (a curve of the largest step) is not built");
     if (k->dt2ms > 0)
-        return at(dk, l, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, l, err, MCS_ERR_UNSUPPORTED,
                   "*CONTROL_TIMESTEP: DT2MS > 0 (every element scaled to the step, mass "
                   "added or removed) is not built: DT2MS < 0 (mass only where the step is "
                   "smaller) is");
     if (k->dt2msf != 0 || k->dt2mslc || k->imscl)
-        return at(dk, l, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, l, err, MCS_ERR_UNSUPPORTED,
                   "*CONTROL_TIMESTEP: card 2 (DT2MSF, DT2MSLC, IMSCL) is not built");
     if (k->isdo != 0)
         warn_at(dk, l, "*CONTROL_TIMESTEP: ISDO %d: the shells' step uses area / longest side "

@@ -11,20 +11,6 @@
 
 static const char *const jkw[4] = {"SPHERICAL", "REVOLUTE", "CYLINDRICAL", "TRANSLATIONAL"};
 
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...) __attribute__((format(printf, 5, 6)));
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...)
-{
-    char what[800];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    const char *fn = l.file >= 0 && l.file < dk->nfile ? dk->file[l.file] : "(deck)";
-    return MCS_ERR(err, st, "%s:%d: error: %s", fn, l.line, what);
-}
-
 /* the node IDs an entry names: a joint's N1..Nk, an extra node, a node set's members */
 static mcs_status nrb_ids(const fe_kw_deck *dk, const fe_kw_nrb *r, const int **ids, int *n,
                           mcs_error *err)
@@ -38,7 +24,7 @@ static mcs_status nrb_ids(const fe_kw_deck *dk, const fe_kw_nrb *r, const int **
     }
     const fe_kw_set *s = fe_kw_find_set(dk, r->id, 0);
     if (!s)
-        return at(dk, r->loc, err, MCS_ERR_FORMAT, "%s %d: node set %d is not defined",
+        return kw_at(dk, r->loc, err, MCS_ERR_FORMAT, "%s %d: node set %d is not defined",
                   what[r->kind], r->pid, r->id);
     *ids = s->ids, *n = s->n;
     return MCS_OK;
@@ -49,7 +35,7 @@ static mcs_status node_in(fe_builder *b, const fe_kw_deck *dk, int *map, int nid
                           fe_kw_loc loc, const char *what, mcs_error *err)
 {
     int di = fe_kw_node_index(dk, nid);
-    if (di < 0) return at(dk, loc, err, MCS_ERR_FORMAT, "%s: node %d is not defined", what, nid);
+    if (di < 0) return kw_at(dk, loc, err, MCS_ERR_FORMAT, "%s: node %d is not defined", what, nid);
     if (map[di] < 0) {
         mcs_status st = fe_builder_add_node(b, dk->node_x + 3 * di, &map[di], err);
         if (st) return st;
@@ -93,12 +79,12 @@ static mcs_status curve_slope(const fe_kw_deck *dk, int lcid, fe_kw_loc loc, dou
     if (lcid <= 0) return MCS_OK;
     const fe_kw_curve *c = fe_kw_find_curve(dk, lcid);
     if (!c || c->n < 2)
-        return at(dk, loc, err, MCS_ERR_FORMAT,
+        return kw_at(dk, loc, err, MCS_ERR_FORMAT,
                   "*CONSTRAINED_JOINT_STIFFNESS: curve %d is not defined (or has one point)", lcid);
     const double *p = c->xy;
     double dx = p[2 * (c->n - 1)] - p[0];
     if (!(dx > 0))
-        return at(dk, loc, err, MCS_ERR_FORMAT, "*CONSTRAINED_JOINT_STIFFNESS: curve %d is flat",
+        return kw_at(dk, loc, err, MCS_ERR_FORMAT, "*CONSTRAINED_JOINT_STIFFNESS: curve %d is flat",
                   lcid);
     *k = (p[2 * (c->n - 1) + 1] - p[1]) / dx;
     return MCS_OK;
@@ -111,7 +97,7 @@ static mcs_status add_stiffness(const fe_kw_deck *dk, const fe_kw_jstiff *s, fe_
     const char *kind = s->translational ? "TRANSLATIONAL" : "GENERALIZED";
     const int slide = d->type == FE_JOINT_CYLINDRICAL || d->type == FE_JOINT_TRANSLATIONAL;
     if (d->type == FE_JOINT_SPHERICAL || slide != s->translational)
-        return at(dk, s->loc, err, MCS_ERR_UNSUPPORTED,
+        return kw_at(dk, s->loc, err, MCS_ERR_UNSUPPORTED,
                   "*CONSTRAINED_JOINT_STIFFNESS_%s %d: a %s joint's free coordinate takes "
                   "%s",
                   kind, s->jsid, fe_joint_type_name[d->type],
@@ -129,7 +115,7 @@ static mcs_status add_stiffness(const fe_kw_deck *dk, const fe_kw_jstiff *s, fe_
     if (!st) st = curve_slope(dk, s->dlc[ax], s->loc, &c, err);
     if (st) return st;
     if (k < 0 || c < 0)
-        return at(dk, s->loc, err, MCS_ERR_FORMAT,
+        return kw_at(dk, s->loc, err, MCS_ERR_FORMAT,
                   "*CONSTRAINED_JOINT_STIFFNESS_%s %d: a falling stiffness or damping curve", kind,
                   s->jsid);
     d->stiffness = k * ks, d->damping = c * cs;
@@ -170,7 +156,7 @@ static mcs_status add_nrbs(fe_builder *b, const fe_kw_deck *dk, const char (*nam
         }
         free(idx);
         if (st)
-            return at(dk, r->loc, err, st, "*CONSTRAINED_%s %d: %s",
+            return kw_at(dk, r->loc, err, st, "*CONSTRAINED_%s %d: %s",
                       r->kind ? "EXTRA_NODES" : "NODAL_RIGID_BODY", r->pid, kerr.msg);
     }
     return MCS_OK;
@@ -185,7 +171,7 @@ mcs_status kw_add_deck_joints(fe_builder *b, const fe_kw_deck *dk, const char (*
         while (j < dk->njoint && dk->joint[j].id != dk->jstiff[i].jid)
             j++;
         if (j == dk->njoint)
-            st = at(dk, dk->jstiff[i].loc, err, MCS_ERR_FORMAT,
+            st = kw_at(dk, dk->jstiff[i].loc, err, MCS_ERR_FORMAT,
                     "*CONSTRAINED_JOINT_STIFFNESS %d: joint JID %d is not defined",
                     dk->jstiff[i].jsid, dk->jstiff[i].jid);
     }

@@ -8,45 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TRY(x)                                                                                     \
-    do {                                                                                           \
-        mcs_status s_ = (x);                                                                       \
-        if (s_) return s_;                                                                         \
-    } while (0)
-
 typedef mcs_status (*kw_handler)(kw_ctx *c, const kw_card *cd, int n);
-
-static fe_kw_loc loc_of(const kw_card *cd) { return (fe_kw_loc){cd->file, cd->line}; }
-
-/* k more cards must follow card i */
-static mcs_status need(kw_ctx *c, const kw_card *cd, int n, int i, int k)
-{
-    if (i + k <= n) return MCS_OK;
-    int line = n > 0 ? cd[n - 1].line : c->kwloc.line;
-    return kw_fail(c, c->kwloc.file, line, 0, MCS_ERR_FORMAT,
-                   "%d more card%s expected after line %d (the keyword has %d card%s per entry)",
-                   i + k - n, i + k - n == 1 ? "" : "s", line, k, k == 1 ? "" : "s");
-}
-
-static int blank_card(const kw_card *cd)
-{
-    for (int i = 0; i < cd->len; i++)
-        if (cd->s[i] != ' ' && cd->s[i] != '\t') return 0;
-    return 1;
-}
-
-static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4), unused));
-static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
-{
-    if (c->o->quiet) return;
-    char what[512];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    mcs_log(MCS_LOG_WARN, "%s:%d: warning: *%s: %s", c->d->file[cd->file], cd->line, c->kw, what);
-}
 
 static mcs_status unsupported_field(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i,
                                     const char *name, const char *why)
@@ -66,7 +28,7 @@ static int title_card(kw_ctx *c, int i) { return i + (c->has_title ? 1 : 0); }
 static mcs_status id_card(kw_ctx *c, const kw_card *cd, int n, int *i, int *id, char *title)
 {
     if (!c->has_id) return MCS_OK;
-    TRY(need(c, cd, n, *i, 1));
+    KW_TRY(kw_need(c, cd, n, *i, 1));
     static const kw_layout l = {1, {10}};
     int fmt = c->fmt;
     c->fmt = KW_FMT_STD; /* the ID card is I10 + A70 in every format */
@@ -102,15 +64,15 @@ static mcs_status h_node(kw_ctx *c, const kw_card *cd, int n)
 {
     const kw_layout *l = &KW_L_NODE;
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
+        if (kw_blank_card(&cd[i])) continue;
         int id, tc, rc;
         double x[3];
-        TRY(kw_int(c, &cd[i], l, 0, "NID", 0, &id));
-        TRY(kw_real(c, &cd[i], l, 1, "X", 0, &x[0]));
-        TRY(kw_real(c, &cd[i], l, 2, "Y", 0, &x[1]));
-        TRY(kw_real(c, &cd[i], l, 3, "Z", 0, &x[2]));
-        TRY(kw_int(c, &cd[i], l, 4, "TC", 0, &tc));
-        TRY(kw_int(c, &cd[i], l, 5, "RC", 0, &rc));
+        KW_TRY(kw_int(c, &cd[i], l, 0, "NID", 0, &id));
+        KW_TRY(kw_real(c, &cd[i], l, 1, "X", 0, &x[0]));
+        KW_TRY(kw_real(c, &cd[i], l, 2, "Y", 0, &x[1]));
+        KW_TRY(kw_real(c, &cd[i], l, 3, "Z", 0, &x[2]));
+        KW_TRY(kw_int(c, &cd[i], l, 4, "TC", 0, &tc));
+        KW_TRY(kw_int(c, &cd[i], l, 5, "RC", 0, &rc));
         if (id <= 0)
             return kw_fail(c, cd[i].file, cd[i].line, 1, MCS_ERR_FORMAT,
                            "field NID: node IDs must be > 0, got %d", id);
@@ -118,11 +80,11 @@ static mcs_status h_node(kw_ctx *c, const kw_card *cd, int n)
             return unsupported_field(c, &cd[i], l, tc < 0 || tc > 7 ? 4 : 5, "TC/RC",
                                      "constraint codes are 0..7");
         for (int k = 0; k < 3; k++) x[k] *= kw_u_len(c->d);
-        TRY(kw_add_node(c, id, x, loc_of(&cd[i])));
+        KW_TRY(kw_add_node(c, id, x, kw_loc_of(&cd[i])));
         if (tc || rc) {
             fe_kw_spc *s = kw_push((void **)&c->d->spc, &c->d->nspc, &c->d->cap_spc, sizeof *s);
             if (!s) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-            *s = (fe_kw_spc){FE_KW_ON_NODE, id, tc_mask(tc) | tc_mask(rc) << 3, loc_of(&cd[i])};
+            *s = (fe_kw_spc){FE_KW_ON_NODE, id, tc_mask(tc) | tc_mask(rc) << 3, kw_loc_of(&cd[i])};
         }
     }
     return MCS_OK;
@@ -132,24 +94,24 @@ static mcs_status h_node(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status elem_nodes(kw_ctx *c, const kw_card *cd, int f0, int nn, int *nodes)
 {
     static const char *nm[10] = {"N1", "N2", "N3", "N4", "N5", "N6", "N7", "N8", "N9", "N10"};
-    for (int k = 0; k < nn; k++) TRY(kw_int(c, cd, &KW_L_ELEM, f0 + k, nm[k], 0, &nodes[k]));
+    for (int k = 0; k < nn; k++) KW_TRY(kw_int(c, cd, &KW_L_ELEM, f0 + k, nm[k], 0, &nodes[k]));
     return MCS_OK;
 }
 
 static mcs_status h_shell(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
+        if (kw_blank_card(&cd[i])) continue;
         int id, pid, nd[8];
-        TRY(kw_int(c, &cd[i], &KW_L_ELEM, 0, "EID", 0, &id));
-        TRY(kw_int(c, &cd[i], &KW_L_ELEM, 1, "PID", 0, &pid));
-        TRY(elem_nodes(c, &cd[i], 2, 8, nd));
+        KW_TRY(kw_int(c, &cd[i], &KW_L_ELEM, 0, "EID", 0, &id));
+        KW_TRY(kw_int(c, &cd[i], &KW_L_ELEM, 1, "PID", 0, &pid));
+        KW_TRY(elem_nodes(c, &cd[i], 2, 8, nd));
         for (int k = 4; k < 8; k++)
             if (nd[k])
                 return unsupported_field(c, &cd[i], &KW_L_ELEM, 2 + k, "N5..N8",
                                          "8-node shells are not built (give 4 nodes)");
         if (nd[3] == 0) nd[3] = nd[2]; /* a triangle */
-        TRY(kw_add_elem(c, FE_KW_SHELL, id, pid, nd, NULL, loc_of(&cd[i])));
+        KW_TRY(kw_add_elem(c, FE_KW_SHELL, id, pid, nd, NULL, kw_loc_of(&cd[i])));
     }
     return MCS_OK;
 }
@@ -161,12 +123,12 @@ static mcs_status solid_head(kw_ctx *c, const kw_card *cd, int n, int *i, int *i
                              const kw_card **at, int *two)
 {
     *at = &cd[*i];
-    TRY(kw_int(c, *at, &KW_L_ELEM, 0, "EID", 0, id));
-    TRY(kw_int(c, *at, &KW_L_ELEM, 1, "PID", 0, pid));
+    KW_TRY(kw_int(c, *at, &KW_L_ELEM, 0, "EID", 0, id));
+    KW_TRY(kw_int(c, *at, &KW_L_ELEM, 1, "PID", 0, pid));
     *two = 1;
     for (int k = 2; k < 10; k++) *two = *two && kw_blank(c, *at, &KW_L_ELEM, k);
     if (*two) {
-        TRY(need(c, cd, n, *i + 1, 1));
+        KW_TRY(kw_need(c, cd, n, *i + 1, 1));
         *at = &cd[++*i];
     }
     return MCS_OK;
@@ -175,27 +137,27 @@ static mcs_status solid_head(kw_ctx *c, const kw_card *cd, int n, int *i, int *i
 static mcs_status h_solid(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
+        if (kw_blank_card(&cd[i])) continue;
         int id, pid, nd[10] = {0}, two;
         const kw_card *at;
-        TRY(solid_head(c, cd, n, &i, &id, &pid, &at, &two));
+        KW_TRY(solid_head(c, cd, n, &i, &id, &pid, &at, &two));
         if (two) {
-            TRY(elem_nodes(c, at, 0, 10, nd));
+            KW_TRY(elem_nodes(c, at, 0, 10, nd));
             if (nd[8] || nd[9]) { /* the 10-node tetrahedron */
                 for (int k = 0; k < 10; k++)
                     if (!nd[k])
                         return unsupported_field(c, at, &KW_L_ELEM, k, "N1..N10",
                                                  "a 10-node tetrahedron needs all ten nodes");
-                TRY(kw_add_elem(c, FE_KW_TET10, id, pid, nd, NULL, loc_of(&cd[i])));
+                KW_TRY(kw_add_elem(c, FE_KW_TET10, id, pid, nd, NULL, kw_loc_of(&cd[i])));
                 continue;
             }
         } else {
-            TRY(elem_nodes(c, at, 2, 8, nd));
+            KW_TRY(elem_nodes(c, at, 2, 8, nd));
         }
         /* a tetrahedron with N5..N8 left blank: N4 repeated, as LS-DYNA writes it */
         if (nd[3] && !nd[4] && !nd[5] && !nd[6] && !nd[7])
             nd[4] = nd[5] = nd[6] = nd[7] = nd[3];
-        TRY(kw_add_elem(c, FE_KW_SOLID, id, pid, nd, NULL, loc_of(&cd[i])));
+        KW_TRY(kw_add_elem(c, FE_KW_SOLID, id, pid, nd, NULL, kw_loc_of(&cd[i])));
     }
     return MCS_OK;
 }
@@ -204,11 +166,11 @@ static mcs_status h_solid(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status h_solid_tet10(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
+        if (kw_blank_card(&cd[i])) continue;
         int id, pid, nd[10] = {0}, two;
         const kw_card *at;
-        TRY(solid_head(c, cd, n, &i, &id, &pid, &at, &two));
-        TRY(elem_nodes(c, at, two ? 0 : 2, 8, nd));
+        KW_TRY(solid_head(c, cd, n, &i, &id, &pid, &at, &two));
+        KW_TRY(elem_nodes(c, at, two ? 0 : 2, 8, nd));
         int tet = nd[0] && nd[1] && nd[2] && nd[3];
         for (int k = 4; k < 8; k++) tet = tet && (nd[k] == 0 || nd[k] == nd[3]);
         if (!tet)
@@ -216,7 +178,7 @@ static mcs_status h_solid_tet10(kw_ctx *c, const kw_card *cd, int n)
                                      "TET4TOTET10 takes tetrahedra (N1 N2 N3 N4, N5..N8 blank "
                                      "or N4)");
         for (int k = 4; k < 8; k++) nd[k] = 0; /* mid-edge nodes: kw_tet4_to_tet10 */
-        TRY(kw_add_elem(c, FE_KW_TET10, id, pid, nd, NULL, loc_of(&cd[i])));
+        KW_TRY(kw_add_elem(c, FE_KW_TET10, id, pid, nd, NULL, kw_loc_of(&cd[i])));
     }
     return MCS_OK;
 }
@@ -224,12 +186,12 @@ static mcs_status h_solid_tet10(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status h_beam(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
+        if (kw_blank_card(&cd[i])) continue;
         int id, pid, nd[2];
-        TRY(kw_int(c, &cd[i], &KW_L_ELEM, 0, "EID", 0, &id));
-        TRY(kw_int(c, &cd[i], &KW_L_ELEM, 1, "PID", 0, &pid));
-        TRY(elem_nodes(c, &cd[i], 2, 2, nd)); /* N3 (orientation) is not needed by trusses */
-        TRY(kw_add_elem(c, FE_KW_BEAM, id, pid, nd, NULL, loc_of(&cd[i])));
+        KW_TRY(kw_int(c, &cd[i], &KW_L_ELEM, 0, "EID", 0, &id));
+        KW_TRY(kw_int(c, &cd[i], &KW_L_ELEM, 1, "PID", 0, &pid));
+        KW_TRY(elem_nodes(c, &cd[i], 2, 2, nd)); /* N3 (orientation) is not needed by trusses */
+        KW_TRY(kw_add_elem(c, FE_KW_BEAM, id, pid, nd, NULL, kw_loc_of(&cd[i])));
     }
     return MCS_OK;
 }
@@ -238,19 +200,19 @@ static mcs_status h_discrete(kw_ctx *c, const kw_card *cd, int n)
 {
     const kw_layout *l = &KW_L_DISCR;
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
+        if (kw_blank_card(&cd[i])) continue;
         int id, pid, nd[2], vid, pf;
         double dv[2];
-        TRY(kw_int(c, &cd[i], l, 0, "EID", 0, &id));
-        TRY(kw_int(c, &cd[i], l, 1, "PID", 0, &pid));
-        TRY(kw_int(c, &cd[i], l, 2, "N1", 0, &nd[0]));
-        TRY(kw_int(c, &cd[i], l, 3, "N2", 0, &nd[1]));
-        TRY(kw_int(c, &cd[i], l, 4, "VID", 0, &vid));
-        TRY(kw_real(c, &cd[i], l, 5, "S", 1, &dv[0]));
-        TRY(kw_int(c, &cd[i], l, 6, "PF", 0, &pf));
-        TRY(kw_real(c, &cd[i], l, 7, "OFFSET", 0, &dv[1]));
+        KW_TRY(kw_int(c, &cd[i], l, 0, "EID", 0, &id));
+        KW_TRY(kw_int(c, &cd[i], l, 1, "PID", 0, &pid));
+        KW_TRY(kw_int(c, &cd[i], l, 2, "N1", 0, &nd[0]));
+        KW_TRY(kw_int(c, &cd[i], l, 3, "N2", 0, &nd[1]));
+        KW_TRY(kw_int(c, &cd[i], l, 4, "VID", 0, &vid));
+        KW_TRY(kw_real(c, &cd[i], l, 5, "S", 1, &dv[0]));
+        KW_TRY(kw_int(c, &cd[i], l, 6, "PF", 0, &pf));
+        KW_TRY(kw_real(c, &cd[i], l, 7, "OFFSET", 0, &dv[1]));
         dv[1] *= kw_u_len(c->d);
-        TRY(kw_add_elem(c, FE_KW_DISCRETE, id, pid, nd, dv, loc_of(&cd[i])));
+        KW_TRY(kw_add_elem(c, FE_KW_DISCRETE, id, pid, nd, dv, kw_loc_of(&cd[i])));
     }
     return MCS_OK;
 }
@@ -262,7 +224,7 @@ static mcs_status new_section(kw_ctx *c, const kw_card *cd, fe_kw_sec_kind kind,
                               fe_kw_section **out)
 {
     int id;
-    TRY(kw_int(c, cd, &KW_L10, 0, "SECID", 0, &id));
+    KW_TRY(kw_int(c, cd, &KW_L10, 0, "SECID", 0, &id));
     for (int k = 0; k < c->d->nsection; k++)
         if (c->d->section[k].id == id)
             return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_FORMAT,
@@ -270,7 +232,7 @@ static mcs_status new_section(kw_ctx *c, const kw_card *cd, fe_kw_sec_kind kind,
     fe_kw_section *s =
         kw_push((void **)&c->d->section, &c->d->nsection, &c->d->cap_section, sizeof *s);
     if (!s) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-    s->id = id, s->loc = loc_of(cd), s->kind = kind;
+    s->id = id, s->loc = kw_loc_of(cd), s->kind = kind;
     *out = s;
     return MCS_OK;
 }
@@ -279,24 +241,24 @@ static mcs_status h_section_shell(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
         i = title_card(c, i);
-        TRY(need(c, cd, n, i, 2));
+        KW_TRY(kw_need(c, cd, n, i, 2));
         int icomp;
         fe_kw_section *s;
-        TRY(new_section(c, &cd[i], FE_KW_SEC_SHELL, &s));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
-        TRY(kw_real(c, &cd[i], &KW_L10, 2, "SHRF", 0, &s->shrf));
+        KW_TRY(new_section(c, &cd[i], FE_KW_SEC_SHELL, &s));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 2, "SHRF", 0, &s->shrf));
         double nip;
-        TRY(kw_real(c, &cd[i], &KW_L10, 3, "NIP", 0, &nip));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 3, "NIP", 0, &nip));
         if (!(nip >= 0 && nip <= 100))
             return unsupported_field(c, &cd[i], &KW_L10, 3, "NIP", "must be 0..100");
         s->nip = (int)nip;
-        TRY(kw_int(c, &cd[i], &KW_L10, 6, "ICOMP", 0, &icomp));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 6, "ICOMP", 0, &icomp));
         if (icomp)
             return unsupported_field(c, &cd[i], &KW_L10, 6, "ICOMP",
                                      "composite layups are not built");
         static const char *tn[4] = {"T1", "T2", "T3", "T4"};
         for (int k = 0; k < 4; k++) {
-            TRY(kw_real(c, &cd[i + 1], &KW_L10, k, tn[k], 0, &s->t[k]));
+            KW_TRY(kw_real(c, &cd[i + 1], &KW_L10, k, tn[k], 0, &s->t[k]));
             s->t[k] *= kw_u_len(c->d);
         }
         i += 2;
@@ -309,10 +271,10 @@ static mcs_status h_section_discrete(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
         i = title_card(c, i);
-        TRY(need(c, cd, n, i, 1));
+        KW_TRY(kw_need(c, cd, n, i, 1));
         fe_kw_section *s;
-        TRY(new_section(c, &cd[i], FE_KW_SEC_DISCRETE, &s));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "DRO", 0, &s->elform));
+        KW_TRY(new_section(c, &cd[i], FE_KW_SEC_DISCRETE, &s));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "DRO", 0, &s->elform));
         i++;
     }
     return MCS_OK;
@@ -338,7 +300,7 @@ static fe_kw_mat *new_mat(kw_ctx *c, const kw_card *cd, fe_kw_mat_type type, mcs
     }
     m->id = id;
     m->type = type;
-    m->loc = loc_of(cd);
+    m->loc = kw_loc_of(cd);
     /* RO E PR: fields 2..4 of the first card of every supported material */
     *st = kw_real(c, cd, &KW_L10, 1, "RO", 0, &m->ro);
     if (!*st) *st = kw_real(c, cd, &KW_L10, 2, "E", 0, &m->e);
@@ -355,7 +317,7 @@ static mcs_status h_mat_elastic(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
         i = title_card(c, i);
-        TRY(need(c, cd, n, i, 1));
+        KW_TRY(kw_need(c, cd, n, i, 1));
         mcs_status st = MCS_OK;
         if (!new_mat(c, &cd[i], FE_KW_MAT_ELASTIC, &st)) return st;
         i++;
@@ -368,16 +330,16 @@ static mcs_status h_mat_discrete(kw_ctx *c, const kw_card *cd, int n, fe_kw_mat_
 {
     for (int i = 0; i < n;) {
         i = title_card(c, i);
-        TRY(need(c, cd, n, i, 1));
+        KW_TRY(kw_need(c, cd, n, i, 1));
         int id;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "MID", 0, &id));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "MID", 0, &id));
         if (fe_kw_find_mat(c->d, id))
             return kw_fail(c, cd[i].file, cd[i].line, 1, MCS_ERR_FORMAT,
                            "material %d is defined twice", id);
         fe_kw_mat *m = kw_push((void **)&c->d->mat, &c->d->nmat, &c->d->cap_mat, sizeof *m);
         if (!m) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-        m->id = id, m->type = type, m->loc = loc_of(&cd[i]);
-        TRY(kw_real(c, &cd[i], &KW_L10, 1, type == FE_KW_MAT_SPRING ? "K" : "DC", 0, &m->k));
+        m->id = id, m->type = type, m->loc = kw_loc_of(&cd[i]);
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 1, type == FE_KW_MAT_SPRING ? "K" : "DC", 0, &m->k));
         /* N/m = kg/s^2; N s/m = kg/s */
         m->k *= type == FE_KW_MAT_SPRING ? c->d->unit[2] / (c->d->unit[1] * c->d->unit[1])
                                          : c->d->unit[2] / c->d->unit[1];
@@ -402,24 +364,24 @@ static mcs_status h_mat_plp(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
         i = title_card(c, i);
-        TRY(need(c, cd, n, i, 4));
+        KW_TRY(kw_need(c, cd, n, i, 4));
         mcs_status st = MCS_OK;
         fe_kw_mat *m = new_mat(c, &cd[i], FE_KW_MAT_PLP, &st);
         if (!m) return st;
         double fail, lcsr;
-        TRY(kw_real(c, &cd[i], &KW_L10, 4, "SIGY", 0, &m->sigy));
-        TRY(kw_real(c, &cd[i], &KW_L10, 5, "ETAN", 0, &m->etan));
-        TRY(kw_real(c, &cd[i], &KW_L10, 6, "FAIL", 0, &fail));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 4, "SIGY", 0, &m->sigy));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 5, "ETAN", 0, &m->etan));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 6, "FAIL", 0, &fail));
         m->sigy *= kw_u_stress(c->d);
         m->etan *= kw_u_stress(c->d);
         if (fail < 0)
             return unsupported_field(c, &cd[i], &KW_L10, 6, "FAIL",
                                      "a user failure subroutine (FAIL < 0) is not built");
         m->fail = fail < 1e20 ? fail : 0; /* element erosion at this plastic strain */
-        TRY(kw_real(c, &cd[i + 1], &KW_L10, 0, "C", 0, &m->c));
-        TRY(kw_real(c, &cd[i + 1], &KW_L10, 1, "P", 0, &m->p));
-        TRY(kw_int(c, &cd[i + 1], &KW_L10, 2, "LCSS", 0, &m->lcss));
-        TRY(kw_real(c, &cd[i + 1], &KW_L10, 3, "LCSR", 0, &lcsr));
+        KW_TRY(kw_real(c, &cd[i + 1], &KW_L10, 0, "C", 0, &m->c));
+        KW_TRY(kw_real(c, &cd[i + 1], &KW_L10, 1, "P", 0, &m->p));
+        KW_TRY(kw_int(c, &cd[i + 1], &KW_L10, 2, "LCSS", 0, &m->lcss));
+        KW_TRY(kw_real(c, &cd[i + 1], &KW_L10, 3, "LCSR", 0, &lcsr));
         if (lcsr != 0)
             return unsupported_field(c, &cd[i + 1], &KW_L10, 3, "LCSR",
                                      "strain-rate curves are not built (use C and P)");
@@ -430,8 +392,8 @@ static mcs_status h_mat_plp(kw_ctx *c, const kw_card *cd, int n)
         static const char *en[8] = {"EPS1", "EPS2", "EPS3", "EPS4", "EPS5", "EPS6", "EPS7", "EPS8"};
         static const char *sn[8] = {"ES1", "ES2", "ES3", "ES4", "ES5", "ES6", "ES7", "ES8"};
         for (int k = 0; k < 8; k++) {
-            TRY(kw_real(c, &cd[i + 2], &KW_L10, k, en[k], 0, &m->eps[k]));
-            TRY(kw_real(c, &cd[i + 3], &KW_L10, k, sn[k], 0, &m->es[k]));
+            KW_TRY(kw_real(c, &cd[i + 2], &KW_L10, k, en[k], 0, &m->eps[k]));
+            KW_TRY(kw_real(c, &cd[i + 3], &KW_L10, k, sn[k], 0, &m->es[k]));
             m->es[k] *= kw_u_stress(c->d);
             if (!isfinite(m->es[k]))
                 return kw_fail(c, cd[i + 3].file, cd[i + 3].line, 0, MCS_ERR_FORMAT,
@@ -446,14 +408,14 @@ static mcs_status h_mat_plp(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status h_curve(kw_ctx *c, const kw_card *cd, int n)
 {
     int i = title_card(c, 0);
-    TRY(need(c, cd, n, i, 1));
+    KW_TRY(kw_need(c, cd, n, i, 1));
     int id;
     double sfa, sfo, offa, offo;
-    TRY(kw_int(c, &cd[i], &KW_L10, 0, "LCID", 0, &id));
-    TRY(kw_real(c, &cd[i], &KW_L10, 2, "SFA", 1, &sfa));
-    TRY(kw_real(c, &cd[i], &KW_L10, 3, "SFO", 1, &sfo));
-    TRY(kw_real(c, &cd[i], &KW_L10, 4, "OFFA", 0, &offa));
-    TRY(kw_real(c, &cd[i], &KW_L10, 5, "OFFO", 0, &offo));
+    KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "LCID", 0, &id));
+    KW_TRY(kw_real(c, &cd[i], &KW_L10, 2, "SFA", 1, &sfa));
+    KW_TRY(kw_real(c, &cd[i], &KW_L10, 3, "SFO", 1, &sfo));
+    KW_TRY(kw_real(c, &cd[i], &KW_L10, 4, "OFFA", 0, &offa));
+    KW_TRY(kw_real(c, &cd[i], &KW_L10, 5, "OFFO", 0, &offo));
     if (sfa == 0) sfa = 1;
     if (sfo == 0) sfo = 1;
     if (fe_kw_find_curve(c->d, id))
@@ -462,14 +424,14 @@ static mcs_status h_curve(kw_ctx *c, const kw_card *cd, int n)
     fe_kw_curve *cv = kw_push((void **)&c->d->curve, &c->d->ncurve, &c->d->cap_curve, sizeof *cv);
     if (!cv) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
     cv->id = id;
-    cv->loc = loc_of(&cd[i]);
+    cv->loc = kw_loc_of(&cd[i]);
     cv->xy = malloc(2 * sizeof(double) * (size_t)(n - i > 1 ? n - i : 1));
     if (!cv->xy) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
     for (int k = i + 1; k < n; k++) {
-        if (blank_card(&cd[k])) continue;
+        if (kw_blank_card(&cd[k])) continue;
         double a, o;
-        TRY(kw_real(c, &cd[k], &KW_L_CURVE, 0, "A", 0, &a));
-        TRY(kw_real(c, &cd[k], &KW_L_CURVE, 1, "O", 0, &o));
+        KW_TRY(kw_real(c, &cd[k], &KW_L_CURVE, 0, "A", 0, &a));
+        KW_TRY(kw_real(c, &cd[k], &KW_L_CURVE, 1, "O", 0, &o));
         /* LS-DYNA: abscissa = SFA (A + OFFA), ordinate = SFO (O + OFFO) */
         cv->xy[2 * cv->n] = sfa * (a + offa);
         cv->xy[2 * cv->n + 1] = sfo * (o + offo);
@@ -489,9 +451,9 @@ static mcs_status h_curve(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status h_set(kw_ctx *c, const kw_card *cd, int n, int is_part)
 {
     int i = title_card(c, 0);
-    TRY(need(c, cd, n, i, 1));
+    KW_TRY(kw_need(c, cd, n, i, 1));
     int id;
-    TRY(kw_int(c, &cd[i], &KW_L10, 0, "SID", 0, &id));
+    KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "SID", 0, &id));
     if (fe_kw_find_set(c->d, id, is_part))
         return kw_fail(c, cd[i].file, cd[i].line, 1, MCS_ERR_FORMAT, "set %d is defined twice",
                        id);
@@ -499,14 +461,14 @@ static mcs_status h_set(kw_ctx *c, const kw_card *cd, int n, int is_part)
     if (!s) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
     s->id = id;
     s->is_part = is_part;
-    s->loc = loc_of(&cd[i]);
+    s->loc = kw_loc_of(&cd[i]);
     s->ids = malloc(8 * sizeof(int) * (size_t)(n - i > 1 ? n - i : 1));
     if (!s->ids) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
     static const char *nm[8] = {"ID1", "ID2", "ID3", "ID4", "ID5", "ID6", "ID7", "ID8"};
     for (int k = i + 1; k < n; k++)
         for (int f = 0; f < 8; f++) {
             int v;
-            TRY(kw_int(c, &cd[k], &KW_L10, f, nm[f], 0, &v));
+            KW_TRY(kw_int(c, &cd[k], &KW_L10, f, nm[f], 0, &v));
             if (v > 0) s->ids[s->n++] = v;
         }
     return MCS_OK;
@@ -520,16 +482,16 @@ static mcs_status wall_cards(kw_ctx *c, const kw_card *cd, int n, int moving)
 {
     for (int i = 0; i < n;) {
         fe_kw_wall w = {0};
-        TRY(id_card(c, cd, n, &i, &w.id, w.title));
-        TRY(need(c, cd, n, i, moving ? 3 : 2));
+        KW_TRY(id_card(c, cd, n, &i, &w.id, w.title));
+        KW_TRY(kw_need(c, cd, n, i, moving ? 3 : 2));
         int nsidex, boxid;
         double offset, birth, death;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "NSID", 0, &w.nsid));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "NSIDEX", 0, &nsidex));
-        TRY(kw_int(c, &cd[i], &KW_L10, 2, "BOXID", 0, &boxid));
-        TRY(kw_real(c, &cd[i], &KW_L10, 3, "OFFSET", 0, &offset));
-        TRY(kw_real(c, &cd[i], &KW_L10, 4, "BIRTH", 0, &birth));
-        TRY(kw_real(c, &cd[i], &KW_L10, 5, "DEATH", 1e20, &death));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "NSID", 0, &w.nsid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "NSIDEX", 0, &nsidex));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 2, "BOXID", 0, &boxid));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 3, "OFFSET", 0, &offset));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 4, "BIRTH", 0, &birth));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 5, "DEATH", 1e20, &death));
         if (nsidex || boxid)
             return unsupported_field(c, &cd[i], &KW_L10, nsidex ? 1 : 2, "NSIDEX/BOXID",
                                      "exempted node sets and boxes are not built");
@@ -538,7 +500,7 @@ static mcs_status wall_cards(kw_ctx *c, const kw_card *cd, int n, int moving)
                                      "OFFSET/BIRTH/DEATH", "not built (leave blank)");
         static const char *nm[7] = {"XT", "YT", "ZT", "XH", "YH", "ZH", "FRIC"};
         double v[7];
-        for (int k = 0; k < 7; k++) TRY(kw_real(c, &cd[i + 1], &KW_L10, k, nm[k], 0, &v[k]));
+        for (int k = 0; k < 7; k++) KW_TRY(kw_real(c, &cd[i + 1], &KW_L10, k, nm[k], 0, &v[k]));
         for (int k = 0; k < 3; k++) {
             w.tail[k] = v[k] * kw_u_len(c->d);
             w.head[k] = v[3 + k] * kw_u_len(c->d);
@@ -549,8 +511,8 @@ static mcs_status wall_cards(kw_ctx *c, const kw_card *cd, int n, int moving)
                            "the head (XH, YH, ZH) equals the tail (XT, YT, ZT): no normal");
         if (moving) {
             const kw_card *mc = &cd[i + 2];
-            TRY(kw_real(c, mc, &KW_L10, 0, "MASS", 0, &w.mass));
-            TRY(kw_real(c, mc, &KW_L10, 1, "V0", 0, &w.v0));
+            KW_TRY(kw_real(c, mc, &KW_L10, 0, "MASS", 0, &w.mass));
+            KW_TRY(kw_real(c, mc, &KW_L10, 1, "V0", 0, &w.v0));
             if (!(w.mass > 0))
                 return kw_fail(c, mc->file, mc->line, 1, MCS_ERR_FORMAT,
                                "field MASS: a moving wall needs a mass > 0, got %g", w.mass);
@@ -558,7 +520,7 @@ static mcs_status wall_cards(kw_ctx *c, const kw_card *cd, int n, int moving)
             w.mass *= c->d->unit[2];
             w.v0 *= kw_u_vel(c->d);
         }
-        w.loc = loc_of(&cd[i]);
+        w.loc = kw_loc_of(&cd[i]);
         fe_kw_wall *p = kw_push((void **)&c->d->wall, &c->d->nwall, &c->d->cap_wall, sizeof *p);
         if (!p) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
         *p = w;
@@ -577,21 +539,21 @@ static mcs_status h_wall_moving(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status h_wall_motion(kw_ctx *c, const kw_card *cd, int n)
 {
     int i = 0, id0;
-    TRY(id_card(c, cd, n, &i, &id0, NULL));
+    KW_TRY(id_card(c, cd, n, &i, &id0, NULL));
     for (; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
-        fe_kw_wmotion mo = {.loc = loc_of(&cd[i])};
+        if (kw_blank_card(&cd[i])) continue;
+        fe_kw_wmotion mo = {.loc = kw_loc_of(&cd[i])};
         int vid;
         double death, birth;
         const kw_layout *l = &KW_L10;
-        TRY(kw_int(c, &cd[i], l, 0, "ID", 0, &mo.wall));
-        TRY(kw_int(c, &cd[i], l, 1, "DOF", 0, &mo.dof));
-        TRY(kw_int(c, &cd[i], l, 2, "VAD", 0, &mo.vad));
-        TRY(kw_int(c, &cd[i], l, 3, "LCID", 0, &mo.lcid));
-        TRY(kw_real(c, &cd[i], l, 4, "SF", 1, &mo.sf));
-        TRY(kw_int(c, &cd[i], l, 5, "VID", 0, &vid));
-        TRY(kw_real(c, &cd[i], l, 6, "DEATH", 0, &death));
-        TRY(kw_real(c, &cd[i], l, 7, "BIRTH", 0, &birth));
+        KW_TRY(kw_int(c, &cd[i], l, 0, "ID", 0, &mo.wall));
+        KW_TRY(kw_int(c, &cd[i], l, 1, "DOF", 0, &mo.dof));
+        KW_TRY(kw_int(c, &cd[i], l, 2, "VAD", 0, &mo.vad));
+        KW_TRY(kw_int(c, &cd[i], l, 3, "LCID", 0, &mo.lcid));
+        KW_TRY(kw_real(c, &cd[i], l, 4, "SF", 1, &mo.sf));
+        KW_TRY(kw_int(c, &cd[i], l, 5, "VID", 0, &vid));
+        KW_TRY(kw_real(c, &cd[i], l, 6, "DEATH", 0, &death));
+        KW_TRY(kw_real(c, &cd[i], l, 7, "BIRTH", 0, &birth));
         if (mo.sf == 0) mo.sf = 1; /* LS-DYNA: 0 takes the default 1 */
         if (mo.dof < 1 || mo.dof > 3)
             return unsupported_field(c, &cd[i], l, 1, "DOF",
@@ -621,13 +583,13 @@ static fe_kw_initvel *new_iv(kw_ctx *c)
 static mcs_status h_initvel(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n; i += 2) {
-        TRY(need(c, cd, n, i, 2));
+        KW_TRY(kw_need(c, cd, n, i, 2));
         int nsid, nsidex, boxid, irigid, icid;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "NSID", 0, &nsid));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "NSIDEX", 0, &nsidex));
-        TRY(kw_int(c, &cd[i], &KW_L10, 2, "BOXID", 0, &boxid));
-        TRY(kw_int(c, &cd[i], &KW_L10, 3, "IRIGID", 0, &irigid));
-        TRY(kw_int(c, &cd[i], &KW_L10, 4, "ICID", 0, &icid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "NSID", 0, &nsid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "NSIDEX", 0, &nsidex));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 2, "BOXID", 0, &boxid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 3, "IRIGID", 0, &irigid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 4, "ICID", 0, &icid));
         if (nsidex || boxid || icid)
             return unsupported_field(c, &cd[i], &KW_L10, nsidex ? 1 : boxid ? 2 : 4,
                                      "NSIDEX/BOXID/ICID",
@@ -636,14 +598,14 @@ static mcs_status h_initvel(kw_ctx *c, const kw_card *cd, int n)
         if (!v) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
         static const char *nm[6] = {"VX", "VY", "VZ", "VXR", "VYR", "VZR"};
         double x[6];
-        for (int k = 0; k < 6; k++) TRY(kw_real(c, &cd[i + 1], &KW_L10, k, nm[k], 0, &x[k]));
+        for (int k = 0; k < 6; k++) KW_TRY(kw_real(c, &cd[i + 1], &KW_L10, k, nm[k], 0, &x[k]));
         v->on = FE_KW_ON_NODESET;
         v->id = nsid;
         for (int k = 0; k < 3; k++) {
             v->v[k] = x[k] * kw_u_vel(c->d);
             v->vr[k] = x[3 + k] * kw_u_rate(c->d);
         }
-        v->loc = loc_of(&cd[i]);
+        v->loc = kw_loc_of(&cd[i]);
     }
     return MCS_OK;
 }
@@ -651,16 +613,16 @@ static mcs_status h_initvel(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status h_initvel_gen(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n; i += 2) {
-        TRY(need(c, cd, n, i, 2));
+        KW_TRY(kw_need(c, cd, n, i, 2));
         int id, styp, icid;
         double omega, v[3];
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "ID", 0, &id));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "STYP", 0, &styp));
-        TRY(kw_real(c, &cd[i], &KW_L10, 2, "OMEGA", 0, &omega));
-        TRY(kw_real(c, &cd[i], &KW_L10, 3, "VX", 0, &v[0]));
-        TRY(kw_real(c, &cd[i], &KW_L10, 4, "VY", 0, &v[1]));
-        TRY(kw_real(c, &cd[i], &KW_L10, 5, "VZ", 0, &v[2]));
-        TRY(kw_int(c, &cd[i], &KW_L10, 7, "ICID", 0, &icid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "ID", 0, &id));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "STYP", 0, &styp));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 2, "OMEGA", 0, &omega));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 3, "VX", 0, &v[0]));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 4, "VY", 0, &v[1]));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 5, "VZ", 0, &v[2]));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 7, "ICID", 0, &icid));
         if (styp < 1 || styp > 3)
             return unsupported_field(c, &cd[i], &KW_L10, 1, "STYP",
                                      "must be 1 (part set), 2 (part) or 3 (node set)");
@@ -673,7 +635,7 @@ static mcs_status h_initvel_gen(kw_ctx *c, const kw_card *cd, int n)
         p->on = styp == 1 ? FE_KW_ON_PARTSET : styp == 2 ? FE_KW_ON_PART : FE_KW_ON_NODESET;
         p->id = id;
         for (int k = 0; k < 3; k++) p->v[k] = v[k] * kw_u_vel(c->d);
-        p->loc = loc_of(&cd[i]);
+        p->loc = kw_loc_of(&cd[i]);
     }
     return MCS_OK;
 }
@@ -681,25 +643,25 @@ static mcs_status h_initvel_gen(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status h_spc(kw_ctx *c, const kw_card *cd, int n, fe_kw_target on)
 {
     int i = 0, id0;
-    TRY(id_card(c, cd, n, &i, &id0, NULL));
+    KW_TRY(id_card(c, cd, n, &i, &id0, NULL));
     static const char *nm[6] = {"DOFX", "DOFY", "DOFZ", "DOFRX", "DOFRY", "DOFRZ"};
     for (; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
+        if (kw_blank_card(&cd[i])) continue;
         int id, cid, dof;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, on == FE_KW_ON_NODE ? "NID" : "NSID", 0, &id));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "CID", 0, &cid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, on == FE_KW_ON_NODE ? "NID" : "NSID", 0, &id));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "CID", 0, &cid));
         if (cid)
             return unsupported_field(c, &cd[i], &KW_L10, 1, "CID", "local systems are not built");
         unsigned mask = 0;
         for (int k = 0; k < 6; k++) {
-            TRY(kw_int(c, &cd[i], &KW_L10, 2 + k, nm[k], 0, &dof));
+            KW_TRY(kw_int(c, &cd[i], &KW_L10, 2 + k, nm[k], 0, &dof));
             if (dof != 0 && dof != 1)
                 return unsupported_field(c, &cd[i], &KW_L10, 2 + k, nm[k], "must be 0 or 1");
             if (dof) mask |= 1u << k;
         }
         fe_kw_spc *s = kw_push((void **)&c->d->spc, &c->d->nspc, &c->d->cap_spc, sizeof *s);
         if (!s) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-        *s = (fe_kw_spc){on, id, mask, loc_of(&cd[i])};
+        *s = (fe_kw_spc){on, id, mask, kw_loc_of(&cd[i])};
     }
     return MCS_OK;
 }

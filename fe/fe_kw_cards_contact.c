@@ -10,42 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TRY(x)                                                                                     \
-    do {                                                                                           \
-        mcs_status s_ = (x);                                                                       \
-        if (s_) return s_;                                                                         \
-    } while (0)
-
-static fe_kw_loc loc_of(const kw_card *cd)
-{
-    return (fe_kw_loc){cd->file, cd->line};
-}
-
-static int blank_card(const kw_card *cd)
-{
-    for (int i = 0; i < cd->len; i++)
-        if (cd->s[i] != ' ' && cd->s[i] != '\t') return 0;
-    return 1;
-}
-
-static mcs_status nomem(kw_ctx *c)
-{
-    return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-}
-
-static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
-{
-    if (c->o->quiet) return;
-    char what[512];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    mcs_log(MCS_LOG_WARN, "%s:%d: warning: *%s: %s", c->d->file[cd->file], cd->line, c->kw, what);
-}
-
 /* column of field i of a 10-wide card (0 in free format) */
 static int col_of(const kw_ctx *c, const kw_card *cd, int i)
 {
@@ -59,21 +23,12 @@ static mcs_status refuse(kw_ctx *c, const kw_card *cd, int i, const char *name, 
                    name, why);
 }
 
-/* k cards from card i */
-static mcs_status need(kw_ctx *c, const kw_card *cd, int n, int i, int k)
-{
-    if (i + k <= n) return MCS_OK;
-    int line = n > 0 ? cd[n - 1].line : c->kwloc.line;
-    return kw_fail(c, c->kwloc.file, line, 0, MCS_ERR_FORMAT, "%d more card%s expected", i + k - n,
-                   i + k - n == 1 ? "" : "s");
-}
-
 /* the ID card of the _ID and _TITLE options: CID (I10) HEADING (A70) */
 static mcs_status id_card(kw_ctx *c, const kw_card *cd, int n, int *i, int *id, char *title)
 {
     *id = 0;
     if (!c->has_id && !c->has_title) return MCS_OK;
-    TRY(need(c, cd, n, *i, 1));
+    KW_TRY(kw_need(c, cd, n, *i, 1));
     static const kw_layout l = {1, {10}};
     int fmt = c->fmt;
     c->fmt = KW_FMT_STD; /* the ID card is I10 + A70 in every format */
@@ -88,7 +43,7 @@ static mcs_status reals(kw_ctx *c, const kw_card *cd, int f0, int nf, const char
                         const double *dflt, double *out)
 {
     for (int k = 0; k < nf; k++)
-        TRY(kw_real(c, cd, &KW_L10, f0 + k, nm[k], dflt ? dflt[k] : 0, &out[k]));
+        KW_TRY(kw_real(c, cd, &KW_L10, f0 + k, nm[k], dflt ? dflt[k] : 0, &out[k]));
     return MCS_OK;
 }
 
@@ -98,15 +53,15 @@ static mcs_status reals(kw_ctx *c, const kw_card *cd, int f0, int nf, const char
 static mcs_status contact_card1(kw_ctx *c, const kw_card *cd, fe_kw_contact *k)
 {
     int sbox, mbox;
-    TRY(kw_int(c, cd, &KW_L10, 0, "SSID", 0, &k->ssid));
-    TRY(kw_int(c, cd, &KW_L10, 1, "MSID", 0, &k->msid));
-    TRY(kw_int(c, cd, &KW_L10, 2, "SSTYP", 0, &k->sstyp));
-    TRY(kw_int(c, cd, &KW_L10, 3, "MSTYP", 0, &k->mstyp));
-    TRY(kw_int(c, cd, &KW_L10, 4, "SBOXID", 0, &sbox));
-    TRY(kw_int(c, cd, &KW_L10, 5, "MBOXID", 0, &mbox));
+    KW_TRY(kw_int(c, cd, &KW_L10, 0, "SSID", 0, &k->ssid));
+    KW_TRY(kw_int(c, cd, &KW_L10, 1, "MSID", 0, &k->msid));
+    KW_TRY(kw_int(c, cd, &KW_L10, 2, "SSTYP", 0, &k->sstyp));
+    KW_TRY(kw_int(c, cd, &KW_L10, 3, "MSTYP", 0, &k->mstyp));
+    KW_TRY(kw_int(c, cd, &KW_L10, 4, "SBOXID", 0, &sbox));
+    KW_TRY(kw_int(c, cd, &KW_L10, 5, "MBOXID", 0, &mbox));
     int spr, mpr; /* output flags of the interface force file: read, nothing to honour */
-    TRY(kw_int(c, cd, &KW_L10, 6, "SPR", 0, &spr));
-    TRY(kw_int(c, cd, &KW_L10, 7, "MPR", 0, &mpr));
+    KW_TRY(kw_int(c, cd, &KW_L10, 6, "SPR", 0, &spr));
+    KW_TRY(kw_int(c, cd, &KW_L10, 7, "MPR", 0, &mpr));
     if (sbox || mbox)
         return refuse(c, cd, sbox ? 4 : 5, sbox ? "SBOXID" : "MBOXID",
                       "contact boxes are not built (leave blank)");
@@ -127,11 +82,11 @@ static mcs_status contact_card2(kw_ctx *c, const kw_card *cd, fe_kw_contact *k)
 {
     static const char *const nm[5] = {"FS", "FD", "DC", "VC", "VDC"};
     double v[5];
-    TRY(reals(c, cd, 0, 5, nm, NULL, v));
+    KW_TRY(reals(c, cd, 0, 5, nm, NULL, v));
     int penchk;
-    TRY(kw_int(c, cd, &KW_L10, 5, "PENCHK", 0, &penchk));
-    TRY(kw_real(c, cd, &KW_L10, 6, "BT", 0, &k->bt));
-    TRY(kw_real(c, cd, &KW_L10, 7, "DT", 0, &k->dt));
+    KW_TRY(kw_int(c, cd, &KW_L10, 5, "PENCHK", 0, &penchk));
+    KW_TRY(kw_real(c, cd, &KW_L10, 6, "BT", 0, &k->bt));
+    KW_TRY(kw_real(c, cd, &KW_L10, 7, "DT", 0, &k->dt));
     k->fs = v[0], k->fd = v[1], k->dc = v[2] * c->d->unit[1] / c->d->unit[0];
     k->vc = v[3] * kw_u_stress(c->d), k->vdc = v[4];
     if (k->fs < 0 || k->fd < 0 || k->dc < 0)
@@ -141,19 +96,24 @@ static mcs_status contact_card2(kw_ctx *c, const kw_card *cd, fe_kw_contact *k)
                                   : 2,
                       "FS/FD/DC",
                       "friction from *PART_CONTACT or a table (negative values) is not built");
-    if (k->vc != 0 || k->vdc != 0)
-        return refuse(c, cd, k->vc != 0 ? 3 : 4, k->vc != 0 ? "VC" : "VDC",
-                      "viscous friction and contact damping are not built (leave 0)");
-    if (k->bt != 0) return refuse(c, cd, 6, "BT", "a contact birth time is not built (leave 0)");
+    if (k->vc != 0)
+        return refuse(c, cd, 3, "VC", "the viscous friction limit is not built (leave 0)");
+    /* VDC: normal contact damping in percent of critical (fe_contact_desc.damping) */
+    if (!(k->vdc >= 0 && k->vdc <= 100))
+        return refuse(c, cd, 4, "VDC", "contact damping is a percentage of critical: 0..100");
+    if (k->bt < 0)
+        return refuse(c, cd, 6, "BT", "a negative birth time (dynamic relaxation) is not built");
     if (k->dt >= 1e20) k->dt = 0; /* the default: never */
-    if (k->dt != 0)
-        return refuse(c, cd, 7, "DT", "a contact death time is not built (leave blank)");
+    if (k->dt < 0)
+        return refuse(c, cd, 7, "DT", "a negative death time (dynamic relaxation) is not built");
+    if (k->dt != 0 && k->dt <= k->bt)
+        return refuse(c, cd, 7, "DT", "the death time must come after the birth time BT");
     if (penchk != 0)
-        warn(c, cd,
+        kw_warn(c, cd,
              "PENCHK %d read and ignored: the kernel never releases a penetrating node "
              "(docs/fe.md, Contact)",
              penchk);
-    k->bt *= c->d->unit[1];
+    k->bt *= c->d->unit[1], k->dt *= c->d->unit[1];
     return MCS_OK;
 }
 
@@ -163,7 +123,7 @@ static mcs_status contact_card3(kw_ctx *c, const kw_card *cd, fe_kw_contact *k)
     static const char *const nm[8] = {"SFS", "SFM", "SST", "MST", "SFST", "SFMT", "FSF", "VSF"};
     static const double dflt[8] = {1, 1, 0, 0, 1, 1, 1, 1};
     double v[8];
-    TRY(reals(c, cd, 0, 8, nm, dflt, v));
+    KW_TRY(reals(c, cd, 0, 8, nm, dflt, v));
     for (int i = 0; i < 8; i++)
         if (v[i] == 0 && dflt[i] == 1) v[i] = 1; /* LS-DYNA: 0 takes the default 1 */
     k->sfs = v[0], k->sfm = v[1], k->sfst = v[4], k->sfmt = v[5], k->fsf = v[6];
@@ -191,18 +151,18 @@ static mcs_status contact_optional(kw_ctx *c, const kw_card *cd, int n, fe_kw_co
                        "%d cards after card 3; a contact has at most the optional cards A to F",
                        n - 3);
     if (n > 3) {
-        TRY(kw_int(c, &cd[3], &KW_L10, 0, "SOFT", 0, &k->soft));
+        KW_TRY(kw_int(c, &cd[3], &KW_L10, 0, "SOFT", 0, &k->soft));
         if (k->soft != 0)
             return refuse(c, &cd[3], 0, "SOFT",
                           "soft constraint (1) and segment-based (2) contact are not built: the "
                           "penalty contact (0) is");
     }
     if (n > 4) {
-        TRY(kw_real(c, &cd[4], &KW_L10, 6, "SLDTHK", 0, &k->sldthk));
-        TRY(kw_real(c, &cd[4], &KW_L10, 7, "SLDSTF", 0, &k->sldstf));
+        KW_TRY(kw_real(c, &cd[4], &KW_L10, 6, "SLDTHK", 0, &k->sldthk));
+        KW_TRY(kw_real(c, &cd[4], &KW_L10, 7, "SLDSTF", 0, &k->sldstf));
         int isym, i2d3d;
-        TRY(kw_int(c, &cd[4], &KW_L10, 4, "ISYM", 0, &isym));
-        TRY(kw_int(c, &cd[4], &KW_L10, 5, "I2D3D", 0, &i2d3d));
+        KW_TRY(kw_int(c, &cd[4], &KW_L10, 4, "ISYM", 0, &isym));
+        KW_TRY(kw_int(c, &cd[4], &KW_L10, 5, "I2D3D", 0, &i2d3d));
         if (k->sldthk != 0 || k->sldstf != 0)
             return refuse(c, &cd[4], k->sldthk != 0 ? 6 : 7, "SLDTHK/SLDSTF",
                           "solid contact thickness and stiffness are not built (leave 0)");
@@ -217,9 +177,9 @@ static mcs_status contact_optional(kw_ctx *c, const kw_card *cd, int n, fe_kw_co
  * settings, read over */
 static mcs_status mpp_cards(kw_ctx *c, const kw_card *cd, int n, int *i)
 {
-    TRY(need(c, cd, n, *i, 1));
+    KW_TRY(kw_need(c, cd, n, *i, 1));
     int ignore;
-    TRY(kw_int(c, &cd[*i], &KW_L10, 0, "IGNORE", 0, &ignore));
+    KW_TRY(kw_int(c, &cd[*i], &KW_L10, 0, "IGNORE", 0, &ignore));
     (*i)++;
     if (*i < n) {
         const char *p = cd[*i].s;
@@ -235,21 +195,21 @@ static mcs_status h_contact_mpp(kw_ctx *c, const kw_card *cd, int n, fe_kw_ctype
 {
     fe_kw_contact k = {.type = type, .automatic = automatic};
     int i = 0;
-    TRY(id_card(c, cd, n, &i, &k.id, k.title));
-    if (mpp) TRY(mpp_cards(c, cd, n, &i));
-    TRY(need(c, cd, n, i, 1));
-    k.loc = loc_of(&cd[i]);
-    TRY(contact_card1(c, &cd[i], &k));
+    KW_TRY(id_card(c, cd, n, &i, &k.id, k.title));
+    if (mpp) KW_TRY(mpp_cards(c, cd, n, &i));
+    KW_TRY(kw_need(c, cd, n, i, 1));
+    k.loc = kw_loc_of(&cd[i]);
+    KW_TRY(contact_card1(c, &cd[i], &k));
     /* cards 2 and 3 may be left out: their defaults */
     static const kw_card none = {.s = "", .len = 0};
     kw_card blank = none;
     blank.file = cd[i].file, blank.line = cd[i].line;
-    TRY(contact_card2(c, i + 1 < n ? &cd[i + 1] : &blank, &k));
-    TRY(contact_card3(c, i + 2 < n ? &cd[i + 2] : &blank, &k));
-    TRY(contact_optional(c, cd + i, n - i, &k));
+    KW_TRY(contact_card2(c, i + 1 < n ? &cd[i + 1] : &blank, &k));
+    KW_TRY(contact_card3(c, i + 2 < n ? &cd[i + 2] : &blank, &k));
+    KW_TRY(contact_optional(c, cd + i, n - i, &k));
     fe_kw_contact *p =
         kw_push((void **)&c->d->contact, &c->d->ncontact, &c->d->cap_contact, sizeof *p);
-    if (!p) return nomem(c);
+    if (!p) return kw_nomem(c);
     *p = k;
     return MCS_OK;
 }
@@ -319,8 +279,8 @@ mcs_status kw_h_contact_auto_n2s(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status set_head(kw_ctx *c, const kw_card *cd, int n, int *i, int *sid, int kind)
 {
     *i = c->has_title ? 1 : 0;
-    TRY(need(c, cd, n, *i, 1));
-    TRY(kw_int(c, &cd[*i], &KW_L10, 0, "SID", 0, sid));
+    KW_TRY(kw_need(c, cd, n, *i, 1));
+    KW_TRY(kw_int(c, &cd[*i], &KW_L10, 0, "SID", 0, sid));
     int dup = 0;
     if (kind < 2) dup = fe_kw_find_set(c->d, *sid, kind) != NULL;
     for (int k = 0; k < c->d->nsegset && kind == 2; k++)
@@ -336,8 +296,8 @@ static mcs_status set_head(kw_ctx *c, const kw_card *cd, int n, int *i, int *sid
 static mcs_status h_set_generate(kw_ctx *c, const kw_card *cd, int n, int is_part)
 {
     int i, sid;
-    TRY(set_head(c, cd, n, &i, &sid, is_part));
-    fe_kw_set s = {.id = sid, .is_part = is_part, .loc = loc_of(&cd[i - 1])};
+    KW_TRY(set_head(c, cd, n, &i, &sid, is_part));
+    fe_kw_set s = {.id = sid, .is_part = is_part, .loc = kw_loc_of(&cd[i - 1])};
     int cap = 0;
     static const char *const nm[8] = {"B1BEG", "B1END", "B2BEG", "B2END",
                                       "B3BEG", "B3END", "B4BEG", "B4END"};
@@ -355,14 +315,14 @@ static mcs_status h_set_generate(kw_ctx *c, const kw_card *cd, int n, int is_par
                 continue;
             }
             if (kw_grow((void **)&s.ids, &cap, s.n + (e - b + 1), sizeof(int))) {
-                st = nomem(c);
+                st = kw_nomem(c);
                 continue;
             }
             for (int v = b; v <= e; v++)
                 s.ids[s.n++] = v;
         }
     fe_kw_set *p = st ? NULL : kw_push((void **)&c->d->set, &c->d->nset, &c->d->cap_set, sizeof *p);
-    if (!st && !p) st = nomem(c);
+    if (!st && !p) st = kw_nomem(c);
     if (st) {
         free(s.ids);
         return st;
@@ -384,14 +344,14 @@ mcs_status kw_h_set_part_gen(kw_ctx *c, const kw_card *cd, int n)
 mcs_status kw_h_set_segment(kw_ctx *c, const kw_card *cd, int n)
 {
     int i, sid;
-    TRY(set_head(c, cd, n, &i, &sid, 2));
-    fe_kw_segset s = {.id = sid, .loc = loc_of(&cd[i - 1])};
+    KW_TRY(set_head(c, cd, n, &i, &sid, 2));
+    fe_kw_segset s = {.id = sid, .loc = kw_loc_of(&cd[i - 1])};
     s.node = malloc(4 * sizeof(int) * (size_t)(n - i > 0 ? n - i : 1));
-    if (!s.node) return nomem(c);
+    if (!s.node) return kw_nomem(c);
     static const char *const nm[4] = {"N1", "N2", "N3", "N4"};
     mcs_status st = MCS_OK;
     for (; i < n && !st; i++) {
-        if (blank_card(&cd[i])) continue;
+        if (kw_blank_card(&cd[i])) continue;
         int *q = s.node + 4 * s.n;
         for (int k = 0; k < 4 && !st; k++)
             st = kw_int(c, &cd[i], &KW_L10, k, nm[k], 0, &q[k]);
@@ -404,7 +364,7 @@ mcs_status kw_h_set_segment(kw_ctx *c, const kw_card *cd, int n)
     }
     fe_kw_segset *p =
         st ? NULL : kw_push((void **)&c->d->segset, &c->d->nsegset, &c->d->cap_segset, sizeof *p);
-    if (!st && !p) st = nomem(c);
+    if (!st && !p) st = kw_nomem(c);
     if (st) {
         free(s.node);
         return st;
@@ -419,13 +379,13 @@ mcs_status kw_h_initvel_node(kw_ctx *c, const kw_card *cd, int n)
 {
     static const char *const nm[6] = {"VX", "VY", "VZ", "VXR", "VYR", "VZR"};
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
-        fe_kw_nodevel v = {.loc = loc_of(&cd[i])};
+        if (kw_blank_card(&cd[i])) continue;
+        fe_kw_nodevel v = {.loc = kw_loc_of(&cd[i])};
         double x[6];
         int icid;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "NID", 0, &v.nid));
-        TRY(reals(c, &cd[i], 1, 6, nm, NULL, x));
-        TRY(kw_int(c, &cd[i], &KW_L10, 7, "ICID", 0, &icid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "NID", 0, &v.nid));
+        KW_TRY(reals(c, &cd[i], 1, 6, nm, NULL, x));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 7, "ICID", 0, &icid));
         if (icid) return refuse(c, &cd[i], 7, "ICID", "local systems are not built");
         for (int k = 0; k < 3; k++) {
             v.v[k] = x[k] * kw_u_vel(c->d);
@@ -433,7 +393,7 @@ mcs_status kw_h_initvel_node(kw_ctx *c, const kw_card *cd, int n)
         }
         fe_kw_nodevel *p =
             kw_push((void **)&c->d->nodevel, &c->d->nnodevel, &c->d->cap_nodevel, sizeof *p);
-        if (!p) return nomem(c);
+        if (!p) return kw_nomem(c);
         *p = v;
     }
     return MCS_OK;
@@ -444,20 +404,20 @@ mcs_status kw_h_initvel_node(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status h_pmotion(kw_ctx *c, const kw_card *cd, int n, fe_kw_target on)
 {
     int i = 0, id0;
-    TRY(id_card(c, cd, n, &i, &id0, NULL));
+    KW_TRY(id_card(c, cd, n, &i, &id0, NULL));
     const char *idname = on == FE_KW_ON_NODE ? "NID" : on == FE_KW_ON_PART ? "PID" : "NSID";
     for (; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
-        fe_kw_pmotion m = {.on = on, .loc = loc_of(&cd[i])};
+        if (kw_blank_card(&cd[i])) continue;
+        fe_kw_pmotion m = {.on = on, .loc = kw_loc_of(&cd[i])};
         int vid;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, idname, 0, &m.id));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "DOF", 0, &m.dof));
-        TRY(kw_int(c, &cd[i], &KW_L10, 2, "VAD", 0, &m.vad));
-        TRY(kw_int(c, &cd[i], &KW_L10, 3, "LCID", 0, &m.lcid));
-        TRY(kw_real(c, &cd[i], &KW_L10, 4, "SF", 1, &m.sf));
-        TRY(kw_int(c, &cd[i], &KW_L10, 5, "VID", 0, &vid));
-        TRY(kw_real(c, &cd[i], &KW_L10, 6, "DEATH", 0, &m.death));
-        TRY(kw_real(c, &cd[i], &KW_L10, 7, "BIRTH", 0, &m.birth));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, idname, 0, &m.id));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "DOF", 0, &m.dof));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 2, "VAD", 0, &m.vad));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 3, "LCID", 0, &m.lcid));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 4, "SF", 1, &m.sf));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 5, "VID", 0, &vid));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 6, "DEATH", 0, &m.death));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 7, "BIRTH", 0, &m.birth));
         if (m.sf == 0) m.sf = 1; /* LS-DYNA: 0 takes the default 1 */
         if (m.death >= 1e20) m.death = 0;
         if (!((m.dof >= 1 && m.dof <= 3) || (m.dof >= 5 && m.dof <= 7)))
@@ -476,7 +436,7 @@ static mcs_status h_pmotion(kw_ctx *c, const kw_card *cd, int n, fe_kw_target on
                            "field LCID: a motion needs a curve, got %d", m.lcid);
         fe_kw_pmotion *p =
             kw_push((void **)&c->d->pmotion, &c->d->npmotion, &c->d->cap_pmotion, sizeof *p);
-        if (!p) return nomem(c);
+        if (!p) return kw_nomem(c);
         *p = m;
     }
     return MCS_OK;
@@ -501,14 +461,14 @@ mcs_status kw_h_pmotion_rigid(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status h_load_node(kw_ctx *c, const kw_card *cd, int n, int set)
 {
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
-        fe_kw_load l = {.loc = loc_of(&cd[i]), .segment = set ? 2 : 0};
+        if (kw_blank_card(&cd[i])) continue;
+        fe_kw_load l = {.loc = kw_loc_of(&cd[i]), .segment = set ? 2 : 0};
         int cid;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, set ? "NSID" : "NID", 0, &l.nid));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "DOF", 0, &l.dof));
-        TRY(kw_int(c, &cd[i], &KW_L10, 2, "LCID", 0, &l.lcid));
-        TRY(kw_real(c, &cd[i], &KW_L10, 3, "SF", 1, &l.sf));
-        TRY(kw_int(c, &cd[i], &KW_L10, 4, "CID", 0, &cid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, set ? "NSID" : "NID", 0, &l.nid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "DOF", 0, &l.dof));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 2, "LCID", 0, &l.lcid));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 3, "SF", 1, &l.sf));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 4, "CID", 0, &cid));
         if (l.dof < 1 || l.dof > 3)
             return refuse(c, &cd[i], 1, "DOF",
                           "forces along x, y, z (1, 2, 3) are built, not moments or follower "
@@ -518,7 +478,7 @@ static mcs_status h_load_node(kw_ctx *c, const kw_card *cd, int n, int set)
             return kw_fail(c, cd[i].file, cd[i].line, col_of(c, &cd[i], 2), MCS_ERR_FORMAT,
                            "field LCID: a load needs a curve, got %d", l.lcid);
         fe_kw_load *p = kw_push((void **)&c->d->load, &c->d->nload, &c->d->cap_load, sizeof *p);
-        if (!p) return nomem(c);
+        if (!p) return kw_nomem(c);
         *p = l;
     }
     return MCS_OK;
@@ -538,16 +498,16 @@ mcs_status kw_h_load_segment(kw_ctx *c, const kw_card *cd, int n)
 {
     static const char *const nm[4] = {"N1", "N2", "N3", "N4"};
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
-        fe_kw_load l = {.loc = loc_of(&cd[i]), .segment = 1};
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "LCID", 0, &l.lcid));
-        TRY(kw_real(c, &cd[i], &KW_L10, 1, "SF", 1, &l.sf));
-        TRY(kw_real(c, &cd[i], &KW_L10, 2, "AT", 0, &l.at));
+        if (kw_blank_card(&cd[i])) continue;
+        fe_kw_load l = {.loc = kw_loc_of(&cd[i]), .segment = 1};
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "LCID", 0, &l.lcid));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 1, "SF", 1, &l.sf));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 2, "AT", 0, &l.at));
         for (int k = 0; k < 4; k++)
-            TRY(kw_int(c, &cd[i], &KW_L10, 3 + k, nm[k], 0, &l.node[k]));
+            KW_TRY(kw_int(c, &cd[i], &KW_L10, 3 + k, nm[k], 0, &l.node[k]));
         l.at *= c->d->unit[1];
         fe_kw_load *p = kw_push((void **)&c->d->load, &c->d->nload, &c->d->cap_load, sizeof *p);
-        if (!p) return nomem(c);
+        if (!p) return kw_nomem(c);
         *p = l;
     }
     return MCS_OK;
@@ -560,15 +520,15 @@ mcs_status kw_h_control_termination(kw_ctx *c, const kw_card *cd, int n)
     if (n < 1) return MCS_OK;
     double endtim, dtmin, endeng, endmas;
     int endcyc, nosol;
-    TRY(kw_real(c, &cd[0], &KW_L10, 0, "ENDTIM", 0, &endtim));
-    TRY(kw_int(c, &cd[0], &KW_L10, 1, "ENDCYC", 0, &endcyc));
-    TRY(kw_real(c, &cd[0], &KW_L10, 2, "DTMIN", 0, &dtmin));
-    TRY(kw_real(c, &cd[0], &KW_L10, 3, "ENDENG", 0, &endeng));
-    TRY(kw_real(c, &cd[0], &KW_L10, 4, "ENDMAS", 0, &endmas));
-    TRY(kw_int(c, &cd[0], &KW_L10, 5, "NOSOL", 0, &nosol));
+    KW_TRY(kw_real(c, &cd[0], &KW_L10, 0, "ENDTIM", 0, &endtim));
+    KW_TRY(kw_int(c, &cd[0], &KW_L10, 1, "ENDCYC", 0, &endcyc));
+    KW_TRY(kw_real(c, &cd[0], &KW_L10, 2, "DTMIN", 0, &dtmin));
+    KW_TRY(kw_real(c, &cd[0], &KW_L10, 3, "ENDENG", 0, &endeng));
+    KW_TRY(kw_real(c, &cd[0], &KW_L10, 4, "ENDMAS", 0, &endmas));
+    KW_TRY(kw_int(c, &cd[0], &KW_L10, 5, "NOSOL", 0, &nosol));
     if (endtim < 0) return refuse(c, &cd[0], 0, "ENDTIM", "must be >= 0");
     if (endcyc || dtmin != 0 || endeng != 0 || endmas != 0)
-        warn(c, &cd[0],
+        kw_warn(c, &cd[0],
              "ENDCYC, DTMIN, ENDENG, ENDMAS read and ignored: the run ends at ENDTIM "
              "and stops on its own checks (time-step collapse, energy growth)");
     if (nosol) return refuse(c, &cd[0], 5, "NOSOL", "a run without solution is not built");
@@ -581,17 +541,17 @@ mcs_status kw_h_control_termination(kw_ctx *c, const kw_card *cd, int n)
 mcs_status kw_h_control_contact(kw_ctx *c, const kw_card *cd, int n)
 {
     if (n < 1) return MCS_OK;
-    TRY(kw_real(c, &cd[0], &KW_L10, 0, "SLSFAC", 0, &c->d->slsfac));
-    TRY(kw_real(c, &cd[0], &KW_L10, 1, "RWPNAL", 0, &c->d->rwpnal));
+    KW_TRY(kw_real(c, &cd[0], &KW_L10, 0, "SLSFAC", 0, &c->d->slsfac));
+    KW_TRY(kw_real(c, &cd[0], &KW_L10, 1, "RWPNAL", 0, &c->d->rwpnal));
     int v[6];
     static const char *const nm[6] = {"ISLCHK", "SHLTHK", "PENOPT", "THKCHG", "ORIEN", "ENMASS"};
     for (int k = 0; k < 6; k++)
-        TRY(kw_int(c, &cd[0], &KW_L10, 2 + k, nm[k], 0, &v[k]));
+        KW_TRY(kw_int(c, &cd[0], &KW_L10, 2 + k, nm[k], 0, &v[k]));
     if (c->d->slsfac < 0) return refuse(c, &cd[0], 0, "SLSFAC", "must be >= 0");
     c->d->shlthk = v[1];
-    c->d->control_contact = loc_of(&cd[0]);
+    c->d->control_contact = kw_loc_of(&cd[0]);
     if (v[2] || v[3] || v[4] || v[5])
-        warn(c, &cd[0],
+        kw_warn(c, &cd[0],
              "PENOPT, THKCHG, ORIEN, ENMASS read and ignored: the kernel's penalty "
              "is the segment's (docs/fe.md, Contact), shell thickness constant, "
              "segments oriented by their elements, no erosion");

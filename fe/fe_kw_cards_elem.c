@@ -12,50 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TRY(x)                                                                                     \
-    do {                                                                                           \
-        mcs_status s_ = (x);                                                                       \
-        if (s_) return s_;                                                                         \
-    } while (0)
-
 static const kw_layout L16 = {5, {16, 16, 16, 16, 16}}; /* THIC1..THIC4 BETA/MCID, OFFSET */
-
-static fe_kw_loc loc_of(const kw_card *cd) { return (fe_kw_loc){cd->file, cd->line}; }
-
-static mcs_status nomem(kw_ctx *c)
-{
-    return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-}
-
-/* k more cards must follow card i */
-static mcs_status need(kw_ctx *c, const kw_card *cd, int n, int i, int k)
-{
-    if (i + k <= n) return MCS_OK;
-    int line = n > 0 ? cd[n - 1].line : c->kwloc.line;
-    return kw_fail(c, c->kwloc.file, line, 0, MCS_ERR_FORMAT,
-                   "%d more card%s expected after line %d (the keyword has %d card%s per entry)",
-                   i + k - n, i + k - n == 1 ? "" : "s", line, k, k == 1 ? "" : "s");
-}
-
-static int blank_card(const kw_card *cd)
-{
-    for (int i = 0; i < cd->len; i++)
-        if (cd->s[i] != ' ' && cd->s[i] != '\t') return 0;
-    return 1;
-}
-
-static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static void warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
-{
-    if (c->o->quiet) return;
-    char what[512];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    mcs_log(MCS_LOG_WARN, "%s:%d: warning: *%s: %s", c->d->file[cd->file], cd->line, c->kw, what);
-}
 
 /* an unsupported value in field i: "FILE:LINE:COL: error: *KW: field NAME: why" */
 static mcs_status refuse(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i,
@@ -91,7 +48,7 @@ static mcs_status thick_room(kw_ctx *c, fe_kw_elems *e, int i)
 {
     if (i < e->nthick) return MCS_OK;
     int cap = e->nthick;
-    if (kw_grow((void **)&e->thick, &cap, i + 1, 4 * sizeof(double))) return nomem(c);
+    if (kw_grow((void **)&e->thick, &cap, i + 1, 4 * sizeof(double))) return kw_nomem(c);
     memset(e->thick + 4 * (size_t)e->nthick, 0, 4 * sizeof(double) * (size_t)(cap - e->nthick));
     e->nthick = cap;
     return MCS_OK;
@@ -107,10 +64,10 @@ mcs_status kw_h_shell_opt(kw_ctx *c, const kw_card *cd, int n)
     static const char *tn[4] = {"THIC1", "THIC2", "THIC3", "THIC4"};
     fe_kw_elems *e = &c->d->elem[FE_KW_SHELL];
     for (int i = 0; i < n; i += per) {
-        if (blank_card(&cd[i]) && i + 1 >= n) break;
-        TRY(need(c, cd, n, i, per));
+        if (kw_blank_card(&cd[i]) && i + 1 >= n) break;
+        KW_TRY(kw_need(c, cd, n, i, per));
         int v[10];
-        for (int k = 0; k < 10; k++) TRY(kw_int(c, &cd[i], &KW_L_ELEM, k, nm[k], 0, &v[k]));
+        for (int k = 0; k < 10; k++) KW_TRY(kw_int(c, &cd[i], &KW_L_ELEM, k, nm[k], 0, &v[k]));
         for (int k = 6; k < 10; k++)
             if (v[k])
                 return refuse(c, &cd[i], &KW_L_ELEM, k, "N5..N8",
@@ -119,19 +76,19 @@ mcs_status kw_h_shell_opt(kw_ctx *c, const kw_card *cd, int n)
         double t[4] = {0, 0, 0, 0}, off = 0;
         if (card2)
             for (int k = 0; k < 4; k++) {
-                TRY(kw_real(c, &cd[i + 1], &L16, k, tn[k], 0, &t[k]));
+                KW_TRY(kw_real(c, &cd[i + 1], &L16, k, tn[k], 0, &t[k]));
                 if (t[k] < 0)
                     return refuse(c, &cd[i + 1], &L16, k, tn[k], "a thickness must be >= 0");
                 t[k] *= kw_u_len(c->d);
             }
-        if (offset) TRY(kw_real(c, &cd[i + per - 1], &L16, 0, "OFFSET", 0, &off));
+        if (offset) KW_TRY(kw_real(c, &cd[i + per - 1], &L16, 0, "OFFSET", 0, &off));
         if (off != 0)
             return refuse(c, &cd[i + per - 1], &L16, 0, "OFFSET",
                           "shells offset from their nodes are not built (leave 0)");
         const int at = e->n;
-        TRY(kw_add_elem(c, FE_KW_SHELL, v[0], v[1], v + 2, NULL, loc_of(&cd[i])));
+        KW_TRY(kw_add_elem(c, FE_KW_SHELL, v[0], v[1], v + 2, NULL, kw_loc_of(&cd[i])));
         if (t[0] > 0 || t[1] > 0 || t[2] > 0 || t[3] > 0) {
-            TRY(thick_room(c, e, at));
+            KW_TRY(thick_room(c, e, at));
             memcpy(e->thick + 4 * (size_t)at, t, sizeof t);
         }
     }
@@ -144,11 +101,11 @@ mcs_status kw_h_tshell(kw_ctx *c, const kw_card *cd, int n)
     static const char *nm[10] = {"EID", "PID", "N1", "N2", "N3", "N4", "N5", "N6", "N7", "N8"};
     const int per = has_opt(c, "BETA") ? 2 : 1;
     for (int i = 0; i < n; i += per) {
-        if (blank_card(&cd[i]) && i + 1 >= n) break;
-        TRY(need(c, cd, n, i, per));
+        if (kw_blank_card(&cd[i]) && i + 1 >= n) break;
+        KW_TRY(kw_need(c, cd, n, i, per));
         int v[10];
-        for (int k = 0; k < 10; k++) TRY(kw_int(c, &cd[i], &KW_L_ELEM, k, nm[k], 0, &v[k]));
-        TRY(kw_add_elem(c, FE_KW_TSHELL, v[0], v[1], v + 2, NULL, loc_of(&cd[i])));
+        for (int k = 0; k < 10; k++) KW_TRY(kw_int(c, &cd[i], &KW_L_ELEM, k, nm[k], 0, &v[k]));
+        KW_TRY(kw_add_elem(c, FE_KW_TSHELL, v[0], v[1], v + 2, NULL, kw_loc_of(&cd[i])));
     }
     return MCS_OK;
 }
@@ -161,14 +118,14 @@ static mcs_status new_section(kw_ctx *c, const kw_card *cd, fe_kw_sec_kind kind,
                               fe_kw_section **out)
 {
     int id;
-    TRY(kw_int(c, cd, &KW_L10, 0, "SECID", 0, &id));
+    KW_TRY(kw_int(c, cd, &KW_L10, 0, "SECID", 0, &id));
     if (fe_kw_find_section(c->d, id))
         return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_FORMAT, "section %d is defined twice",
                        id);
     fe_kw_section *s =
         kw_push((void **)&c->d->section, &c->d->nsection, &c->d->cap_section, sizeof *s);
-    if (!s) return nomem(c);
-    s->id = id, s->loc = loc_of(cd), s->kind = kind;
+    if (!s) return kw_nomem(c);
+    s->id = id, s->loc = kw_loc_of(cd), s->kind = kind;
     *out = s;
     return MCS_OK;
 }
@@ -180,22 +137,22 @@ mcs_status kw_h_section_solid(kw_ctx *c, const kw_card *cd, int n)
     for (int i = 0; i < n;) {
         i = title_card(c, i);
         if (i >= n && c->has_title) break;
-        if (blank_card(&cd[i]) && i + 1 >= n) break;
-        TRY(need(c, cd, n, i, 1));
+        if (kw_blank_card(&cd[i]) && i + 1 >= n) break;
+        KW_TRY(kw_need(c, cd, n, i, 1));
         fe_kw_section *s;
-        TRY(new_section(c, &cd[i], FE_KW_SEC_SOLID, &s));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
+        KW_TRY(new_section(c, &cd[i], FE_KW_SEC_SOLID, &s));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
         i++;
         if (s->elform < 101 || s->elform > 105) continue;
-        TRY(need(c, cd, n, i, 1));
+        KW_TRY(kw_need(c, cd, n, i, 1));
         int nip, lmc;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "NIP", 0, &nip));
-        TRY(kw_int(c, &cd[i], &KW_L10, 4, "LMC", 0, &lmc));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "NIP", 0, &nip));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 4, "LMC", 0, &lmc));
         if (nip < 0 || lmc < 0 || nip > 1000 || lmc > 8000)
             return refuse(c, &cd[i], &KW_L10, nip < 0 || nip > 1000 ? 0 : 4, "NIP/LMC",
                           "must be 0..1000 and 0..8000");
         int extra = nip + (lmc + 7) / 8;
-        TRY(need(c, cd, n, i + 1, extra));
+        KW_TRY(kw_need(c, cd, n, i + 1, extra));
         s->user = 1;
         i += 1 + extra;
     }
@@ -208,23 +165,23 @@ mcs_status kw_h_section_tshell(kw_ctx *c, const kw_card *cd, int n)
     for (int i = 0; i < n;) {
         i = title_card(c, i);
         if (i >= n && c->has_title) break;
-        if (blank_card(&cd[i]) && i + 1 >= n) break;
-        TRY(need(c, cd, n, i, 1));
+        if (kw_blank_card(&cd[i]) && i + 1 >= n) break;
+        KW_TRY(kw_need(c, cd, n, i, 1));
         fe_kw_section *s;
         double nip;
         int icomp;
-        TRY(new_section(c, &cd[i], FE_KW_SEC_TSHELL, &s));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
-        TRY(kw_real(c, &cd[i], &KW_L10, 2, "SHRF", 0, &s->shrf));
-        TRY(kw_real(c, &cd[i], &KW_L10, 3, "NIP", 0, &nip));
-        TRY(kw_int(c, &cd[i], &KW_L10, 6, "ICOMP", 0, &icomp));
+        KW_TRY(new_section(c, &cd[i], FE_KW_SEC_TSHELL, &s));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 0, &s->elform));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 2, "SHRF", 0, &s->shrf));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 3, "NIP", 0, &nip));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 6, "ICOMP", 0, &icomp));
         if (!(nip >= 0 && nip <= 100))
             return refuse(c, &cd[i], &KW_L10, 3, "NIP", "must be 0..100");
         s->nip = (int)nip;
         i++;
         if (icomp == 1) {
             int k = ((s->nip > 0 ? s->nip : 2) + 7) / 8;
-            TRY(need(c, cd, n, i, k));
+            KW_TRY(kw_need(c, cd, n, i, k));
             i += k;
         }
     }
@@ -240,32 +197,32 @@ mcs_status kw_h_section_beam(kw_ctx *c, const kw_card *cd, int n)
     for (int i = 0; i < n;) {
         i = title_card(c, i);
         if (i >= n && c->has_title) break;
-        if (blank_card(&cd[i]) && i + 1 >= n) break;
-        TRY(need(c, cd, n, i, 2));
+        if (kw_blank_card(&cd[i]) && i + 1 >= n) break;
+        KW_TRY(kw_need(c, cd, n, i, 2));
         fe_kw_section *s;
         double qr, cst;
-        TRY(new_section(c, &cd[i], FE_KW_SEC_BEAM, &s));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 1, &s->elform));
-        TRY(kw_real(c, &cd[i], &KW_L10, 2, "SHRF", 0, &s->shrf));
-        TRY(kw_real(c, &cd[i], &KW_L10, 3, "QR/IRID", 0, &qr));
-        TRY(kw_real(c, &cd[i], &KW_L10, 4, "CST", 0, &cst));
+        KW_TRY(new_section(c, &cd[i], FE_KW_SEC_BEAM, &s));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "ELFORM", 1, &s->elform));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 2, "SHRF", 0, &s->shrf));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 3, "QR/IRID", 0, &qr));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 4, "CST", 0, &cst));
         s->irid = (int)qr, s->cst = (int)cst;
         const kw_card *b = &cd[i + 1];
         const int f = s->elform;
         if (f == 2 || f == 12 || f == 13 || f == 3) {
-            TRY(kw_real(c, b, &KW_L10, 0, "A", 0, &s->area));
+            KW_TRY(kw_real(c, b, &KW_L10, 0, "A", 0, &s->area));
             s->area *= L2;
         }
         if (f == 2 || f == 12 || f == 13) {
-            TRY(kw_real(c, b, &KW_L10, 1, "ISS", 0, &s->iss));
-            TRY(kw_real(c, b, &KW_L10, 2, "ITT", 0, &s->itt));
-            TRY(kw_real(c, b, &KW_L10, 3, "J", 0, &s->jt));
+            KW_TRY(kw_real(c, b, &KW_L10, 1, "ISS", 0, &s->iss));
+            KW_TRY(kw_real(c, b, &KW_L10, 2, "ITT", 0, &s->itt));
+            KW_TRY(kw_real(c, b, &KW_L10, 3, "J", 0, &s->jt));
             s->iss *= L4, s->itt *= L4, s->jt *= L4;
         }
         if (f == 1 || f == 4 || f == 5 || f == 7 || f == 8 || f == 9 || f == 11) {
             static const char *nm[4] = {"TS1", "TS2", "TT1", "TT2"};
             double v[4];
-            for (int k = 0; k < 4; k++) TRY(kw_real(c, b, &KW_L10, k, nm[k], 0, &v[k]));
+            for (int k = 0; k < 4; k++) KW_TRY(kw_real(c, b, &KW_L10, k, nm[k], 0, &v[k]));
             /* TS2, TT2 default to TS1, TT1 */
             s->ts[0] = v[0] * L, s->ts[1] = (v[1] != 0 ? v[1] : v[0]) * L;
             s->tt[0] = v[2] * L, s->tt[1] = (v[3] != 0 ? v[3] : v[2]) * L;
@@ -282,25 +239,25 @@ mcs_status kw_h_section_beam(kw_ctx *c, const kw_card *cd, int n)
 static mcs_status inertia_cards(kw_ctx *c, const kw_card *cd, int n, int i, fe_kw_inertia *in,
                                 int *used)
 {
-    TRY(need(c, cd, n, i, 3));
+    KW_TRY(kw_need(c, cd, n, i, 3));
     const fe_kw_deck *d = c->d;
     const double L = kw_u_len(d), M = d->unit[2];
     static const char *n1[4] = {"XC", "YC", "ZC", "TM"};
     static const char *n2[6] = {"IXX", "IXY", "IXZ", "IYY", "IYZ", "IZZ"};
     static const char *n3[6] = {"VTX", "VTY", "VTZ", "VRX", "VRY", "VRZ"};
     double v[6];
-    for (int k = 0; k < 4; k++) TRY(kw_real(c, &cd[i], &KW_L10, k, n1[k], 0, &v[k]));
-    TRY(kw_int(c, &cd[i], &KW_L10, 4, "IRCS", 0, &in->ircs));
-    TRY(kw_int(c, &cd[i], &KW_L10, 5, "NODEID", 0, &in->nodeid));
+    for (int k = 0; k < 4; k++) KW_TRY(kw_real(c, &cd[i], &KW_L10, k, n1[k], 0, &v[k]));
+    KW_TRY(kw_int(c, &cd[i], &KW_L10, 4, "IRCS", 0, &in->ircs));
+    KW_TRY(kw_int(c, &cd[i], &KW_L10, 5, "NODEID", 0, &in->nodeid));
     for (int k = 0; k < 3; k++) in->cg[k] = v[k] * L;
     in->mass = v[3] * M;
-    for (int k = 0; k < 6; k++) TRY(kw_real(c, &cd[i + 1], &KW_L10, k, n2[k], 0, &in->i[k]));
+    for (int k = 0; k < 6; k++) KW_TRY(kw_real(c, &cd[i + 1], &KW_L10, k, n2[k], 0, &in->i[k]));
     for (int k = 0; k < 6; k++) in->i[k] *= M * L * L;
-    for (int k = 0; k < 6; k++) TRY(kw_real(c, &cd[i + 2], &KW_L10, k, n3[k], 0, &v[k]));
+    for (int k = 0; k < 6; k++) KW_TRY(kw_real(c, &cd[i + 2], &KW_L10, k, n3[k], 0, &v[k]));
     for (int k = 0; k < 3; k++) in->v[k] = v[k] * kw_u_vel(d), in->w[k] = v[3 + k] * kw_u_rate(d);
     *used = 3;
     if (in->ircs == 1) { /* the orientation card: consumed, refused when built */
-        TRY(need(c, cd, n, i + 3, 1));
+        KW_TRY(kw_need(c, cd, n, i + 3, 1));
         *used = 4;
     }
     in->given = 1;
@@ -312,7 +269,7 @@ static mcs_status contact_card(kw_ctx *c, const kw_card *cd, fe_kw_pcontact *pc)
 {
     static const char *nm[7] = {"FS", "FD", "DC", "VC", "OPTT", "SFT", "SSF"};
     double v[7];
-    for (int k = 0; k < 7; k++) TRY(kw_real(c, cd, &KW_L10, k, nm[k], 0, &v[k]));
+    for (int k = 0; k < 7; k++) KW_TRY(kw_real(c, cd, &KW_L10, k, nm[k], 0, &v[k]));
     const fe_kw_deck *d = c->d;
     pc->fs = v[0], pc->fd = v[1];
     pc->dc = v[2] / kw_u_vel(d);  /* [1/velocity] */
@@ -328,22 +285,22 @@ mcs_status kw_h_part(kw_ctx *c, const kw_card *cd, int n)
 {
     const int inertia = has_opt(c, "INERTIA"), contact = has_opt(c, "CONTACT");
     for (int i = 0; i < n;) {
-        if (blank_card(&cd[i]) && i + 1 >= n) break;
-        TRY(need(c, cd, n, i, 2));
+        if (kw_blank_card(&cd[i]) && i + 1 >= n) break;
+        KW_TRY(kw_need(c, cd, n, i, 2));
         fe_kw_part *p = kw_push((void **)&c->d->part, &c->d->npart, &c->d->cap_part, sizeof *p);
-        if (!p) return nomem(c);
+        if (!p) return kw_nomem(c);
         const kw_card *m = &cd[i + 1];
         int adpopt;
         kw_text(&cd[i], 0, 80, p->title, sizeof p->title);
-        TRY(kw_int(c, m, &KW_L10, 0, "PID", 0, &p->id));
-        TRY(kw_int(c, m, &KW_L10, 1, "SECID", 0, &p->secid));
-        TRY(kw_int(c, m, &KW_L10, 2, "MID", 0, &p->mid));
-        TRY(kw_int(c, m, &KW_L10, 3, "EOSID", 0, &p->eosid));
-        TRY(kw_int(c, m, &KW_L10, 4, "HGID", 0, &p->hgid));
-        TRY(kw_int(c, m, &KW_L10, 6, "ADPOPT", 0, &adpopt));
-        if (adpopt) warn(c, m, "part %d: ADPOPT %d: adaptive remeshing is not built (ignored)",
+        KW_TRY(kw_int(c, m, &KW_L10, 0, "PID", 0, &p->id));
+        KW_TRY(kw_int(c, m, &KW_L10, 1, "SECID", 0, &p->secid));
+        KW_TRY(kw_int(c, m, &KW_L10, 2, "MID", 0, &p->mid));
+        KW_TRY(kw_int(c, m, &KW_L10, 3, "EOSID", 0, &p->eosid));
+        KW_TRY(kw_int(c, m, &KW_L10, 4, "HGID", 0, &p->hgid));
+        KW_TRY(kw_int(c, m, &KW_L10, 6, "ADPOPT", 0, &adpopt));
+        if (adpopt) kw_warn(c, m, "part %d: ADPOPT %d: adaptive remeshing is not built (ignored)",
                          p->id, adpopt);
-        p->loc = loc_of(m);
+        p->loc = kw_loc_of(m);
         for (int k = 0; k < c->d->npart - 1; k++)
             if (c->d->part[k].id == p->id)
                 return kw_fail(c, m->file, m->line, 1, MCS_ERR_FORMAT,
@@ -351,12 +308,12 @@ mcs_status kw_h_part(kw_ctx *c, const kw_card *cd, int n)
         i += 2;
         if (inertia) {
             int used;
-            TRY(inertia_cards(c, cd, n, i, &p->inertia, &used));
+            KW_TRY(inertia_cards(c, cd, n, i, &p->inertia, &used));
             i += used;
         }
         if (contact) {
-            TRY(need(c, cd, n, i, 1));
-            TRY(contact_card(c, &cd[i], &p->contact));
+            KW_TRY(kw_need(c, cd, n, i, 1));
+            KW_TRY(contact_card(c, &cd[i], &p->contact));
             i++;
         }
     }
@@ -369,17 +326,17 @@ mcs_status kw_h_part(kw_ctx *c, const kw_card *cd, int n)
 mcs_status kw_h_hourglass(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = title_card(c, 0); i < n; i++) {
-        if (blank_card(&cd[i])) continue;
-        fe_kw_hourglass h = {.loc = loc_of(&cd[i])};
+        if (kw_blank_card(&cd[i])) continue;
+        fe_kw_hourglass h = {.loc = kw_loc_of(&cd[i])};
         int ibq;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "HGID", 0, &h.id));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "IHQ", 0, &h.ihq));
-        TRY(kw_real(c, &cd[i], &KW_L10, 2, "QM", 0, &h.qm));
-        TRY(kw_int(c, &cd[i], &KW_L10, 3, "IBQ", 0, &ibq));
-        TRY(kw_real(c, &cd[i], &KW_L10, 4, "Q1", 0, &h.q1));
-        TRY(kw_real(c, &cd[i], &KW_L10, 5, "Q2", 0, &h.q2));
-        TRY(kw_real(c, &cd[i], &KW_L10, 6, "QB/VDC", 0, &h.qb));
-        TRY(kw_real(c, &cd[i], &KW_L10, 7, "QW", 0, &h.qw));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "HGID", 0, &h.id));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "IHQ", 0, &h.ihq));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 2, "QM", 0, &h.qm));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 3, "IBQ", 0, &ibq));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 4, "Q1", 0, &h.q1));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 5, "Q2", 0, &h.q2));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 6, "QB/VDC", 0, &h.qb));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 7, "QW", 0, &h.qw));
         if (h.ihq < 0 || h.ihq > 10)
             return refuse(c, &cd[i], &KW_L10, 1, "IHQ", "hourglass types are 0..10");
         if (!(h.qm >= 0))
@@ -388,7 +345,7 @@ mcs_status kw_h_hourglass(kw_ctx *c, const kw_card *cd, int n)
             return kw_fail(c, cd[i].file, cd[i].line, 1, MCS_ERR_FORMAT,
                            "hourglass %d is defined twice", h.id);
         fe_kw_hourglass *p = kw_push((void **)&c->d->hg, &c->d->nhg, &c->d->cap_hg, sizeof *p);
-        if (!p) return nomem(c);
+        if (!p) return kw_nomem(c);
         *p = h;
     }
     return MCS_OK;
@@ -399,14 +356,14 @@ mcs_status kw_h_control_hourglass(kw_ctx *c, const kw_card *cd, int n)
 {
     fe_kw_control *k = &c->d->ctl;
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "IHQ", 0, &k->hg_ihq));
-        TRY(kw_real(c, &cd[i], &KW_L10, 1, "QH", 0, &k->hg_qh));
+        if (kw_blank_card(&cd[i])) continue;
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "IHQ", 0, &k->hg_ihq));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 1, "QH", 0, &k->hg_qh));
         if (k->hg_ihq < -10 || k->hg_ihq > 10)
             return refuse(c, &cd[i], &KW_L10, 0, "IHQ", "hourglass types are 0..10");
         if (!(k->hg_qh >= 0)) return refuse(c, &cd[i], &KW_L10, 1, "QH", "must be >= 0");
         k->hg_given = 1;
-        k->hg_loc = loc_of(&cd[i]);
+        k->hg_loc = kw_loc_of(&cd[i]);
         break;
     }
     return MCS_OK;
@@ -417,26 +374,26 @@ mcs_status kw_h_control_timestep(kw_ctx *c, const kw_card *cd, int n)
 {
     fe_kw_control *k = &c->d->ctl;
     int i = 0;
-    while (i < n && blank_card(&cd[i])) i++;
+    while (i < n && kw_blank_card(&cd[i])) i++;
     if (i >= n) return MCS_OK;
     const double T = c->d->unit[1];
-    TRY(kw_real(c, &cd[i], &KW_L10, 0, "DTINIT", 0, &k->dtinit));
-    TRY(kw_real(c, &cd[i], &KW_L10, 1, "TSSFAC", 0, &k->tssfac));
-    TRY(kw_int(c, &cd[i], &KW_L10, 2, "ISDO", 0, &k->isdo));
-    TRY(kw_real(c, &cd[i], &KW_L10, 3, "TSLIMT", 0, &k->tslimt));
-    TRY(kw_real(c, &cd[i], &KW_L10, 4, "DT2MS", 0, &k->dt2ms));
-    TRY(kw_int(c, &cd[i], &KW_L10, 5, "LCTM", 0, &k->lctm));
-    TRY(kw_int(c, &cd[i], &KW_L10, 7, "MS1ST", 0, &k->ms1st));
+    KW_TRY(kw_real(c, &cd[i], &KW_L10, 0, "DTINIT", 0, &k->dtinit));
+    KW_TRY(kw_real(c, &cd[i], &KW_L10, 1, "TSSFAC", 0, &k->tssfac));
+    KW_TRY(kw_int(c, &cd[i], &KW_L10, 2, "ISDO", 0, &k->isdo));
+    KW_TRY(kw_real(c, &cd[i], &KW_L10, 3, "TSLIMT", 0, &k->tslimt));
+    KW_TRY(kw_real(c, &cd[i], &KW_L10, 4, "DT2MS", 0, &k->dt2ms));
+    KW_TRY(kw_int(c, &cd[i], &KW_L10, 5, "LCTM", 0, &k->lctm));
+    KW_TRY(kw_int(c, &cd[i], &KW_L10, 7, "MS1ST", 0, &k->ms1st));
     if (!(k->tssfac >= 0 && k->tssfac <= 2))
         return refuse(c, &cd[i], &KW_L10, 1, "TSSFAC", "must be in [0, 2]");
     k->dtinit *= T, k->tslimt *= T, k->dt2ms *= T;
     k->ts_given = 1;
-    k->ts_loc = loc_of(&cd[i]);
+    k->ts_loc = kw_loc_of(&cd[i]);
     for (i++; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
-        TRY(kw_real(c, &cd[i], &KW_L10, 0, "DT2MSF", 0, &k->dt2msf));
-        TRY(kw_int(c, &cd[i], &KW_L10, 1, "DT2MSLC", 0, &k->dt2mslc));
-        TRY(kw_int(c, &cd[i], &KW_L10, 2, "IMSCL", 0, &k->imscl));
+        if (kw_blank_card(&cd[i])) continue;
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 0, "DT2MSF", 0, &k->dt2msf));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "DT2MSLC", 0, &k->dt2mslc));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 2, "IMSCL", 0, &k->imscl));
         break;
     }
     return MCS_OK;

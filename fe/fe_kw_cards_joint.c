@@ -9,29 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TRY(x)                                                                                     \
-    do {                                                                                           \
-        mcs_status s_ = (x);                                                                       \
-        if (s_) return s_;                                                                         \
-    } while (0)
-
-static fe_kw_loc loc_of(const kw_card *cd)
-{
-    return (fe_kw_loc){cd->file, cd->line};
-}
-
-static int blank_card(const kw_card *cd)
-{
-    for (int i = 0; i < cd->len; i++)
-        if (cd->s[i] != ' ' && cd->s[i] != '\t') return 0;
-    return 1;
-}
-
-static mcs_status nomem(kw_ctx *c)
-{
-    return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-}
-
 /* N1..N6 needed by each joint type */
 static const int joint_nodes[4] = {2, 4, 4, 6};
 
@@ -45,21 +22,21 @@ static mcs_status joint_cards(kw_ctx *c, const kw_card *cd, int n, int type)
             c->fmt = KW_FMT_STD;
             mcs_status st = kw_int(c, &cd[i], &l, 0, "JID", 0, &j.id);
             c->fmt = fmt;
-            TRY(st);
+            KW_TRY(st);
             kw_text(&cd[i], 10, 70, j.title, sizeof j.title);
             if (++i >= n)
                 return kw_fail(c, cd[i - 1].file, cd[i - 1].line, 0, MCS_ERR_FORMAT,
                                "the node card N1..N6 must follow the ID card");
         }
-        if (blank_card(&cd[i])) {
+        if (kw_blank_card(&cd[i])) {
             i++;
             continue;
         }
         static const char *nm[6] = {"N1", "N2", "N3", "N4", "N5", "N6"};
         for (int k = 0; k < 6; k++)
-            TRY(kw_int(c, &cd[i], &KW_L10, k, nm[k], 0, &j.node[k]));
-        TRY(kw_real(c, &cd[i], &KW_L10, 6, "RPS", 1, &j.rps));
-        TRY(kw_real(c, &cd[i], &KW_L10, 7, "DAMP", 1, &j.damp));
+            KW_TRY(kw_int(c, &cd[i], &KW_L10, k, nm[k], 0, &j.node[k]));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 6, "RPS", 1, &j.rps));
+        KW_TRY(kw_real(c, &cd[i], &KW_L10, 7, "DAMP", 1, &j.damp));
         if (j.rps == 0) j.rps = 1; /* LS-DYNA: 0 takes the default 1 */
         if (j.damp == 0) j.damp = 1;
         for (int k = 0; k < joint_nodes[type]; k++)
@@ -74,10 +51,10 @@ static mcs_status joint_cards(kw_ctx *c, const kw_card *cd, int n, int type)
             return kw_fail(c, cd[i].file, cd[i].line, 61, MCS_ERR_FORMAT,
                            "field RPS: %g: the relative penalty stiffness must be in (0, 10]",
                            j.rps);
-        j.loc = loc_of(&cd[i]);
+        j.loc = kw_loc_of(&cd[i]);
         if (!c->has_id) j.id = c->d->njoint + 1;
         fe_kw_joint *p = kw_push((void **)&c->d->joint, &c->d->njoint, &c->d->cap_joint, sizeof *p);
-        if (!p) return nomem(c);
+        if (!p) return kw_nomem(c);
         *p = j;
         i++;
     }
@@ -106,19 +83,19 @@ static mcs_status nrb_cards(kw_ctx *c, const kw_card *cd, int n, int kind)
 {
     static const char *second[3] = {"NSID", "NID", "NSID"};
     for (int i = 0; i < n; i++) {
-        if (blank_card(&cd[i])) continue;
-        fe_kw_nrb r = {.kind = kind, .loc = loc_of(&cd[i])};
-        TRY(kw_int(c, &cd[i], &KW_L10, 0, "PID", 0, &r.pid));
-        TRY(kw_int(c, &cd[i], &KW_L10, kind == 0 ? 2 : 1, second[kind], 0, &r.id));
+        if (kw_blank_card(&cd[i])) continue;
+        fe_kw_nrb r = {.kind = kind, .loc = kw_loc_of(&cd[i])};
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 0, "PID", 0, &r.pid));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, kind == 0 ? 2 : 1, second[kind], 0, &r.id));
         if (kind == 0) {
             int cid;
-            TRY(kw_int(c, &cd[i], &KW_L10, 1, "CID", 0, &cid));
+            KW_TRY(kw_int(c, &cd[i], &KW_L10, 1, "CID", 0, &cid));
         }
         if (r.pid <= 0 || r.id <= 0)
             return kw_fail(c, cd[i].file, cd[i].line, 0, MCS_ERR_FORMAT,
                            "PID %d and %s %d must be > 0", r.pid, second[kind], r.id);
         fe_kw_nrb *p = kw_push((void **)&c->d->nrb, &c->d->nnrb, &c->d->cap_nrb, sizeof *p);
-        if (!p) return nomem(c);
+        if (!p) return kw_nomem(c);
         *p = r;
     }
     return MCS_OK;
@@ -151,29 +128,29 @@ static mcs_status jstiff_cards(kw_ctx *c, const kw_card *cd, int n, int transl)
                                           {"NSDX", "PSDX", "NSDY", "PSDY", "NSDZ", "PSDZ"}};
     const char *const(*nm)[6] = transl ? tra : gen;
     for (int i = 0; i < n;) {
-        if (blank_card(&cd[i])) {
+        if (kw_blank_card(&cd[i])) {
             i++;
             continue;
         }
         if (i + 3 > n)
             return kw_fail(c, cd[n - 1].file, cd[n - 1].line, 0, MCS_ERR_FORMAT,
                            "cards 2 and 3 (curves, stop stiffness) must follow card 1");
-        fe_kw_jstiff j = {.translational = transl, .loc = loc_of(&cd[i])};
+        fe_kw_jstiff j = {.translational = transl, .loc = kw_loc_of(&cd[i])};
         int *h[6] = {&j.jsid, &j.pida, &j.pidb, &j.cida, &j.cidb, &j.jid};
         for (int k = 0; k < 6; k++)
-            TRY(kw_int(c, &cd[i], &KW_L10, k, nm[0][k], 0, h[k]));
+            KW_TRY(kw_int(c, &cd[i], &KW_L10, k, nm[0][k], 0, h[k]));
         for (int k = 0; k < 3; k++) {
-            TRY(kw_int(c, &cd[i + 1], &KW_L10, k, nm[1][k], 0, &j.lc[k]));
-            TRY(kw_int(c, &cd[i + 1], &KW_L10, 3 + k, nm[1][3 + k], 0, &j.dlc[k]));
-            TRY(kw_real(c, &cd[i + 2], &KW_L10, 2 * k, nm[2][2 * k], 0, &j.es[k]));
-            TRY(kw_real(c, &cd[i + 2], &KW_L10, 2 * k + 1, nm[2][2 * k + 1], 0, &j.ff[k]));
+            KW_TRY(kw_int(c, &cd[i + 1], &KW_L10, k, nm[1][k], 0, &j.lc[k]));
+            KW_TRY(kw_int(c, &cd[i + 1], &KW_L10, 3 + k, nm[1][3 + k], 0, &j.dlc[k]));
+            KW_TRY(kw_real(c, &cd[i + 2], &KW_L10, 2 * k, nm[2][2 * k], 0, &j.es[k]));
+            KW_TRY(kw_real(c, &cd[i + 2], &KW_L10, 2 * k + 1, nm[2][2 * k + 1], 0, &j.ff[k]));
         }
         if (i + 3 < n) { /* card 4: stops, degrees (generalized) or lengths */
             const double u = transl ? kw_u_len(c->d) : M_PI / 180;
             for (int k = 0; k < 3; k++) {
                 double a, b;
-                TRY(kw_real(c, &cd[i + 3], &KW_L10, 2 * k, nm[3][2 * k], 0, &a));
-                TRY(kw_real(c, &cd[i + 3], &KW_L10, 2 * k + 1, nm[3][2 * k + 1], 0, &b));
+                KW_TRY(kw_real(c, &cd[i + 3], &KW_L10, 2 * k, nm[3][2 * k], 0, &a));
+                KW_TRY(kw_real(c, &cd[i + 3], &KW_L10, 2 * k + 1, nm[3][2 * k + 1], 0, &b));
                 j.neg[k] = -fabs(a) * u, j.pos[k] = fabs(b) * u;
             }
         }
@@ -182,7 +159,7 @@ static mcs_status jstiff_cards(kw_ctx *c, const kw_card *cd, int n, int transl)
                            "field JID: the joint the stiffness acts on, got %d", j.jid);
         fe_kw_jstiff *p =
             kw_push((void **)&c->d->jstiff, &c->d->njstiff, &c->d->cap_jstiff, sizeof *p);
-        if (!p) return nomem(c);
+        if (!p) return kw_nomem(c);
         *p = j;
         i += i + 3 < n ? 4 : 3;
     }

@@ -15,24 +15,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#define TRY(x)                                                                                     \
-    do {                                                                                           \
-        mcs_status s_ = (x);                                                                       \
-        if (s_) return s_;                                                                         \
-    } while (0)
-
-static fe_kw_loc loc_of(const kw_card *cd) { return (fe_kw_loc){cd->file, cd->line}; }
-
-/* k more cards must follow card i */
-static mcs_status need(kw_ctx *c, const kw_card *cd, int n, int i, int k)
-{
-    if (i + k <= n) return MCS_OK;
-    int line = n > 0 ? cd[n - 1].line : c->kwloc.line;
-    return kw_fail(c, c->kwloc.file, line, 0, MCS_ERR_FORMAT,
-                   "%d more card%s expected after line %d (the keyword has %d card%s per entry)",
-                   i + k - n, i + k - n == 1 ? "" : "s", line, k, k == 1 ? "" : "s");
-}
-
 /* the refusal of field i of a card, at its column */
 static mcs_status refuse(kw_ctx *c, const kw_card *cd, int i, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
@@ -53,13 +35,13 @@ static mcs_status refuse(kw_ctx *c, const kw_card *cd, int i, const char *fmt, .
 static mcs_status new_mat(kw_ctx *c, const kw_card *cd, fe_kw_mat_type type, fe_kw_mat **out)
 {
     int id;
-    TRY(kw_int(c, cd, &KW_L10, 0, "MID", 0, &id));
+    KW_TRY(kw_int(c, cd, &KW_L10, 0, "MID", 0, &id));
     if (fe_kw_find_mat(c->d, id))
         return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_FORMAT, "material %d is defined twice",
                        id);
     fe_kw_mat *m = kw_push((void **)&c->d->mat, &c->d->nmat, &c->d->cap_mat, sizeof *m);
     if (!m) return MCS_ERR(c->err, MCS_ERR_NOMEM, "keyword: out of memory");
-    m->id = id, m->type = type, m->loc = loc_of(cd);
+    m->id = id, m->type = type, m->loc = kw_loc_of(cd);
     *out = m;
     return MCS_OK;
 }
@@ -69,7 +51,7 @@ static mcs_status reals(kw_ctx *c, const kw_card *cd, int nf, const char *const 
                         const double *dflt, double *out)
 {
     for (int k = 0; k < nf; k++)
-        if (names[k]) TRY(kw_real(c, cd, &KW_L10, k, names[k], dflt ? dflt[k] : 0, &out[k]));
+        if (names[k]) KW_TRY(kw_real(c, cd, &KW_L10, k, names[k], dflt ? dflt[k] : 0, &out[k]));
     return MCS_OK;
 }
 
@@ -88,20 +70,20 @@ mcs_status kw_h_mat_pk(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
         i += c->has_title;
-        TRY(need(c, cd, n, i, 2));
-        fe_kw_mat *m;
-        TRY(new_mat(c, &cd[i], FE_KW_MAT_PK, &m));
+        KW_TRY(kw_need(c, cd, n, i, 2));
+        fe_kw_mat *m = NULL;
+        KW_TRY(new_mat(c, &cd[i], FE_KW_MAT_PK, &m));
         static const char *n1[7] = {NULL, "RO", "E", "PR", "SIGY", "ETAN", "BETA"};
         static const char *n2[4] = {"SRC", "SRP", "FS", "VP"};
         double v[7], w[4];
-        TRY(reals(c, &cd[i], 7, n1, NULL, v));
-        TRY(reals(c, &cd[i + 1], 4, n2, NULL, w));
+        KW_TRY(reals(c, &cd[i], 7, n1, NULL, v));
+        KW_TRY(reals(c, &cd[i + 1], 4, n2, NULL, w));
         const double S = kw_u_stress(c->d);
         m->ro = v[1] * kw_u_dens(c->d), m->e = v[2] * S, m->pr = v[3];
         m->sigy = v[4] * S, m->etan = v[5] * S, m->beta = v[6];
         m->c = w[0] * kw_u_rate(c->d), m->p = w[1], m->fail = w[2];
         double chk[5] = {m->ro, m->e, m->sigy, m->etan, m->c};
-        TRY(all_finite(c, &cd[i], 5, chk));
+        KW_TRY(all_finite(c, &cd[i], 5, chk));
         /* BETA 0 (blank) is kinematic hardening: the same as isotropic when nothing hardens */
         if (m->etan != 0 && m->beta != 1)
             return refuse(c, &cd[i], 6,
@@ -129,15 +111,15 @@ mcs_status kw_h_mat_null(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
         i += c->has_title;
-        TRY(need(c, cd, n, i, 1));
-        fe_kw_mat *m;
-        TRY(new_mat(c, &cd[i], FE_KW_MAT_NULL, &m));
+        KW_TRY(kw_need(c, cd, n, i, 1));
+        fe_kw_mat *m = NULL;
+        KW_TRY(new_mat(c, &cd[i], FE_KW_MAT_NULL, &m));
         static const char *nm[8] = {NULL, "RO", "PC", "MU", "TEROD", "CEROD", "YM", "PR"};
         double v[8];
-        TRY(reals(c, &cd[i], 8, nm, NULL, v));
+        KW_TRY(reals(c, &cd[i], 8, nm, NULL, v));
         m->ro = v[1] * kw_u_dens(c->d), m->e = v[6] * kw_u_stress(c->d), m->pr = v[7];
         double chk[2] = {m->ro, m->e};
-        TRY(all_finite(c, &cd[i], 2, chk));
+        KW_TRY(all_finite(c, &cd[i], 2, chk));
         /* PC bounds an equation of state's pressure: without one there is no pressure */
         if (v[3] != 0)
             return refuse(c, &cd[i], 3,
@@ -160,19 +142,19 @@ mcs_status kw_h_mat_rigid(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
         i += c->has_title;
-        TRY(need(c, cd, n, i, 3));
-        fe_kw_mat *m;
-        TRY(new_mat(c, &cd[i], FE_KW_MAT_RIGID, &m));
+        KW_TRY(kw_need(c, cd, n, i, 3));
+        fe_kw_mat *m = NULL;
+        KW_TRY(new_mat(c, &cd[i], FE_KW_MAT_RIGID, &m));
         static const char *nm[4] = {NULL, "RO", "E", "PR"};
         double v[4], cmo;
-        TRY(reals(c, &cd[i], 4, nm, NULL, v));
+        KW_TRY(reals(c, &cd[i], 4, nm, NULL, v));
         m->ro = v[1] * kw_u_dens(c->d), m->e = v[2] * kw_u_stress(c->d), m->pr = v[3];
         double chk[2] = {m->ro, m->e};
-        TRY(all_finite(c, &cd[i], 2, chk));
+        KW_TRY(all_finite(c, &cd[i], 2, chk));
         const kw_card *c2 = &cd[i + 1];
-        TRY(kw_real(c, c2, &KW_L10, 0, "CMO", 0, &cmo));
-        TRY(kw_int(c, c2, &KW_L10, 1, "CON1", 0, &m->con1));
-        TRY(kw_int(c, c2, &KW_L10, 2, "CON2", 0, &m->con2));
+        KW_TRY(kw_real(c, c2, &KW_L10, 0, "CMO", 0, &cmo));
+        KW_TRY(kw_int(c, c2, &KW_L10, 1, "CON1", 0, &m->con1));
+        KW_TRY(kw_int(c, c2, &KW_L10, 2, "CON2", 0, &m->con2));
         m->cmo = (int)cmo;
         if (cmo != 0 && cmo != 1)
             return refuse(c, c2, 0,
@@ -197,9 +179,9 @@ mcs_status kw_h_mat_rigid(kw_ctx *c, const kw_card *cd, int n)
 mcs_status kw_h_mat_mr(kw_ctx *c, const kw_card *cd, int n)
 {
     int i = c->has_title;
-    TRY(need(c, cd, n, i, 1));
-    fe_kw_mat *m;
-    TRY(new_mat(c, &cd[i], FE_KW_MAT_MR, &m));
+    KW_TRY(kw_need(c, cd, n, i, 1));
+    fe_kw_mat *m = NULL;
+    KW_TRY(new_mat(c, &cd[i], FE_KW_MAT_MR, &m));
     return kw_fail(c, cd[i].file, cd[i].line, 0, MCS_ERR_UNSUPPORTED,
                    "material %d: the Mooney-Rivlin hyperelastic solid is not built", m->id);
 }
@@ -211,26 +193,26 @@ mcs_status kw_h_mat_ldf(kw_ctx *c, const kw_card *cd, int n)
 {
     for (int i = 0; i < n;) {
         i += c->has_title;
-        TRY(need(c, cd, n, i, 1));
-        fe_kw_mat *m;
-        TRY(new_mat(c, &cd[i], FE_KW_MAT_LDF, &m));
+        KW_TRY(kw_need(c, cd, n, i, 1));
+        fe_kw_mat *m = NULL;
+        KW_TRY(new_mat(c, &cd[i], FE_KW_MAT_LDF, &m));
         static const char *n1[8] = {NULL, "RO", "E", NULL, "TC", "HU", "BETA", "DAMP"};
         static const char *n2[7] = {"SHAPE", "FAIL", "BVFLAG", "ED", "BETA1", "KCON", "REF"};
         static const double d1[8] = {0, 0, 0, 0, 1e20, 1, 0, 0};
         static const double d2[7] = {1, 0, 0, 0, 0, 0, 0};
         double v[8], w[7] = {1, 0, 0, 0, 0, 0, 0};
-        TRY(reals(c, &cd[i], 8, n1, d1, v));
-        TRY(kw_int(c, &cd[i], &KW_L10, 3, "LCID", 0, &m->lcid));
+        KW_TRY(reals(c, &cd[i], 8, n1, d1, v));
+        KW_TRY(kw_int(c, &cd[i], &KW_L10, 3, "LCID", 0, &m->lcid));
         /* the second card may be left out when it is the keyword's last */
         const int two = i + 1 < n;
-        if (two) TRY(reals(c, &cd[i + 1], 7, n2, d2, w));
+        if (two) KW_TRY(reals(c, &cd[i + 1], 7, n2, d2, w));
         const double S = kw_u_stress(c->d);
         m->ro = v[1] * kw_u_dens(c->d), m->e = v[2] * S;
         m->tc = v[4] > 0 && v[4] < 1e20 ? v[4] * S : 0; /* 0: no cut-off */
         m->hu = v[5] > 0 ? v[5] : 1;                    /* 0 is the default, as blank */
         m->shape = w[0] > 0 ? w[0] : 1;
         double chk[3] = {m->ro, m->e, m->tc};
-        TRY(all_finite(c, &cd[i], 3, chk));
+        KW_TRY(all_finite(c, &cd[i], 3, chk));
         if (m->lcid <= 0)
             return refuse(c, &cd[i], 3, "field LCID: the loading curve is required, got %d",
                           m->lcid);
@@ -263,20 +245,6 @@ mcs_status kw_h_mat_ldf(kw_ctx *c, const kw_card *cd, int n)
 
 /* ---- descriptors (from fe_kw_build.c) ---- */
 
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...) __attribute__((format(printf, 5, 6)));
-static mcs_status at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
-                     const char *fmt, ...)
-{
-    char what[800];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    const char *fn = l.file >= 0 && l.file < dk->nfile ? dk->file[l.file] : "(deck)";
-    return MCS_ERR(err, st, "%s:%d: error: %s", fn, l.line, what);
-}
-
 /* the foam's loading curve: LCID's points of positive strain below 1 (compression positive),
  * stress in the deck's units */
 static mcs_status foam_curve(const fe_kw_deck *dk, const fe_kw_mat *k, fe_material_desc *m,
@@ -284,7 +252,7 @@ static mcs_status foam_curve(const fe_kw_deck *dk, const fe_kw_mat *k, fe_materi
 {
     const fe_kw_curve *cv = fe_kw_find_curve(dk, k->lcid);
     if (!cv)
-        return at(dk, k->loc, err, MCS_ERR_KEY, "*MAT_LOW_DENSITY_FOAM %d: LCID %d is not a "
+        return kw_at(dk, k->loc, err, MCS_ERR_KEY, "*MAT_LOW_DENSITY_FOAM %d: LCID %d is not a "
                                                 "*DEFINE_CURVE",
                   k->id, k->lcid);
     int np = 0, dropped = 0;
@@ -296,7 +264,7 @@ static mcs_status foam_curve(const fe_kw_deck *dk, const fe_kw_mat *k, fe_materi
             continue;
         }
         if (np == FE_CURVE_MAX)
-            return at(dk, cv->loc, err, MCS_ERR_RANGE,
+            return kw_at(dk, cv->loc, err, MCS_ERR_RANGE,
                       "*DEFINE_CURVE %d: more than %d points of compressive strain in (0, 1) for "
                       "the foam",
                       cv->id, FE_CURVE_MAX);
@@ -309,7 +277,7 @@ static mcs_status foam_curve(const fe_kw_deck *dk, const fe_kw_mat *k, fe_materi
                 dk->file[cv->loc.file], cv->loc.line, cv->id, dropped, dropped == 1 ? "" : "s",
                 k->id);
     if (np == 0)
-        return at(dk, cv->loc, err, MCS_ERR_RANGE,
+        return kw_at(dk, cv->loc, err, MCS_ERR_RANGE,
                   "*DEFINE_CURVE %d: no point of compressive strain in (0, 1) for foam %d", cv->id,
                   k->id);
     m->nfoam_curve = 1;
@@ -341,14 +309,14 @@ int kw_mat_desc(const fe_kw_deck *dk, const fe_kw_mat *k, fe_material_desc *m, m
         m->cowper_symonds_p = k->p;
         m->failure_strain = k->fail; /* FS: element erosion */
         if (!(k->sigy > 0)) {
-            *st = at(dk, k->loc, err, MCS_ERR_RANGE, "*MAT_PLASTIC_KINEMATIC %d: SIGY must be > 0",
+            *st = kw_at(dk, k->loc, err, MCS_ERR_RANGE, "*MAT_PLASTIC_KINEMATIC %d: SIGY must be > 0",
                      k->id);
             return 1;
         }
         if (k->etan > 0) {
             /* bilinear: tangent modulus Et -> plastic modulus H = E Et / (E - Et) */
             if (!(k->etan < k->e)) {
-                *st = at(dk, k->loc, err, MCS_ERR_RANGE,
+                *st = kw_at(dk, k->loc, err, MCS_ERR_RANGE,
                          "*MAT_PLASTIC_KINEMATIC %d: ETAN must be below E", k->id);
                 return 1;
             }

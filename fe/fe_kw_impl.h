@@ -212,4 +212,29 @@ static inline double kw_u_stress(const fe_kw_deck *d)
     return d->unit[2] / (d->unit[0] * d->unit[1] * d->unit[1]);
 }
 
+
+/* ---- helpers shared by the handler and build files (fe_kw_util.c) ---- */
+
+/* return the status of x when it is an error */
+#define KW_TRY(x)                                                                                  \
+    do {                                                                                           \
+        mcs_status s_ = (x);                                                                       \
+        if (s_) return s_;                                                                         \
+    } while (0)
+
+/* where a card was read */
+static inline fe_kw_loc kw_loc_of(const kw_card *cd) { return (fe_kw_loc){cd->file, cd->line}; }
+/* k more cards must follow card i of the n a keyword has */
+mcs_status kw_need(kw_ctx *c, const kw_card *cd, int n, int i, int k);
+/* true when a card holds only blanks */
+int kw_blank_card(const kw_card *cd);
+/* a warning at a card: "FILE:LINE: warning: *KEYWORD: ..." (nothing when the options are quiet) */
+void kw_warn(kw_ctx *c, const kw_card *cd, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* out of memory while reading */
+mcs_status kw_nomem(kw_ctx *c);
+/* an error at a deck place while building: "FILE:LINE: error: ..." */
+mcs_status kw_at(const fe_kw_deck *dk, fe_kw_loc l, mcs_error *err, mcs_status st,
+                 const char *fmt, ...) __attribute__((format(printf, 5, 6)));
+
 #endif

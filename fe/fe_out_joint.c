@@ -103,11 +103,15 @@ static void body_at_tn(const fe_model *m, const fe_state *s, int b, double row[1
     for (int i = 0; i < 3; i++)
         phi[i] = -h * W[i];
     turn(phi, R1, R);
+    const unsigned fix = m->body[b].fix;
     for (int i = 0; i < 3; i++) {
+        /* a fixed (prescribed) translation moves at its prescribed velocity: V holds it
+         * (fe_rigid.c), and F there is the constraint's reaction, not an acceleration */
+        const int held = (fix >> i) & 1u;
         row[i] = s->body_x[3 * b + i] - h * V[i];
-        row[7 + i] = V[i] - 0.5 * h * F[i] / M;
+        row[7 + i] = held ? V[i] : V[i] - 0.5 * h * F[i] / M;
         row[10 + i] = W[i];
-        row[13 + i] = F[i] / M;
+        row[13 + i] = held ? 0 : F[i] / M;
     }
     quat(R, row + 3);
 }

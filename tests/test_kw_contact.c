@@ -219,14 +219,21 @@ static void test_contact_refusals(void)
 {
     /* the plates' head has 24 lines: the tail starts at line 25 */
     expect_fail("*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         0         0         5\n"
-                "       0.1       0.1       0.0       0.0      20.0\n",
+                "       0.1       0.1       0.0      20.0\n",
+                0, "deck.k:27:31: error: *CONTACT_AUTOMATIC_SINGLE_SURFACE: field VC", NULL);
+    expect_fail("*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         0         0         5\n"
+                "       0.1       0.1       0.0       0.0     120.0\n",
                 0, "deck.k:27:41: error: *CONTACT_AUTOMATIC_SINGLE_SURFACE: field VDC", NULL);
     expect_fail("*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         0         0         5\n\n\n"
                 "         1\n",
                 0, "deck.k:29:1: error: *CONTACT_AUTOMATIC_SINGLE_SURFACE: field SOFT", NULL);
     expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         3         3\n"
-                "                                                           0.001\n",
+                "                                                                -0.001\n",
                 0, "deck.k:27:61: error: *CONTACT_SURFACE_TO_SURFACE: field BT", NULL);
+    expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         3         3\n"
+                "                                                  "
+                "               0.002     0.001\n",
+                0, "deck.k:27:71: error: *CONTACT_SURFACE_TO_SURFACE: field DT", NULL);
     expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         3         3         7\n",
                 0, "field SBOXID", NULL);
     expect_fail("*CONTACT_SURFACE_TO_SURFACE\n         1         2         3         3\n\n"
@@ -586,23 +593,30 @@ static void test_rigid_push_run(void)
     mcs_error err = {0};
     CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
     if (!h) return;
-    mcs_array x = {0}, t = {0}, f = {0};
+    mcs_array x = {0}, t = {0}, f = {0}, vel = {0};
     CHECK(rd(h, "/stage3/bodies/plate/position", &x) && rd(h, "/stage3/time", &t));
+    CHECK(rd(h, "/stage3/bodies/plate/velocity", &vel));
     CHECK(rd(h, "/stage3/contact/plate on bar/force", &f));
     const double v = 5, x0 = -0.501e-3, Fmax = 7850 * sqrt(210e9 / 7850) * 4e-6 * v;
     size_t n = t.n;
     CHECK(n > 10 && x.n == 3 * n && f.n == 3 * n);
-    double dx = 0, fpeak = 0, flow = 0;
+    CHECK(vel.n == 3 * n);
+    double dx = 0, dv = 0, fpeak = 0, flow = 0;
     for (size_t i = 0; i < n && x.n == 3 * n && f.n == 3 * n; i++) {
         dx = fmax(dx, fabs(x.v[3 * i] - (x0 + v * t.v[i])));
+        /* the prescribed velocity, reported as given (not V - h/2 F/M with the contact's
+         * reaction in F: 5 -> 7.3 m/s before) */
+        if (vel.n == 3 * n) dv = fmax(dv, fabs(vel.v[3 * i] - v));
         fpeak = fmax(fpeak, -f.v[3 * i]); /* on the slave side (the plate): along -x */
         flow = fmin(flow, -f.v[3 * i]);
     }
     CHECK(dx < 1e-12); /* [m], of 35 um travelled */
+    CHECK(dv < 1e-9);  /* [m/s], of 5 */
     CHECK(fpeak > 0.3 * Fmax && fpeak <= 1.02 * Fmax && flow >= 0);
-    printf("rigid push: plate off x0 + v t by %.2g m, peak force %.0f N of rho c A v %.0f N\n", dx,
-           fpeak, Fmax);
-    mcs_array_free(&x), mcs_array_free(&t), mcs_array_free(&f);
+    printf("rigid push: plate off x0 + v t by %.2g m, velocity off v by %.2g m/s, peak force "
+           "%.0f N of rho c A v %.0f N\n",
+           dx, dv, fpeak, Fmax);
+    mcs_array_free(&x), mcs_array_free(&t), mcs_array_free(&f), mcs_array_free(&vel);
     mcs_results_close(&h);
 }
 

@@ -4,7 +4,8 @@
  * each body's inertia moved to the common centre by the parallel-axis theorem), read with the
  * scenario reader only, never through the generator. The FE side: the frozen model's rigid
  * bodies (mass, centre, inertia as fe_rigid.c sums them) plus every node outside a body.
- * Element counts at the coarse (40 mm, the tests') and fine (10 mm, runs) sizes. */
+ * Element counts at the coarse (40 mm, the tests') and fine (10 mm, runs) sizes; a missing model
+ * file (exit 2 at the model: key). */
 #include "tests/harness.h"
 #include "tests/figures.h"
 
@@ -154,10 +155,30 @@ static void test_fine_mesh(void)
     fe_model_destroy(&m);
 }
 
+/* bad input: a model file that does not exist is named at the model: key (FILE:LINE:COL) */
+static void test_bad_model(void)
+{
+    const char *text = "mcrash: 1\nname: moto\nsimulation: {end_time: 1 ms}\n"
+                       "fe:\n  parts:\n    - name: moto\n      mesh: {generate: motorcycle, "
+                       "model: nothere.yaml, element_size: 0.04}\n";
+    mcs_scenario *s = NULL;
+    mcs_error err = {0};
+    fe_problem p = {0};
+    CHECK(mcs_scenario_load_text("scenarios/moto_bad.yaml", text, strlen(text), &s, &err) ==
+          MCS_OK);
+    if (s) CHECK(fe_scn_build(s, &p, &err) == MCS_ERR_IO);
+    CHECK_STR_CONTAINS(err.msg, "scenarios/moto_bad.yaml:7:");
+    CHECK_STR_CONTAINS(err.msg, "nothere.yaml");
+    CHECK(mcs_status_exit_code(MCS_ERR_IO) == 2);
+    fe_problem_free(&p);
+    mcs_scenario_destroy(&s);
+}
+
 int main(void)
 {
     s3_moto_register();
     RUN(test_mass_properties);
     RUN(test_fine_mesh);
+    RUN(test_bad_model);
     TEST_END();
 }

@@ -439,7 +439,21 @@ static void test_cli_several_files(void)
 
 /* ---- every shipped scenario passes `mcrash check` ---- */
 
-/* append every .yaml under dir to args (space separated) */
+/* 1 if the file has a top-level `mcrash:` line: a scenario; without one it is an include
+ * fragment (e.g. scenarios/models/stage2/concept_cockpit.yaml), checked through the scenarios
+ * that include it */
+static int is_scenario_file(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    char line[1024];
+    int yes = 0;
+    while (f && !yes && fgets(line, sizeof line, f))
+        yes = strncmp(line, "mcrash:", 7) == 0;
+    if (f) fclose(f);
+    return yes;
+}
+
+/* append every scenario .yaml under dir to args (space separated) */
 static void collect_yaml(const char *dir, char *args, size_t cap, int *count)
 {
     DIR *d = opendir(dir);
@@ -452,7 +466,8 @@ static void collect_yaml(const char *dir, char *args, size_t cap, int *count)
         if (stat(path, &sb) != 0) continue;
         if (S_ISDIR(sb.st_mode))
             collect_yaml(path, args, cap, count);
-        else if (n > 5 && strcmp(path + n - 5, ".yaml") == 0 && strlen(args) + n + 2 < cap) {
+        else if (n > 5 && strcmp(path + n - 5, ".yaml") == 0 && strlen(args) + n + 2 < cap &&
+                 is_scenario_file(path)) {
             strcat(strcat(args, " "), path);
             (*count)++;
         }

@@ -366,11 +366,10 @@ static void test_413_phases(void)
     FIG("validation_restraints.p413_head_car_conv_kn", "%.1f", head_v / 1e3);
     FIG("validation_restraints.p413_head_car_conv_ms", "%.0f", 1e3 * t_hv);
     FIG("validation_restraints.p413_head_car_conc_kn", "%.1f", head_c / 1e3);
-    FIG("validation_restraints.p413_head_car_conc_ms", "%.0f", 1e3 * t_hc);
     FIG("validation_restraints.p413_pelvis_tank_conv_kn", "%.1f", pel_v / 1e3);
     FIG("validation_restraints.p413_pelvis_tank_conc_kn", "%.1f", pel_c / 1e3);
     CHECK(head_c < head_v && pel_c < pel_v);
-    CHECK(t_hc > t_hv); /* the concept's head meets the car later, after the bag */
+    CHECK(head_c == 0 || t_hc > t_hv); /* the concept's head meets the car later, if at all */
 
     /* the keys are literal (tests/test_figures.c finds every doc marker's key in tests/) */
     static const struct {

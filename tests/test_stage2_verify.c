@@ -149,6 +149,24 @@ static void rate_regions(const char *h2, double rating[3])
 
 /* scenario text t with the pads' contacts no longer naming the thigh's flesh
  * (", body_characteristic: thigh_flesh" cut; the named law stays, unused), in place */
+/* the shared stage-2 cockpit every size's stage-2 file includes, and a copy of it the rigid-thigh
+ * variant writes beside it (removed after the run) */
+#define COCKPIT_INC "models/stage2/concept_cockpit.yaml"
+#define COCKPIT "scenarios/" COCKPIT_INC
+#define COCKPIT_RIGID_INC "models/stage2/test_stage2_verify_rigid_thigh.yaml"
+#define COCKPIT_RIGID "scenarios/" COCKPIT_RIGID_INC
+
+/* 1 when both tank pads' contacts of the shared cockpit name the thigh's flesh */
+static int cockpit_names_flesh(void)
+{
+    char *t = text_with(COCKPIT, NULL, NULL, "");
+    int n = 0;
+    for (const char *at = t; at && (at = strstr(at, "body_characteristic: thigh_flesh}")); at++)
+        n++;
+    free(t);
+    return n == 2;
+}
+
 static void strip_body_laws(char *t)
 {
     const char *key = ", body_characteristic: thigh_flesh";
@@ -213,7 +231,7 @@ static void test_consistency_413(void)
     free(y);
     /* the pads with the thigh's flesh (the shipped scenario) */
     y = text_with(CONCEPT_S2, NULL, NULL, "");
-    CHECK(y && strstr(y, "body_characteristic: thigh_flesh}"));
+    CHECK(y && strstr(y, "thigh_flesh: {stress:") && cockpit_names_flesh());
     CHECK(y && run_s2(CONCEPT_S2, y, h1, h2, &sum, &err) == MCS_OK);
     rate_regions(h2, foam);
     double fpk = 0, tpk = 0, nt2 = neck_tension(h2), nt1 = 0;
@@ -221,9 +239,20 @@ static void test_consistency_413(void)
     fig23_50th(h2); /* the shipped stage-2 run against the paper's Fig. 23/24 (s2_fig23.h) */
     unlink(h2);
     /* the same pads against a rigid thigh */
-    if (y) strip_body_laws(y);
-    CHECK(y && !strstr(y, "body_characteristic: thigh_flesh}") && strstr(y, "friction: 0.5}"));
+    free(y);
+    /* the shared cockpit (an include of every size's stage-2 file) names the thigh's flesh on
+     * the pads' contacts: the variant includes a copy of it without those references */
+    char *ck = text_with(COCKPIT, NULL, NULL, "");
+    if (ck) strip_body_laws(ck);
+    CHECK(ck && !strstr(ck, "body_characteristic: thigh_flesh}") && strstr(ck, "friction: 0.5}"));
+    FILE *fk = ck ? fopen(COCKPIT_RIGID, "wb") : NULL;
+    CHECK(fk && fputs(ck, fk) >= 0);
+    if (fk) fclose(fk);
+    free(ck);
+    y = text_with(CONCEPT_S2, COCKPIT_INC, COCKPIT_RIGID_INC, "");
+    CHECK(y && strstr(y, COCKPIT_RIGID_INC));
     CHECK(y && run_s2(CONCEPT_S2, y, h1, h2, &sum, &err) == MCS_OK);
+    unlink(COCKPIT_RIGID);
     rate_regions(h2, hard);
     double hpk = 0, htpk = 0, nth = neck_tension(h2);
     pad_peak(h2, &hpk, &htpk);
@@ -387,7 +416,9 @@ static void fig23_size(const size_case *z)
     char *y = text_with(z->s2, NULL, NULL, "");
     s2_summary sum = {0};
     CHECK(y && run_s2(z->s2, y, s1, s2, &sum, &err) == MCS_OK);
-    CHECK(y && strstr(y, "body_characteristic: thigh_flesh}")); /* the thigh's flesh on the pads */
+    /* the thigh's flesh on the pads: the size's law, named by the shared cockpit's contacts */
+    CHECK(y && strstr(y, "thigh_flesh: {stress:") && strstr(y, COCKPIT_INC) &&
+          cockpit_names_flesh());
     free(y);
     double fpk = 0, tpk = 0;
     pad_peak(s2, &fpk, &tpk);

@@ -1,6 +1,7 @@
 /* s3_moto.c: the parametric FE motorcycle (see s3_moto.h). Geometry from the stage-1 model;
  * the design constants below that the model does not hold carry their source. */
 #include "stage3_fe/s3_moto.h"
+#include "stage3_fe/s3_model_file.h"
 
 #include "fe/fe_elem.h" /* fe_shell_frame: the kernel's shell area, so the masses agree */
 #include "fe/fe_joint.h"
@@ -784,18 +785,8 @@ mcs_status s3_moto_part(fe_builder *b, const mcs_node *root, const mcs_node *p, 
     mcs_status st = MCS_OK;
     if (mcs_node_kind(mcs_node_get(p, "initial_velocity")) != MCS_NODE_NULL)
         st = mcs_node_vec3(mcs_node_get(p, "initial_velocity"), o.velocity, err);
-    /* the model file, relative to the file that names it */
-    const char *file = mcs_node_file(mf), *rel = mcs_node_str(mf);
-    char path[4096];
-    const char *slash = file ? strrchr(file, '/') : NULL;
-    if (rel[0] == '/' || !slash)
-        snprintf(path, sizeof path, "%s", rel);
-    else
-        snprintf(path, sizeof path, "%.*s/%s", (int)(slash - file), file, rel);
     mcs_scenario *m = NULL;
-    mcs_error lerr = {0};
-    if (!st && mcs_scenario_load(path, &m, &lerr))
-        st = mcs_node_error(mf, err, MCS_ERR_IO, "motorcycle model: %s", lerr.msg);
+    if (!st) st = s3_load_model(mf, "motorcycle", &m, err);
     if (!st) st = s3_moto_build(b, mcs_scenario_root(m), &o, err);
     mcs_scenario_destroy(&m);
     return st;

@@ -3,6 +3,7 @@
  * source (docs/validation_stage3.md "The sedan side": they are published-class values for a
  * 2011 mid-size sedan, not checked against the NHTSA/NCAC 2011 Accord FE model's own cards). */
 #include "stage3_fe/s3_sedan.h"
+#include "stage3_fe/s3_model_file.h"
 
 #include "fe/fe_builder_impl.h" /* the body part's given mass properties, set after meshing */
 #include "fe/fe_elem.h"         /* fe_shell_frame: the kernel's shell area, so the masses agree */
@@ -439,18 +440,8 @@ mcs_status s3_sedan_part(fe_builder *b, const mcs_node *root, const mcs_node *p,
     mcs_status st = MCS_OK;
     if (mcs_node_kind(mcs_node_get(p, "initial_velocity")) != MCS_NODE_NULL)
         st = mcs_node_vec3(mcs_node_get(p, "initial_velocity"), o.velocity, err);
-    /* the model file, relative to the file that names it */
-    const char *file = mcs_node_file(mf), *rel = mcs_node_str(mf);
-    char path[4096];
-    const char *slash = file ? strrchr(file, '/') : NULL;
-    if (rel[0] == '/' || !slash)
-        snprintf(path, sizeof path, "%s", rel);
-    else
-        snprintf(path, sizeof path, "%.*s/%s", (int)(slash - file), file, rel);
     mcs_scenario *m = NULL;
-    mcs_error lerr = {0};
-    if (!st && mcs_scenario_load(path, &m, &lerr))
-        st = mcs_node_error(mf, err, MCS_ERR_IO, "sedan model: %s", lerr.msg);
+    if (!st) st = s3_load_model(mf, "sedan", &m, err);
     if (!st) st = s3_sedan_build(b, mcs_scenario_root(m), &o, NULL, err);
     mcs_scenario_destroy(&m);
     return st;

@@ -268,8 +268,9 @@ static mcs_status add_contact_sides(const kb *c, int i, side *psl, side *pms)
     const fe_kw_deck *dk = c->dk;
     const fe_kw_contact *k = &dk->contact[i];
     fe_contact_desc d = fe_contact_desc_default();
-    if (k->title[0] && strlen(k->title) < FE_NAME_MAX)
-        snprintf(d.name, sizeof d.name, "%s", k->title);
+    size_t nt = strlen(k->title);
+    if (nt && nt < sizeof d.name)
+        memcpy(d.name, k->title, nt + 1);
     else
         snprintf(d.name, sizeof d.name, "contact_%d", k->id ? k->id : i + 1);
     static const fe_contact_type type[4] = {FE_CONTACT_SINGLE_SURFACE, FE_CONTACT_SINGLE_SURFACE,

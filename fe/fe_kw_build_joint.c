@@ -179,8 +179,9 @@ mcs_status kw_add_deck_joints(fe_builder *b, const fe_kw_deck *dk, const char (*
         const fe_kw_joint *J = &dk->joint[j];
         fe_joint_desc d = fe_joint_desc_default();
         d.type = (fe_joint_type)J->type;
-        if (J->title[0] && strlen(J->title) < FE_NAME_MAX)
-            snprintf(d.name, sizeof d.name, "%s", J->title);
+        size_t nt = strlen(J->title);
+        if (nt && nt < sizeof d.name)
+            memcpy(d.name, J->title, nt + 1);
         else
             snprintf(d.name, sizeof d.name, "joint_%d", J->id);
         for (int k = 0; k < 6; k++)

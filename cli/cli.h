@@ -34,7 +34,8 @@
               "--csv DIR | --mme DIR [--stage N] | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long|--i10]",                                                  \
       "write a results file in other formats (XDMF for ParaView, CSV, LS-DYNA keyword mesh)")                            \
     X(report, "mcrash report OUT.h5 -o DIR", "HTML page with plots")                               \
-    X(study, "mcrash study STUDY.yaml [-o STUDY.h5]", "design of experiments")
+    X(study, "mcrash study STUDY.yaml [-o STUDY.h5] [-j N] [--quiet] | --analyze STUDY.h5 [--json]", \
+      "design of experiments: run its cases, or analyse the study file")
 
 #define MCS_CLI_DECL(name, usage, summary) int cli_##name(int argc, char **argv);
 MCS_CLI_COMMANDS(MCS_CLI_DECL)

@@ -74,6 +74,34 @@ mcs_status mcs_scenario_merged(const mcs_scenario *scn, const char *from, const 
 
 const mcs_node *mcs_scenario_root(const mcs_scenario *scn);
 
+/* ---- keys by path (a study's factors: cli/cmd_study.c; core/mcs_scn_set.c) ----
+ * A key path names one node of the resolved tree: map keys joined by '.', a sequence item by
+ * [i] (0-based) or by [NAME] (the entry whose name: is NAME): "impact.motorcycle_speed",
+ * "bodies[head].mass", "bodies[0].velocity[2]". */
+
+/* the node at path in a tree; NULL when the path names none */
+const mcs_node *mcs_scenario_find(const mcs_node *root, const char *path);
+
+typedef struct {
+    const char *path;      /* key path                                                    */
+    const mcs_node *value; /* a scalar node (its text read by the key's schema, units and
+                              all, as any scenario value), or NULL: then num               */
+    double num;            /* the value in SI when value is NULL                          */
+    const mcs_node *at;    /* where the setting was written: messages, and the added key   */
+} mcs_scn_setting;
+
+/* a copy of scn with the node at each set[i].path replaced (the last key of a path may be
+ * absent from its map: it is added), then validated again, cross-key rules included. A path
+ * that names no node: MCS_ERR_KEY at set[i].at; a value the key refuses (type, unit, range):
+ * the validator's error at the value's FILE:LINE:COL */
+mcs_status mcs_scenario_set(const mcs_scenario *scn, const mcs_scn_setting *set, int n,
+                            mcs_scenario **out, mcs_error *err);
+
+/* a YAML file read by the reader's rules (size, bytes, one document, plain scalars as YAML 1.2
+ * core) but without include: and without the schema: strings stay as written ("9.8 m/s") and
+ * nodes have no path. For files that are not scenarios (a study file) */
+mcs_status mcs_yaml_load(const char *path, mcs_scenario **out, mcs_error *err);
+
 /* the source texts that were read, in reading order, each preceded by a line
  * "# === mcrash source: PATH" (for /meta/scenario) */
 const char *mcs_scenario_text(const mcs_scenario *scn);

@@ -68,6 +68,10 @@ mcs_status scn_resolve(mcs_scenario *scn, const char *file, mcs_node *root, mcs_
  * shares the leaves; NULL out of memory */
 mcs_node *scn_merge(scn_arena *a, mcs_node *base, mcs_node *over);
 
+/* deep copies: one node (its subtree) into arena a, a whole scenario; NULL out of memory */
+mcs_node *scn_copy_node(scn_arena *a, const mcs_node *n);
+mcs_scenario *scn_copy(const mcs_scenario *scn);
+
 /* validate against the schema, convert quantities to SI, set paths */
 mcs_status scn_validate(mcs_scenario *scn, mcs_error *err);
 

@@ -91,22 +91,34 @@ static mcs_status merge_into(mcs_scenario *s, const char *from, const char *into
     return MCS_OK;
 }
 
-mcs_status mcs_scenario_merged(const mcs_scenario *scn, const char *from, const char *into,
-                               mcs_scenario **out, mcs_error *err)
+mcs_node *scn_copy_node(scn_arena *a, const mcs_node *n)
 {
-    *out = NULL;
+    copy_ctx c = {.a = a};
+    return copy_node(&c, n);
+}
+
+mcs_scenario *scn_copy(const mcs_scenario *scn)
+{
     mcs_scenario *s = calloc(1, sizeof *s);
-    if (!s) return MCS_ERR(err, MCS_ERR_NOMEM, "error: out of memory");
-    copy_ctx c = {.a = &s->arena};
-    s->root = copy_node(&c, scn->root);
+    if (!s) return NULL;
+    s->root = scn_copy_node(&s->arena, scn->root);
     if (scn->text) {
         s->text = malloc(scn->text_len + 1);
         if (s->text) memcpy(s->text, scn->text, scn->text_len + 1);
         s->text_len = s->text_cap = s->text ? scn->text_len : 0;
     }
     s->nfiles = scn->nfiles;
-    mcs_status st = s->root ? merge_into(s, from, into, err)
-                            : MCS_ERR(err, MCS_ERR_NOMEM, "error: out of memory");
+    if (!s->root || (scn->text && !s->text)) mcs_scenario_destroy(&s);
+    return s;
+}
+
+mcs_status mcs_scenario_merged(const mcs_scenario *scn, const char *from, const char *into,
+                               mcs_scenario **out, mcs_error *err)
+{
+    *out = NULL;
+    mcs_scenario *s = scn_copy(scn);
+    if (!s) return MCS_ERR(err, MCS_ERR_NOMEM, "error: out of memory");
+    mcs_status st = merge_into(s, from, into, err);
     if (!st) st = scn_validate(s, err);
     if (st) {
         mcs_scenario_destroy(&s);

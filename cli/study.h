@@ -1,0 +1,82 @@
+/* study.h: `mcrash study` inside cli/ (cmd_study.c): the study file read into factors, cases
+ * and responses (study_load.c), the cases run (study_run.c), the study file written and read
+ * (study_file.c) and analysed (study_analyze.c). DESIGN.md "Studies", docs/contracts.md. */
+#ifndef MCS_CLI_STUDY_H
+#define MCS_CLI_STUDY_H
+
+#include "core/mcs_scenario.h"
+
+#include <stdint.h>
+
+#define STUDY_NAME 128
+#define STUDY_UNIT 32
+
+typedef enum { STUDY_FULL, STUDY_FRACTIONAL, STUDY_LHS, STUDY_OAT } study_design;
+
+typedef struct {
+    char path[STUDY_NAME]; /* key path in the scenario                                    */
+    const mcs_node *at;    /* its path: node in the study file                             */
+    int nlev;              /* levels (factorial, one at a time)                            */
+    double *lev;           /* levels [SI] (nlev)                                           */
+    double lo, hi;         /* range [SI] (Latin hypercube)                                 */
+    double base;           /* one at a time: the base scenario's value [SI]                */
+} study_factor;
+
+typedef enum { STUDY_R_INJURY, STUDY_R_PEAK, STUDY_R_MAX, STUDY_R_MIN, STUDY_R_SCALAR } study_rkind;
+
+typedef struct {
+    char name[STUDY_NAME]; /* dataset name under /study/responses                          */
+    char spec[256];        /* as written: "HIC15", "peak:/stage1/channels/head_az", ...     */
+    const char *target;    /* criterion or dataset path inside spec                         */
+    study_rkind kind;
+    const mcs_node *at;
+} study_response;
+
+typedef struct {
+    mcs_scenario *file;          /* the study file as read (mcs_yaml_load)                 */
+    mcs_scenario *base;          /* the base scenario                                      */
+    char scenario[4096];         /* its path as opened                                     */
+    char stage[8];               /* "1" (default), "2", "3", "all"                          */
+    study_design design;
+    const char *design_name;
+    uint64_t seed;               /* Latin hypercube                                         */
+    int nfactor, nresp;
+    study_factor *f;
+    study_response *r;
+    long ncase;
+    double *x;                   /* factor values of each case [SI] (ncase x nfactor)       */
+} study;
+
+/* one case's outcome (fixed size: gathered across processes as bytes) */
+#define STUDY_MAXRESP 64
+typedef struct {
+    int status;                           /* 0 done, else the run's exit status (128+signal) */
+    double v[STUDY_MAXRESP];              /* responses, NaN when missing or failed           */
+    char unit[STUDY_MAXRESP][STUDY_UNIT]; /* their units                                     */
+} study_result;
+
+/* read and check the study file, every case's scenario built and validated; on error print
+ * it (FILE:LINE:COL) and return 2, else 0 */
+int study_load(const char *path, study *s);
+void study_free(study *s);
+
+/* the case's scenario (the base with the case's factor values set) */
+mcs_status study_case_scenario(const study *s, long c, mcs_scenario **out, mcs_error *err);
+
+/* run case c in a child process into dir/case_NNNN.h5 (its messages in case_NNNN.log) and
+ * evaluate its responses into res; start only (study_case_start) and finish (study_case_wait)
+ * let several run at once */
+int study_case_start(const study *s, long c, const char *dir); /* pid, -1 when fork failed */
+void study_case_finish(const study *s, long c, const char *dir, int wstatus, study_result *res);
+
+/* every case with up to jobs at once (cases first..ncase-1 by step stride: a rank's share) */
+void study_run_cases(const study *s, const char *dir, int jobs, long first, long stride,
+                     study_result *res);
+
+/* STUDY.h5 and STUDY.csv beside it; 0 done, else the exit status (message printed) */
+int study_write(const study *s, const study_result *res, const char *out);
+
+/* `mcrash study --analyze STUDY.h5 [--json]` */
+int study_analyze(const char *h5, int json);
+
+#endif

@@ -1,0 +1,120 @@
+/* study_file.c: STUDY.h5 (DESIGN.md "Studies", docs/contracts.md) and STUDY.csv beside it */
+#include "cli/study.h"
+#include "core/mcs_results.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* names joined by newlines (the attributes naming factors and responses) */
+static char *joined(const study *s, int factors)
+{
+    size_t n = 1;
+    int m = factors ? s->nfactor : s->nresp;
+    for (int i = 0; i < m; i++)
+        n += strlen(factors ? s->f[i].path : s->r[i].name) + 1;
+    char *t = calloc(n, 1);
+    for (int i = 0; t && i < m; i++) {
+        if (i) strcat(t, "\n");
+        strcat(t, factors ? s->f[i].path : s->r[i].name);
+    }
+    return t;
+}
+
+/* the unit of response i: that of the first case that has a value */
+static const char *resp_unit(const study *s, const study_result *res, int i)
+{
+    for (long c = 0; c < s->ncase; c++)
+        if (!isnan(res[c].v[i]) && res[c].unit[i][0]) return res[c].unit[i];
+    return "-";
+}
+
+static mcs_status write_h5(const study *s, const study_result *res, const char *out,
+                           mcs_error *err)
+{
+    mcs_results *r = NULL;
+    mcs_status st = mcs_results_create(&r, out, mcs_scenario_text(s->file), err);
+    size_t dims[2] = {(size_t)s->ncase, (size_t)s->nfactor};
+    double *v = malloc((size_t)s->ncase * sizeof *v);
+    int *status = malloc((size_t)s->ncase * sizeof *status);
+    char *fn = joined(s, 1), *rn = joined(s, 0);
+    if (!st && (!v || !status || !fn || !rn)) st = MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+    if (!st) st = mcs_results_write(r, "/study/design", 2, dims, s->x, "SI", err);
+    for (long c = 0; !st && c < s->ncase; c++)
+        status[c] = res[c].status;
+    if (!st) st = mcs_results_write_int(r, "/study/status", 1, dims, status, "-", err);
+    if (!st) st = mcs_results_set_attr_str(r, "/study", "design", s->design_name, err);
+    if (!st) st = mcs_results_set_attr_str(r, "/study", "factors", fn, err);
+    if (!st) st = mcs_results_set_attr_str(r, "/study", "responses", rn, err);
+    if (!st) st = mcs_results_set_attr_str(r, "/study", "scenario", s->scenario, err);
+    if (!st) st = mcs_results_set_attr_str(r, "/study", "stage", s->stage, err);
+    if (!st && s->design == STUDY_LHS)
+        st = mcs_results_set_attr_double(r, "/study", "seed", (double)s->seed, err);
+    for (int i = 0; !st && i < s->nresp; i++) {
+        char p[256];
+        snprintf(p, sizeof p, "/study/responses/%s", s->r[i].name);
+        for (long c = 0; c < s->ncase; c++)
+            v[c] = res[c].v[i];
+        st = mcs_results_write(r, p, 1, dims, v, resp_unit(s, res, i), err);
+        if (!st) st = mcs_results_set_attr_str(r, p, "source", s->r[i].spec, err);
+    }
+    free(v), free(status), free(fn), free(rn);
+    if (!st) return mcs_results_commit(&r, err);
+    mcs_results_abort(&r);
+    return st;
+}
+
+/* a CSV field: quoted when it holds a comma, a quote or a newline */
+static void csv_field(FILE *f, const char *s)
+{
+    if (!strpbrk(s, ",\"\n")) {
+        fputs(s, f);
+        return;
+    }
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"') fputc('"', f);
+        fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+static int write_csv(const study *s, const study_result *res, const char *path)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    fprintf(f, "case,status");
+    for (int j = 0; j < s->nfactor; j++)
+        fputc(',', f), csv_field(f, s->f[j].path);
+    for (int i = 0; i < s->nresp; i++)
+        fputc(',', f), csv_field(f, s->r[i].name);
+    fputc('\n', f);
+    for (long c = 0; c < s->ncase; c++) {
+        fprintf(f, "%ld,%d", c, res[c].status);
+        for (int j = 0; j < s->nfactor; j++)
+            fprintf(f, ",%.17g", s->x[c * s->nfactor + j]);
+        for (int i = 0; i < s->nresp; i++)
+            isnan(res[c].v[i]) ? fprintf(f, ",NaN") : fprintf(f, ",%.17g", res[c].v[i]);
+        fputc('\n', f);
+    }
+    return fclose(f);
+}
+
+int study_write(const study *s, const study_result *res, const char *out)
+{
+    mcs_error err = {0};
+    if (write_h5(s, res, out, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return mcs_status_exit_code(err.status);
+    }
+    char csv[4200];
+    size_t n = strlen(out);
+    int h5 = n > 3 && !strcmp(out + n - 3, ".h5");
+    snprintf(csv, sizeof csv, "%.*s.csv", (int)(h5 ? n - 3 : n), out);
+    if (write_csv(s, res, csv)) {
+        fprintf(stderr, "study: cannot write %s\n", csv);
+        return 2;
+    }
+    return 0;
+}

@@ -8,7 +8,7 @@ BUILD    ?= build
 BIN      ?= bin
 PKGS      = ode hdf5-serial yaml-0.1
 DEB_PKGS  = build-essential pkg-config libode-dev libsundials-dev libhdf5-dev libyaml-dev \
-            liblapack-dev hdf5-tools
+            liblapack-dev hdf5-tools libopenmpi-dev openmpi-bin
 
 PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
@@ -38,11 +38,15 @@ TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 BENCH_BIN= $(BENCH_SRC:bench/%.c=$(BUILD)/bench/%)
 LIB      = $(BUILD)/libmcrash.a
 MCRASH   = $(BIN)/mcrash
+# `mcrash study` under mpirun runs bin/mcrash-mpi (cli/study_mpi.c built by mpicc with MCS_MPI),
+# built only where mpicc exists
+MPICC   ?= $(shell command -v mpicc 2>/dev/null)
+MCRASH_MPI = $(if $(MPICC),$(BIN)/mcrash-mpi)
 
 .SECONDARY:
 .PHONY: all deps test check-asan demo bench verify figures clean format
 
-all: $(MCRASH)
+all: $(MCRASH) $(MCRASH_MPI)
 
 # install the Debian packages that are missing; nothing when all are present
 deps:
@@ -68,6 +72,14 @@ $(MCRASH): $(CLI_OBJ) $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
 
+$(BUILD)/mpi/study_mpi.o: cli/study_mpi.c
+	@mkdir -p $(dir $@)
+	$(MPICC) $(CFLAGS) -DMCS_MPI -c $< -o $@
+
+$(BIN)/mcrash-mpi: $(filter-out $(BUILD)/cli/study_mpi.o,$(CLI_OBJ)) $(BUILD)/mpi/study_mpi.o $(LIB)
+	@mkdir -p $(dir $@)
+	$(MPICC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIB)
 	$(CC) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
@@ -76,7 +88,7 @@ $(BUILD)/bench/%: $(BUILD)/bench/%.o $(LIB)
 
 # every test binary, then one closing line `N passed, N failed`
 test: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(TEST_BIN)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(MCRASH_MPI) $(TEST_BIN)
 	@MCRASH_BIN=$(MCRASH) MCRASH_BUILD=$(BUILD) sh tests/run_tests.sh $(TEST_BIN)
 
 # the same tests under AddressSanitizer and UBSan, in their own build tree
@@ -86,7 +98,7 @@ check-asan: deps
 
 # longer verification runs (not part of `make test`)
 verify: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(TEST_BIN)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(MCRASH_MPI) $(TEST_BIN)
 	@MCRASH_VERIFY=1 MCRASH_BIN=$(MCRASH) MCRASH_BUILD=$(BUILD) sh tests/run_tests.sh $(TEST_BIN)
 
 # the figures README.md and docs/*.md state, rewritten in place from the tests' own runs
@@ -94,7 +106,7 @@ verify: deps
 # state must read the same in both. Fails when a test fails, a doc's figure has no test or a
 # figure depends on the mode, and leaves the docs untouched then
 figures: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(TEST_BIN)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(MCRASH) $(MCRASH_MPI) $(TEST_BIN)
 	@rm -f $(BUILD)/figures.tsv
 	@MCRASH_FIGURES_OUT=$(CURDIR)/$(BUILD)/figures.tsv MCRASH_BIN=$(MCRASH) \
 	  MCRASH_BUILD=$(BUILD) sh tests/run_tests.sh $(TEST_BIN)
@@ -129,4 +141,4 @@ format:
 clean:
 	rm -rf build build-asan bin out
 
--include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.d)
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(BUILD)/mpi/study_mpi.d $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.d)

@@ -7,11 +7,9 @@
 #include "cli/cli_common.h"
 #include "cli/study.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 typedef struct {
     const char *path, *out, *analyze;
@@ -51,19 +49,6 @@ static int parse_args(int argc, char **argv, study_args *a)
     return -1;
 }
 
-/* DIR: the output's name without .h5, and _cases */
-static int cases_dir(const char *out, char *dir, size_t n)
-{
-    size_t len = strlen(out);
-    int h5 = len > 3 && !strcmp(out + len - 3, ".h5");
-    snprintf(dir, n, "%.*s_cases", (int)(h5 ? len - 3 : len), out);
-    if (mkdir(dir, 0755) && errno != EEXIST) {
-        fprintf(stderr, "study: cannot create %s: %s\n", dir, strerror(errno));
-        return 2;
-    }
-    return 0;
-}
-
 int cli_study(int argc, char **argv)
 {
     if (cli_wants_help(argv[0], argc, argv)) return 0;
@@ -71,6 +56,7 @@ int cli_study(int argc, char **argv)
     int rc = parse_args(argc, argv, &a);
     if (rc >= 0) return rc;
     if (a.analyze) return study_analyze(a.analyze, a.json);
+    if ((rc = study_mpi(argc, argv, a.path, a.out, a.jobs, a.quiet)) >= 0) return rc;
     study s;
     if ((rc = study_load(a.path, &s))) {
         study_free(&s);
@@ -78,7 +64,7 @@ int cli_study(int argc, char **argv)
     }
     char dir[4200];
     study_result *res = calloc((size_t)s.ncase, sizeof *res);
-    rc = res ? cases_dir(a.out, dir, sizeof dir) : 2;
+    rc = res ? study_cases_dir(a.out, dir, sizeof dir) : 2;
     if (!rc) {
         if (!a.quiet)
             fprintf(stderr, "study: %ld cases of %s, %d at once, in %s\n", s.ncase, a.path,

@@ -6,6 +6,7 @@
 
 #include "core/mcs_scenario.h"
 
+#include <stddef.h>
 #include <stdint.h>
 
 #define STUDY_NAME 128
@@ -75,6 +76,13 @@ void study_run_cases(const study *s, const char *dir, int jobs, long first, long
 
 /* STUDY.h5 and STUDY.csv beside it; 0 done, else the exit status (message printed) */
 int study_write(const study *s, const study_result *res, const char *out);
+
+/* DIR for the cases: the output's name without .h5, and _cases (created); 0 or 2 */
+int study_cases_dir(const char *out, char *dir, size_t n);
+
+/* under mpirun: the study over the ranks (study_mpi.c), its exit status; -1 when not under
+ * mpirun (then the caller runs it here) */
+int study_mpi(int argc, char **argv, const char *path, const char *out, int jobs, int quiet);
 
 /* `mcrash study --analyze STUDY.h5 [--json]` */
 int study_analyze(const char *h5, int json);

@@ -2,10 +2,12 @@
 #include "cli/study.h"
 #include "core/mcs_results.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* names joined by newlines (the attributes naming factors and responses) */
 static char *joined(const study *s, int factors)
@@ -114,6 +116,19 @@ int study_write(const study *s, const study_result *res, const char *out)
     snprintf(csv, sizeof csv, "%.*s.csv", (int)(h5 ? n - 3 : n), out);
     if (write_csv(s, res, csv)) {
         fprintf(stderr, "study: cannot write %s\n", csv);
+        return 2;
+    }
+    return 0;
+}
+
+/* DIR: the output's name without .h5, and _cases */
+int study_cases_dir(const char *out, char *dir, size_t n)
+{
+    size_t len = strlen(out);
+    int h5 = len > 3 && !strcmp(out + len - 3, ".h5");
+    snprintf(dir, n, "%.*s_cases", (int)(h5 ? len - 3 : len), out);
+    if (mkdir(dir, 0755) && errno != EEXIST) {
+        fprintf(stderr, "study: cannot create %s: %s\n", dir, strerror(errno));
         return 2;
     }
     return 0;

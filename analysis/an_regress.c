@@ -22,6 +22,7 @@ void an_regression_free(an_regression *r)
     free(r->t);
     free(r->p);
     free(r->std_coef);
+    free(r->partial);
     memset(r, 0, sizeof *r);
 }
 
@@ -63,6 +64,12 @@ static int solve_qr(int m, int p, double *A, double *b, double *sse)
     dgels_("N", &m, &p, &one, A, &m, b, &m, work, &lwork, &info, 1);
     free(work);
     if (info) return info;
+    /* a diagonal of R far below the largest: the columns are (nearly) collinear */
+    double rmax = 0;
+    for (int j = 0; j < p; j++)
+        rmax = fmax(rmax, fabs(A[j + (size_t)j * m]));
+    for (int j = 0; j < p; j++)
+        if (!(fabs(A[j + (size_t)j * m]) > 1e-10 * rmax)) return -2;
     *sse = 0;
     for (int i = p; i < m; i++)
         *sse += b[i] * b[i]; /* dgels leaves Q^T b's tail: the residual's coordinates */
@@ -77,7 +84,9 @@ static mcs_status alloc_result(an_regression *r, int k)
     r->t = calloc((size_t)k + 1, sizeof(double));
     r->p = calloc((size_t)k + 1, sizeof(double));
     r->std_coef = calloc((size_t)k + 1, sizeof(double));
-    return r->coef && r->se && r->t && r->p && r->std_coef ? MCS_OK : MCS_ERR_NOMEM;
+    r->partial = calloc((size_t)k + 1, sizeof(double));
+    return r->coef && r->se && r->t && r->p && r->std_coef && r->partial ? MCS_OK
+                                                                          : MCS_ERR_NOMEM;
 }
 
 /* coefficients and their covariance back from the scaled ones: b_j = c_j / sd_j,
@@ -152,8 +161,10 @@ mcs_status an_regress(int n, int k, const double *x, const double *y, an_regress
             r->t[q] = r->coef[q] / r->se[q];
             r->p[q] = an_t_p2(r->t[q], r->df);
         }
-        for (int j = 0; j < k; j++)
+        for (int j = 0; j < k; j++) {
             r->std_coef[j] = r->coef[j + 1] * sd[j] / ysd;
+            r->partial[j] = r->t[j + 1] / sqrt(r->t[j + 1] * r->t[j + 1] + r->df);
+        }
         r->sigma = sqrt(s2);
         r->r2 = 1 - sse / sst;
         r->adj_r2 = 1 - (1 - r->r2) * (m - 1) / r->df;
@@ -162,5 +173,33 @@ mcs_status an_regress(int n, int k, const double *x, const double *y, an_regress
     }
     free(use), free(mean), free(sd), free(A), free(b);
     if (st) an_regression_free(r);
+    return st;
+}
+
+int an_rsm_nterm(int k)
+{
+    return 2 * k + k * (k - 1) / 2;
+}
+
+mcs_status an_rsm_fit(int n, int k, const double *x, const double *y, an_regression *r,
+                      mcs_error *err)
+{
+    int q = an_rsm_nterm(k);
+    double *z = malloc(((size_t)n * q + 1) * sizeof *z);
+    if (!z) return MCS_ERR(err, MCS_ERR_NOMEM, "error: out of memory");
+    for (int i = 0; i < n; i++) {
+        const double *xi = x + (size_t)i * k;
+        double *zi = z + (size_t)i * q;
+        int c = 0;
+        for (int j = 0; j < k; j++)
+            zi[c++] = xi[j];
+        for (int j = 0; j < k; j++)
+            zi[c++] = xi[j] * xi[j];
+        for (int a = 0; a < k; a++)
+            for (int b = a + 1; b < k; b++)
+                zi[c++] = xi[a] * xi[b];
+    }
+    mcs_status st = an_regress(n, q, z, y, r, err);
+    free(z);
     return st;
 }

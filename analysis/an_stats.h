@@ -24,6 +24,8 @@ typedef struct {
     double *coef;      /* b0, b1..bk [unit of y / unit of x_j] (k+1)                         */
     double *se, *t, *p; /* standard errors, t = b/se and two-sided p of each coefficient (k+1) */
     double *std_coef;  /* standardized b_j sd(x_j) / sd(y) (sample sd) [-] (k)               */
+    double *partial;   /* partial correlation of y and x_j given the other factors,
+                          t_j / sqrt(t_j^2 + df) [-] (k)                                       */
     double r2, adj_r2; /* coefficient of determination, adjusted for df                     */
     double F, F_p;     /* overall F of the regression and its p                               */
     double sigma;      /* residual standard deviation sqrt(SSE / df) [unit of y]              */
@@ -34,6 +36,22 @@ typedef struct {
 mcs_status an_regress(int n, int k, const double *x, const double *y, an_regression *r,
                       mcs_error *err);
 void an_regression_free(an_regression *r);
+
+/* stepwise selection (Efroymson 1960; Draper & Smith, Applied Regression Analysis, 3rd ed.,
+ * 15.2): from no factor, each step adds the factor outside the model whose coefficient's p
+ * (t test, in the model with it) is smallest if below p_enter, then removes the factor inside
+ * whose p is largest if above p_remove; until neither happens. sel[j] = 1 for the factors of
+ * the final model; order[] the steps (+j+1 entered, -(j+1) removed), *nstep of them */
+mcs_status an_stepwise(int n, int k, const double *x, const double *y, double p_enter,
+                       double p_remove, int *sel, int *order, int *nstep, mcs_error *err);
+
+/* quadratic response surface y = b0 + sum b_j x_j + sum b_jj x_j^2 + sum_{i<j} b_ij x_i x_j
+ * fitted by an_regress on the an_rsm_nterm(k) = 2k + k(k-1)/2 columns in that order (a factor
+ * needs 3 levels or more for its square: with 2, x^2 is a line in x and the fit is refused as
+ * collinear) */
+int an_rsm_nterm(int k);
+mcs_status an_rsm_fit(int n, int k, const double *x, const double *y, an_regression *r,
+                      mcs_error *err);
 
 /* ANOVA of a factorial design: each factor categorical on its distinct values (sum-to-zero
  * coding), terms the main effects in factor order, then (interactions = 1) the two-factor
@@ -57,5 +75,21 @@ typedef struct {
 
 mcs_status an_anova_fit(int n, int k, const double *x, const double *y, int interactions,
                         an_anova *a, mcs_error *err);
+
+/* MANOVA of nr responses (y[i * nr + q]) on the same terms as an_anova_fit: per term Wilks'
+ * lambda det(E) / det(E + H), E the full model's residual SSCP and H the term's sequential SSCP
+ * drop, with Rao's F approximation (Rao 1951; the form of statsmodels' MANOVA.mv_test) and its
+ * p. Rows with a NaN are left out; interactions are left out when they would leave fewer
+ * residual df than responses. */
+typedef struct {
+    int nterm, fa[AN_ANOVA_MAXTERM], fb[AN_ANOVA_MAXTERM], df[AN_ANOVA_MAXTERM];
+    double wilks[AN_ANOVA_MAXTERM];        /* Wilks' lambda [-]                  */
+    double F[AN_ANOVA_MAXTERM], p[AN_ANOVA_MAXTERM];
+    double df1[AN_ANOVA_MAXTERM], df2[AN_ANOVA_MAXTERM]; /* Rao's F degrees of freedom */
+    int df_resid, n, nresp, interactions;
+} an_manova;
+
+mcs_status an_manova_fit(int n, int k, const double *x, int nr, const double *y,
+                         int interactions, an_manova *a, mcs_error *err);
 
 #endif

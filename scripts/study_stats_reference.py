@@ -83,3 +83,59 @@ for seed in (0, 42):
         z = ((z ^ (z >> 27)) * 0x94d049bb133111eb) & M
         out.append(z ^ (z >> 31))
     print(seed, " ".join("0x%016x" % v for v in out))
+
+print("# partial correlations of TOTEMP with each Longley factor given the others (residuals)")
+Xa = X.values
+for j, name in enumerate(X.columns):
+    others = sm.add_constant(np.delete(Xa, j, axis=1))
+    ry = sm.OLS(y.values, others).fit().resid
+    rx = sm.OLS(Xa[:, j], others).fit().resid
+    p(name, np.corrcoef(ry, rx)[0, 1])
+
+print("# quadratic response surface of battery life on material (1,2,3) and temperature [degF]")
+fit = smf.ols("life ~ mat + temp + I(mat**2) + I(temp**2) + mat:temp", df).fit()
+for k in fit.params.index:
+    p(k, fit.params[k], fit.bse[k], fit.pvalues[k])
+p("r2", fit.rsquared)
+
+print("# stepwise (Efroymson, p_enter 0.05, p_remove 0.10) on Hald's cement data (Hald 1952;")
+print("# Draper & Smith 3rd ed. Appendix 15A): statsmodels OLS p-values at each step")
+hald = np.array([
+    [7, 26, 6, 60, 78.5], [1, 29, 15, 52, 74.3], [11, 56, 8, 20, 104.3], [11, 31, 8, 47, 87.6],
+    [7, 52, 6, 33, 95.9], [11, 55, 9, 22, 109.2], [3, 71, 17, 6, 102.7], [1, 31, 22, 44, 72.5],
+    [2, 54, 18, 22, 93.1], [21, 47, 4, 26, 115.9], [1, 40, 23, 34, 83.8], [11, 66, 9, 12, 113.3],
+    [10, 68, 8, 12, 109.4]])
+hx, hy = hald[:, :4], hald[:, 4]
+def pval(sel, j):
+    cols = sorted(set(sel) | {j})
+    r = sm.OLS(hy, sm.add_constant(hx[:, cols])).fit()
+    return r.pvalues[1 + cols.index(j)]
+for pe, pr in [(0.05, 0.10), (0.10, 0.15)]:
+    sel, steps = [], []
+    for _ in range(16):
+        cand = [(pval(sel, j), j) for j in range(4) if j not in sel]
+        best = min(cand) if cand else (1, -1)
+        if best[0] < pe:
+            sel.append(best[1]); steps.append(best[1] + 1)
+        worst = max([(pval(sel, j), j) for j in sel]) if sel else (0, -1)
+        if worst[0] > pr:
+            sel.remove(worst[1]); steps.append(-(worst[1] + 1))
+        if best[0] >= pe and worst[0] <= pr:
+            break
+    print("p_enter", pe, "p_remove", pr, "steps", steps, "final", sorted(j + 1 for j in sel))
+
+print("# MANOVA: Johnson & Wichern, Applied Multivariate Statistical Analysis, 6th ed.,")
+print("# Example 6.13 (plastic film: rate x additive, 5 replicates; tear, gloss, opacity)")
+film = [  # rate, additive, tear, gloss, opacity
+    (0, 0, 6.5, 9.5, 4.4), (0, 0, 6.2, 9.9, 6.4), (0, 0, 5.8, 9.6, 3.0), (0, 0, 6.5, 9.6, 4.1),
+    (0, 0, 6.5, 9.2, 0.8), (0, 1, 6.9, 9.1, 5.7), (0, 1, 7.2, 10.0, 2.0), (0, 1, 6.9, 9.9, 3.9),
+    (0, 1, 6.1, 9.5, 1.9), (0, 1, 6.3, 9.4, 5.7), (1, 0, 6.7, 9.1, 2.8), (1, 0, 6.6, 9.3, 4.1),
+    (1, 0, 7.2, 8.3, 3.8), (1, 0, 7.1, 8.4, 1.6), (1, 0, 6.8, 8.5, 3.4), (1, 1, 7.1, 9.2, 8.4),
+    (1, 1, 7.0, 8.8, 5.2), (1, 1, 7.2, 9.7, 6.9), (1, 1, 7.5, 10.1, 2.7), (1, 1, 7.6, 9.2, 1.9)]
+fd = pd.DataFrame(film, columns=["rate", "add", "tear", "gloss", "opacity"])
+from statsmodels.multivariate.manova import MANOVA
+mv = MANOVA.from_formula("tear + gloss + opacity ~ C(rate, Sum) * C(add, Sum)", fd).mv_test()
+for term in ["C(rate, Sum)", "C(add, Sum)", "C(rate, Sum):C(add, Sum)"]:
+    w = mv.results[term]["stat"].loc["Wilks' lambda"]
+    p(term, float(w["Value"]), float(w["F Value"]), float(w["Num DF"]), float(w["Den DF"]),
+      float(w["Pr > F"]))

@@ -106,6 +106,13 @@ static void test_regress_longley(void)
     CHECK_NEAR(r.adj_r2, 0.99246500762882328, 1e-12);
     CHECK_REL(r.F, 330.28533923446855, 1e-8);
     CHECK_REL(r.F_p, 4.9840305287328682e-10, 1e-7);
+    /* partial correlations: numpy's correlation of the residuals of y and of x_j on the other
+     * factors (scripts/study_stats_reference.py), not the t identity the code uses */
+    static const double partial[6] = {0.059022267544302259, -0.33580385785308176,
+                                      -0.80950904495884757, -0.84908396418754428,
+                                      -0.075137380463210626, 0.80113971623743441};
+    for (int j = 0; j < 6; j++)
+        CHECK_NEAR(r.partial[j], partial[j], 1e-8);
     an_regression_free(&r);
 
     /* a NaN response (a failed case) leaves its row out; a constant factor is refused */
@@ -177,6 +184,105 @@ static void test_anova_battery(void)
                                      {4, 7562.0945376016261, 2.5494264382313525, 0.065355676047530634}};
     CHECK(an_anova_fit(n, 2, x, y, 1, &a, &err) == MCS_OK && a.n == 33);
     check_anova(&a, unb, 3, 17797.166666666668, 24);
+}
+
+/* a quadratic response surface of battery life on material (1, 2, 3) and temperature [degF]:
+ * statsmodels ols("life ~ mat + temp + I(mat**2) + I(temp**2) + mat:temp"), the same column
+ * order as an_rsm_fit's; coefficient, standard error, p */
+static void test_rsm_battery(void)
+{
+    double x[72], y[36];
+    int n = battery(x, y);
+    static const double ref[6][3] = {
+        {109.90955004583201, 44.587703710030709, 0.019645135065977339},
+        {31.825757575757653, 44.315102576736955, 0.47820883601454267},
+        {-0.76108815426974452, 0.57769191431234734, 0.19765694749001453},
+        {-4.2083333333335311, 10.702991263695434, 0.69695784344418832},
+        {-0.0010192837465509271, 0.0035381789301479113, 0.77526534378150713},
+        {0.085227272727279438, 0.137602867300717, 0.54034743879752289},
+    };
+    an_regression r;
+    mcs_error err = {0};
+    CHECK(an_rsm_nterm(2) == 5);
+    CHECK(an_rsm_fit(n, 2, x, y, &r, &err) == MCS_OK);
+    for (int q = 0; q < 6 && r.coef; q++) {
+        CHECK_REL(r.coef[q], ref[q][0], 1e-8);
+        CHECK_REL(r.se[q], ref[q][1], 1e-8);
+        CHECK_REL(r.p[q], ref[q][2], 1e-8);
+    }
+    CHECK_NEAR(r.r2, 0.64592353712010664, 1e-12);
+    an_regression_free(&r);
+    /* two levels only: x^2 is a line in x, refused */
+    double x2[8] = {0, 0, 1, 0, 0, 1, 1, 1}, y2[4] = {1, 2, 3, 5};
+    mcs_error_clear(&err);
+    CHECK(an_rsm_fit(4, 2, x2, y2, &r, &err) != MCS_OK);
+}
+
+/* Hald's cement data (Hald 1952; Draper & Smith, Applied Regression Analysis, 3rd ed., Appendix
+ * 15A): heat [cal/g] on 4 ingredients [%]. Stepwise with statsmodels p-values in the reference
+ * script: p_enter 0.10, p_remove 0.15 gives x4, x1, x2 in, x4 out: {x1, x2}, Draper & Smith's
+ * path; p_enter 0.05, p_remove 0.10 stops at {x1, x4} (x2's p in the 3-factor model is 0.052) */
+static void test_stepwise_hald(void)
+{
+    static const double hald[13][5] = {
+        {7, 26, 6, 60, 78.5},   {1, 29, 15, 52, 74.3},  {11, 56, 8, 20, 104.3},
+        {11, 31, 8, 47, 87.6},  {7, 52, 6, 33, 95.9},   {11, 55, 9, 22, 109.2},
+        {3, 71, 17, 6, 102.7},  {1, 31, 22, 44, 72.5},  {2, 54, 18, 22, 93.1},
+        {21, 47, 4, 26, 115.9}, {1, 40, 23, 34, 83.8},  {11, 66, 9, 12, 113.3},
+        {10, 68, 8, 12, 109.4},
+    };
+    double x[13 * 4], y[13];
+    for (int i = 0; i < 13; i++) {
+        y[i] = hald[i][4];
+        for (int j = 0; j < 4; j++)
+            x[i * 4 + j] = hald[i][j];
+    }
+    int sel[4], order[32], nstep;
+    mcs_error err = {0};
+    CHECK(an_stepwise(13, 4, x, y, 0.10, 0.15, sel, order, &nstep, &err) == MCS_OK);
+    CHECK(nstep == 4 && order[0] == 4 && order[1] == 1 && order[2] == 2 && order[3] == -4);
+    CHECK(sel[0] && sel[1] && !sel[2] && !sel[3]);
+    CHECK(an_stepwise(13, 4, x, y, 0.05, 0.10, sel, order, &nstep, &err) == MCS_OK);
+    CHECK(nstep == 2 && order[0] == 4 && order[1] == 1);
+    CHECK(sel[0] && !sel[1] && !sel[2] && sel[3]);
+}
+
+/* MANOVA: Johnson & Wichern, Applied Multivariate Statistical Analysis, 6th ed., Example 6.13
+ * (plastic film, rate x additive, 5 replicates; tear resistance, gloss, opacity). The book
+ * gives Wilks' lambda 0.3819 (rate), 0.5230 (additive), 0.7771 (interaction), F 7.55, 4.26,
+ * 1.34 on (3, 14) df; the literals are statsmodels' MANOVA.mv_test with sum coding */
+static void test_manova_film(void)
+{
+    static const double film[20][5] = {
+        {0, 0, 6.5, 9.5, 4.4}, {0, 0, 6.2, 9.9, 6.4}, {0, 0, 5.8, 9.6, 3.0},
+        {0, 0, 6.5, 9.6, 4.1}, {0, 0, 6.5, 9.2, 0.8}, {0, 1, 6.9, 9.1, 5.7},
+        {0, 1, 7.2, 10.0, 2.0}, {0, 1, 6.9, 9.9, 3.9}, {0, 1, 6.1, 9.5, 1.9},
+        {0, 1, 6.3, 9.4, 5.7}, {1, 0, 6.7, 9.1, 2.8}, {1, 0, 6.6, 9.3, 4.1},
+        {1, 0, 7.2, 8.3, 3.8}, {1, 0, 7.1, 8.4, 1.6}, {1, 0, 6.8, 8.5, 3.4},
+        {1, 1, 7.1, 9.2, 8.4}, {1, 1, 7.0, 8.8, 5.2}, {1, 1, 7.2, 9.7, 6.9},
+        {1, 1, 7.5, 10.1, 2.7}, {1, 1, 7.6, 9.2, 1.9},
+    };
+    double x[40], y[60];
+    for (int i = 0; i < 20; i++) {
+        x[2 * i] = film[i][0], x[2 * i + 1] = film[i][1];
+        for (int q = 0; q < 3; q++)
+            y[3 * i + q] = film[i][2 + q];
+    }
+    static const double ref[3][3] = {
+        {0.38185838466113142, 7.5542687746434884, 0.0030340451602603163},
+        {0.52303489541905168, 4.2556188395953347, 0.024745280999061772},
+        {0.77710575787349478, 1.3385219699955189, 0.30178164509983046},
+    };
+    an_manova a;
+    mcs_error err = {0};
+    CHECK(an_manova_fit(20, 2, x, 3, y, 1, &a, &err) == MCS_OK);
+    CHECK(a.nterm == 3 && a.interactions && a.df_resid == 16);
+    for (int t = 0; t < 3 && a.nterm == 3; t++) {
+        CHECK_REL(a.wilks[t], ref[t][0], 1e-10);
+        CHECK_REL(a.F[t], ref[t][1], 1e-10);
+        CHECK_REL(a.p[t], ref[t][2], 1e-8);
+        CHECK(a.df1[t] == 3 && a.df2[t] == 14);
+    }
 }
 
 /* an unreplicated 2x2: the interaction would leave no residual df, so it is pooled; the
@@ -271,6 +377,9 @@ int main(void)
     RUN(test_regress_longley);
     RUN(test_anova_battery);
     RUN(test_anova_2x2);
+    RUN(test_rsm_battery);
+    RUN(test_stepwise_hald);
+    RUN(test_manova_film);
     RUN(test_fractional);
     RUN(test_lhs);
     TEST_END();

@@ -87,4 +87,10 @@ int study_mpi(int argc, char **argv, const char *path, const char *out, int jobs
 /* `mcrash study --analyze STUDY.h5 [--json]` */
 int study_analyze(const char *h5, int json);
 
+/* the rest of --analyze (study_analyze_more.c): per response the stepwise selection and the
+ * quadratic response surface, and the MANOVA of all responses (factorial designs); as text
+ * sections, or (json) as the members ", \"stepwise\": ..., \"quadratic\": ..., \"manova\": ..." */
+void study_analyze_more(long ncase, int k, const double *x, int nresp, double *const *y,
+                        const char *const *fn, const char *const *rn, int factorial, int json);
+
 #endif

@@ -98,11 +98,12 @@ static void print_regression(const study_data *d, const an_regression *g)
 {
     printf("  regression: n %d, R^2 %.4g, adjusted %.4g, F %.4g (p %.3g), residual sd %.4g\n",
            g->n, g->r2, g->adj_r2, g->F, g->F_p, g->sigma);
-    printf("  %-32s %13s %10s %12s %9s %10s\n", "term", "coefficient", "std.coef", "std.error",
-           "t", "p");
+    printf("  %-32s %13s %10s %12s %9s %10s %10s\n", "term", "coefficient", "std.coef",
+           "std.error", "t", "p", "partial r");
     for (int q = 0; q <= d->nfactor; q++)
-        printf("  %-32.32s %13.6g %10.4g %12.4g %9.4g %10.3g\n", q ? d->fn[q - 1] : "intercept",
-               g->coef[q], q ? g->std_coef[q - 1] : 0.0, g->se[q], g->t[q], g->p[q]);
+        printf("  %-32.32s %13.6g %10.4g %12.4g %9.4g %10.3g %10.4g\n",
+               q ? d->fn[q - 1] : "intercept", g->coef[q], q ? g->std_coef[q - 1] : 0.0, g->se[q],
+               g->t[q], g->p[q], q ? g->partial[q - 1] : NAN);
 }
 
 static void print_anova(const study_data *d, const an_anova *a)
@@ -120,14 +121,19 @@ static void print_anova(const study_data *d, const an_anova *a)
 
 static void json_regression(const study_data *d, const an_regression *g)
 {
-    const char *key[4] = {"coefficients", "std_coefficients", "t", "p"};
-    for (int k = 0; k < 4; k++) {
+    const char *key[5] = {"coefficients", "std_coefficients", "t", "p", "partial"};
+    for (int k = 0; k < 5; k++) {
+        int q0 = k == 1 || k == 4; /* no intercept */
         printf("%s\"%s\": {", k ? ", " : "", key[k]);
-        for (int q = k == 1; q <= d->nfactor; q++) {
-            printf(q > (k == 1) ? ", " : "");
+        for (int q = q0; q <= d->nfactor; q++) {
+            printf(q > q0 ? ", " : "");
             cli_json_string(q ? d->fn[q - 1] : "intercept");
             printf(": ");
-            jnum(k == 0 ? g->coef[q] : k == 1 ? g->std_coef[q - 1] : k == 2 ? g->t[q] : g->p[q]);
+            jnum(k == 0   ? g->coef[q]
+                 : k == 1 ? g->std_coef[q - 1]
+                 : k == 2 ? g->t[q]
+                 : k == 3 ? g->p[q]
+                          : g->partial[q - 1]);
         }
         printf("}");
     }
@@ -196,6 +202,8 @@ static void print_json(const study_data *d, const resp_fit *f)
         }
         printf("}");
     }
+    study_analyze_more(d->ncase, d->nfactor, d->x, d->nresp, d->y, d->fn, d->rn, factorial(d),
+                       1);
     printf("}\n");
 }
 
@@ -223,6 +231,7 @@ int study_analyze(const char *h5, int json)
                 printf("  regression: none (%s)\n", f[i].why);
             if (f[i].ok_anova) print_anova(&d, &f[i].a);
         }
+        study_analyze_more(d.ncase, d.nfactor, d.x, d.nresp, d.y, d.fn, d.rn, factorial(&d), 0);
     }
     for (int i = 0; i < d.nresp; i++)
         an_regression_free(&f[i].g);

@@ -96,6 +96,43 @@ static void test_study_2x2(void)
     CHECK_REL(tv * tv, fv, 1e-8);
 }
 
+/* the 2^(3-1) design of resolution III: C = AB (Montgomery Table 8.14), A fastest; a Latin
+ * hypercube: one sample in each fifth of every factor's range */
+static void test_study_frac_lhs(void)
+{
+    char cmd[512], out[128];
+    snprintf(out, sizeof out, "%s/frac.h5", tmp);
+    snprintf(cmd, sizeof cmd, "study " DATA "head_drop_frac_lhs.yaml -o %s --quiet", out);
+    CHECK(cli_run(cmd)->status == 0);
+    mcs_array d;
+    read_dataset(out, "/study/design", &d);
+    CHECK(d.rank == 2 && d.dims[0] == 4 && d.dims[1] == 3);
+    for (size_t c = 0; c < 4 && d.n == 12; c++) {
+        int a = d.v[3 * c] > 5 ? 1 : -1, b = d.v[3 * c + 1] > -3.5 ? 1 : -1;
+        int cc = d.v[3 * c + 2] > 25 ? 1 : -1;
+        CHECK(cc == a * b);
+        CHECK(a == (c & 1 ? 1 : -1) && b == (c & 2 ? 1 : -1));
+    }
+    mcs_array_free(&d);
+    snprintf(out, sizeof out, "%s/lhs.h5", tmp);
+    snprintf(cmd, sizeof cmd, "study " DATA "head_drop_lhs.yaml -o %s --quiet", out);
+    CHECK(cli_run(cmd)->status == 0);
+    read_dataset(out, "/study/design", &d);
+    static const double lo[3] = {4.5, -4, 0}, hi[3] = {6, -3, 50};
+    for (int j = 0; j < 3 && d.n == 15; j++) {
+        int seen[5] = {0};
+        for (int c = 0; c < 5; c++) {
+            double u = (d.v[3 * c + j] - lo[j]) / (hi[j] - lo[j]);
+            CHECK(u >= 0 && u < 1);
+            if (u >= 0 && u < 1) seen[(int)(u * 5)]++;
+        }
+        for (int m = 0; m < 5; m++)
+            CHECK(seen[m] == 1);
+    }
+    CHECK(d.n == 15);
+    mcs_array_free(&d);
+}
+
 static void test_study_failed_case(void)
 {
     char cmd[512], out[128], csv[128];
@@ -143,6 +180,7 @@ int main(void)
     snprintf(tmp, sizeof tmp, "/tmp/mcrash_study_XXXXXX");
     if (!mkdtemp(tmp)) return 1;
     RUN(test_study_2x2);
+    RUN(test_study_frac_lhs);
     RUN(test_study_failed_case);
     RUN(test_study_bad_input);
     char rm[128];

@@ -65,6 +65,7 @@ int cli_study(int argc, char **argv)
     char dir[4200];
     study_result *res = calloc((size_t)s.ncase, sizeof *res);
     rc = res ? study_cases_dir(a.out, dir, sizeof dir) : 2;
+    if (!rc) rc = study_probe(&s, dir);
     if (!rc) {
         if (!a.quiet)
             fprintf(stderr, "study: %ld cases of %s, %d at once, in %s\n", s.ncase, a.path,

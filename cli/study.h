@@ -70,6 +70,10 @@ mcs_status study_case_scenario(const study *s, long c, mcs_scenario **out, mcs_e
 int study_case_start(const study *s, long c, const char *dir); /* pid, -1 when fork failed */
 void study_case_finish(const study *s, long c, const char *dir, int wstatus, study_result *res);
 
+/* the response datasets checked on a two-step run of the base scenario (stage 1): 2 with the
+ * response's FILE:LINE:COL printed when one is missing, else 0 */
+int study_probe(const study *s, const char *dir);
+
 /* every case with up to jobs at once (cases first..ncase-1 by step stride: a rank's share) */
 void study_run_cases(const study *s, const char *dir, int jobs, long first, long stride,
                      study_result *res);

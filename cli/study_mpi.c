@@ -84,6 +84,7 @@ int study_mpi(int argc, char **argv, const char *path, const char *out, int jobs
     char dir[4200];
     if (!rc && !res) rc = 2;
     if (!rc) rc = study_cases_dir(out, dir, sizeof dir);
+    if (!rc) rc = study_probe(&s, dir);
     if (!rc) {
         if (!quiet && rank == 0)
             fprintf(stderr, "study: %ld cases of %s over %d ranks, %d at once each, in %s\n",

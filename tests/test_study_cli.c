@@ -170,6 +170,17 @@ static void test_study_bad_input(void)
         struct stat st;
         CHECK(stat(dir, &st) != 0); /* before any run */
     }
+    /* a channel the base scenario's stage 1 does not write: a two-step probe run finds it, and
+     * no case runs */
+    char cmd[512], h5[160];
+    snprintf(cmd, sizeof cmd, "study " DATA "bad_channel.yaml -o %s/badch.h5", tmp);
+    cli_result *r = cli_run(cmd);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, DATA "bad_channel.yaml:6:22: error: study.responses: no dataset "
+                               "/stage1/channels/neck_fz");
+    snprintf(h5, sizeof h5, "%s/badch_cases/case_00000.h5", tmp);
+    struct stat st;
+    CHECK(stat(h5, &st) != 0);
     CHECK(cli_run("study")->status == 2);
     CHECK(cli_run("study --analyze no_such.h5")->status == 2);
 }

@@ -98,7 +98,8 @@ static void quadratic(long n, int k, const double *x, int nresp, double *const *
 {
     int ok = three_levels(n, k, x), q = an_rsm_nterm(k);
     json ? printf(", \"quadratic\": {")
-         : printf("\nquadratic response surfaces%s\n", ok ? "" : ": none (a factor has < 3 levels)");
+         : printf("\nquadratic response surfaces%s\n",
+                  ok ? "" : ": none (a factor has < 3 levels)");
     for (int i = 0, first = 1; ok && i < nresp; i++) {
         an_regression r;
         mcs_error err = {0};

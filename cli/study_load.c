@@ -57,7 +57,9 @@ static int level_si(study *s, const study_factor *f, const mcs_node *v, double n
     int ok = mcs_node_kind(n) == MCS_NODE_NUM;
     *out = mcs_node_num(n);
     mcs_scenario_destroy(&c);
-    if (!ok) return fail(v ? v : f->at, "%s: a factor level must be a number or a quantity", f->path, NULL);
+    if (!ok)
+        return fail(v ? v : f->at, "%s: a factor level must be a number or a quantity", f->path,
+                    NULL);
     return 0;
 }
 
@@ -69,7 +71,8 @@ static int read_factor(study *s, const mcs_node *fn, study_factor *f)
     const mcs_node *p = mcs_node_get(fn, "path"), *lv = mcs_node_get(fn, "levels"),
                    *rg = mcs_node_get(fn, "range");
     if (!mcs_node_str(p)) return fail(fn, "study.factors: path: a key path is missing", NULL, NULL);
-    if (strlen(mcs_node_str(p)) >= sizeof f->path) return fail(p, "study.factors: path too long", 0, 0);
+    if (strlen(mcs_node_str(p)) >= sizeof f->path)
+        return fail(p, "study.factors: path too long", NULL, NULL);
     snprintf(f->path, sizeof f->path, "%s", mcs_node_str(p));
     f->at = p;
     f->lo = f->hi = f->base = NAN;
@@ -162,7 +165,8 @@ static int read_design(study *s, const mcs_node *d, const char ***gen, int *ngen
                                   "one_at_a_time"};
     int k = 0;
     while (k < 4 && strcmp(t, names[k])) k++;
-    if (k == 4) return fail(mcs_node_get(d, "type"), "study.design.type: unknown design '%s'", t, 0);
+    if (k == 4)
+        return fail(mcs_node_get(d, "type"), "study.design.type: unknown design '%s'", t, NULL);
     s->design = (study_design)k;
     s->design_name = names[k];
     if (check_keys(d, "study.design", k == 1   ? "type|resolution|generators"
@@ -198,86 +202,111 @@ static int read_design(study *s, const mcs_node *d, const char ***gen, int *ngen
     return 0;
 }
 
-/* the cases of the design: s->x (ncase x nfactor) in SI */
-static int make_cases(study *s, const mcs_node *d, const char **gen, int ngen, int res)
+/* full factorial: every combination of levels, the first factor fastest */
+static int cases_full(study *s, const mcs_node *d)
+{
+    int k = s->nfactor, *nlev = calloc((size_t)k, sizeof *nlev), *idx;
+    long cap = 1;
+    for (int j = 0; nlev && j < k; j++)
+        nlev[j] = s->f[j].nlev;
+    for (int j = 0; nlev && j < k && cap <= STUDY_MAXCASE; j++)
+        cap *= nlev[j];
+    if (!nlev || cap > STUDY_MAXCASE) {
+        free(nlev);
+        return fail(d, "study.design: more than %s cases", "100000", NULL);
+    }
+    idx = calloc((size_t)cap * k, sizeof *idx);
+    s->x = calloc((size_t)cap * k, sizeof *s->x);
+    s->ncase = idx && s->x ? an_doe_full(k, nlev, idx, cap) : 0;
+    for (long c = 0; c < s->ncase; c++)
+        for (int j = 0; j < k; j++)
+            s->x[c * k + j] = s->f[j].lev[idx[c * k + j]];
+    free(nlev), free(idx);
+    return 0;
+}
+
+/* 2-level fractional factorial from generators, or the standard ones of a resolution */
+static int cases_fractional(study *s, const mcs_node *d, const char **gen, int ngen, int res)
 {
     int k = s->nfactor;
     char why[256];
-    if (s->design == STUDY_FULL) {
-        int *nlev = calloc((size_t)k, sizeof *nlev), *idx;
-        for (int j = 0; nlev && j < k; j++)
-            nlev[j] = s->f[j].nlev;
-        long cap = 1;
-        for (int j = 0; nlev && j < k && cap <= STUDY_MAXCASE; j++)
-            cap *= nlev[j];
-        if (!nlev || cap > STUDY_MAXCASE) {
-            free(nlev);
-            return fail(d, "study.design: more than %s cases", "100000", NULL);
+    for (int j = 0; j < k; j++)
+        if (s->f[j].nlev != 2)
+            return fail(s->f[j].at, "%s: a fractional factorial takes 2 levels per factor",
+                        s->f[j].path, NULL);
+    const char *std[4];
+    if (res) {
+        if (!an_doe_standard(k, res, std, &ngen)) {
+            snprintf(why, sizeof why, "%d", k);
+            return fail(d, "study.design.resolution: the standard table (3..8 factors, "
+                        "Montgomery Table 8.14) has no design of this resolution for %s "
+                        "factors: give generators:", why, NULL);
         }
-        idx = calloc((size_t)cap * k, sizeof *idx);
-        s->x = calloc((size_t)cap * k, sizeof *s->x);
-        s->ncase = idx && s->x ? an_doe_full(k, nlev, idx, cap) : 0;
-        for (long c = 0; c < s->ncase; c++)
-            for (int j = 0; j < k; j++)
-                s->x[c * k + j] = s->f[j].lev[idx[c * k + j]];
-        free(nlev), free(idx);
-    } else if (s->design == STUDY_FRACTIONAL) {
-        for (int j = 0; j < k; j++)
-            if (s->f[j].nlev != 2)
-                return fail(s->f[j].at, "%s: a fractional factorial takes 2 levels per factor",
-                            s->f[j].path, NULL);
-        const char *std[4];
-        if (res) {
-            if (!an_doe_standard(k, res, std, &ngen)) {
-                snprintf(why, sizeof why, "%d", k);
-                return fail(d, "study.design.resolution: the standard table (3..8 factors, "
-                            "Montgomery Table 8.14) has no design of this resolution for %s "
-                            "factors: give generators:", why, NULL);
-            }
-            gen = std;
-        }
-        long cap = 1L << 20;
-        int *sign = calloc((size_t)cap, sizeof *sign);
-        s->ncase = sign ? an_doe_fractional(k, ngen, gen, sign, cap / (k ? k : 1), why, sizeof why) : -1;
-        if (s->ncase < 0) {
-            free(sign);
-            return fail(mcs_node_get(d, "generators") ? mcs_node_get(d, "generators") : d,
-                        "study.design.generators: %s", why, NULL);
-        }
-        s->x = calloc((size_t)s->ncase * k, sizeof *s->x);
-        for (long c = 0; s->x && c < s->ncase; c++)
-            for (int j = 0; j < k; j++)
-                s->x[c * k + j] = s->f[j].lev[sign[c * k + j] > 0];
-        free(sign);
-    } else if (s->design == STUDY_LHS) {
-        for (int j = 0; j < k; j++)
-            if (!(s->f[j].hi > s->f[j].lo))
-                return fail(s->f[j].at, "%s: a Latin hypercube takes range: [low, high]",
-                            s->f[j].path, NULL);
-        s->x = calloc((size_t)s->ncase * k, sizeof *s->x);
-        if (s->x) an_doe_lhs((int)s->ncase, k, s->seed, s->x);
-        for (long c = 0; s->x && c < s->ncase; c++)
-            for (int j = 0; j < k; j++)
-                s->x[c * k + j] = s->f[j].lo + (s->f[j].hi - s->f[j].lo) * s->x[c * k + j];
-    } else {
-        /* one at a time: the base case, then each factor's other levels, the rest at base */
-        long n = 1;
-        for (int j = 0; j < k; j++) {
-            const mcs_node *b = mcs_scenario_find(mcs_scenario_root(s->base), s->f[j].path);
-            s->f[j].base = mcs_node_kind(b) == MCS_NODE_NUM ? mcs_node_num(b) : s->f[j].lev[0];
-            for (int l = 0; l < s->f[j].nlev; l++)
-                n += s->f[j].lev[l] != s->f[j].base;
-        }
-        s->x = calloc((size_t)n * k, sizeof *s->x);
-        s->ncase = 0;
-        for (int j = -1; s->x && j < k; j++)
-            for (int l = 0; l < (j < 0 ? 1 : s->f[j].nlev); l++) {
-                if (j >= 0 && s->f[j].lev[l] == s->f[j].base) continue;
-                for (int q = 0; q < k; q++)
-                    s->x[s->ncase * k + q] = q == j ? s->f[j].lev[l] : s->f[q].base;
-                s->ncase++;
-            }
+        gen = std;
     }
+    long cap = 1L << 20;
+    int *sign = calloc((size_t)cap, sizeof *sign);
+    s->ncase = sign ? an_doe_fractional(k, ngen, gen, sign, cap / k, why, sizeof why) : -1;
+    if (s->ncase < 0) {
+        free(sign);
+        const mcs_node *g = mcs_node_get(d, "generators");
+        return fail(g ? g : d, "study.design.generators: %s", why, NULL);
+    }
+    s->x = calloc((size_t)s->ncase * k, sizeof *s->x);
+    for (long c = 0; s->x && c < s->ncase; c++)
+        for (int j = 0; j < k; j++)
+            s->x[c * k + j] = s->f[j].lev[sign[c * k + j] > 0];
+    free(sign);
+    return 0;
+}
+
+/* Latin hypercube over each factor's range */
+static int cases_lhs(study *s)
+{
+    int k = s->nfactor;
+    for (int j = 0; j < k; j++)
+        if (!(s->f[j].hi > s->f[j].lo))
+            return fail(s->f[j].at, "%s: a Latin hypercube takes range: [low, high]",
+                        s->f[j].path, NULL);
+    s->x = calloc((size_t)s->ncase * k, sizeof *s->x);
+    if (s->x) an_doe_lhs((int)s->ncase, k, s->seed, s->x);
+    for (long c = 0; s->x && c < s->ncase; c++)
+        for (int j = 0; j < k; j++)
+            s->x[c * k + j] = s->f[j].lo + (s->f[j].hi - s->f[j].lo) * s->x[c * k + j];
+    return 0;
+}
+
+/* one at a time: the base case, then each factor's other levels, the rest at base */
+static int cases_oat(study *s)
+{
+    int k = s->nfactor;
+    long n = 1;
+    for (int j = 0; j < k; j++) {
+        const mcs_node *b = mcs_scenario_find(mcs_scenario_root(s->base), s->f[j].path);
+        s->f[j].base = mcs_node_kind(b) == MCS_NODE_NUM ? mcs_node_num(b) : s->f[j].lev[0];
+        for (int l = 0; l < s->f[j].nlev; l++)
+            n += s->f[j].lev[l] != s->f[j].base;
+    }
+    s->x = calloc((size_t)n * k, sizeof *s->x);
+    s->ncase = 0;
+    for (int j = -1; s->x && j < k; j++)
+        for (int l = 0; l < (j < 0 ? 1 : s->f[j].nlev); l++) {
+            if (j >= 0 && s->f[j].lev[l] == s->f[j].base) continue;
+            for (int q = 0; q < k; q++)
+                s->x[s->ncase * k + q] = q == j ? s->f[j].lev[l] : s->f[q].base;
+            s->ncase++;
+        }
+    return 0;
+}
+
+/* the cases of the design: s->x (ncase x nfactor) in SI */
+static int make_cases(study *s, const mcs_node *d, const char **gen, int ngen, int res)
+{
+    int rc = s->design == STUDY_FULL         ? cases_full(s, d)
+             : s->design == STUDY_FRACTIONAL ? cases_fractional(s, d, gen, ngen, res)
+             : s->design == STUDY_LHS        ? cases_lhs(s)
+                                             : cases_oat(s);
+    if (rc) return rc;
     if (!s->x || s->ncase < 1) return fail(d, "study.design: no cases (out of memory?)", 0, 0);
     return 0;
 }

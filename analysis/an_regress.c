@@ -126,7 +126,7 @@ mcs_status an_regress(int n, int k, const double *x, const double *y, an_regress
     memset(r, 0, sizeof *r);
     char *use = calloc((size_t)n + 1, 1);
     int m = 0, p = k + 1;
-    for (int i = 0; i < n; i++)
+    for (int i = 0; use && i < n; i++)
         m += use[i] = (char)row_ok(k, x + (size_t)i * k, y[i]);
     double *mean = calloc((size_t)p, sizeof *mean), *sd = calloc((size_t)p, sizeof *sd);
     double *A = calloc((size_t)(m + 1) * p, sizeof *A), *b = calloc((size_t)m + p, sizeof *b);

@@ -1121,8 +1121,9 @@ static const mcs_skey retune_keys[] = {
     S("tyre", NE, "characteristic of the front tyre's contact (default tyre_front)"),
     S("fork", NE, "elastic-plastic characteristic of the fork hinge (default fork_deformation)"),
     S("target_force", NE, "stage-3 wall force: a dataset, or a group whose members' force are "
-                          "summed (default /stage3/rigidwall)"),
-    S("target_angle", NE, "stage-3 fork angle dataset (default /stage3/joints/<joint>/angle)"),
+                          "summed (default: the impact wall, else every wall)"),
+    S("target_angle", NE, "stage-3 fork angle dataset (default /stage3/channels/<joint>_angle, "
+                          "else /stage3/joints/<joint>/angle)"),
     A("free", 0, "parameters fitted, a list of tyre_force_scale, fork_moment_scale, "
                  "fork_elastic_limit, fork_stop_angle (default all four)"),
     Q("end_time", MCS_DIM_TIME, GT, 0, 0, "compared span [s] (default the target's)"),

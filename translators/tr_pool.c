@@ -121,7 +121,10 @@ mcs_status tr_pool_run(tr_pool_fn fn, void *ctx, int n, size_t nbytes, void *out
             }
         int np = 0, map[64];
         for (int i = 0; i < jobs && np < 64; i++)
-            if (sl[i].pid) pf[np] = (struct pollfd){.fd = sl[i].fd, .events = POLLIN}, map[np++] = i;
+            if (sl[i].pid) {
+                pf[np] = (struct pollfd){.fd = sl[i].fd, .events = POLLIN};
+                map[np++] = i;
+            }
         if (np == 0) break;
         if (poll(pf, (nfds_t)np, -1) < 0) {
             if (errno == EINTR) continue;

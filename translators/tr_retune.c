@@ -23,7 +23,6 @@ tr_rt_opts tr_rt_opts_default(void)
     snprintf(o.joint, sizeof o.joint, "moto_fork_deformation");
     snprintf(o.tyre_char, sizeof o.tyre_char, "tyre_front");
     snprintf(o.fork_char, sizeof o.fork_char, "fork_deformation");
-    snprintf(o.target_force, sizeof o.target_force, "/stage3/rigidwall");
     return o;
 }
 
@@ -103,32 +102,43 @@ static mcs_status read1(mcs_results *h, const char *h5, const char *path, mcs_ar
     return mcs_results_read(h, path, a, err);
 }
 
-/* the target's wall force: o->target_force, a dataset, or a group whose members' `force`
- * datasets are summed (every rigid wall) */
+/* the target's wall force: o->target_force, a dataset, or a group whose members' `force` are
+ * summed. By default (""): the wall named by the attribute impact_wall of /stage3/rigidwall (a
+ * generated motorcycle's run, stage3_fe/s3_wallcase.h), its force_mean (a penalty wall's
+ * interval mean) or force, else every wall's force summed */
 static mcs_status read_force(mcs_results *h, const char *h5, const char *fp, tr_rt_target *t,
                              mcs_error *err)
 {
+    const char *grp = fp[0] ? fp : "/stage3/rigidwall";
     char **walls = NULL, path[1024];
     int nw = 0;
     mcs_array af = {0};
-    mcs_res_kind kind = mcs_results_kind(h, fp);
+    mcs_res_kind kind = mcs_results_kind(h, grp);
     mcs_status st = MCS_OK;
     if (kind == MCS_RES_NONE)
         return MCS_ERR(err, MCS_ERR_KEY,
                        "%s: %s: not in the results file (retune needs the "
                        "stage-3 wall force, docs/retune.md)",
-                       h5, fp);
-    if (kind == MCS_RES_GROUP) {
-        st = mcs_results_list(h, fp, &walls, &nw, err);
-        if (!st && nw == 0) st = MCS_ERR(err, MCS_ERR_KEY, "%s: %s: no wall in it", h5, fp);
+                       h5, grp);
+    if (kind == MCS_RES_GROUP && !fp[0] && mcs_results_has_attr(h, grp, "impact_wall")) {
+        walls = calloc(1, sizeof *walls);
+        if (!walls) return MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+        nw = 1;
+        st = mcs_results_attr_str(h, grp, "impact_wall", &walls[0], err);
+    } else if (kind == MCS_RES_GROUP) {
+        st = mcs_results_list(h, grp, &walls, &nw, err);
+        if (!st && nw == 0) st = MCS_ERR(err, MCS_ERR_KEY, "%s: %s: no wall in it", h5, grp);
     } else {
         nw = 1;
     }
     for (int w = 0; w < nw && !st; w++) {
-        if (kind == MCS_RES_GROUP)
-            snprintf(path, sizeof path, "%s/%s/force", fp, walls[w]);
-        else
-            snprintf(path, sizeof path, "%s", fp);
+        if (kind != MCS_RES_GROUP) {
+            snprintf(path, sizeof path, "%s", grp);
+        } else {
+            snprintf(path, sizeof path, "%s/%s/force_mean", grp, walls[w]);
+            if (fp[0] || !mcs_results_exists(h, path))
+                snprintf(path, sizeof path, "%s/%s/force", grp, walls[w]);
+        }
         st = read1(h, h5, path, &af, err);
         if (!st && af.n != (size_t)t->nt)
             st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: %s: %zu values for %d times", h5, path, af.n,
@@ -150,10 +160,15 @@ mcs_status tr_rt_read_target(const char *h5, const tr_rt_opts *o, tr_rt_target *
     if (st) return st;
     mcs_array at = {0}, aa = {0};
     char path[1024];
-    if (o->target_angle[0])
+    /* by default a generated motorcycle's fork angle channel, named as stage 1's
+     * (stage3_fe/s3_wallcase.h), else a keyword deck's joint */
+    if (o->target_angle[0]) {
         snprintf(path, sizeof path, "%s", o->target_angle);
-    else
-        snprintf(path, sizeof path, "/stage3/joints/%s/angle", o->joint);
+    } else {
+        snprintf(path, sizeof path, "/stage3/channels/%s_angle", o->joint);
+        if (!mcs_results_exists(h, path))
+            snprintf(path, sizeof path, "/stage3/joints/%s/angle", o->joint);
+    }
     st = read1(h, h5, "/stage3/time", &at, err);
     if (!st) st = read1(h, h5, path, &aa, err);
     int nt = st ? 0 : (int)at.n;
@@ -407,7 +422,10 @@ static mcs_status residuals_many(void *vc, int k, const double *Q, double *R, mc
             r[i] = w * (f[i] - c->tf[i]) / c->fscale;
             r[nt + i] = w * (a[i] - c->ta[i]) / c->ascale;
         }
-        if (q == k - 1) memcpy(c->sf, f, nt * sizeof(double)), memcpy(c->sa, a, nt * sizeof(double));
+        if (q == k - 1) {
+            memcpy(c->sf, f, nt * sizeof(double));
+            memcpy(c->sa, a, nt * sizeof(double));
+        }
     }
     free(P), free(F);
     return st;

@@ -24,10 +24,9 @@ typedef struct {
     char joint[TR_RT_NAME];          /* fork hinge joint ("moto_fork_deformation")         */
     char tyre_char[TR_RT_NAME];      /* tyre characteristic ("tyre_front")                 */
     char fork_char[TR_RT_NAME];      /* fork hinge characteristic ("fork_deformation")     */
-    char target_force[2 * TR_RT_NAME]; /* target's wall force: a dataset [nt], or a group
-                                        * whose members' `force` are summed ("/stage3/rigidwall") */
-    char target_angle[2 * TR_RT_NAME]; /* target's fork angle [nt] ("": the stage-3 joint
-                                        * /stage3/joints/<joint>/angle)                   */
+    char target_force[2 * TR_RT_NAME]; /* target's wall force dataset or walls' group ("":
+                                        * the default of tr_rt_read_target)              */
+    char target_angle[2 * TR_RT_NAME]; /* target's fork angle [nt] ("": the default)      */
     double end_time;                 /* compared span [s]; 0: the target's and scenario's shorter */
     double cfc;                      /* filter class on both signals (60)                  */
     double dt;                       /* common grid interval [s] (1e-4)                    */
@@ -71,8 +70,12 @@ mcs_status tr_rt_read_opts(tr_rt_opts *o, mcs_error *err);
 /* a parameter's index by name, -1 when unknown */
 int tr_rt_par_index(const char *name);
 
-/* read /stage3/time, o->target_force (summed over a group's members) and o->target_angle;
- * missing ones fail naming file and key */
+/* read /stage3/time, the wall force and the fork angle; missing ones fail naming file and key.
+ * Wall force: o->target_force (a dataset, or a group whose members' force are summed); by
+ * default /stage3/rigidwall/<wall>/force_mean (a penalty wall's interval mean, else its force)
+ * of the wall named by the attribute impact_wall of /stage3/rigidwall (a generated
+ * motorcycle's run), else summed over every wall. Angle: o->target_angle; by default
+ * /stage3/channels/<joint>_angle (a generated motorcycle's), else /stage3/joints/<joint>/angle */
 mcs_status tr_rt_read_target(const char *h5, const tr_rt_opts *o, tr_rt_target *t,
                              mcs_error *err);
 void tr_rt_target_free(tr_rt_target *t);

@@ -68,6 +68,7 @@ int main(void)
             return 1;
         }
         double w = wall_now() - w0, cpu = child_cpu() - c0;
+        tr_rt_result_free(&r);
         if (jobs == 1) w1 = w, memcpy(p1, r.p, sizeof p1);
         bad |= jobs > 1 && memcmp(p1, r.p, sizeof p1) != 0;
         printf("bench_retune: thesis barrier 150 ms, 2 free, -j %d: %d stage-1 runs, wall %.2f s "

@@ -1,8 +1,8 @@
 /* cmd_loop.c: `mcrash loop SCENARIO.yaml [--max-iter N] [-o DIR] [-j N]` (docs/loop.md): the
  * scenario's loop: block names a stage-3 wall case, the stage-1 scenario of the same case
  * (retuned) and a stage-1/2 crash scenario. Iteration k: stage 3 of the wall case (run once,
- * k = 1: nothing in the loop changes it) -> retune (from iteration k-1's parameters) -> stages 1
- * and 2 of the crash scenario with the retuned curves merged over it (DIR/iter_<k>.h5) ->
+ * k = 1: nothing in the loop changes it) -> retune (from iteration k-1's parameters) -> stage 1
+ * and stage 2 (on that motion) of the crash scenario with the retuned curves merged over it (DIR/iter_<k>.h5) ->
  * ratings (stage 1 against 3 after retune, stage 2 against 1 per shared channel) and injury
  * criteria. Stops when no rating changes by more than the tolerance, after --max-iter, or when
  * a stage fails (its exit status), and says why in DIR/loop.json. The stages run as child
@@ -132,6 +132,14 @@ static mcs_status retune(const loop_cfg *c, const char *wall_h5, const loop_iter
     if (!st) st = tr_rt_fit(o, b, &t, &r, err);
     tr_rt_target_free(&t);
     if (st) return st;
+    /* the compared curves beside the characteristics: curves_<k>.csv */
+    char csv[sizeof it->curves + 8];
+    snprintf(csv, sizeof csv, "%.*s.csv", (int)strlen(it->curves) - 5, it->curves);
+    FILE *fc = fopen(csv, "w");
+    int bad = !fc || tr_rt_write_csv(fc, &r);
+    bad |= fc && fclose(fc);
+    tr_rt_result_free(&r);
+    if (bad) return MCS_ERR(err, MCS_ERR_IO, "%s: cannot write", csv);
     memcpy(it->p, r.p, sizeof it->p);
     it->nrun = r.nfev, it->iso_force = r.iso_force, it->iso_angle = r.iso_angle;
     FILE *f = fopen(it->curves, "w");
@@ -212,14 +220,19 @@ static int iterate(const loop_args *a, const loop_cfg *c, loop_iter *its, int *n
             snprintf(reason, nr, "%s: cannot write", crash);
             return 2;
         }
-        snprintf(log, sizeof log, "%s/iter_%d.log", a->dir, k);
-        char *args[] = {"mcrash", "run", crash, "-o", it->results, "--stage", "all", "--quiet",
-                        NULL};
-        rc = run_stage(args, log);
-        if (rc) {
-            snprintf(reason, nr, "stages 1 and 2 of the crash scenario failed in iteration %d "
-                     "(exit status %d)", k, rc);
-            return rc;
+        /* stage 1, then stage 2 on its motion into the same file (not run --stage all: a
+         * crash scenario's stage3: block is not the loop's) */
+        for (int stage = 1; stage <= 2; stage++) {
+            snprintf(log, sizeof log, "%s/iter_%d_stage%d.log", a->dir, k, stage);
+            char *a1[] = {"mcrash", "stage1", crash, "-o", it->results, "--quiet", NULL};
+            char *a2[] = {"mcrash", "stage2",    crash, "--motion", it->results,
+                          "-o",     it->results, "--quiet", NULL};
+            rc = run_stage(stage == 1 ? a1 : a2, log);
+            if (rc) {
+                snprintf(reason, nr, "stage %d of the crash scenario failed in iteration %d "
+                         "(exit status %d)", stage, k, rc);
+                return rc;
+            }
         }
         st = tr_rt_write_curves(it->results, &o, &b, it->p, &err);
         if (!st) st = rate(it, &err);
@@ -239,9 +252,11 @@ static int iterate(const loop_args *a, const loop_cfg *c, loop_iter *its, int *n
             return 0;
         }
         loop_log_write(a->dir, a->scenario, its, k, 0, "running");
-        if (k == c->max_iter)
+        if (k == c->max_iter && prev)
             snprintf(reason, nr, "max-iter: %d iterations, the ratings still changed by %.4g",
                      k, d);
+        else if (k == c->max_iter)
+            snprintf(reason, nr, "max-iter: %d iterations, none to compare the ratings with", k);
     }
     return 0;
 }

@@ -1,10 +1,11 @@
 /* cmd_retune.c: `mcrash retune STAGE3.h5 --scenario STAGE1.yaml [-o CURVES.yaml]
- * [--end-time T] [-j N] [--json]` (translators/tr_retune.h, docs/retune.md): fits the stage-1 front
+ * [--end-time T] [-j N] [--csv FILE] [--json]` (translators/tr_retune.h, docs/retune.md): fits the stage-1 front
  * characteristics so that stage 1 reproduces the target's wall force and fork angle; writes
  * CURVES.yaml (default: curves.yaml) and /curves/<characteristic>/{loading,unloading} into
  * STAGE3.h5; prints the parameters and the ISO/TS 18571 ratings before and after. The
  * scenario's retune: block names the characteristics and the target's datasets; -j N runs N
- * stage-1 runs at once (default: the online processors). */
+ * stage-1 runs at once (default: the online processors); --csv writes the compared curves
+ * (target, before, after). */
 #include "cli/cli.h"
 #include "cli/cli_common.h"
 #include "translators/tr_retune.h"
@@ -17,7 +18,7 @@ static int usage_err(const char *msg)
 {
     fprintf(stderr,
             "retune: %s\nusage: mcrash retune STAGE3.h5 --scenario STAGE1.yaml "
-            "[-o CURVES.yaml] [--end-time T] [-j N] [--json]\n",
+            "[-o CURVES.yaml] [--end-time T] [-j N] [--csv FILE] [--json]\n",
             msg);
     return 2;
 }
@@ -53,7 +54,7 @@ static void print_json(const tr_rt_result *r, const char *out)
 int cli_retune(int argc, char **argv)
 {
     if (cli_wants_help(argv[0], argc, argv)) return 0;
-    const char *h5 = NULL, *out = "curves.yaml";
+    const char *h5 = NULL, *out = "curves.yaml", *csv = NULL;
     tr_rt_opts o = tr_rt_opts_default();
     int json = 0, jobs = 0;
     double end_time = 0;
@@ -63,6 +64,8 @@ int cli_retune(int argc, char **argv)
             o.scenario = argv[++i];
         else if (!strcmp(a, "-o") && i + 1 < argc)
             out = argv[++i];
+        else if (!strcmp(a, "--csv") && i + 1 < argc)
+            csv = argv[++i];
         else if (!strcmp(a, "--end-time") && i + 1 < argc) {
             char *end = NULL;
             end_time = strtod(argv[++i], &end);
@@ -108,6 +111,12 @@ int cli_retune(int argc, char **argv)
         }
     }
     if (!st) st = tr_rt_write_curves(h5, &o, &b, r.p, &err);
+    if (!st && csv) {
+        FILE *f = fopen(csv, "w");
+        if (!f || tr_rt_write_csv(f, &r) || fclose(f))
+            st = MCS_ERR(&err, MCS_ERR_IO, "%s: cannot write", csv);
+    }
+    if (!st) tr_rt_result_free(&r);
     if (st) {
         fprintf(stderr, "%s\n", err.msg);
         return mcs_status_exit_code(st);

@@ -78,6 +78,8 @@ static void test_converges(void)
     CHECK(p1 >= 0.5 && p1 <= 2 && p1 == p2);
     CHECK(f1 >= 0 && f1 <= 1 && f1 == f2);
     free(j);
+    snprintf(path, sizeof path, "%s/curves_2.csv", out);
+    CHECK(access(path, F_OK) == 0);
     snprintf(path, sizeof path, "%s/loop.csv", out);
     char *csv = slurp(path);
     CHECK_STR_CONTAINS(csv, "k,group,name,value\n1,stage1_vs_stage3,wall_force,");

@@ -151,6 +151,7 @@ static void test_identifiability(void)
     CHECK(tr_rt_read_base(&o, &b, &e) == MCS_OK);
     CHECK(tr_rt_fit(&o, &b, &t, &r, &e) == MCS_OK);
     if (e.status) fprintf(stderr, "%s\n", e.msg);
+    tr_rt_result_free(&r);
     tr_rt_target_free(&t);
     printf("retune: %d iterations %d runs (%s); p = %.5f %.5f %.5f %.5f; iso force %.3f -> "
            "%.3f, angle %.3f -> %.3f\n",
@@ -187,7 +188,8 @@ static void test_identifiability(void)
         fclose(f);
     }
     free(real);
-    snprintf(cmd, sizeof cmd, "retune %s --scenario %s -o %s -j 1 --json", h5, s1, curves);
+    snprintf(cmd, sizeof cmd, "retune %s --scenario %s -o %s -j 1 --csv %s/cmp.csv --json", h5, s1,
+             curves, dir);
     cli_result *c = cli_run(cmd);
     CHECK(c->status == 0);
     if (c->status) fprintf(stderr, "%s", c->err);
@@ -196,7 +198,19 @@ static void test_identifiability(void)
      * a fresh process whatever -j, docs/retune.md "Parallel runs") */
     char *out1 = strdup(c->out);
     CHECK_STR_CONTAINS(c->out, "\"fork_moment_scale\": {\"before\": 1, \"after\": 1,");
-    snprintf(cmd, sizeof cmd, "retune %s --scenario %s -o %s -j 2 --json", h5, s1, curves);
+    /* the compared curves: a header and one row per 0.1 ms of the 30 ms */
+    char csvp[256], line[512];
+    snprintf(csvp, sizeof csvp, "%s/cmp.csv", dir);
+    FILE *fc = fopen(csvp, "r");
+    int rows = 0;
+    CHECK(fc && fgets(line, sizeof line, fc));
+    CHECK_STR_CONTAINS(line, "time [s], force_stage3 [N], force_before [N], force_after [N]");
+    while (fc && fgets(line, sizeof line, fc))
+        rows++;
+    if (fc) fclose(fc);
+    CHECK(rows == 301);
+    snprintf(cmd, sizeof cmd, "retune %s --scenario %s -o %s -j 2 --csv %s/cmp.csv --json", h5, s1,
+             curves, dir);
     c = cli_run(cmd);
     CHECK(c->status == 0);
     CHECK(out1 && strcmp(out1, c->out) == 0);

@@ -519,6 +519,17 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
     if (!rr) st = MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
     if (!st) st = residuals(&c, q, rr, err);
     if (!st) st = rate(&c, &r->iso_force0, &r->iso_angle0, err);
+    r->nt = c.nt;
+    r->t = malloc(7 * nt * sizeof(double));
+    if (!st && !r->t) st = MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+    if (!st) {
+        r->tf = r->t + nt, r->ta = r->tf + nt, r->f0 = r->ta + nt, r->a0 = r->f0 + nt;
+        r->f1 = r->a0 + nt, r->a1 = r->f1 + nt;
+        for (size_t i = 0; i < nt; i++)
+            r->t[i] = (double)i * c.dt;
+        memcpy(r->tf, tf, nt * sizeof(double)), memcpy(r->ta, ta, nt * sizeof(double));
+        memcpy(r->f0, c.sf, nt * sizeof(double)), memcpy(r->a0, c.sa, nt * sizeof(double));
+    }
     if (!st && o->scan && c.nfree > 0) st = scan_start(&c, q, lo, hi, rr, err);
     tr_lm_result lr = {0};
     tr_lm_opts lo_ = tr_lm_opts_default();
@@ -531,11 +542,33 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
         st = residuals(&c, q, rr, err);
     }
     if (!st) st = rate(&c, &r->iso_force, &r->iso_angle, err);
+    if (!st) {
+        memcpy(r->f1, c.sf, nt * sizeof(double));
+        memcpy(r->a1, c.sa, nt * sizeof(double));
+    }
     r->cost0 = lr.cost0, r->cost = lr.cost, r->iter = lr.iter, r->nfev = c.nrun;
     r->why = lr.why ? lr.why : "nothing to fit";
+    if (st) tr_rt_result_free(r);
     free(rr);
     free(buf);
     return st;
+}
+
+void tr_rt_result_free(tr_rt_result *r)
+{
+    free(r->t);
+    r->t = r->tf = r->ta = r->f0 = r->a0 = r->f1 = r->a1 = NULL;
+    r->nt = 0;
+}
+
+int tr_rt_write_csv(FILE *f, const tr_rt_result *r)
+{
+    fprintf(f, "time [s], force_stage3 [N], force_before [N], force_after [N], "
+               "angle_stage3 [rad], angle_before [rad], angle_after [rad]\n");
+    for (int i = 0; r->t && i < r->nt; i++)
+        fprintf(f, "%.6g, %.9g, %.9g, %.9g, %.9g, %.9g, %.9g\n", r->t[i], r->tf[i], r->f0[i],
+                r->f1[i], r->ta[i], r->a0[i], r->a1[i]);
+    return ferror(f) ? -1 : 0;
 }
 
 mcs_status tr_rt_write_curves(const char *h5, const tr_rt_opts *o, const tr_rt_base *b,

@@ -58,7 +58,16 @@ typedef struct {
     double cost0, cost;                    /* objective before / after                     */
     int iter, nfev;
     const char *why;
+    /* the compared curves on the common grid (CFC-filtered): time from the target's first
+     * [s], the target's force [N] and angle [rad], stage 1's before and after (nt each) */
+    int nt;
+    double *t, *tf, *ta, *f0, *a0, *f1, *a1;
 } tr_rt_result;
+
+void tr_rt_result_free(tr_rt_result *r);
+
+/* the compared curves as CSV (time [s], then force [N] and angle [rad]: target, before, after) */
+int tr_rt_write_csv(FILE *f, const tr_rt_result *r);
 
 tr_rt_opts tr_rt_opts_default(void);
 const char *tr_rt_par_name(int i);

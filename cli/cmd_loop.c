@@ -3,8 +3,8 @@
  * (retuned) and a stage-1/2 crash scenario. Iteration k: stage 3 of the wall case (run once,
  * k = 1: nothing in the loop changes it) -> retune (from iteration k-1's parameters) -> stage 1
  * and stage 2 (on that motion) of the crash scenario with the retuned curves merged over it (DIR/iter_<k>.h5) ->
- * ratings (stage 1 against 3 after retune, stage 2 against 1 per shared channel) and injury
- * criteria. Stops when no rating changes by more than the tolerance, after --max-iter, or when
+ * ratings (stage 1 against 3 after retune, stage 2 against 1 per shared channel and body
+ * component, translators/tr_stages.h) and injury criteria. Stops when no rating changes by more than the tolerance, after --max-iter, or when
  * a stage fails (its exit status), and says why in DIR/loop.json. The stages run as child
  * processes of this executable (their OpenMP threads never live in this process, whose retune
  * forks its own stage-1 runs). */
@@ -163,16 +163,6 @@ static int write_crash(const loop_cfg *c, const char *dir, const loop_iter *it, 
     return fclose(f) ? -1 : 0;
 }
 
-/* ratings and criteria of iteration k's results file */
-static mcs_status rate(loop_iter *it, mcs_error *err)
-{
-    mcs_status st = an_stages_rate(it->results, 1, 2, 0, &it->rat, &it->nrat, err);
-    for (int s = 0; s < 2 && !st; s++) {
-        int used = 0;
-        st = an_injury_evaluate(it->results, s + 1, &it->crit[s], &it->ncrit[s], &used, err);
-    }
-    return st;
-}
 
 typedef struct {
     const char *scenario, *dir;
@@ -235,15 +225,15 @@ static int iterate(const loop_args *a, const loop_cfg *c, loop_iter *its, int *n
             }
         }
         st = tr_rt_write_curves(it->results, &o, &b, it->p, &err);
-        if (!st) st = rate(it, &err);
+        if (!st) st = tr_compare_stages(it->results, 1, 2, &it->cmp, &err);
         if (st) {
             snprintf(reason, nr, "rating iteration %d failed: %s", k, err.msg);
             return mcs_status_exit_code(st);
         }
         double d = prev ? loop_rating_change(prev, it) : INFINITY;
         printf("loop: iteration %d: stage 1 vs 3 wall force %.3f, fork angle %.3f; stage 2 vs 1: "
-               "%d channels; %d retune runs; largest rating change %.4g\n",
-               k, it->iso_force, it->iso_angle, it->nrat, it->nrun, d);
+               "%d curves; %d retune runs; largest rating change %.4g\n",
+               k, it->iso_force, it->iso_angle, it->cmp.nrating, it->nrun, d);
         fflush(stdout);
         if (d <= c->tol) {
             *converged = 1;

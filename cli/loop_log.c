@@ -9,10 +9,13 @@
 
 void loop_iter_free(loop_iter *it)
 {
-    free(it->rat);
-    free(it->crit[0]);
-    free(it->crit[1]);
-    it->rat = NULL, it->crit[0] = it->crit[1] = NULL;
+    tr_stage_compare_free(&it->cmp);
+}
+
+/* a shared curve's ISO/TS 18571 rating, NaN when it could not be rated */
+static double iso(const tr_stage_rating *r)
+{
+    return r->iso_ok ? r->iso.rating : NAN;
 }
 
 static double change(double a, double b)
@@ -25,12 +28,14 @@ static double change(double a, double b)
 double loop_rating_change(const loop_iter *a, const loop_iter *b)
 {
     double d = fmax(change(a->iso_force, b->iso_force), change(a->iso_angle, b->iso_angle));
-    for (int i = 0; i < b->nrat; i++) {
+    const tr_stage_compare *ca = &a->cmp, *cb = &b->cmp;
+    for (int i = 0; i < cb->nrating; i++) {
         double ra = NAN;
         int found = 0;
-        for (int j = 0; j < a->nrat && !found; j++)
-            if (!strcmp(a->rat[j].name, b->rat[i].name)) ra = a->rat[j].rating, found = 1;
-        d = fmax(d, found ? change(ra, b->rat[i].rating) : 1);
+        for (int j = 0; j < ca->nrating && !found; j++)
+            if (!strcmp(ca->rating[j].name, cb->rating[i].name))
+                ra = iso(&ca->rating[j]), found = 1;
+        d = fmax(d, found ? change(ra, iso(&cb->rating[i])) : 1);
     }
     return d;
 }
@@ -70,20 +75,22 @@ static void json_iter(FILE *f, const loop_iter *it)
     fprintf(f, ", \"fork_angle\": ");
     jnum(f, it->iso_angle);
     fprintf(f, "},\n       \"stage2_vs_stage1\": {");
-    for (int i = 0; i < it->nrat; i++) {
+    const tr_stage_compare *c = &it->cmp;
+    for (int i = 0; i < c->nrating; i++) {
         fprintf(f, "%s", i ? ", " : "");
-        jstr(f, it->rat[i].name);
+        jstr(f, c->rating[i].name);
         fprintf(f, ": ");
-        jnum(f, it->rat[i].rating);
+        jnum(f, iso(&c->rating[i]));
     }
     fprintf(f, "}},\n     \"criteria\": {");
     for (int s = 0; s < 2; s++) {
         fprintf(f, "%s\"stage%d\": {", s ? ", " : "", s + 1);
-        for (int i = 0; i < it->ncrit[s]; i++) {
-            fprintf(f, "%s", i ? ", " : "");
-            jstr(f, it->crit[s][i].key);
+        for (int i = 0, n = 0; i < c->ncrit; i++) {
+            if (isnan(c->crit[i].value[s])) continue;
+            fprintf(f, "%s", n++ ? ", " : "");
+            jstr(f, c->crit[i].key);
             fprintf(f, ": ");
-            jnum(f, it->crit[s][i].value);
+            jnum(f, c->crit[i].value[s]);
         }
         fprintf(f, "}");
     }
@@ -99,12 +106,15 @@ static void csv_iter(FILE *f, const loop_iter *it)
 {
     fprintf(f, "%d,stage1_vs_stage3,wall_force,%.10g\n", it->k, it->iso_force);
     fprintf(f, "%d,stage1_vs_stage3,fork_angle,%.10g\n", it->k, it->iso_angle);
-    for (int i = 0; i < it->nrat; i++)
-        fprintf(f, "%d,stage2_vs_stage1,%s,%.10g\n", it->k, it->rat[i].name, it->rat[i].rating);
+    const tr_stage_compare *c = &it->cmp;
+    for (int i = 0; i < c->nrating; i++)
+        fprintf(f, "%d,stage2_vs_stage1,%s,%.10g\n", it->k, c->rating[i].name,
+                iso(&c->rating[i]));
     for (int s = 0; s < 2; s++)
-        for (int i = 0; i < it->ncrit[s]; i++)
-            fprintf(f, "%d,criteria_stage%d,%s,%.10g\n", it->k, s + 1, it->crit[s][i].key,
-                    it->crit[s][i].value);
+        for (int i = 0; i < c->ncrit; i++)
+            if (!isnan(c->crit[i].value[s]))
+                fprintf(f, "%d,criteria_stage%d,%s,%.10g\n", it->k, s + 1, c->crit[i].key,
+                        c->crit[i].value[s]);
     for (int i = 0; i < TR_RT_NPAR; i++)
         fprintf(f, "%d,parameters,%s,%.10g\n", it->k, tr_rt_par_name(i), it->p[i]);
 }

@@ -3,9 +3,8 @@
 #ifndef MCS_LOOP_LOG_H
 #define MCS_LOOP_LOG_H
 
-#include "analysis/an_injury.h"
-#include "analysis/an_stages.h"
 #include "translators/tr_retune.h"
+#include "translators/tr_stages.h"
 
 typedef struct {
     int k;                          /* iteration, from 1                                 */
@@ -14,10 +13,8 @@ typedef struct {
     double p[TR_RT_NPAR];           /* retune's parameters                               */
     int nrun;                       /* retune's stage-1 runs                             */
     double iso_force, iso_angle;    /* stage 1 against stage 3 after retune (ISO 18571)  */
-    an_stage_rating *rat;           /* stage 2 against stage 1, per shared channel       */
-    int nrat;
-    an_injury_row *crit[2];         /* injury criteria of stages 1 and 2                 */
-    int ncrit[2];
+    tr_stage_compare cmp;           /* stage 2 against stage 1: shared channels and body
+                                     * components (ISO/TS 18571 taken), both stages' criteria */
 } loop_iter;
 
 void loop_iter_free(loop_iter *it);

@@ -29,7 +29,7 @@ static int kind_of(const char *type, fe_section_type *sec)
 }
 
 /* an element of block b in the builder's slots (c: rows of the mesh); the inverse of
- * fe/fe_out_mesh.c's shape(): tri3 a quad with n3 = n4; tet4 (a b c d) the hex a b c c d d d d;
+ * fe/out/fe_out_mesh.c's shape(): tri3 a quad with n3 = n4; tet4 (a b c d) the hex a b c c d d d d;
  * wedge6 (a b c | d e f) the pentahedron a b e d c c f f */
 static int slots(const mcs_mesh_block *b, const int *c, int out[10])
 {

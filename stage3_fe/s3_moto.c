@@ -3,6 +3,7 @@
 #include "stage3_fe/s3_moto.h"
 #include "stage3_fe/s3_model_file.h"
 
+#include "fe/fe_contact.h"
 #include "fe/fe_elem.h" /* fe_shell_frame: the kernel's shell area, so the masses agree */
 #include "fe/fe_joint.h"
 #include "fe/fe_scn_build.h"
@@ -63,6 +64,7 @@ typedef struct {
     double *x;        /* (cap x 3) their positions */
     signed char *grp; /* (cap) their group */
     acc a[G_N];
+    double spin_c[G_N][3], spin_w[G_N]; /* wheels: axle centre [m], spin about +y [rad/s] */
     double prho[64], pt[64]; /* density and thickness of the builder's parts (by index) */
     mcs_error *err;
     mcs_status st;
@@ -130,6 +132,7 @@ static int node(gen *g, const double x[3], int grp)
 }
 
 static void acc_add(acc *a, double m, const double x[3]);
+static void node_vel(gen *g, int n, int k);
 
 /* a node with a point mass m (a spring's end on a rigid body: the spring's step needs it) */
 static int mass_node(gen *g, const double x[3], int grp, double m)
@@ -140,10 +143,23 @@ static int mass_node(gen *g, const double x[3], int grp, double m)
     md.node = n, md.mass = m;
     g->st = fe_builder_add_mass(g->b, &md, g->err);
     if (grp >= 0) acc_add(&g->a[grp], m, x);
+    node_vel(g, n, grp);
     return n;
 }
 
 static const double *xof(const gen *g, int idx) { return g->x + 3 * (idx - g->base); }
+
+/* the initial velocity of our node n (builder index) in group k (-1 none): the motorcycle's,
+ * plus a wheel's spin w e_y x r about its axle (a point mass has no part to take it from) */
+static void node_vel(gen *g, int n, int k)
+{
+    const double *V = g->o->velocity, *x = xof(g, n);
+    const double w = k >= 0 ? g->spin_w[k] : 0, *c = k >= 0 ? g->spin_c[k] : V;
+    if (g->st || (V[0] == 0 && V[1] == 0 && V[2] == 0 && w == 0)) return;
+    const double r[3] = {x[0] - c[0], x[1] - c[1], x[2] - c[2]};
+    const double v[3] = {V[0] + w * r[2], V[1], V[2] - w * r[0]};
+    g->st = fe_builder_node_velocity(g->b, n, v, g->err);
+}
 
 static void acc_add(acc *a, double m, const double x[3])
 {
@@ -390,13 +406,10 @@ static void wheel(gen *g, const char *which, int grp, const double c[3], double 
                  tn[i1 * (nk + 1) + k + 1], tn[i1 * (nk + 1) + k]);
         }
     free(rn), free(tn);
-    const double *V = g->o->velocity, w = V[0] / R;
-    if (w != 0)
-        for (int n = first; n < g->n && !g->st; n++) {
-            const double *x = g->x + 3 * n, r[3] = {x[0] - c[0], x[1] - c[1], x[2] - c[2]};
-            double v[3] = {V[0] + w * r[2], V[1], V[2] - w * r[0]}; /* w e_y x r */
-            g->st = fe_builder_node_velocity(g->b, g->base + n, v, g->err);
-        }
+    g->spin_w[grp] = g->o->velocity[0] / R; /* rolling: w = v_x / R */
+    memcpy(g->spin_c[grp], c, sizeof g->spin_c[grp]);
+    if (g->spin_w[grp] != 0)
+        for (int n = first; n < g->n && !g->st; n++) node_vel(g, g->base + n, grp);
 }
 
 /* ---- the stage-1 model ---- */
@@ -494,6 +507,20 @@ static void joint(gen *g, const char *name, fe_joint_type type, const char *a, c
     g->st = fe_builder_add_joint(g->b, &j, g->err);
 }
 
+/* a two-surface contact between the parts <pre>_<a[i]> and <pre>_<b[j]> */
+static void contact(gen *g, const char *name, const char *const *a, int na, const char *const *b,
+                    int nb, double mu)
+{
+    if (g->st) return;
+    fe_contact_desc d = fe_contact_desc_default();
+    snprintf(d.name, sizeof d.name, "%.31s_%.31s", g->pre, name);
+    d.type = FE_CONTACT_TWO_SURFACE;
+    d.nslave = na, d.nmaster = nb, d.friction = mu;
+    for (int i = 0; i < na; i++) snprintf(d.slave[i], FE_NAME_MAX, "%.31s_%.31s", g->pre, a[i]);
+    for (int i = 0; i < nb; i++) snprintf(d.master[i], FE_NAME_MAX, "%.31s_%.31s", g->pre, b[i]);
+    g->st = fe_builder_add_contact(g->b, &d, g->err);
+}
+
 static void nrb(gen *g, const char *name, const int *nodes, int n)
 {
     char nm[FE_NAME_MAX];
@@ -545,6 +572,7 @@ static void ballast(gen *g, int k, const s1body *s, const mcs_node *at)
             fe_mass_desc md = {0};
             md.node = nodes[2 * i + sg], md.mass = mb / 6;
             g->st = fe_builder_add_mass(g->b, &md, g->err);
+            node_vel(g, nodes[2 * i + sg], k);
             if (g->st) return;
         }
     }
@@ -746,6 +774,12 @@ static void build(gen *g, const mcs_node *root)
     joint(g, "front_axle", FE_JOINT_REVOLUTE, "front_wheel", "lower_fork", Af, ey, root);
     joint(g, "swing_arm_pivot", FE_JOINT_REVOLUTE, "swing_arm", "frame", P, ey, root);
     joint(g, "rear_axle", FE_JOINT_REVOLUTE, "rear_wheel", "swing_arm", Ar, ey, root);
+
+    /* the front wheel against the engine and fairing (stage 1's moto_front_wheel_engine):
+     * steel/aluminium on rubber and metal, friction 0.3 (assumed) */
+    static const char *const wh[] = {"front_tyre", "front_rim", "front_wheel"};
+    static const char *const en[] = {"frame", "fairing"};
+    contact(g, "wheel_engine", wh, 3, en, 2, 0.3);
 
     /* masses: six point masses per rigid body; the fork-deformation body's rest on its tubes */
     for (int k = 0; k < G_N && !g->st; k++) {

@@ -64,7 +64,10 @@ mcs_status tr_rt_read_target(const char *h5, const char *joint, tr_rt_target *t,
     mcs_array at = {0}, aa = {0}, af = {0};
     char path[512], **walls = NULL;
     int nw = 0;
-    snprintf(path, sizeof path, "/stage3/joints/%s/angle", joint);
+    /* a generated motorcycle's fork angle is a channel named as stage 1's (stage3_fe/
+     * s3_wallcase.h); a keyword deck's joint is a joint */
+    snprintf(path, sizeof path, "/stage3/channels/%s_angle", joint);
+    if (!mcs_results_exists(h, path)) snprintf(path, sizeof path, "/stage3/joints/%s/angle", joint);
     st = read1(h, h5, "/stage3/time", &at, err);
     if (!st) st = read1(h, h5, path, &aa, err);
     if (!st && !mcs_results_exists(h, "/stage3/rigidwall"))
@@ -72,7 +75,14 @@ mcs_status tr_rt_read_target(const char *h5, const char *joint, tr_rt_target *t,
                      "%s: /stage3/rigidwall: not in the results file "
                      "(retune needs the stage-3 wall force, docs/retune.md)",
                      h5);
-    if (!st) st = mcs_results_list(h, "/stage3/rigidwall", &walls, &nw, err);
+    /* the impact wall alone when stage 3 named it (not the ground), else every wall */
+    if (!st && mcs_results_has_attr(h, "/stage3/rigidwall", "impact_wall")) {
+        walls = calloc(1, sizeof *walls);
+        if (!walls) st = MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+        if (!st) st = mcs_results_attr_str(h, "/stage3/rigidwall", "impact_wall", &walls[0], err);
+        nw = st ? 0 : 1;
+    } else if (!st)
+        st = mcs_results_list(h, "/stage3/rigidwall", &walls, &nw, err);
     if (!st && nw == 0) st = MCS_ERR(err, MCS_ERR_KEY, "%s: /stage3/rigidwall: no wall in it", h5);
     int nt = st ? 0 : (int)at.n;
     if (!st && (nt < 10 || aa.n != at.n))
@@ -90,7 +100,9 @@ mcs_status tr_rt_read_target(const char *h5, const char *joint, tr_rt_target *t,
         memcpy(t->angle, aa.v, (size_t)nt * sizeof(double));
     }
     for (int w = 0; w < nw && !st; w++) {
-        snprintf(path, sizeof path, "/stage3/rigidwall/%s/force", walls[w]);
+        snprintf(path, sizeof path, "/stage3/rigidwall/%s/force_mean", walls[w]);
+        if (!mcs_results_exists(h, path)) /* a penalty wall's interval mean, else the force */
+            snprintf(path, sizeof path, "/stage3/rigidwall/%s/force", walls[w]);
         st = read1(h, h5, path, &af, err);
         if (!st && af.n != (size_t)nt)
             st =

@@ -54,8 +54,11 @@ typedef struct {
 tr_rt_opts tr_rt_opts_default(void);
 const char *tr_rt_par_name(int i);
 
-/* read /stage3/time, the sum of /stage3/rigidwall/<wall>/force over every wall and
- * /stage3/joints/<joint>/angle; missing ones fail naming file and key */
+/* read /stage3/time, the wall force and the fork angle; missing ones fail naming file and key.
+ * Wall force: /stage3/rigidwall/<wall>/force_mean (a penalty wall's interval mean, else its
+ * force) of the wall named by the attribute impact_wall of /stage3/rigidwall (a generated
+ * motorcycle's run), else summed over every wall. Angle:
+ * /stage3/channels/<joint>_angle (a generated motorcycle's), else /stage3/joints/<joint>/angle */
 mcs_status tr_rt_read_target(const char *h5, const char *joint, tr_rt_target *t, mcs_error *err);
 void tr_rt_target_free(tr_rt_target *t);
 

@@ -13,6 +13,8 @@
  *     issue's bounds). */
 #include "tests/harness.h"
 #include "tests/figures.h"
+#include "tests/cli_util.h"
+#include "tests/s3_test_util.h"
 
 #include "core/mcs_results.h"
 #include "fe/fe_scn_build.h"
@@ -209,12 +211,55 @@ done:
     mcs_results_close(&h);
 }
 
+/* the commands: `run` (all stages) puts stage 1 and stage 3 into one file and one JSON object;
+ * `stage3` and `run --stage 3` run the stage3: block alone */
+static void test_commands(void)
+{
+    char scn[128], out[128], args[512];
+    snprintf(scn, sizeof scn, "%s/two.yaml", tmpdir);
+    snprintf(out, sizeof out, "%s/two.h5", tmpdir);
+    write_text(scn, "mcrash: 1\nname: two stages\nsimulation: {end_time: 2 ms, output_rate: 5 kHz}\n"
+                    "bodies:\n  - {name: ball, mass: 1 kg, inertia: [0.01, 0.01, 0.01], "
+                    "position: [0, 0, 1 m], velocity: [1 m/s, 0, 0]}\n"
+                    "stage3:\n  simulation: {end_time: 1 ms}\n  fe:\n    parts:\n"
+                    "      - name: block\n"
+                    "        mesh: {generate: box, size: [20 mm, 20 mm, 20 mm], "
+                    "divisions: [2, 2, 2]}\n"
+                    "        section: {type: solid}\n"
+                    "        material: {model: elastic, density: 1000, youngs_modulus: 10 MPa, "
+                    "poisson: 0.3}\n"
+                    "        initial_velocity: [0, 0, -1 m/s]\n"
+                    "    rigid_walls: [{name: floor, point: [0, 0, -10 mm], normal: [0, 0, 1]}]\n");
+    snprintf(args, sizeof args, "run %s -o %s --json", scn, out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "\"stage1\": {\"steps\"");
+    CHECK_STR_CONTAINS(r->out, "\"stage3\": {\"steps\"");
+    CHECK(strstr(r->out, "}}\n") != NULL && strchr(r->out, '\n') == strrchr(r->out, '\n'));
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    CHECK(h && mcs_results_exists(h, "/stage1/time") && mcs_results_exists(h, "/stage3/time"));
+    CHECK(h && fabs(last_of(h, "/stage1/time") - 2e-3) < 1e-9); /* each stage its end time */
+    CHECK(h && last_of(h, "/stage3/time") > 0.5e-3 && last_of(h, "/stage3/time") <= 1e-3);
+    mcs_results_close(&h);
+    snprintf(args, sizeof args, "stage3 %s -o %s --quiet", scn, out);
+    r = cli_run(args);
+    CHECK(r->status == 0);
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    CHECK(h && !mcs_results_exists(h, "/stage1") && mcs_results_exists(h, "/stage3/time"));
+    mcs_results_close(&h);
+    snprintf(args, sizeof args, "run %s -o %s --stage 3 --quiet", scn, out);
+    CHECK(cli_run(args)->status == 0);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_s3wc_XXXXXX");
     if (!mkdtemp(tmpdir)) return 1;
     s3_moto_register();
     RUN(test_compile);
+    RUN(test_commands);
     RUN(test_coarse);
     char cmd[96];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);

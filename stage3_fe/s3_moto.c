@@ -41,6 +41,8 @@
 #define ABS_E 2.2e9 /* fairing and seat pan plastic */
 #define ABS_RHO 1050.0
 #define RUBBER_E 0.1e9 /* tyre carcass (cord-reinforced rubber, effective) */
+#define SPOKE_T 0.006  /* cast spoke plate, aluminium (A356-T6 class, sigma_y 200 MPa) [m] */
+
 #define RUBBER_RHO 1100.0
 
 enum { G_FRAME, G_UPPER, G_DEFORM, G_LOWER, G_FWHEEL, G_SWING, G_RWHEEL, G_N };
@@ -65,6 +67,7 @@ typedef struct {
     signed char *grp; /* (cap) their group */
     acc a[G_N];
     double spin_c[G_N][3], spin_w[G_N]; /* wheels: axle centre [m], spin about +y [rad/s] */
+    double tyre_r2[G_N];                /* wheels: mean square radius of the tyre's nodes [m^2] */
     double prho[64], pt[64]; /* density and thickness of the builder's parts (by index) */
     mcs_error *err;
     mcs_status st;
@@ -335,6 +338,8 @@ static void wheel(gen *g, const char *which, int grp, const double c[3], double 
     int hub = part(g, nm, M_RIGID, 0.004, AL_RHO, AL_E, 0);
     snprintf(nm, sizeof nm, "%s_rim", which);
     int rim = part(g, nm, M_PLASTIC, 0.004, AL_RHO, AL_E, 200e6);
+    snprintf(nm, sizeof nm, "%s_spokes", which);
+    int spk = part(g, nm, M_PLASTIC, SPOKE_T, AL_RHO, AL_E, 200e6);
     snprintf(nm, sizeof nm, "%s_tyre", which);
     int tyre = part(g, nm, M_ELASTIC, 0.006, RUBBER_RHO, RUBBER_E, 0);
     if (g->st) return;
@@ -383,7 +388,7 @@ static void wheel(gen *g, const char *which, int grp, const double c[3], double 
             }
         for (int k = 0; k < nr; k++)
             for (int j = 0; j < ny; j++)
-                quad(g, hub, sp[k * (ny + 1) + j], sp[(k + 1) * (ny + 1) + j],
+                quad(g, spk, sp[k * (ny + 1) + j], sp[(k + 1) * (ny + 1) + j],
                      sp[(k + 1) * (ny + 1) + j + 1], sp[k * (ny + 1) + j + 1]);
     }
     /* tyre section: r = RIM_R + ar cos(psi), y = sin(psi) (wr/2 + (W - wr)/2 cos(psi)), psi from
@@ -405,6 +410,12 @@ static void wheel(gen *g, const char *which, int grp, const double c[3], double 
             quad(g, tyre, tn[i * (nk + 1) + k], tn[i * (nk + 1) + k + 1],
                  tn[i1 * (nk + 1) + k + 1], tn[i1 * (nk + 1) + k]);
         }
+    double r2 = 0; /* the tyre's nodes (their rim edges too), for the wheel's ballast */
+    for (int i = 0; i < nt * (nk + 1); i++) {
+        const double *x = xof(g, tn[i]);
+        r2 += ((x[0] - c[0]) * (x[0] - c[0]) + (x[2] - c[2]) * (x[2] - c[2])) / (nt * (nk + 1));
+    }
+    g->tyre_r2[grp] = r2;
     free(rn), free(tn);
     g->spin_w[grp] = g->o->velocity[0] / R; /* rolling: w = v_x / R */
     memcpy(g->spin_c[grp], c, sizeof g->spin_c[grp]);
@@ -536,6 +547,38 @@ static void extra(gen *g, const char *host, const int *nodes, int n)
 }
 
 /* six point masses on host making the group's mass, centre and inertia those of body s */
+/* a wheel's missing mass spread on its rim band (radius RIM_R) and its tyre's nodes (mean
+ * square radius tyre_r2), split so that the spin inertia about the axle is the stage-1 body's
+ * Iyy: m_r RIM_R^2 + m_t tyre_r2 = Iyy - the mesh's, m_r + m_t = the rest of the mass (rubber
+ * and rim metal the shells' thicknesses leave out); both are rings about the axle, so the centre
+ * stays there (the stage-1 wheel's). Not six rigid point masses: they would sit near the tyre's
+ * radius and strike a wall as rigid points. Ixx = Izz follow from the rings (not matched) */
+static void wheel_ballast(gen *g, int k, const s1body *s, const char *which, const mcs_node *at)
+{
+    if (g->st) return;
+    const acc *a = &g->a[k];
+    const double mb = s->m - a->m, *c = s->c, rt2 = g->tyre_r2[k], rr2 = RIM_R * RIM_R;
+    double iy = 0; /* the mesh's spin inertia about the axle (y through c) */
+    for (int i = 0; i < 3; i += 2) iy += a->S[i][i] - 2 * c[i] * a->mx[i] + a->m * c[i] * c[i];
+    const double mt = (s->I[1] - iy - mb * rr2) / (rt2 - rr2);
+    if (!(mb > 0) || !(rt2 > rr2) || mt < 0 || mt > mb) {
+        g->st = mcs_node_error(at, g->err, MCS_ERR_RANGE,
+                               "motorcycle: the %s wheel's mesh (%.3g kg, spin inertia %.3g kg "
+                               "m^2) cannot be brought to the stage-1 body's %.3g kg, %.3g kg m^2",
+                               which, a->m, iy, s->m, s->I[1]);
+        return;
+    }
+    const char *band[2] = {"tyre", "rim"};
+    const double mass[2] = {mt, mb - mt};
+    for (int i = 0; i < 2 && !g->st; i++) {
+        if (!(mass[i] > 0)) continue;
+        fe_mass_desc md = {0};
+        md.node = -1, md.where = FE_WHERE_ALL, md.mass = mass[i];
+        snprintf(md.part, sizeof md.part, "%.31s_%.15s_%.15s", g->pre, which, band[i]);
+        g->st = fe_builder_add_mass(g->b, &md, g->err);
+    }
+}
+
 static void ballast(gen *g, int k, const s1body *s, const mcs_node *at)
 {
     if (g->st) return;
@@ -777,12 +820,16 @@ static void build(gen *g, const mcs_node *root)
 
     /* the front wheel against the engine and fairing (stage 1's moto_front_wheel_engine):
      * steel/aluminium on rubber and metal, friction 0.3 (assumed) */
-    static const char *const wh[] = {"front_tyre", "front_rim", "front_wheel"};
+    static const char *const wh[] = {"front_tyre", "front_rim", "front_spokes", "front_wheel"};
     static const char *const en[] = {"frame", "fairing"};
-    contact(g, "wheel_engine", wh, 3, en, 2, 0.3);
+    contact(g, "wheel_engine", wh, 4, en, 2, 0.3);
 
     /* masses: six point masses per rigid body; the fork-deformation body's rest on its tubes */
     for (int k = 0; k < G_N && !g->st; k++) {
+        if (k == G_FWHEEL || k == G_RWHEEL) {
+            wheel_ballast(g, k, &s[k], k == G_FWHEEL ? "front" : "rear", root);
+            continue;
+        }
         if (host_of[k]) {
             ballast(g, k, &s[k], root);
             continue;

@@ -18,6 +18,7 @@ static const struct {
     const char *comp;
     int role;
 } roles[] = {{"front_tyre", R_TYRE}, {"front_rim", R_RIM},     {"front_wheel", R_RIM},
+             {"front_spokes", R_RIM},
              {"stanchion_l", R_FORK}, {"stanchion_r", R_FORK}, {"frame", R_FRAME},
              {"fairing", R_FRAME},    {"head_tube", R_FRAME},  {"frame_l", R_FRAME},
              {"frame_r", R_FRAME},    {"tank", R_FRAME}};
@@ -184,11 +185,11 @@ static double fork_angle(const fe_state *s, const s3_wallcase *c)
     return atan2(Rr[0][2], Rr[0][0]);
 }
 
-/* 1 when a stanchion (role R_FORK) has plastic strain at some shell point */
-static int fork_yielded(const fe_model *m, const fe_state *s, const s3_wallcase *c)
+/* 1 when a part of role `role` has plastic strain at some shell point */
+static int yielded(const fe_model *m, const fe_state *s, const s3_wallcase *c, int role)
 {
     for (int e = 0; e < m->nshell; e++) {
-        if (c->role[m->shell_part[e]] != R_FORK) continue;
+        if (c->role[m->shell_part[e]] != role) continue;
         for (int k = 0; k < m->nip_max; k++)
             if (s->shell_epsp[(size_t)e * m->nip_max + k] > 0) return 1;
     }
@@ -247,7 +248,8 @@ mcs_status s3_wallcase_sample(const fe_model *m, const fe_state *s, s3_wallcase 
         if (c->role[p] == R_RIM) begin(c, 1, t);
         if (c->role[p] == R_FRAME) begin(c, 3, t);
     }
-    if (isnan(c->t[2]) && fork_yielded(m, s, c)) begin(c, 2, t);
+    if (isnan(c->t[1]) && yielded(m, s, c, R_RIM)) begin(c, 1, t); /* the rim collapsing */
+    if (isnan(c->t[2]) && yielded(m, s, c, R_FORK)) begin(c, 2, t);
     if (we) begin(c, 3, t);
     int cur = -1; /* the phase begun last */
     for (int k = 0; k < S3_NPHASE; k++)

@@ -14,8 +14,8 @@
  *     along -normal since the wall's first contact (0 before);
  *   /stage3/phases/<phase>/{start_time [s], crush [m], peak_force [N]} (scalars; NaN when the
  *     phase did not begin) for the phases of the 2023 paper's Fig. 25, in order: tyre (the
- *     front tyre touches the wall), rim (the front rim or hub does), fork (the first plastic
- *     strain in a stanchion), engine (the front wheel meets the frame/fairing through the
+ *     front tyre touches the wall), rim (the first plastic strain in the front rim or spokes,
+ *     or they or the hub touch the wall), fork (the first plastic strain in a stanchion), engine (the front wheel meets the frame/fairing through the
  *     contact <pre>_wheel_engine, or a frame part touches the wall), each at the first row
  *     whose interval saw it; peak_force: the largest force_mean from its start to the next phase's (the last: to the end); group attribute
  *     `wall` (the impact wall's name), also as the attribute `impact_wall` of /stage3/rigidwall

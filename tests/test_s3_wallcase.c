@@ -39,12 +39,15 @@ static char tmpdir[64];
  * name), loaded as if it were a file in scenarios/ (its include resolves there) */
 static mcs_scenario *load_case(double h_mm, double end_ms)
 {
-    char text[512];
+    char text[512], mesh[128] = "";
+    if (h_mm > 0) /* else the scenario's run mesh */
+        snprintf(mesh, sizeof mesh,
+                 "  fe:\n    parts:\n      - name: moto\n        mesh: {element_size: %g mm}\n",
+                 h_mm);
     snprintf(text, sizeof text,
              "mcrash: 1\ninclude: [thesis_frontal_barrier_13.4.yaml]\n"
-             "stage3:\n  simulation: {end_time: %g ms}\n  fe:\n    parts:\n"
-             "      - name: moto\n        mesh: {element_size: %g mm}\n",
-             end_ms, h_mm);
+             "stage3:\n  simulation: {end_time: %g ms}\n%s",
+             end_ms, mesh);
     mcs_scenario *s = NULL;
     mcs_error err = {0};
     CHECK(mcs_scenario_load_text("scenarios/wall_case.yaml", text, strlen(text), &s, &err) ==
@@ -53,8 +56,8 @@ static mcs_scenario *load_case(double h_mm, double end_ms)
     return s;
 }
 
-/* stage 3 of the case into out; the summary */
-static int run_case(double h_mm, double end_ms, const char *out, s3_summary *sum)
+/* stage 3 of the case into out (append: added to the file); the summary */
+static int run_case_into(double h_mm, double end_ms, const char *out, int append, s3_summary *sum)
 {
     mcs_scenario *scn = load_case(h_mm, end_ms), *s3 = NULL;
     mcs_error err = {0};
@@ -62,7 +65,8 @@ static int run_case(double h_mm, double end_ms, const char *out, s3_summary *sum
     mcs_status st = scn ? s3_scenario_compile(scn, &s3, &err) : MCS_ERR_KEY;
     if (!st) st = fe_scn_build(s3, &p, &err);
     if (!st) {
-        s3_run_opts o = {.out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = 1};
+        s3_run_opts o = {
+            .out_path = out, .scenario_text = mcs_scenario_text(scn), .quiet = 1, .append = append};
         st = s3_run(&p, &o, sum, &err);
     }
     if (st) printf("  %s\n", err.msg);
@@ -70,6 +74,11 @@ static int run_case(double h_mm, double end_ms, const char *out, s3_summary *sum
     mcs_scenario_destroy(&s3);
     mcs_scenario_destroy(&scn);
     return st == MCS_OK;
+}
+
+static int run_case(double h_mm, double end_ms, const char *out, s3_summary *sum)
+{
+    return run_case_into(h_mm, end_ms, out, 0, sum);
 }
 
 static double scalar(mcs_results *h, const char *path)
@@ -253,6 +262,141 @@ static void test_commands(void)
     CHECK(cli_run(args)->status == 0);
 }
 
+/* a run's curves: time, wall force (interval means), crush, fork angle */
+typedef struct {
+    mcs_array t, f, d, phi;
+} curves;
+
+static int read_curves(const char *h5, curves *c)
+{
+    mcs_results *h = NULL;
+    mcs_error e = {0};
+    int ok = mcs_results_open(&h, h5, &e) == MCS_OK &&
+             mcs_results_read(h, "/stage3/time", &c->t, &e) == MCS_OK &&
+             mcs_results_read(h, "/stage3/rigidwall/barrier/force_mean", &c->f, &e) == MCS_OK &&
+             mcs_results_read(h, "/stage3/rigidwall/barrier/crush", &c->d, &e) == MCS_OK &&
+             mcs_results_read(h, "/stage3/channels/moto_fork_deformation_angle", &c->phi, &e) ==
+                 MCS_OK;
+    mcs_results_close(&h);
+    return ok && c->f.n == c->t.n && c->d.n == c->t.n && c->phi.n == c->t.n && c->t.n > 10;
+}
+
+static void free_curves(curves *c)
+{
+    mcs_array_free(&c->t), mcs_array_free(&c->f), mcs_array_free(&c->d), mcs_array_free(&c->phi);
+}
+
+/* the force over 5 ms windows (impulse / 5 ms) at crush d: the mean of the rows whose crush is
+ * within 5 mm of d (NaN none); the curves of two meshes are compared on it */
+static double force_at_crush(const curves *c, double d)
+{
+    double s = 0;
+    int n = 0;
+    for (size_t k = 0; k < c->t.n; k++)
+        if (fabs(c->d.v[k] - d) < 5e-3) s += c->f.v[k], n++;
+    return n ? s / n : NAN;
+}
+
+/* make verify: stage 1 of the scenario (`mcrash run --stage 1`), then its stage 3 at the run
+ * mesh for its 100 ms added to the same file (as `mcrash run` does; in process: the command's
+ * guard is 120 s) and the fork angles rated by `mcrash compare --stages 1,3`; 40 mm for the
+ * same 100 ms: the wall force against crush at two element sizes */
+static void test_run_mesh(void)
+{
+    if (!th_verify()) return;
+    char out[128], out40[128], args[512];
+    snprintf(out, sizeof out, "%s/full.h5", tmpdir);
+    snprintf(out40, sizeof out40, "%s/wall40_100.h5", tmpdir);
+    snprintf(args, sizeof args, "run scenarios/thesis_frontal_barrier_13.4.yaml -o %s --stage 1",
+             out);
+    cli_result *r = cli_run(args);
+    CHECK(r->status == 0);
+    s3_summary sum, s40;
+    CHECK(run_case_into(0, 100, out, 1, &sum));
+    printf("  run mesh: %d elements, %ld steps, %.0f s of wall time, drift %.3g\n", sum.elements,
+           sum.steps, sum.wall_time_s, sum.energy_drift);
+    CHECK(sum.energy_drift < 0.02);
+    CHECK(run_case(40, 100, out40, &s40));
+    curves a = {0}, b = {0};
+    CHECK(read_curves(out, &a) && read_curves(out40, &b));
+    mcs_results *h = NULL;
+    mcs_error err = {0};
+    CHECK(mcs_results_open(&h, out, &err) == MCS_OK);
+    if (!h || !a.t.n || !b.t.n) goto done;
+    double fpk = 0, tpk = 0, dmax = 0, tdmax = 0, phimax = 0, imp = 0, fpk40 = 0;
+    for (size_t k = 0; k < a.t.n; k++) {
+        if (a.f.v[k] > fpk) fpk = a.f.v[k], tpk = a.t.v[k];
+        if (a.d.v[k] > dmax) dmax = a.d.v[k], tdmax = a.t.v[k];
+        phimax = fmax(phimax, a.phi.v[k]);
+        if (k) imp += a.f.v[k] * (a.t.v[k] - a.t.v[k - 1]);
+    }
+    for (size_t k = 0; k < b.t.n; k++) fpk40 = fmax(fpk40, b.f.v[k]);
+    printf("  run mesh: peak %.1f kN at %.1f ms, largest crush %.0f mm at %.1f ms, fork %.3f rad "
+           "at most, impulse %.0f N s (m v = %.0f N s); 40 mm: peak %.1f kN\n",
+           1e-3 * fpk, 1e3 * tpk, 1e3 * dmax, 1e3 * tdmax, phimax, imp, 208 * V0, 1e-3 * fpk40);
+    FIG("s3.wall_f_peak_kn", "%.0f", 1e-3 * fpk);
+    FIG("s3.wall_t_f_peak_ms", "%.1f", 1e3 * tpk);
+    FIG("s3.wall_crush_max_mm", "%.0f", 1e3 * dmax);
+    FIG("s3.wall_t_crush_max_ms", "%.0f", 1e3 * tdmax);
+    FIG("s3.wall_phi_max_rad", "%.2f", phimax);
+    FIG("s3.wall_f_peak40_kn", "%.0f", 1e-3 * fpk40);
+    /* the mesh convergence of the force-crush curve: 5 ms means at crush 25, 50, ... mm */
+    double dev = 0;
+    printf("  crush [mm]  force run mesh / 40 mm [kN]\n");
+    for (double d = 0.025; d < fmin(dmax, 0.5); d += 0.025) {
+        double fa = force_at_crush(&a, d), fb = force_at_crush(&b, d);
+        printf("  %5.0f  %7.1f  %7.1f\n", 1e3 * d, 1e-3 * fa, 1e-3 * fb);
+        if (!isnan(fa) && !isnan(fb)) dev = fmax(dev, fabs(fa - fb));
+    }
+    FIG("s3.wall_mesh_dev_kn", "%.0f", 1e-3 * dev);
+    /* the phases */
+    const char *ph[4] = {"tyre", "rim", "fork", "engine"};
+    for (int k = 0; k < 4; k++) {
+        char path[128], key[64];
+        snprintf(path, sizeof path, "/stage3/phases/%s/start_time", ph[k]);
+        const double tk = scalar(h, path);
+        snprintf(path, sizeof path, "/stage3/phases/%s/crush", ph[k]);
+        const double dk = scalar(h, path);
+        snprintf(path, sizeof path, "/stage3/phases/%s/peak_force", ph[k]);
+        const double fk = scalar(h, path);
+        printf("  phase %-6s from %5.1f ms, crush %4.0f mm, peak %6.1f kN\n", ph[k], 1e3 * tk,
+               1e3 * dk, 1e-3 * fk);
+        snprintf(key, sizeof key, "s3.wall_%s_ms", ph[k]);
+        FIG(key, "%.1f", 1e3 * tk);
+        snprintf(key, sizeof key, "s3.wall_%s_peak_kn", ph[k]);
+        FIG(key, "%.0f", 1e-3 * fk);
+    }
+    /* energies: hourglass and added mass bounds, the parts that took the most */
+    double hg = NAN, ma = NAN, elems = NAN;
+    mcs_results_attr_double(h, "/stage3", "hourglass_fraction_max", &hg, &err);
+    mcs_results_attr_double(h, "/stage3", "mass_added_fraction", &ma, &err);
+    mcs_results_attr_double(h, "/stage3", "elements", &elems, &err);
+    printf("  %.0f elements, hourglass %.3g of internal at most, added mass %.3g\n", elems, hg,
+           ma);
+    CHECK(hg < 0.10);
+    CHECK(ma < 0.02);
+    FIG("s3.wall_elements", "%.0f", elems);
+    FIG("s3.wall_hg_pct", "%.1f", 100 * hg);
+    char **parts = NULL;
+    int np = 0;
+    CHECK(mcs_results_list(h, "/stage3/parts", &parts, &np, &err) == MCS_OK);
+    for (int i = 0; i < np; i++) {
+        char path[256];
+        snprintf(path, sizeof path, "/stage3/parts/%s/energy/internal", parts[i]);
+        const double e = last_of(h, path);
+        if (e > 200) printf("  internal energy at 100 ms: %-20s %6.0f J\n", parts[i], e);
+    }
+    mcs_results_list_free(&parts, np);
+    /* stage 3's fork angle rated against stage 1's (ISO/TS 18571) */
+    snprintf(args, sizeof args, "compare %s --stages 1,3", out);
+    r = cli_run(args);
+    printf("%s", r->out);
+    CHECK_STR_CONTAINS(r->out, "moto_fork_deformation_angle");
+done:
+    mcs_results_close(&h);
+    free_curves(&a), free_curves(&b);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mcrash_s3wc_XXXXXX");
@@ -261,6 +405,7 @@ int main(void)
     RUN(test_compile);
     RUN(test_commands);
     RUN(test_coarse);
+    RUN(test_run_mesh);
     char cmd[96];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     if (system(cmd) != 0) return 1;

@@ -210,7 +210,8 @@ static void test_coarse(void)
     FIG("s3.wall_coarse_phi_end_rad", "%.2f", phi.v[n - 1]);
     /* mcrash retune reads this file: the barrier's force alone (not the ground's), the angle */
     tr_rt_target tg = {0};
-    CHECK(tr_rt_read_target(out, "moto_fork_deformation", &tg, &err) == MCS_OK);
+    const tr_rt_opts ro = tr_rt_opts_default();
+    CHECK(tr_rt_read_target(out, &ro, &tg, &err) == MCS_OK);
     CHECK(tg.nt == (int)n);
     double df = 0, da = 0;
     for (int k = 0; k < tg.nt && tg.nt == (int)n; k++) {

@@ -72,7 +72,7 @@ static void write_head(tr_rp *c, FILE *f)
     fputs(")</td></tr>\n", f);
     for (int s = 1; s <= RP_NSTAGE; s++) {
         if (!c->has_stage[s]) continue;
-        char g[16];
+        char g[32];
         snprintf(g, sizeof g, "/stage%d", s);
         rp_attr(c, g, "dummy", dummy, sizeof dummy);
         const mcs_array *t = &c->time[s];
@@ -113,7 +113,7 @@ static mcs_status open_input(tr_rp *c, const char *h5, mcs_error *err)
     if (s) return s;
     int any = 0;
     for (int k = 1; k <= RP_NSTAGE; k++) {
-        char g[16];
+        char g[32];
         snprintf(g, sizeof g, "/stage%d", k);
         c->has_stage[k] = mcs_results_kind(c->r, g) == MCS_RES_GROUP;
         any |= c->has_stage[k];

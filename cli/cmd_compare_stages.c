@@ -1,17 +1,15 @@
-/* cmd_compare_stages.c: `mcrash compare OUT.h5 --stages A,B [--method iso18571|cora] [--json]`
- * (DESIGN.md "The command"): every channel /stageA/channels and /stageB/channels of one results
- * file share, the stage-B curve rated against the stage-A one. Prints one line per channel, or
- * {"file", "stages": [A, B], "method", "channels": {NAME: {"rating": r} or {"error": msg}}}
- * with --json. A channel that cannot be rated (a constant curve, units that differ) gets its
- * message instead of a rating; no shared channel is an error (exit 2). */
-#include "analysis/an_cora.h"
-#include "analysis/an_iso18571.h"
-#include "analysis/an_signal.h"
+/* cmd_compare_stages.c: `mcrash compare OUT.h5 --stages A,B [--json]` (DESIGN.md "The command";
+ * translators/tr_stages.h): every channel and body component stages A and B of one results file
+ * share, stage B rated against stage A by ISO/TS 18571 and by CORA (both, whatever --method
+ * says), and the injury criteria of both stages side by side. A table, or with --json one
+ * object of fixed keys (docs/contracts.md "compare --stages"). A curve that cannot be rated (a
+ * constant reference, units that differ) gets its reason instead; nothing shared is an error
+ * (exit 2). */
 #include "cli/cli_common.h"
-#include "core/mcs_results.h"
+#include "translators/tr_stages.h"
 
+#include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 /* "A,B" with A, B stage numbers 1..9 */
@@ -21,93 +19,127 @@ int cli_parse_stages(const char *s, int *a, int *b)
     return s && sscanf(s, "%d,%d%c", a, b, &c) == 2 && *a >= 1 && *a <= 9 && *b >= 1 && *b <= 9;
 }
 
-/* rate /stage<sb>/channels/name against /stage<sa>/...: *rating, or the error in err */
-static mcs_status rate(const char *h5, int sa, int sb, const char *name, int cora, double *rating,
-                       mcs_error *err)
+static void num(double v)
 {
-    char ra[4200], rb[4200];
-    snprintf(ra, sizeof ra, "%s:/stage%d/channels/%s", h5, sa, name);
-    snprintf(rb, sizeof rb, "%s:/stage%d/channels/%s", h5, sb, name);
-    an_signal a = {0}, b = {0};
-    mcs_status st = an_signal_read_ref(ra, &a, err);
-    if (!st) st = an_signal_read_ref(rb, &b, err);
-    if (!st && a.unit[0] && b.unit[0] && strcmp(a.unit, b.unit) != 0)
-        st = MCS_ERR(err, MCS_ERR_UNIT, "units differ: %s against %s", b.unit, a.unit);
-    if (!st && cora) {
-        an_cora_opts o = an_cora_opts_default();
-        an_cora_result r;
-        st = an_cora(&a, &b, &o, &r, err);
-        *rating = r.rating;
-    } else if (!st) {
-        an_iso_opts o = an_iso_opts_default();
-        an_iso_result r;
-        st = an_iso18571(&a, &b, &o, &r, err);
-        *rating = r.rating;
+    if (isfinite(v))
+        printf("%.10g", v);
+    else
+        printf("null");
+}
+
+static void json_iso(const tr_stage_rating *r)
+{
+    const an_iso_result *i = &r->iso;
+    if (!r->iso_ok) {
+        printf("{\"error\": ");
+        cli_json_string(r->iso_error);
+        printf("}");
+        return;
     }
-    an_signal_free(&a);
-    an_signal_free(&b);
-    return st;
+    printf("{\"rating\": %.10g, \"grade\": \"%s\", \"corridor\": %.10g, \"phase\": %.10g, "
+           "\"magnitude\": %.10g, \"slope\": %.10g, \"shift_time\": %.10g}",
+           i->rating, an_iso_grade(i->rating), i->corridor, i->phase, i->magnitude, i->slope,
+           i->shift_time);
+}
+
+static void json_cora(const tr_stage_rating *r)
+{
+    const an_cora_result *c = &r->cora;
+    if (!r->cora_ok) {
+        printf("{\"error\": ");
+        cli_json_string(r->cora_error);
+        printf("}");
+        return;
+    }
+    printf("{\"rating\": %.10g, \"corridor\": %.10g, \"cross\": %.10g, \"phase\": %.10g, "
+           "\"size\": %.10g, \"progression\": %.10g, \"shift_time\": %.10g}",
+           c->rating, c->corridor, c->cross, c->phase, c->size, c->progression, c->shift_time);
+}
+
+static void print_json(const char *h5, const tr_stage_compare *c)
+{
+    printf("{\"file\": ");
+    cli_json_string(h5);
+    printf(", \"stages\": [%d, %d], \"reference\": %d, \"ratings\": [", c->stage[0], c->stage[1],
+           c->stage[0]);
+    for (int i = 0; i < c->nrating; i++) {
+        const tr_stage_rating *r = &c->rating[i];
+        printf("%s{\"name\": ", i ? ", " : "");
+        cli_json_string(r->name);
+        printf(", \"kind\": \"%s\", \"unit\": ", r->body ? "body" : "channel");
+        cli_json_string(r->unit);
+        printf(", \"iso18571\": ");
+        json_iso(r);
+        printf(", \"cora\": ");
+        json_cora(r);
+        printf("}");
+    }
+    printf("], \"injury\": [");
+    for (int i = 0; i < c->ncrit; i++) {
+        const tr_stage_criterion *x = &c->crit[i];
+        printf("%s{\"key\": ", i ? ", " : "");
+        cli_json_string(x->key);
+        printf(", \"label\": ");
+        cli_json_string(x->label);
+        printf(", \"unit\": ");
+        cli_json_string(x->unit);
+        printf(", \"limit\": ");
+        num(x->limit);
+        printf(", \"value\": [");
+        num(x->value[0]);
+        printf(", ");
+        num(x->value[1]);
+        printf("], \"fraction\": [");
+        num(x->fraction[0]);
+        printf(", ");
+        num(x->fraction[1]);
+        printf("]}");
+    }
+    printf("]}\n");
+}
+
+static void print_text(const char *h5, const tr_stage_compare *c)
+{
+    printf("%s: stage %d against stage %d (ISO/TS 18571, CORA)\n", h5, c->stage[1], c->stage[0]);
+    printf("  %-40s  %-8s  %-8s\n", "channel or body component", "ISO", "CORA");
+    for (int i = 0; i < c->nrating; i++) {
+        const tr_stage_rating *r = &c->rating[i];
+        char a[16] = "-", b[16] = "-";
+        if (r->iso_ok) snprintf(a, sizeof a, "%.4f", r->iso.rating);
+        if (r->cora_ok) snprintf(b, sizeof b, "%.4f", r->cora.rating);
+        printf("  %-40s  %-8s  %-8s", r->name, a, b);
+        if (!r->iso_ok || !r->cora_ok) printf("  %s", !r->iso_ok ? r->iso_error : r->cora_error);
+        printf("\n");
+    }
+    if (c->ncrit == 0) return;
+    char ha[16], hb[16];
+    snprintf(ha, sizeof ha, "stage %d", c->stage[0]);
+    snprintf(hb, sizeof hb, "stage %d", c->stage[1]);
+    printf("\n  %-28s  %-6s  %12s  %12s  %12s\n", "criterion", "unit", "limit", ha, hb);
+    for (int i = 0; i < c->ncrit; i++) {
+        const tr_stage_criterion *x = &c->crit[i];
+        char v[3][24];
+        const double d[3] = {x->limit, x->value[0], x->value[1]};
+        for (int k = 0; k < 3; k++)
+            snprintf(v[k], sizeof v[k], isfinite(d[k]) ? "%.4g" : "-", d[k]);
+        printf("  %-28s  %-6s  %12s  %12s  %12s\n", x->label, x->unit, v[0], v[1], v[2]);
+    }
 }
 
 int cli_compare_stages(const char *h5, int sa, int sb, int cora, int json)
 {
-    mcs_results *r = NULL;
+    (void)cora; /* both methods, always */
+    tr_stage_compare c;
     mcs_error err = {0};
-    char **na = NULL, **nb = NULL, ga[32], gb[32];
-    int ka = 0, kb = 0;
-    snprintf(ga, sizeof ga, "/stage%d/channels", sa);
-    snprintf(gb, sizeof gb, "/stage%d/channels", sb);
-    mcs_status st = mcs_results_open(&r, h5, &err);
-    if (!st && mcs_results_kind(r, ga) != MCS_RES_GROUP)
-        st = MCS_ERR(&err, MCS_ERR_FORMAT, "%s: no %s", h5, ga);
-    if (!st && mcs_results_kind(r, gb) != MCS_RES_GROUP)
-        st = MCS_ERR(&err, MCS_ERR_FORMAT, "%s: no %s", h5, gb);
-    if (!st) st = mcs_results_list(r, ga, &na, &ka, &err);
-    if (!st) st = mcs_results_list(r, gb, &nb, &kb, &err);
-    mcs_results_close(&r);
-    int shared = 0;
-    for (int i = 0; !st && i < ka; i++) {
-        int in_b = 0;
-        for (int j = 0; j < kb && !in_b; j++)
-            in_b = strcmp(na[i], nb[j]) == 0;
-        if (!in_b) continue;
-        if (json && shared == 0) {
-            printf("{\"file\": ");
-            cli_json_string(h5);
-            printf(", \"stages\": [%d, %d], \"method\": \"%s\", \"channels\": {", sa, sb,
-                   cora ? "cora" : "iso18571");
-        } else if (!json && shared == 0) {
-            printf("%s: stage %d against stage %d (%s)\n", h5, sb, sa,
-                   cora ? "CORA" : "ISO/TS 18571");
-        }
-        double v = 0;
-        mcs_error e = {0};
-        mcs_status s2 = rate(h5, sa, sb, na[i], cora, &v, &e);
-        if (json) {
-            printf("%s", shared ? ", " : "");
-            cli_json_string(na[i]);
-            if (s2) {
-                printf(": {\"error\": ");
-                cli_json_string(e.msg);
-                printf("}");
-            } else {
-                printf(": {\"rating\": %.10g}", v);
-            }
-        } else if (s2) {
-            printf("  %-32s  -       %s\n", na[i], e.msg);
-        } else {
-            printf("  %-32s  %.4f\n", na[i], v);
-        }
-        shared++;
-    }
-    if (!st && shared == 0)
-        st = MCS_ERR(&err, MCS_ERR_FORMAT, "%s: %s and %s share no channel", h5, ga, gb);
-    if (!st && json) printf("}}\n");
-    mcs_results_list_free(&na, ka);
-    mcs_results_list_free(&nb, kb);
+    mcs_status st = tr_compare_stages(h5, sa, sb, &c, &err);
     if (st) {
         fprintf(stderr, "mcrash compare: %s\n", err.msg);
         return mcs_status_exit_code(st);
     }
+    if (json)
+        print_json(h5, &c);
+    else
+        print_text(h5, &c);
+    tr_stage_compare_free(&c);
     return fflush(stdout) ? 2 : 0;
 }

@@ -478,10 +478,15 @@ static const mcs_skey foam_pad_keys[] = {
     END,
 };
 static const mcs_skey surface_shell_keys[] = {SURFACE_MESH_KEYS, END};
+/* a mesh from a file: a keyword deck's part, or a part a run wrote to a results file
+ * (fe/fe_scn_from.c, docs/exchange.md); one of keyword / from (mcs_rule_mesh_file) */
 static const mcs_skey keyword_keys[] = {
     /* an LS-DYNA keyword file, relative to the YAML file that names it */
-    S("keyword", REQ | NE, "LS-DYNA keyword file (or give generate:)"),
-    I("part", REQ | GE, 1, 0, "part ID in the keyword file"),
+    S("keyword", NE, "LS-DYNA keyword file (or give generate: or from:)"),
+    I("part", GE, 1, 0, "part ID in the keyword file (with keyword:)"),
+    /* FILE.h5:/stageN/mesh/<part>, the file relative to the YAML file that names it */
+    S("from", NE, "a part's mesh in a results file: FILE.h5:/stageN/mesh/<part>"),
+    A("at", 0, "with from: the deformed shape at this time [s], or final (default: reference)"),
     /* keyword decks carry no units: LENGTH-TIME-MASS of the deck (docs/keyword.md) */
     E("units", "m-s-kg|mm-s-t|mm-ms-kg|mm-ms-g|cm-s-g|cm-us-g", 0,
       "unit system of the deck (default m-s-kg, SI)"),
@@ -507,7 +512,8 @@ static const mcs_smap box_map = {.what = "box mesh", .keys = box_keys};
 static const mcs_smap sphere_shell_map = {.what = "sphere_shell mesh", .keys = sphere_keys};
 static const mcs_smap line_map = {.what = "line mesh", .keys = line_keys};
 static const mcs_smap flat_bag_map = {.what = "flat_bag mesh", .keys = flat_bag_keys};
-static const mcs_smap keyword_map = {.what = "keyword mesh", .keys = keyword_keys};
+static const mcs_smap keyword_map = {
+    .what = "keyword or results mesh", .keys = keyword_keys, .check = mcs_rule_mesh_file};
 /* the parametric FE motorcycle (stage3_fe/s3_moto.h): parts <name>_frame, ... from a stage-1
  * motorcycle model; its sections and materials are its own */
 static const mcs_skey motorcycle_keys[] = {

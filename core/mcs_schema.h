@@ -98,6 +98,7 @@ mcs_status mcs_rule_facet(scn_walk *w, mcs_node *map);  /* core/mcs_scn_rule_fac
 mcs_status mcs_rule_fe_part(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_fe(scn_walk *w, mcs_node *map);
 mcs_status mcs_rule_surface_mesh(scn_walk *w, mcs_node *map); /* core/mcs_scn_rule_pad.c */
+mcs_status mcs_rule_mesh_file(scn_walk *w, mcs_node *map);    /* core/mcs_scn_rule_mesh.c */
 
 /* the whole scenario */
 extern const mcs_smap mcs_schema_root;

@@ -11,6 +11,7 @@
 #include "fe/fe_scn_slipring.h"
 #include "fe/fe_scn_deck.h"
 #include "fe/fe_scn_keyword.h"
+#include "fe/fe_scn_from.h"
 #include "fe/fe_scn_place.h"
 #include "fe/fe_scn_pad.h"
 
@@ -245,7 +246,8 @@ static mcs_status add_parts_(fe_builder *b, const mcs_node *root, const mcs_node
         /* a keyword mesh (fe_scn_keyword.c) may take its section and material from the deck */
         int kw = fe_scn_given(fe_scn_get(p, "mesh"), "keyword");
         int pad = fe_scn_pad_is(fe_scn_get(p, "mesh")); /* on a body's surface: fe_scn_pad.c */
-        mcs_status st = kw || pad ? MCS_OK : read_mesh(fe_scn_get(p, "mesh"), &d.mesh, err);
+        int from = fe_scn_from_is(fe_scn_get(p, "mesh")); /* a results file: fe_scn_from.c */
+        mcs_status st = kw || pad || from ? MCS_OK : read_mesh(fe_scn_get(p, "mesh"), &d.mesh, err);
         if (!st && (!kw || fe_scn_given(p, "section")))
             st = read_section(fe_scn_get(p, "section"), &d.section, err);
         if (!st && (!kw || fe_scn_given(p, "material") || fe_scn_given(p, "material_from"))) {
@@ -256,9 +258,10 @@ static mcs_status add_parts_(fe_builder *b, const mcs_node *root, const mcs_node
             st = mcs_node_vec3(fe_scn_get(p, "initial_velocity"), d.initial_velocity, err);
         if (!st && kw) st = fe_scn_kw_add_part(kc, b, p, &d, err);
         if (!st && pad) st = fe_scn_pad_add(b, root, fe_scn_get(p, "mesh"), &d, err);
+        if (!st && from) st = fe_scn_from_add_part(b, p, &d, err);
         if (st) return st;
         mcs_error kerr = {0};
-        if (!kw && !pad && (st = fe_builder_add_part(b, &d, NULL, &kerr)))
+        if (!kw && !pad && !from && (st = fe_builder_add_part(b, &d, NULL, &kerr)))
             return fe_scn_relocate(st, p, &kerr, err);
         st = initial_mesh(b, fe_scn_get(p, "mesh"), d.name, err);
         if (st) return st;

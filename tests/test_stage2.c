@@ -352,8 +352,8 @@ static void test_commands(void)
     r = cli_run(cmd);
     CHECK(r->status == 0);
     CHECK_STR_CONTAINS(r->out, "\"stages\": [1, 2]");
-    CHECK_STR_CONTAINS(r->out, "\"head_ax\": {\"rating\": ");
-    CHECK_STR_CONTAINS(r->out, "\"arm_tip_acc_ax\": {\"rating\": ");
+    CHECK_STR_CONTAINS(r->out, "{\"name\": \"head_ax\", \"kind\": \"channel\"");
+    CHECK_STR_CONTAINS(r->out, "{\"name\": \"arm_tip_acc_ax\", \"kind\": \"channel\"");
     snprintf(cmd, sizeof cmd, "compare %s --stages 1,3", all);
     CHECK(cli_run(cmd)->status == 2);
     snprintf(cmd, sizeof cmd, "export %s --xdmf %s --stage 2", all, xmf);

@@ -101,8 +101,9 @@ static void test_sections(void)
     CHECK_STR_CONTAINS(s, "Foam internal energy");
     CHECK_STR_CONTAINS(s, ">airbags</text>");
     CHECK_STR_CONTAINS(s, ">opponent</text>");
-    CHECK_STR_CONTAINS(s, "Stage 2 against stage 1 (ISO/TS 18571)");
+    CHECK_STR_CONTAINS(s, "<h3>Stage 2 against stage 1</h3>");
     CHECK_STR_CONTAINS(s, "head_ax: R = ");
+    CHECK_STR_CONTAINS(s, "rider_head/position_x");
     /* snapshots: 0 to 300 ms every 20 ms (16 frames) in two views of stages 1 and 2, stage
      * 3's 0 to 150 ms (8 frames) */
     CHECK_STR_CONTAINS(s, "Stage 1, side view (x forward, z up), every 20 ms");

@@ -1116,6 +1116,39 @@ static const mcs_skey stage2_keys[] = {
 };
 static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys};
 
+/* ---- retune and loop (docs/retune.md, docs/loop.md, docs/contracts.md) ---- */
+
+/* the stage-1 names and target paths `mcrash retune` uses (defaults: the sport motorcycle
+ * against a rigid wall); read by translators/tr_retune.c */
+static const mcs_skey retune_keys[] = {
+    S("wall_body", NE, "stage-1 body the wall force acts on (default barrier)"),
+    S("joint", NE, "stage-1 restrained revolute joint of the fork hinge (default "
+                   "moto_fork_deformation)"),
+    S("tyre", NE, "characteristic of the front tyre's contact (default tyre_front)"),
+    S("fork", NE, "elastic-plastic characteristic of the fork hinge (default fork_deformation)"),
+    S("target_force", NE, "stage-3 wall force: a dataset, or a group whose members' force are "
+                          "summed (default: the impact wall, else every wall)"),
+    S("target_angle", NE, "stage-3 fork angle dataset (default /stage3/channels/<joint>_angle, "
+                          "else /stage3/joints/<joint>/angle)"),
+    A("free", 0, "parameters fitted, a list of tyre_force_scale, fork_moment_scale, "
+                 "fork_elastic_limit, fork_stop_angle (default all four)"),
+    Q("end_time", MCS_DIM_TIME, GT, 0, 0, "compared span [s] (default the target's)"),
+    END,
+};
+static const mcs_smap retune_map = {.what = "retune block", .keys = retune_keys};
+
+/* `mcrash loop`'s scenarios, relative to the file that names them (as include:) */
+static const mcs_skey loop_keys[] = {
+    S("wall", REQ | NE, "stage-3 wall scenario (the target of retune)"),
+    S("retune", REQ | NE, "stage-1 scenario of the same wall case, retuned (its retune: block)"),
+    S("crash", REQ | NE, "stage-1/2 crash scenario (a stage2: block); the retuned curves are "
+                         "merged over it"),
+    I("max_iter", GE | LE, 1, 100, "iterations at most (default 5; --max-iter wins)"),
+    Q("tolerance", NONE, GT, 0, 0, "converged when no rating changes by more (default 0.01)"),
+    END,
+};
+static const mcs_smap loop_map = {.what = "loop block", .keys = loop_keys};
+
 /* ---- the root ---- */
 
 static const mcs_skey root_keys[] = {
@@ -1137,6 +1170,8 @@ static const mcs_skey root_keys[] = {
     L("mount_points", mount_map, 0, "named points on bodies"),
     M("rider", rider_map, 0, "seat the rider on the motorcycle"),
     M("stage2", stage2_map, 0, "stage 2: bodies prescribed from a stage-1 results file"),
+    M("retune", retune_map, 0, "mcrash retune: stage-1 names and stage-3 target paths"),
+    M("loop", loop_map, 0, "mcrash loop: the wall, retune and crash scenarios"),
     NM("energy_groups", egroup_map, 0,
        "energy balances of named groups of bodies, split by contact partner (default: rider)"),
     END,

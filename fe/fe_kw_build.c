@@ -235,11 +235,13 @@ mcs_status fe_kw_add_part(fe_builder *b, const fe_kw_deck *dk, int pid, const fe
         d.section.type = FE_SECTION_TET10;
         d.section.formulation = FE_HEX_ONE_POINT;
     }
-    if (d.section.type != etype_section[t])
+    /* shells carry a shell section, or the scenario's membrane (a gas bag's fabric) */
+    int membrane = t == FE_KW_SHELL && d.section.type == FE_SECTION_MEMBRANE;
+    if (d.section.type != etype_section[t] && !membrane)
         return MCS_ERR(err, MCS_ERR_TYPE,
                        "%s: error: part %d has *ELEMENT_%s elements; its section must be %s", fn,
                        pid, fe_kw_etype_name((fe_kw_etype)t),
-                       t == FE_KW_SHELL                        ? "shell"
+                       t == FE_KW_SHELL                        ? "shell or membrane"
                        : t == FE_KW_SOLID || t == FE_KW_TET10 ? "solid"
                                                                : "truss");
     int *map = node_map, ip = -1;

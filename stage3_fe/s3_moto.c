@@ -5,6 +5,7 @@
 
 #include "fe/fe_elem.h" /* fe_shell_frame: the kernel's shell area, so the masses agree */
 #include "fe/fe_joint.h"
+#include "fe/fe_restraint.h"
 #include "fe/fe_scn_build.h"
 
 #include <math.h>
@@ -41,6 +42,11 @@
 #define ABS_RHO 1050.0
 #define RUBBER_E 0.1e9 /* tyre carcass (cord-reinforced rubber, effective) */
 #define RUBBER_RHO 1100.0
+/* tyre inflation, gauge, cold (Kawasaki Ninja ZX-6R 2009 service manual, "Air Pressure (when
+ * Cold)", up to 180 kg load: front 250 kPa, rear 290 kPa; a 600 cc sport bike on 120/70 ZR17
+ * and 180/55 ZR17 tyres, the sizes of the stage-1 model) [Pa] */
+#define TYRE_GAUGE_FRONT 250e3
+#define TYRE_GAUGE_REAR 290e3
 
 enum { G_FRAME, G_UPPER, G_DEFORM, G_LOWER, G_FWHEEL, G_SWING, G_RWHEEL, G_N };
 static const char *const body_of[G_N] = {"moto_frame",      "moto_upper_fork", "moto_fork_deform",
@@ -308,11 +314,25 @@ static void plate(gen *g, int ip, int grp, const double c[3], const double u[3],
     free(id);
 }
 
+/* the air in the tyre: a gas bag bounded by the tyre and rim shells (a closed surface), constant
+ * gas mass (no inflator, no vent, no leakage), at the gauge pressure above ambient at t = 0 */
+static void tyre_gas(gen *g, const char *which, double gauge)
+{
+    if (g->st) return;
+    fe_airbag_desc d = fe_airbag_desc_default();
+    snprintf(d.name, sizeof d.name, "%.31s_%s_tyre", g->pre, which);
+    d.nparts = 2;
+    snprintf(d.parts[0], sizeof d.parts[0], "%.31s_%s_tyre", g->pre, which);
+    snprintf(d.parts[1], sizeof d.parts[1], "%.31s_%s_rim", g->pre, which);
+    d.initial_pressure = d.gas.ambient_pressure + gauge;
+    g->st = fe_builder_add_airbag(g->b, &d, g->err);
+}
+
 /* a wheel about the y axis at centre c: rigid hub band and NSPOKE spokes (part `hub`), rim band
  * (radius RIM_R, width wr), tyre (outer radius R, width W) sealed on the rim's edges. The
  * wheel's nodes roll: v = V + w x r, w = (0, V_x / R, 0) */
 static void wheel(gen *g, const char *which, int grp, const double c[3], double R, double W,
-                  double wr)
+                  double wr, double gauge)
 {
     char nm[FE_NAME_MAX];
     snprintf(nm, sizeof nm, "%s_wheel", which);
@@ -390,6 +410,7 @@ static void wheel(gen *g, const char *which, int grp, const double c[3], double 
                  tn[i1 * (nk + 1) + k + 1], tn[i1 * (nk + 1) + k]);
         }
     free(rn), free(tn);
+    tyre_gas(g, which, gauge);
     const double *V = g->o->velocity, w = V[0] / R;
     if (w != 0)
         for (int n = first; n < g->n && !g->st; n++) {
@@ -716,8 +737,8 @@ static void build(gen *g, const mcs_node *root)
     if (g->st) return;
 
     /* wheels, swing arm, shock */
-    wheel(g, "front", G_FWHEEL, Af, Rf, Wf, RIM_W_FRONT);
-    wheel(g, "rear", G_RWHEEL, Ar, Rr, Wr, RIM_W_REAR);
+    wheel(g, "front", G_FWHEEL, Af, Rf, Wf, RIM_W_FRONT, TYRE_GAUGE_FRONT);
+    wheel(g, "rear", G_RWHEEL, Ar, Rr, Wr, RIM_W_REAR, TYRE_GAUGE_REAR);
     int pw = part(g, "swing_arm", M_RIGID, 0.003, AL_RHO, AL_E, 0);
     for (int side = -1; side <= 1; side += 2) {
         double a0[3] = {P[0], side * SWING_HALF_SPAN, P[2]};

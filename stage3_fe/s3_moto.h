@@ -20,7 +20,9 @@
  *               per leg carrying half the stage-1 curve, preload and damper;
  *   lower_fork  rigid axle; front_wheel / rear_wheel rigid hub and spokes on axle joints;
  *   front_rim / rear_rim  aluminium shell bands; front_tyre / rear_tyre rubber shells sealed on
- *               the rim edges (a closed volume with the rim);
+ *               the rim edges, the closed volume with the rim a gas bag of the tyre's air
+ *               (<name>_front_tyre, <name>_rear_tyre: constant gas mass at the cold inflation
+ *               pressure, 250 / 290 kPa gauge);
  *   swing_arm   rigid, on the pivot joint; the shock: a spring whose lever gives the stage-1
  *               rear rate, preload and damper.
  * Each stage-1 body's mass, centre of gravity and inertia (diagonal, world axes) are met by the

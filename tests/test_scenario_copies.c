@@ -199,8 +199,8 @@ static void test_detector(void)
 {
     static const char *belt =
         "fe:\n  parts:\n    - name: belt_l\n"
-        "      mesh: {generate: line, origin: [0.7 m, 0.06 m, 0.87 m], end: [0.7 m, 0.27 m, 0.87 m],"
-        " divisions: 10}\n"
+        "      mesh: {generate: line, origin: [0.7 m, 0.06 m, 0.87 m],"
+        " end: [0.7 m, 0.27 m, 0.87 m], divisions: 10}\n"
         "      section: {type: truss, area: 60 mm^2, tension_only: true}   # webbing\n";
     static const char *rider =
         "contacts:\n  - {name: rider_head_road, a: rider_head, b: ground, characteristic: "

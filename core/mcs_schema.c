@@ -444,7 +444,7 @@ static const mcs_skey sphere_keys[] = {
     MESH_COMMON,
     END,
 };
-/* a flat (2D-design) gas bag: two panels sewn at their edges (fe/fe_mesh_shell.c) */
+/* a flat (2D-design) gas bag: two panels sewn at their edges (fe/model/fe_mesh_shell.c) */
 static const mcs_skey flat_bag_keys[] = {
     V("size", LEN, 2, 2, REQ | GT, 0, "panel size along the two in-plane axes [m]"),
     Q("gap", LEN, REQ | GT, 0, 0, "distance of the two panels inside the seam [m]"),
@@ -459,7 +459,7 @@ static const mcs_skey line_keys[] = {
     I("divisions", REQ | GE, 1, 0, "truss elements along the line"),
     END,
 };
-/* FE parts on a body's surface at its pose of t = 0 (fe/fe_scn_pad.h): foam_pad, a layer of
+/* FE parts on a body's surface at its pose of t = 0 (fe/scn/fe_scn_pad.h): foam_pad, a layer of
  * solids (hexahedra over a patch of an ellipsoid, its inner face on the surface, the outer one
  * `thickness` out along the normal; prisms over a whole facet surface, along the vertex
  * normals); surface_shell, shells on the same patch or facets. The ellipsoid patch in its
@@ -479,7 +479,7 @@ static const mcs_skey foam_pad_keys[] = {
 };
 static const mcs_skey surface_shell_keys[] = {SURFACE_MESH_KEYS, END};
 /* a mesh from a file: a keyword deck's part, or a part a run wrote to a results file
- * (fe/fe_scn_from.c, docs/exchange.md); one of keyword / from (mcs_rule_mesh_file) */
+ * (fe/scn/fe_scn_from.c, docs/exchange.md); one of keyword / from (mcs_rule_mesh_file) */
 static const mcs_skey keyword_keys[] = {
     /* an LS-DYNA keyword file, relative to the YAML file that names it */
     S("keyword", NE, "LS-DYNA keyword file (or give generate: or from:)"),
@@ -551,7 +551,7 @@ static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"sedan_side", &sedan_side_map},
                                              {"(keyword)", &keyword_map},
                                              {0}};
-/* the initial metric method (fe/fe_imm.c, docs/gasbag.md): membrane parts only */
+/* the initial metric method (fe/elem/fe_imm.c, docs/gasbag.md): membrane parts only */
 static const mcs_skey mesh_initial_keys[] = {
     V("scale", NONE, 3, 3, REQ | GT, 0, "factors along x, y, z, each in (0, 1]"),
     V("about", LEN, 3, 3, 0, 0, "fixed point (default: the part's bounding-box middle) [m]"),
@@ -587,7 +587,7 @@ static const mcs_skey shell_keys[] = {
 static const mcs_skey solid_keys[] = {
     HOURGLASS,
     /* hex8: one point + hourglass control (LS-DYNA ELFORM 1) or 2x2x2 Gauss, selective
-     * reduced (fe/fe_hex_full.c) */
+     * reduced (fe/elem/fe_hex_full.c) */
     E("formulation", "one_point|full", 0, "hex integration (default one_point)"),
     END,
 };
@@ -631,7 +631,7 @@ static const mcs_skey plastic_keys[] = {
     Q("cowper_symonds_p", NONE, GT, 0, 0, "Cowper-Symonds p"),
     END,
 };
-/* foam (fe/fe_foam.c, in the spirit of LS-DYNA MAT_083 and MAT_057): nominal stress vs.
+/* foam (fe/mat/fe_foam.c, in the spirit of LS-DYNA MAT_083 and MAT_057): nominal stress vs.
  * engineering strain per principal direction (Poisson 0), curves at several strain rates
  * interpolated in log rate, hysteretic unloading; give stress_strain or curves */
 static const mcs_skey foam_curve_keys[] = {
@@ -687,7 +687,7 @@ static const mcs_skey attach_keys[] = {
     R("body", BODY, REQ, "stage-1 body carrying the nodes"),
     /* surface: the nodes on one of the body's ellipsoid or facet surfaces (within 0.1 mm; a
      * foam_pad's inner face, a surface_shell, a keyword mesh modelled on the body),
-     * fe/fe_scn_pad.c */
+     * fe/scn/fe_scn_pad.c */
     E("where", "x_min|x_max|y_min|y_max|z_min|z_max|all|surface", REQ,
       "which nodes of the part (as boundary, or those on the body's surfaces): they move "
       "rigidly with the body"),
@@ -729,7 +729,7 @@ static const mcs_skey load_keys[] = {
 };
 static const mcs_smap load_map = {.what = "load", .keys = load_keys};
 
-/* a rigid wall moved by a curve (fe/fe_wall_motion.c; LS-DYNA
+/* a rigid wall moved by a curve (fe/step/fe_wall_motion.c; LS-DYNA
  * *BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL VAD 0, 1, 2): along `direction` (default the normal),
  * on top of `velocity` t (the initial velocity of an acceleration curve) */
 static const mcs_skey wall_vel_keys[] = {
@@ -841,7 +841,7 @@ static const mcs_skey fe_contact_keys[] = {
 static const mcs_smap fe_contact_map = {
     .what = "FE contact", .keys = fe_contact_keys, .disc = "type", .variants = fe_contact_variants};
 
-/* ---- fe: discrete springs and dampers, point masses (fe/fe_discrete.c) ---- */
+/* ---- fe: discrete springs and dampers, point masses (fe/elem/fe_discrete.c) ---- */
 
 static const mcs_skey spring_end_keys[] = {
     /* a node of a part (the one nearest to point), or without part a fixed anchor point */

@@ -1,8 +1,11 @@
 /* cmd_retune.c: `mcrash retune STAGE3.h5 --scenario STAGE1.yaml [-o CURVES.yaml]
- * [--end-time T] [--json]` (translators/tr_retune.h, docs/retune.md): fits the stage-1 front
+ * [--end-time T] [-j N] [--csv FILE] [--json]` (translators/tr_retune.h, docs/retune.md): fits the stage-1 front
  * characteristics so that stage 1 reproduces the target's wall force and fork angle; writes
  * CURVES.yaml (default: curves.yaml) and /curves/<characteristic>/{loading,unloading} into
- * STAGE3.h5; prints the parameters and the ISO/TS 18571 ratings before and after. */
+ * STAGE3.h5; prints the parameters and the ISO/TS 18571 ratings before and after. The
+ * scenario's retune: block names the characteristics and the target's datasets; -j N runs N
+ * stage-1 runs at once (default: the online processors); --csv writes the compared curves
+ * (target, before, after). */
 #include "cli/cli.h"
 #include "cli/cli_common.h"
 #include "translators/tr_retune.h"
@@ -15,7 +18,7 @@ static int usage_err(const char *msg)
 {
     fprintf(stderr,
             "retune: %s\nusage: mcrash retune STAGE3.h5 --scenario STAGE1.yaml "
-            "[-o CURVES.yaml] [--end-time T] [--json]\n",
+            "[-o CURVES.yaml] [--end-time T] [-j N] [--csv FILE] [--json]\n",
             msg);
     return 2;
 }
@@ -51,19 +54,27 @@ static void print_json(const tr_rt_result *r, const char *out)
 int cli_retune(int argc, char **argv)
 {
     if (cli_wants_help(argv[0], argc, argv)) return 0;
-    const char *h5 = NULL, *out = "curves.yaml";
+    const char *h5 = NULL, *out = "curves.yaml", *csv = NULL;
     tr_rt_opts o = tr_rt_opts_default();
-    int json = 0;
+    int json = 0, jobs = 0;
+    double end_time = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--scenario") && i + 1 < argc)
             o.scenario = argv[++i];
         else if (!strcmp(a, "-o") && i + 1 < argc)
             out = argv[++i];
+        else if (!strcmp(a, "--csv") && i + 1 < argc)
+            csv = argv[++i];
         else if (!strcmp(a, "--end-time") && i + 1 < argc) {
             char *end = NULL;
-            o.end_time = strtod(argv[++i], &end);
-            if (!end || *end || !(o.end_time > 0)) return usage_err("--end-time: seconds > 0");
+            end_time = strtod(argv[++i], &end);
+            if (!end || *end || !(end_time > 0)) return usage_err("--end-time: seconds > 0");
+        } else if (!strcmp(a, "-j") && i + 1 < argc) {
+            char *end = NULL;
+            long j = strtol(argv[++i], &end, 10);
+            if (!end || *end || j < 1 || j > 64) return usage_err("-j: 1 to 64 processes");
+            jobs = (int)j;
         } else if (!strcmp(a, "--json"))
             json = 1;
         else if (a[0] == '-')
@@ -79,7 +90,10 @@ int cli_retune(int argc, char **argv)
     tr_rt_target t = {0};
     tr_rt_base b;
     tr_rt_result r;
-    mcs_status st = tr_rt_read_target(h5, o.joint, &t, &err);
+    mcs_status st = tr_rt_read_opts(&o, &err);
+    if (end_time > 0) o.end_time = end_time; /* the option wins over retune.end_time */
+    o.jobs = jobs;
+    if (!st) st = tr_rt_read_target(h5, &o, &t, &err);
     if (!st) st = tr_rt_read_base(&o, &b, &err);
     if (!st) st = tr_rt_fit(&o, &b, &t, &r, &err);
     tr_rt_target_free(&t);
@@ -97,6 +111,12 @@ int cli_retune(int argc, char **argv)
         }
     }
     if (!st) st = tr_rt_write_curves(h5, &o, &b, r.p, &err);
+    if (!st && csv) {
+        FILE *f = fopen(csv, "w");
+        if (!f || tr_rt_write_csv(f, &r) || fclose(f))
+            st = MCS_ERR(&err, MCS_ERR_IO, "%s: cannot write", csv);
+    }
+    if (!st) tr_rt_result_free(&r);
     if (st) {
         fprintf(stderr, "%s\n", err.msg);
         return mcs_status_exit_code(st);

@@ -278,6 +278,16 @@ mcs_status mcs_results_append(mcs_results **out, const char *path, mcs_error *er
     return MCS_OK;
 }
 
+mcs_status mcs_results_remove(mcs_results *r, const char *path, mcs_error *err)
+{
+    if (!r || !r->writable)
+        return MCS_ERR(err, MCS_ERR_USAGE, "results: remove in a file opened read-only");
+    if (mcs_results_kind(r, path) == MCS_RES_NONE) return MCS_OK;
+    if (H5Ldelete(r->file, path, H5P_DEFAULT) < 0)
+        return mcs_res_h5err(err, r, path, "cannot remove");
+    return MCS_OK;
+}
+
 mcs_status mcs_results_commit(mcs_results **rp, mcs_error *err)
 {
     mcs_results *r = rp ? *rp : NULL;

@@ -57,6 +57,9 @@ mcs_status mcs_results_commit(mcs_results **r, mcs_error *err);
 /* give up a run being written: close and remove the temporary. Safe on NULL. */
 void mcs_results_abort(mcs_results **r);
 
+/* remove a dataset or group (and what it holds) from a file being written; absent: nothing */
+mcs_status mcs_results_remove(mcs_results *r, const char *path, mcs_error *err);
+
 /* open a results file read-only */
 mcs_status mcs_results_open(mcs_results **out, const char *path, mcs_error *err);
 

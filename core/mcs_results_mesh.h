@@ -2,8 +2,8 @@
  * (mcs_results.h conventions: nodes [nn,3] m with node_offset, elements [ne,k] with type,
  * elements_<type> for a part's other element shapes), in its reference shape or deformed by
  * /stageN/fields/displacement at a time of /stageN/fields/time (else /stageN/time). The reader
- * of the FE writer fe/fe_out_mesh.c: a mesh written by one stage's run is read into another
- * stage's scenario (`mesh: {from: OUT.h5:/stage2/mesh/<part>}`, fe/fe_scn_from.c). */
+ * of the FE writer fe/out/fe_out_mesh.c: a mesh written by one stage's run is read into another
+ * stage's scenario (`mesh: {from: OUT.h5:/stage2/mesh/<part>}`, fe/scn/fe_scn_from.c). */
 #ifndef MCS_RESULTS_MESH_H
 #define MCS_RESULTS_MESH_H
 

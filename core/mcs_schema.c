@@ -444,7 +444,7 @@ static const mcs_skey sphere_keys[] = {
     MESH_COMMON,
     END,
 };
-/* a flat (2D-design) gas bag: two panels sewn at their edges (fe/fe_mesh_shell.c) */
+/* a flat (2D-design) gas bag: two panels sewn at their edges (fe/model/fe_mesh_shell.c) */
 static const mcs_skey flat_bag_keys[] = {
     V("size", LEN, 2, 2, REQ | GT, 0, "panel size along the two in-plane axes [m]"),
     Q("gap", LEN, REQ | GT, 0, 0, "distance of the two panels inside the seam [m]"),
@@ -459,7 +459,7 @@ static const mcs_skey line_keys[] = {
     I("divisions", REQ | GE, 1, 0, "truss elements along the line"),
     END,
 };
-/* FE parts on a body's surface at its pose of t = 0 (fe/fe_scn_pad.h): foam_pad, a layer of
+/* FE parts on a body's surface at its pose of t = 0 (fe/scn/fe_scn_pad.h): foam_pad, a layer of
  * solids (hexahedra over a patch of an ellipsoid, its inner face on the surface, the outer one
  * `thickness` out along the normal; prisms over a whole facet surface, along the vertex
  * normals); surface_shell, shells on the same patch or facets. The ellipsoid patch in its
@@ -479,7 +479,7 @@ static const mcs_skey foam_pad_keys[] = {
 };
 static const mcs_skey surface_shell_keys[] = {SURFACE_MESH_KEYS, END};
 /* a mesh from a file: a keyword deck's part, or a part a run wrote to a results file
- * (fe/fe_scn_from.c, docs/exchange.md); one of keyword / from (mcs_rule_mesh_file) */
+ * (fe/scn/fe_scn_from.c, docs/exchange.md); one of keyword / from (mcs_rule_mesh_file) */
 static const mcs_skey keyword_keys[] = {
     /* an LS-DYNA keyword file, relative to the YAML file that names it */
     S("keyword", NE, "LS-DYNA keyword file (or give generate: or from:)"),
@@ -551,7 +551,7 @@ static const mcs_svariant mesh_variants[] = {{"square_tube", &square_tube_map},
                                              {"sedan_side", &sedan_side_map},
                                              {"(keyword)", &keyword_map},
                                              {0}};
-/* the initial metric method (fe/fe_imm.c, docs/gasbag.md): membrane parts only */
+/* the initial metric method (fe/elem/fe_imm.c, docs/gasbag.md): membrane parts only */
 static const mcs_skey mesh_initial_keys[] = {
     V("scale", NONE, 3, 3, REQ | GT, 0, "factors along x, y, z, each in (0, 1]"),
     V("about", LEN, 3, 3, 0, 0, "fixed point (default: the part's bounding-box middle) [m]"),
@@ -587,7 +587,7 @@ static const mcs_skey shell_keys[] = {
 static const mcs_skey solid_keys[] = {
     HOURGLASS,
     /* hex8: one point + hourglass control (LS-DYNA ELFORM 1) or 2x2x2 Gauss, selective
-     * reduced (fe/fe_hex_full.c) */
+     * reduced (fe/elem/fe_hex_full.c) */
     E("formulation", "one_point|full", 0, "hex integration (default one_point)"),
     END,
 };
@@ -631,7 +631,7 @@ static const mcs_skey plastic_keys[] = {
     Q("cowper_symonds_p", NONE, GT, 0, 0, "Cowper-Symonds p"),
     END,
 };
-/* foam (fe/fe_foam.c, in the spirit of LS-DYNA MAT_083 and MAT_057): nominal stress vs.
+/* foam (fe/mat/fe_foam.c, in the spirit of LS-DYNA MAT_083 and MAT_057): nominal stress vs.
  * engineering strain per principal direction (Poisson 0), curves at several strain rates
  * interpolated in log rate, hysteretic unloading; give stress_strain or curves */
 static const mcs_skey foam_curve_keys[] = {
@@ -687,7 +687,7 @@ static const mcs_skey attach_keys[] = {
     R("body", BODY, REQ, "stage-1 body carrying the nodes"),
     /* surface: the nodes on one of the body's ellipsoid or facet surfaces (within 0.1 mm; a
      * foam_pad's inner face, a surface_shell, a keyword mesh modelled on the body),
-     * fe/fe_scn_pad.c */
+     * fe/scn/fe_scn_pad.c */
     E("where", "x_min|x_max|y_min|y_max|z_min|z_max|all|surface", REQ,
       "which nodes of the part (as boundary, or those on the body's surfaces): they move "
       "rigidly with the body"),
@@ -729,7 +729,7 @@ static const mcs_skey load_keys[] = {
 };
 static const mcs_smap load_map = {.what = "load", .keys = load_keys};
 
-/* a rigid wall moved by a curve (fe/fe_wall_motion.c; LS-DYNA
+/* a rigid wall moved by a curve (fe/step/fe_wall_motion.c; LS-DYNA
  * *BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL VAD 0, 1, 2): along `direction` (default the normal),
  * on top of `velocity` t (the initial velocity of an acceleration curve) */
 static const mcs_skey wall_vel_keys[] = {
@@ -841,7 +841,7 @@ static const mcs_skey fe_contact_keys[] = {
 static const mcs_smap fe_contact_map = {
     .what = "FE contact", .keys = fe_contact_keys, .disc = "type", .variants = fe_contact_variants};
 
-/* ---- fe: discrete springs and dampers, point masses (fe/fe_discrete.c) ---- */
+/* ---- fe: discrete springs and dampers, point masses (fe/elem/fe_discrete.c) ---- */
 
 static const mcs_skey spring_end_keys[] = {
     /* a node of a part (the one nearest to point), or without part a fixed anchor point */
@@ -1116,6 +1116,39 @@ static const mcs_skey stage2_keys[] = {
 };
 static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys};
 
+/* ---- retune and loop (docs/retune.md, docs/loop.md, docs/contracts.md) ---- */
+
+/* the stage-1 names and target paths `mcrash retune` uses (defaults: the sport motorcycle
+ * against a rigid wall); read by translators/tr_retune.c */
+static const mcs_skey retune_keys[] = {
+    S("wall_body", NE, "stage-1 body the wall force acts on (default barrier)"),
+    S("joint", NE, "stage-1 restrained revolute joint of the fork hinge (default "
+                   "moto_fork_deformation)"),
+    S("tyre", NE, "characteristic of the front tyre's contact (default tyre_front)"),
+    S("fork", NE, "elastic-plastic characteristic of the fork hinge (default fork_deformation)"),
+    S("target_force", NE, "stage-3 wall force: a dataset, or a group whose members' force are "
+                          "summed (default: the impact wall, else every wall)"),
+    S("target_angle", NE, "stage-3 fork angle dataset (default /stage3/channels/<joint>_angle, "
+                          "else /stage3/joints/<joint>/angle)"),
+    A("free", 0, "parameters fitted, a list of tyre_force_scale, fork_moment_scale, "
+                 "fork_elastic_limit, fork_stop_angle (default all four)"),
+    Q("end_time", MCS_DIM_TIME, GT, 0, 0, "compared span [s] (default the target's)"),
+    END,
+};
+static const mcs_smap retune_map = {.what = "retune block", .keys = retune_keys};
+
+/* `mcrash loop`'s scenarios, relative to the file that names them (as include:) */
+static const mcs_skey loop_keys[] = {
+    S("wall", REQ | NE, "stage-3 wall scenario (the target of retune)"),
+    S("retune", REQ | NE, "stage-1 scenario of the same wall case, retuned (its retune: block)"),
+    S("crash", REQ | NE, "stage-1/2 crash scenario (a stage2: block); the retuned curves are "
+                         "merged over it"),
+    I("max_iter", GE | LE, 1, 100, "iterations at most (default 5; --max-iter wins)"),
+    Q("tolerance", NONE, GT, 0, 0, "converged when no rating changes by more (default 0.01)"),
+    END,
+};
+static const mcs_smap loop_map = {.what = "loop block", .keys = loop_keys};
+
 /* ---- the root ---- */
 
 static const mcs_skey root_keys[] = {
@@ -1137,6 +1170,8 @@ static const mcs_skey root_keys[] = {
     L("mount_points", mount_map, 0, "named points on bodies"),
     M("rider", rider_map, 0, "seat the rider on the motorcycle"),
     M("stage2", stage2_map, 0, "stage 2: bodies prescribed from a stage-1 results file"),
+    M("retune", retune_map, 0, "mcrash retune: stage-1 names and stage-3 target paths"),
+    M("loop", loop_map, 0, "mcrash loop: the wall, retune and crash scenarios"),
     NM("energy_groups", egroup_map, 0,
        "energy balances of named groups of bodies, split by contact partner (default: rider)"),
     END,

@@ -1,5 +1,5 @@
 /* mcs_scn_rule_pad.c: a mesh on a body's surface (generate: foam_pad | surface_shell,
- * fe/fe_scn_pad.h) checked when the scenario is loaded: `surface` names an ellipsoid or facet
+ * fe/scn/fe_scn_pad.h) checked when the scenario is loaded: `surface` names an ellipsoid or facet
  * surface of `body`; an ellipsoid needs element_size and the patch (longitude spanning at most
  * one turn, latitude inside (-90, 90) deg: the poles stay out), a facet is covered whole (no
  * patch keys). */

@@ -6,13 +6,13 @@
 #ifndef FE_OUT_H
 #define FE_OUT_H
 
-#include "fe/fe_out_contact.h"
-#include "fe/fe_out_joint.h"
+#include "fe/out/fe_out_contact.h"
+#include "fe/out/fe_out_joint.h"
 #include "fe/fe_out_mesh.h"
-#include "fe/fe_out_motion.h"
-#include "fe/fe_out_parts.h"
+#include "fe/out/fe_out_motion.h"
+#include "fe/out/fe_out_parts.h"
 #include "fe/fe_scn_restraints.h"
-#include "fe/fe_scn_slipring.h"
+#include "fe/scn/fe_scn_slipring.h"
 
 typedef struct {
     fe_out_field field;     /* /stage<N>/fields                                  */

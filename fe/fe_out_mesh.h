@@ -1,7 +1,7 @@
 /* fe_out_mesh: one part's initial mesh in /stage<N>/mesh/<part> with each element's own cell type
  * (mcs_results.h conventions): shells quad4, trusses line2, 10-node tetrahedra tet10, and a
  * solid part's hexahedra hex8, its tetrahedra tet4 and its pentahedra wedge6 (the kernel keeps
- * the last two as degenerate hexes, fe/fe_tet.c). A part with one solid shape writes it in
+ * the last two as degenerate hexes, fe/elem/fe_tet.c). A part with one solid shape writes it in
  * `elements`; with several, the hexahedra (else the wedges) go to `elements` and each other
  * shape to elements_<type>. */
 #ifndef FE_OUT_MESH_H

@@ -34,7 +34,7 @@ typedef struct {
 } fe_attach;
 
 /* a rigid placement of stage-1 bodies, applied to the FE parts they carry (stage 1's impact:
- * block, stage1_mb/mb_impact.h; fe/fe_scn_place.c): a part is carried by the body of its
+ * block, stage1_mb/mb_impact.h; fe/scn/fe_scn_place.c): a part is carried by the body of its
  * attach:, of a retractor's anchor_body or of a slip ring's body on it, or by the carrier of a
  * part it shares nodes with. The parts carried by a body of group `moved` move x' = R x + t
  * with it (`where` still selects on the positions before the move), and so do their

@@ -15,7 +15,7 @@
  *   the next ODE step (the mean force, extrapolated as the attached nodes' are). Its work on
  *   the body is external work of the coupled balance, like the retractor's work on the belt
  *   node is in the FE kernel's (the retractor is outside the structure, fe/fe_restraint.h).
- *   fe.sliprings[].body is an attached node (fe/fe_scn_build.c): mb_couple.c carries it. */
+ *   fe.sliprings[].body is an attached node (fe/scn/fe_scn_build.c): mb_couple.c carries it. */
 #ifndef MB_COUPLE_RX_H
 #define MB_COUPLE_RX_H
 

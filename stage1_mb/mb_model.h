@@ -158,7 +158,7 @@ typedef struct {
     struct mb_presc *presc;       /* prescribed bodies (mb_prescribe.h) (nbody), NULL none    */
     struct mb_egroup *egroup;     /* energy groups (mb_egroup.h: the rider's), NULL none      */
     /* the impact: placement (mb_impact.c) of the motorcycle group, x' = R x + t; the FE parts
-     * carried by its bodies move with it (mb_couple.c, fe/fe_scn_place.c) */
+     * carried by its bodies move with it (mb_couple.c, fe/scn/fe_scn_place.c) */
     double place_R[9], place_t[3]; /* rotation (row-major) [-], translation [m]             */
     int *body_group;              /* impact group of each body: MB_GROUP_* (nbody); NULL without
                                      an impact: block                                          */

@@ -326,7 +326,7 @@ mcs_status s3_sedan_build(fe_builder *b, const mcs_node *model, const s3_sedan_o
     int p_rail = part(&g, "roof_rail", M_PLASTIC, RAIL_T, STEEL_RHO, STEEL_E, STEEL_NU, RAIL_SY);
     int p_glass = part(&g, "glass", M_PLASTIC, GLASS_T, GLASS_RHO, GLASS_E, GLASS_NU, GLASS_SY);
     if (g.st) return g.st;
-    b->part[p_glass].material.failure_strain = GLASS_FS; /* erodes (fe/fe_stages.c) */
+    b->part[p_glass].material.failure_strain = GLASS_FS; /* erodes (fe/step/fe_stages.c) */
 
     /* door panels: perimeters on the body (hinges, latch, frame) */
     double o1[3] = {xo, ya, zlo}, u[3] = {0, yb - ya, 0}, v[3] = {0, 0, zhi - zlo};

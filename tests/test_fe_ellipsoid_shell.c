@@ -1,5 +1,5 @@
 /* test_fe_ellipsoid_shell: shell nodes meet a rigid ellipsoid at half the shell thickness
- * (fe/fe_contact.c, the ellipsoid part), as they meet contact segments. */
+ * (fe/contact/fe_contact.c, the ellipsoid part), as they meet contact segments. */
 #include <math.h>
 
 #include "fe/fe_contact.h"

@@ -1,4 +1,4 @@
-/* Stable step of lightly held hexahedra (fe/fe_hex_dt.c).
+/* Stable step of lightly held hexahedra (fe/elem/fe_hex_dt.c).
  * A lone one-point cube of side h has lumped nodal masses rho h^3/8 and a uniform-dilatation
  * mode omega^2 = 4 (3 lambda + 2 mu)/(rho h^2) (Rayleigh quotient of the exact one-point
  * stiffness; Flanagan & Belytschko 1981 give the b_I), faster than the L/c estimate's

@@ -1,4 +1,4 @@
-/* test_fe_imm: the initial metric method (fe/fe_imm.c, scenario key fe.parts[].mesh.initial):
+/* test_fe_imm: the initial metric method (fe/elem/fe_imm.c, scenario key fe.parts[].mesh.initial):
  * a membrane part starts on a scaled-down copy of its mesh while its elements keep the unscaled
  * mesh as their stress-free reference (the 2023 paper, Sec. 2.3.2, Fig. 15). Each case gives its
  * closed form and source. */

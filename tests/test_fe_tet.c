@@ -1,5 +1,5 @@
 /* test_fe_tet: 4-node tetrahedra and 6-node pentahedra as degenerate one-point hexahedra
- * (fe/fe_tet.c): constant-strain gradients, patch tests, lumped masses, the stable step, the
+ * (fe/elem/fe_tet.c): constant-strain gradients, patch tests, lumped masses, the stable step, the
  * bar wave speed, keyword decks. */
 #include <math.h>
 #include <stdlib.h>

@@ -1,4 +1,4 @@
-/* test_fe_tet10: the 10-node quadratic tetrahedron (fe/fe_tet10.c): shape functions,
+/* test_fe_tet10: the 10-node quadratic tetrahedron (fe/elem/fe_tet10.c): shape functions,
  * the linear patch test, exact reproduction of a quadratic field, HRZ masses, the stable step
  * from the element's own frequency, a cantilever against Euler-Bernoulli (with the linear
  * tetrahedron for comparison), the 1-D wave speed in a bar, energy balance. */

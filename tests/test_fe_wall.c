@@ -1,4 +1,4 @@
-/* test_fe_wall: planar rigid walls with mass (fe/fe_wall.c; LS-DYNA *RIGIDWALL_PLANAR_MOVING)
+/* test_fe_wall: planar rigid walls with mass (fe/step/fe_wall.c; LS-DYNA *RIGIDWALL_PLANAR_MOVING)
  * against closed forms: momentum, the elastic two-body collision, the energy balance. */
 #include <math.h>
 

@@ -1,4 +1,4 @@
-/* test_fe_wall_fric: Coulomb friction on planar rigid walls (fe/fe_wall_fric.c; LS-DYNA
+/* test_fe_wall_fric: Coulomb friction on planar rigid walls (fe/step/fe_wall_fric.c; LS-DYNA
  * *RIGIDWALL_PLANAR FRIC) against the sliding block's closed form. */
 #include <math.h>
 #include <string.h>

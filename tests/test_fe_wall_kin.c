@@ -1,4 +1,4 @@
-/* test_fe_wall_kin: kinematic (constraint) rigid walls with mass (fe/fe_wall_kin.c) against
+/* test_fe_wall_kin: kinematic (constraint) rigid walls with mass (fe/step/fe_wall_kin.c) against
  * closed forms: the perfectly plastic two-body collision, the exact active set of several
  * landing nodes, and an elastic bar striking a free wall (1-D wave solution). */
 #include <math.h>

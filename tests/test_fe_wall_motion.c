@@ -1,4 +1,4 @@
-/* test_fe_wall_motion: rigid walls moved by curves (fe/fe_wall_motion.c; scenario
+/* test_fe_wall_motion: rigid walls moved by curves (fe/step/fe_wall_motion.c; scenario
  * `rigid_walls: [{motion}]`, LS-DYNA *BOUNDARY_PRESCRIBED_MOTION_RIGIDWALL) against closed
  * forms, and the keyword read, built, written and read back. */
 #include <math.h>

@@ -1,7 +1,7 @@
 /* test_kw_contact.c: *CONTACT_* (six types, _ID/_TITLE, cards 1-3 and the optional cards),
  * *SET_SEGMENT, *SET_*_LIST_GENERATE, *INITIAL_VELOCITY_NODE, *BOUNDARY_PRESCRIBED_MOTION_*,
- * *LOAD_NODE_*, *LOAD_SEGMENT, *CONTROL_TERMINATION (fe/fe_kw_cards_contact.c,
- * fe/fe_kw_build_contact.c): values read, what the model gets, refusals naming the field or
+ * *LOAD_NODE_*, *LOAD_SEGMENT, *CONTROL_TERMINATION (fe/keyword/fe_kw_cards_contact.c,
+ * fe/keyword/fe_kw_build_contact.c): values read, what the model gets, refusals naming the field or
  * keyword with FILE:LINE; and a whole deck run by `mcrash run` (fe: {keyword: ...}) against
  * 1-D impact theory. */
 #include "cli_util.h"

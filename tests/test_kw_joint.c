@@ -1,6 +1,6 @@
-/* test_kw_joint: the joint and constraint keywords (fe/fe_kw_cards_joint.c,
- * fe/fe_kw_build_joint.c, fe/fe_kw_joint_model.c; docs/keyword.md): a deck with a revolute
- * joint by node pairs, its generalized stiffness (curves and stops, in mm-ms-kg), extra nodes
+/* test_kw_joint: the joint and constraint keywords (fe/keyword/fe_kw_cards_joint.c,
+ * fe/keyword/fe_kw_build_joint.c, fe/keyword/fe_kw_joint_model.c; docs/keyword.md): a deck with
+ * a revolute joint by node pairs, its generalized stiffness (curves and stops, in mm-ms-kg), extra nodes
  * and a nodal rigid body read into the kernel's joint; the writer's round trip of a model with
  * joints to the ground (the same motion, step by step); bad cards at FILE:LINE(:COL). */
 #include "fe/fe_joint.h"

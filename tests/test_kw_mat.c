@@ -1,5 +1,5 @@
-/* test_kw_mat: the material keywords of fe/fe_kw_cards_mat.c (docs/keyword.md): each read with
- * its fields in SI, run on the kernel's models against closed forms (a bilinear plastic hex in
+/* test_kw_mat: the material keywords of fe/keyword/fe_kw_cards_mat.c (docs/keyword.md): each read
+ * with its fields in SI, run on the kernel's models against closed forms (a bilinear plastic hex in
  * uniaxial tension, a null plate that moves as free masses, a rigid block held along x by
  * CON1, a low-density foam cube on its loading curve), the refusals named at FILE:LINE:COL, and
  * the writer's round trip of the new cards. */

@@ -1,5 +1,5 @@
 /* tests for the body-side contact law of fe.contacts[] of type bodies (body_characteristic:
- * fe/fe_contact.c, docs/contracts.md "Soft body surfaces in bodies contacts"): the body's
+ * fe/contact/fe_contact.c, docs/contracts.md "Soft body surfaces in bodies contacts"): the body's
  * surface yields by delta_b under the stress sigma(delta_b) over each FE node's tributary area,
  * in series with the node's penalty spring.
  *

@@ -1,5 +1,5 @@
 /* tests for the impact: placement of FE parts carried by stage-1 bodies (stage1_mb/mb_impact.c,
- * mb_couple.c, fe/fe_scn_place.c; docs/stage1_engine.md "Coupling to FE parts").
+ * mb_couple.c, fe/scn/fe_scn_place.c; docs/stage1_engine.md "Coupling to FE parts").
  *
  * A box body moto_frame (the motorcycle group by the default pattern moto_*) carries a steel
  * truss bar attached at its x_min end. impact: turns the group by heading_angle psi about the

@@ -530,7 +530,7 @@ static void test_xdmf_shows_parts_and_bodies(void)
 }
 
 /* the same bytes on 1 and 2 threads: a bag of > 8 chunks of 128 elements, so that the FE
- * loops run threaded (fe/fe_parallel.c); SOURCE_DATE_EPOCH fixes /meta created */
+ * loops run threaded (fe/step/fe_parallel.c); SOURCE_DATE_EPOCH fixes /meta created */
 static void test_same_bytes_on_1_and_2_threads(void)
 {
     const char *scn = sled("fine", 12, 1.5);

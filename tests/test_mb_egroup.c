@@ -67,7 +67,7 @@ static double drop_check(const mb_model *m, const char *partner, double g, doubl
 }
 
 /* A 5 kg ball (R 50 mm) falls at 3 m/s under gravity onto a fixed-bottom foam block (the
- * concept's leg-protector foam, fe/fe_foam.c): the energy it transferred to the block equals
+ * concept's leg-protector foam, fe/mat/fe_foam.c): the energy it transferred to the block equals
  * its loss of kinetic + potential energy at every step. */
 #define FOAM_YAML                                                                                  \
     "mcrash: 1\nname: foam drop\n"                                                                 \
@@ -110,7 +110,7 @@ static void test_drop_on_foam(void)
 }
 
 /* A 2 kg ball falls at 4 m/s (no gravity) onto a fabric sheet held at its four edges (an
- * airbag's membrane, fe/fe_fabric.c): the ball stretches it and rebounds; the energy it
+ * airbag's membrane, fe/mat/fe_fabric.c): the ball stretches it and rebounds; the energy it
  * transferred equals its kinetic energy loss at every step. */
 #define SHEET_YAML                                                                                 \
     "mcrash: 1\nname: sheet drop\n"                                                                \

@@ -1,5 +1,5 @@
 /* test_mesh_exchange: meshes from a results file into another scenario (`mesh: {from:
- * OUT.h5:/stageN/mesh/<part>, at: ...}`, fe/fe_scn_from.c, core/mcs_results_mesh.c):
+ * OUT.h5:/stageN/mesh/<part>, at: ...}`, fe/scn/fe_scn_from.c, core/mcs_results_mesh.c):
  * - a model of every element shape (hexahedron, pentahedra, tetrahedra, a tet10, shells with a
  *   triangle, trusses) written by the FE writer and read back gives the same node coordinates
  *   and connectivity, bit for bit; the deformed shape at a time between two field rows is the

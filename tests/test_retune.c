@@ -142,14 +142,16 @@ static void test_identifiability(void)
     tr_rt_opts o = tr_rt_opts_default();
     o.scenario = SCN;
     o.free_mask = full ? 0xf : 0x3;
+    o.jobs = 2;
     tr_rt_target t;
     tr_rt_base b;
     tr_rt_result r;
     mcs_error e = {0};
-    CHECK(tr_rt_read_target(h5, o.joint, &t, &e) == MCS_OK);
+    CHECK(tr_rt_read_target(h5, &o, &t, &e) == MCS_OK);
     CHECK(tr_rt_read_base(&o, &b, &e) == MCS_OK);
     CHECK(tr_rt_fit(&o, &b, &t, &r, &e) == MCS_OK);
     if (e.status) fprintf(stderr, "%s\n", e.msg);
+    tr_rt_result_free(&r);
     tr_rt_target_free(&t);
     printf("retune: %d iterations %d runs (%s); p = %.5f %.5f %.5f %.5f; iso force %.3f -> "
            "%.3f, angle %.3f -> %.3f\n",
@@ -172,14 +174,49 @@ static void test_identifiability(void)
     }
 
     /* the command: CURVES.yaml that stage 1 includes, /curves in the results file */
-    char cmd[1024], curves[256];
+    char cmd[1024], curves[256], s1[256];
     snprintf(curves, sizeof curves, "%s/curves.yaml", dir);
-    snprintf(cmd, sizeof cmd, "retune %s --scenario %s -o %s --end-time 0.03 --json", h5, SCN,
-             curves);
+    /* the scenario's retune: block: one free parameter over the first 30 ms */
+    snprintf(s1, sizeof s1, "%s/s1.yaml", dir);
+    char *real = realpath(SCN, NULL);
+    FILE *f = fopen(s1, "w");
+    CHECK(f && real);
+    if (f) {
+        fprintf(f, "mcrash: 1\ninclude: [\"%s\"]\nretune: {free: [tyre_force_scale], "
+                   "end_time: 30 ms, wall_body: barrier, tyre: tyre_front}\n",
+                real);
+        fclose(f);
+    }
+    free(real);
+    snprintf(cmd, sizeof cmd, "retune %s --scenario %s -o %s -j 1 --csv %s/cmp.csv --json", h5, s1,
+             curves, dir);
     cli_result *c = cli_run(cmd);
     CHECK(c->status == 0);
     if (c->status) fprintf(stderr, "%s", c->err);
     CHECK_STR_CONTAINS(c->out, "\"iso18571\": {\"wall_force\": {\"before\": ");
+    /* the same fit two stage-1 runs at a time: the same output to the last digit (each run is
+     * a fresh process whatever -j, docs/retune.md "Parallel runs") */
+    char *out1 = strdup(c->out);
+    CHECK_STR_CONTAINS(c->out, "\"fork_moment_scale\": {\"before\": 1, \"after\": 1,");
+    /* the compared curves: a header and one row per 0.1 ms of the 30 ms */
+    char csvp[256], line[512];
+    snprintf(csvp, sizeof csvp, "%s/cmp.csv", dir);
+    FILE *fc = fopen(csvp, "r");
+    int rows = 0;
+    CHECK(fc && fgets(line, sizeof line, fc));
+    CHECK_STR_CONTAINS(line, "time [s], force_stage3 [N], force_before [N], force_after [N]");
+    while (fc && fgets(line, sizeof line, fc))
+        rows++;
+    if (fc) fclose(fc);
+    CHECK(rows == 301);
+    snprintf(cmd, sizeof cmd, "retune %s --scenario %s -o %s -j 2 --csv %s/cmp.csv --json", h5, s1,
+             curves, dir);
+    c = cli_run(cmd);
+    CHECK(c->status == 0);
+    CHECK(out1 && strcmp(out1, c->out) == 0);
+    if (c->status) fprintf(stderr, "-j 2: status %d: %s", c->status, c->err);
+    if (out1 && strcmp(out1, c->out)) fprintf(stderr, "-j 1: %s-j 2: %s", out1, c->out);
+    free(out1);
     mcs_scenario *s = NULL;
     CHECK(mcs_scenario_load(curves, &s, &e) == MCS_OK);
     mcs_scenario_destroy(&s);

@@ -1,6 +1,6 @@
 /* tests for the stage-2 cockpit: stage2.fe merged into fe: (stage2_fe/s2_scenario.c,
  * core/mcs_scn_merge.c), foam pads generated on a body's ellipsoid and attached by
- * `where: surface` (fe/fe_scn_pad.c), material_from (fe/fe_scn_build.c).
+ * `where: surface` (fe/scn/fe_scn_pad.c), material_from (fe/scn/fe_scn_build.c).
  * References (docs/validation_stage2.md "The cockpit"), none a value of the code under test:
  * the merge against the scenario text it must give (keys added, settings replaced, errors at
  * their FILE:LINE:COL); the pads' geometry against closed forms (nodes at R and R + t on a

@@ -1,4 +1,4 @@
-/* test_s3_mesh: /stage3/mesh with each element's own cell type (fe/fe_out_mesh.c) and the
+/* test_s3_mesh: /stage3/mesh with each element's own cell type (fe/out/fe_out_mesh.c) and the
  * XDMF and keyword exports of it: a solid part holding a hexahedron, two pentahedra and six
  * tetrahedra (the kernel's degenerate hexes) and a tet10 part are written as hex8 + wedge6 +
  * tet4 blocks and tet10, the .xmf has the topologies Hexahedron (1), Wedge (2),

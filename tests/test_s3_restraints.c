@@ -104,7 +104,7 @@ static void test_retractor_scenario(void)
     remove(out);
 }
 
-/* mesh.generate: flat_bag (fe/fe_mesh_shell.c), a 2D-design bag of two sewn panels: closed
+/* mesh.generate: flat_bag (fe/model/fe_mesh_shell.c), a 2D-design bag of two sewn panels: closed
  * (the airbag builder accepts it) and its volume at t = 0 by hand: the seam nodes at w = 0,
  * the panels' inner nodes at +-g/2, each membrane quad split into two triangles (volume under
  * a triangle: its area x the mean of its 3 heights). Inner cells enclose g du dv (both panels),

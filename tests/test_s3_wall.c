@@ -1,4 +1,4 @@
-/* test_s3_wall: the stage-3 rigid-wall keys added with fe/fe_wall_motion.c (a wall `motion`
+/* test_s3_wall: the stage-3 rigid-wall keys added with fe/step/fe_wall_motion.c (a wall `motion`
  * curve) from a scenario file to /stage3. */
 #include "harness.h"
 #include "s3_test_util.h"

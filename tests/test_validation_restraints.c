@@ -362,7 +362,7 @@ static void test_pretensioner_payin(void)
 }
 
 /* nominal stress of a foam curve (strain, stress) pairs at strain e: piecewise linear through
- * (0, 0), the last segment continued (docs: fe/fe_foam.c) */
+ * (0, 0), the last segment continued (docs: fe/mat/fe_foam.c) */
 static double foam_curve(const double (*c)[2], int n, double e)
 {
     double x0 = 0, y0 = 0;

@@ -47,24 +47,29 @@ mcs_status tr_lm_solve(tr_lm_fn f, void *ctx, int n, int m, double *p, const dou
     double *buf = calloc(3 * mm + mm * nn + 2 * nn * nn + 4 * nn, sizeof(double));
     if (!buf) return MCS_ERR(err, MCS_ERR_NOMEM, "least squares: out of memory");
     double *r = buf, *rt = r + mm, *rj = rt + mm, *J = rj + mm, *A = J + mm * nn;
-    double *A2 = A + nn * nn, *g = A2 + nn * nn, *dp = g + nn, *pt = dp + nn, *pj = pt + nn;
+    double *A2 = A + nn * nn, *g = A2 + nn * nn, *dp = g + nn, *pt = dp + nn, *hs = pt + nn;
+    double *P = A2; /* the Jacobian's points [n x n], before A2 is used */
     mcs_status st = f(ctx, p, r, err);
     res->nfev = 1;
     double cost = st ? 0 : half_sq(r, m), lambda = d.lambda0;
     res->cost0 = cost;
     for (int it = 0; !st && it < d.max_iter; it++) {
         res->iter = it + 1;
-        /* forward-difference Jacobian, column j */
-        for (int j = 0; j < n && !st; j++) {
+        /* forward-difference Jacobian, column j (all at once with `many`: P in A2's place) */
+        for (int j = 0; j < n; j++) {
             double h = d.fd_rel * (hi[j] - lo[j]);
-            memcpy(pj, p, nn * sizeof(double));
-            if (pj[j] + h > hi[j]) h = -h;
-            pj[j] += h;
-            st = f(ctx, pj, rj, err);
-            res->nfev++;
-            for (int i = 0; i < m; i++)
-                J[(size_t)j * mm + (size_t)i] = (rj[i] - r[i]) / h;
+            hs[j] = p[j] + h > hi[j] ? -h : h;
+            memcpy(P + (size_t)j * nn, p, nn * sizeof(double));
+            P[(size_t)j * nn + (size_t)j] += hs[j];
         }
+        if (d.many) st = d.many(ctx, n, P, J, err);
+        for (int j = 0; j < n && !st; j++) {
+            double *col = J + (size_t)j * mm;
+            if (!d.many) st = f(ctx, P + (size_t)j * nn, rj, err);
+            for (int i = 0; i < m && !st; i++)
+                col[i] = ((d.many ? col[i] : rj[i]) - r[i]) / hs[j];
+        }
+        res->nfev += n;
         if (st) break;
         for (int a = 0; a < n; a++) {
             double s = 0;

@@ -10,7 +10,12 @@
 /* residuals r[m] at p[n]; a non-zero return fails the fit with err filled */
 typedef mcs_status (*tr_lm_fn)(void *ctx, const double *p, double *r, mcs_error *err);
 
+/* residuals R[k x m] at the k points P[k x n] (row-major), e.g. in parallel; a non-zero
+ * return fails the fit */
+typedef mcs_status (*tr_lm_many_fn)(void *ctx, int k, const double *P, double *R, mcs_error *err);
+
 typedef struct {
+    tr_lm_many_fn many; /* when set, the Jacobian's n columns in one call (default NULL)     */
     int max_iter;   /* outer iterations (Jacobians) (50)                                  */
     double fd_rel;  /* forward-difference step as a fraction of hi - lo (1e-4)            */
     double ftol;    /* stop when the cost falls by less than ftol * cost in an iteration (1e-10) */

@@ -9,6 +9,7 @@
 #include "core/mcs_scenario.h"
 #include "stage1_mb/mb_model.h"
 #include "translators/tr_lm.h"
+#include "translators/tr_pool.h"
 
 #include <limits.h>
 #include <math.h>
@@ -17,13 +18,12 @@
 
 tr_rt_opts tr_rt_opts_default(void)
 {
-    return (tr_rt_opts){.wall_body = "barrier",
-                        .joint = "moto_fork_deformation",
-                        .tyre_char = "tyre_front",
-                        .fork_char = "fork_deformation",
-                        .cfc = 60,
-                        .dt = 1e-4,
-                        .free_mask = 0xf};
+    tr_rt_opts o = {.cfc = 60, .dt = 1e-4, .free_mask = 0xf, .scan = 1};
+    snprintf(o.wall_body, sizeof o.wall_body, "barrier");
+    snprintf(o.joint, sizeof o.joint, "moto_fork_deformation");
+    snprintf(o.tyre_char, sizeof o.tyre_char, "tyre_front");
+    snprintf(o.fork_char, sizeof o.fork_char, "fork_deformation");
+    return o;
 }
 
 const char *tr_rt_par_name(int i)
@@ -31,6 +31,53 @@ const char *tr_rt_par_name(int i)
     static const char *const n[TR_RT_NPAR] = {"tyre_force_scale", "fork_moment_scale",
                                               "fork_elastic_limit", "fork_stop_angle"};
     return i >= 0 && i < TR_RT_NPAR ? n[i] : "?";
+}
+
+int tr_rt_par_index(const char *name)
+{
+    for (int i = 0; name && i < TR_RT_NPAR; i++)
+        if (!strcmp(name, tr_rt_par_name(i))) return i;
+    return -1;
+}
+
+/* a string key of the retune: block into dst */
+static void get_str(const mcs_node *blk, const char *key, char *dst, size_t n)
+{
+    const char *v = mcs_node_str(mcs_node_get(blk, key));
+    if (v) snprintf(dst, n, "%s", v);
+}
+
+mcs_status tr_rt_read_opts(tr_rt_opts *o, mcs_error *err)
+{
+    mcs_scenario *scn = NULL;
+    mcs_status st = mcs_scenario_load(o->scenario, &scn, err);
+    if (st) return st;
+    const mcs_node *blk = mcs_node_get(mcs_scenario_root(scn), "retune");
+    if (blk) {
+        get_str(blk, "wall_body", o->wall_body, sizeof o->wall_body);
+        get_str(blk, "joint", o->joint, sizeof o->joint);
+        get_str(blk, "tyre", o->tyre_char, sizeof o->tyre_char);
+        get_str(blk, "fork", o->fork_char, sizeof o->fork_char);
+        get_str(blk, "target_force", o->target_force, sizeof o->target_force);
+        get_str(blk, "target_angle", o->target_angle, sizeof o->target_angle);
+        o->end_time = mcs_node_num_or(blk, "end_time", o->end_time);
+        const mcs_node *fr = mcs_node_get(blk, "free");
+        if (fr && mcs_node_kind(fr) != MCS_NODE_SEQ)
+            st = mcs_node_error(fr, err, MCS_ERR_TYPE, "retune.free: a list of parameter names");
+        if (fr && !st) o->free_mask = 0;
+        for (int i = 0; fr && !st && i < mcs_node_len(fr); i++) {
+            const mcs_node *it = mcs_node_at(fr, i);
+            int k = tr_rt_par_index(mcs_node_str(it));
+            if (k < 0)
+                st = mcs_node_error(it, err, MCS_ERR_RANGE,
+                                    "retune.free: unknown parameter (tyre_force_scale, "
+                                    "fork_moment_scale, fork_elastic_limit, fork_stop_angle)");
+            else
+                o->free_mask |= 1 << k;
+        }
+    }
+    mcs_scenario_destroy(&scn);
+    return st;
 }
 
 /* bounds (docs/retune.md "Parameters"): scales 0.5..2; elastic limit 0.03..0.11 rad; stop
@@ -55,25 +102,75 @@ static mcs_status read1(mcs_results *h, const char *h5, const char *path, mcs_ar
     return mcs_results_read(h, path, a, err);
 }
 
-mcs_status tr_rt_read_target(const char *h5, const char *joint, tr_rt_target *t, mcs_error *err)
+/* the target's wall force: o->target_force, a dataset, or a group whose members' `force` are
+ * summed. By default (""): the wall named by the attribute impact_wall of /stage3/rigidwall (a
+ * generated motorcycle's run, stage3_fe/s3_wallcase.h), its force_mean (a penalty wall's
+ * interval mean) or force, else every wall's force summed */
+static mcs_status read_force(mcs_results *h, const char *h5, const char *fp, tr_rt_target *t,
+                             mcs_error *err)
+{
+    const char *grp = fp[0] ? fp : "/stage3/rigidwall";
+    char **walls = NULL, path[1024];
+    int nw = 0;
+    mcs_array af = {0};
+    mcs_res_kind kind = mcs_results_kind(h, grp);
+    mcs_status st = MCS_OK;
+    if (kind == MCS_RES_NONE)
+        return MCS_ERR(err, MCS_ERR_KEY,
+                       "%s: %s: not in the results file (retune needs the "
+                       "stage-3 wall force, docs/retune.md)",
+                       h5, grp);
+    if (kind == MCS_RES_GROUP && !fp[0] && mcs_results_has_attr(h, grp, "impact_wall")) {
+        walls = calloc(1, sizeof *walls);
+        if (!walls) return MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+        nw = 1;
+        st = mcs_results_attr_str(h, grp, "impact_wall", &walls[0], err);
+    } else if (kind == MCS_RES_GROUP) {
+        st = mcs_results_list(h, grp, &walls, &nw, err);
+        if (!st && nw == 0) st = MCS_ERR(err, MCS_ERR_KEY, "%s: %s: no wall in it", h5, grp);
+    } else {
+        nw = 1;
+    }
+    for (int w = 0; w < nw && !st; w++) {
+        if (kind != MCS_RES_GROUP) {
+            snprintf(path, sizeof path, "%s", grp);
+        } else {
+            snprintf(path, sizeof path, "%s/%s/force_mean", grp, walls[w]);
+            if (fp[0] || !mcs_results_exists(h, path))
+                snprintf(path, sizeof path, "%s/%s/force", grp, walls[w]);
+        }
+        st = read1(h, h5, path, &af, err);
+        if (!st && af.n != (size_t)t->nt)
+            st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: %s: %zu values for %d times", h5, path, af.n,
+                         t->nt);
+        for (int i = 0; i < t->nt && !st; i++)
+            t->force[i] += af.v[i];
+        mcs_array_free(&af);
+    }
+    mcs_results_list_free(&walls, nw);
+    return st;
+}
+
+mcs_status tr_rt_read_target(const char *h5, const tr_rt_opts *o, tr_rt_target *t,
+                             mcs_error *err)
 {
     *t = (tr_rt_target){0};
     mcs_results *h = NULL;
     mcs_status st = mcs_results_open(&h, h5, err);
     if (st) return st;
-    mcs_array at = {0}, aa = {0}, af = {0};
-    char path[512], **walls = NULL;
-    int nw = 0;
-    snprintf(path, sizeof path, "/stage3/joints/%s/angle", joint);
+    mcs_array at = {0}, aa = {0};
+    char path[1024];
+    /* by default a generated motorcycle's fork angle channel, named as stage 1's
+     * (stage3_fe/s3_wallcase.h), else a keyword deck's joint */
+    if (o->target_angle[0]) {
+        snprintf(path, sizeof path, "%s", o->target_angle);
+    } else {
+        snprintf(path, sizeof path, "/stage3/channels/%s_angle", o->joint);
+        if (!mcs_results_exists(h, path))
+            snprintf(path, sizeof path, "/stage3/joints/%s/angle", o->joint);
+    }
     st = read1(h, h5, "/stage3/time", &at, err);
     if (!st) st = read1(h, h5, path, &aa, err);
-    if (!st && !mcs_results_exists(h, "/stage3/rigidwall"))
-        st = MCS_ERR(err, MCS_ERR_KEY,
-                     "%s: /stage3/rigidwall: not in the results file "
-                     "(retune needs the stage-3 wall force, docs/retune.md)",
-                     h5);
-    if (!st) st = mcs_results_list(h, "/stage3/rigidwall", &walls, &nw, err);
-    if (!st && nw == 0) st = MCS_ERR(err, MCS_ERR_KEY, "%s: /stage3/rigidwall: no wall in it", h5);
     int nt = st ? 0 : (int)at.n;
     if (!st && (nt < 10 || aa.n != at.n))
         st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: %s: %zu values for %d times (at least 10)", h5, path,
@@ -88,18 +185,8 @@ mcs_status tr_rt_read_target(const char *h5, const char *joint, tr_rt_target *t,
     if (!st) {
         memcpy(t->t, at.v, (size_t)nt * sizeof(double));
         memcpy(t->angle, aa.v, (size_t)nt * sizeof(double));
+        st = read_force(h, h5, o->target_force, t, err);
     }
-    for (int w = 0; w < nw && !st; w++) {
-        snprintf(path, sizeof path, "/stage3/rigidwall/%s/force", walls[w]);
-        st = read1(h, h5, path, &af, err);
-        if (!st && af.n != (size_t)nt)
-            st =
-                MCS_ERR(err, MCS_ERR_FORMAT, "%s: %s: %zu values for %d times", h5, path, af.n, nt);
-        for (int i = 0; i < nt && !st; i++)
-            t->force[i] += af.v[i];
-        mcs_array_free(&af);
-    }
-    mcs_results_list_free(&walls, nw);
     mcs_array_free(&at), mcs_array_free(&aa);
     mcs_results_close(&h);
     if (st) tr_rt_target_free(t);
@@ -267,28 +354,86 @@ mcs_status tr_rt_stage1(const tr_rt_opts *o, const tr_rt_base *b, const double *
     return st;
 }
 
+/* one stage-1 run of a batch (tr_pool_fn): out = force[nt] then angle[nt] */
+typedef struct {
+    const tr_rt_opts *o;
+    const tr_rt_base *b;
+    const double *p;
+    int nt;
+    double dt;
+} many_ctx;
+
+static mcs_status one_case(void *vc, int k, void *out, mcs_error *err)
+{
+    const many_ctx *c = vc;
+    double *f = out;
+    return tr_rt_stage1(c->o, c->b, c->p + (size_t)k * TR_RT_NPAR, c->nt, c->dt, f, f + c->nt,
+                        err);
+}
+
+mcs_status tr_rt_stage1_many(const tr_rt_opts *o, const tr_rt_base *b, int np, const double *p,
+                             int nt, double dt, double *force, double *angle, mcs_error *err)
+{
+    size_t n = (size_t)nt;
+    double *buf = malloc((size_t)np * 2 * n * sizeof(double));
+    if (!buf) return MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+    many_ctx c = {.o = o, .b = b, .p = p, .nt = nt, .dt = dt};
+    mcs_status st = tr_pool_run(one_case, &c, np, 2 * n * sizeof(double), buf, o->jobs, err);
+    for (int k = 0; k < np && !st; k++) {
+        memcpy(force + (size_t)k * n, buf + (size_t)k * 2 * n, n * sizeof(double));
+        memcpy(angle + (size_t)k * n, buf + (size_t)k * 2 * n + n, n * sizeof(double));
+    }
+    free(buf);
+    return st;
+}
+
 /* the fit's context: the target on the grid and which parameters are free */
 typedef struct {
     const tr_rt_opts *o;
     const tr_rt_base *b;
-    int nt, nfree, idx[TR_RT_NPAR];
+    int nt, nfree, idx[TR_RT_NPAR], nrun;
     double dt, fscale, ascale, p[TR_RT_NPAR];
     const double *tf, *ta;
-    double *sf, *sa;
+    double *sf, *sa; /* the last point's stage-1 force and angle [nt] */
 } fit_ctx;
+
+/* residuals R[k x 2nt] at the k free-parameter points Q[k x nfree] (tr_lm_many_fn): the
+ * stage-1 runs in parallel */
+static mcs_status residuals_many(void *vc, int k, const double *Q, double *R, mcs_error *err)
+{
+    fit_ctx *c = vc;
+    size_t nt = (size_t)c->nt;
+    double *P = malloc((size_t)k * TR_RT_NPAR * sizeof(double));
+    double *F = malloc((size_t)k * 2 * nt * sizeof(double)), *A = F ? F + (size_t)k * nt : NULL;
+    mcs_status st = P && F ? MCS_OK : MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+    for (int q = 0; q < k && !st; q++) {
+        double *pq = P + (size_t)q * TR_RT_NPAR;
+        memcpy(pq, c->p, sizeof c->p);
+        for (int j = 0; j < c->nfree; j++)
+            pq[c->idx[j]] = Q[(size_t)q * (size_t)c->nfree + (size_t)j];
+    }
+    if (!st) st = tr_rt_stage1_many(c->o, c->b, k, P, c->nt, c->dt, F, A, err);
+    c->nrun += k;
+    double w = 1 / sqrt((double)c->nt);
+    for (int q = 0; q < k && !st; q++) {
+        const double *f = F + (size_t)q * nt, *a = A + (size_t)q * nt;
+        double *r = R + (size_t)q * 2 * nt;
+        for (size_t i = 0; i < nt; i++) {
+            r[i] = w * (f[i] - c->tf[i]) / c->fscale;
+            r[nt + i] = w * (a[i] - c->ta[i]) / c->ascale;
+        }
+        if (q == k - 1) {
+            memcpy(c->sf, f, nt * sizeof(double));
+            memcpy(c->sa, a, nt * sizeof(double));
+        }
+    }
+    free(P), free(F);
+    return st;
+}
 
 static mcs_status residuals(void *vc, const double *q, double *r, mcs_error *err)
 {
-    fit_ctx *c = vc;
-    for (int j = 0; j < c->nfree; j++)
-        c->p[c->idx[j]] = q[j];
-    mcs_status st = tr_rt_stage1(c->o, c->b, c->p, c->nt, c->dt, c->sf, c->sa, err);
-    double w = 1 / sqrt((double)c->nt);
-    for (int i = 0; i < c->nt && !st; i++) {
-        r[i] = w * (c->sf[i] - c->tf[i]) / c->fscale;
-        r[c->nt + i] = w * (c->sa[i] - c->ta[i]) / c->ascale;
-    }
-    return st;
+    return residuals_many(vc, 1, q, r, err);
 }
 
 static mcs_status rate(const fit_ctx *c, double *rf, double *ra, mcs_error *err)
@@ -302,33 +447,35 @@ static mcs_status rate(const fit_ctx *c, double *rf, double *ra, mcs_error *err)
     return st;
 }
 
-/* the start: the best of the scenario's parameters and a full factorial over the free ones
- * (7 levels each for up to two, else 3: the centres of equal parts of each range), since the
+/* the start: the best of q and a full factorial over the free parameters (7 levels each for up
+ * to two, else 3: the centres of equal parts of each range), all run at once, since the
  * objective has local minima (a stage-1 run is non-smooth in its parameters: contacts open and
- * close) */
-static mcs_status scan_start(fit_ctx *c, double *q, const double *lo, const double *hi, double *rr,
-                             int *nrun, mcs_error *err)
+ * close); ties go to the earlier point, so the choice does not depend on the jobs */
+static mcs_status scan_start(fit_ctx *c, double *q, const double *lo, const double *hi,
+                             const double *rr, mcs_error *err)
 {
-    double best = 0, trial[TR_RT_NPAR], qb[TR_RT_NPAR];
-    int m = 2 * c->nt, ncomb = 1;
-    for (int i = 0; i < m; i++)
-        best += rr[i] * rr[i]; /* rr: the residuals at q */
-    memcpy(qb, q, (size_t)c->nfree * sizeof(double));
-    int lev = c->nfree <= 2 ? 7 : 3;
+    size_t m = 2 * (size_t)c->nt, nf = (size_t)c->nfree;
+    int lev = c->nfree <= 2 ? 7 : 3, ncomb = 1;
     for (int j = 0; j < c->nfree; j++)
         ncomb *= lev;
-    mcs_status st = MCS_OK;
-    for (int k = 0; k < ncomb && !st; k++) {
+    double *Q = malloc((size_t)ncomb * nf * sizeof(double));
+    double *R = malloc((size_t)ncomb * m * sizeof(double));
+    mcs_status st = Q && R ? MCS_OK : MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+    for (int k = 0; k < ncomb && !st; k++)
         for (int j = 0, kk = k; j < c->nfree; j++, kk /= lev)
-            trial[j] = lo[j] + (1 + 2 * (kk % lev)) / (2.0 * lev) * (hi[j] - lo[j]);
-        st = residuals(c, trial, rr, err);
-        (*nrun)++;
+            Q[(size_t)k * nf + (size_t)j] =
+                lo[j] + (1 + 2 * (kk % lev)) / (2.0 * lev) * (hi[j] - lo[j]);
+    if (!st) st = residuals_many(c, ncomb, Q, R, err);
+    double best = 0;
+    for (size_t i = 0; i < m; i++)
+        best += rr[i] * rr[i]; /* rr: the residuals at q */
+    for (int k = 0; k < ncomb && !st; k++) {
         double s = 0;
-        for (int i = 0; i < m; i++)
-            s += rr[i] * rr[i];
-        if (!st && s < best) best = s, memcpy(qb, trial, (size_t)c->nfree * sizeof(double));
+        for (size_t i = 0; i < m; i++)
+            s += R[(size_t)k * m + i] * R[(size_t)k * m + i];
+        if (s < best) best = s, memcpy(q, Q + (size_t)k * nf, nf * sizeof(double));
     }
-    memcpy(q, qb, (size_t)c->nfree * sizeof(double));
+    free(Q), free(R);
     return st;
 }
 
@@ -337,6 +484,7 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
 {
     *r = (tr_rt_result){0};
     double p0[TR_RT_NPAR] = {1, 1, b->phi_e, b->phi_s};
+    if (o->has_start) memcpy(p0, o->start, sizeof p0);
     fit_ctx c = {.o = o, .b = b, .dt = o->dt};
     for (int i = 0; i < TR_RT_NPAR; i++) {
         r->p0[i] = r->p[i] = c.p[i] = p0[i];
@@ -348,11 +496,10 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
     c.nt = (int)floor(T / c.dt + 1e-9) + 1;
     if (c.nt < 10) return MCS_ERR(err, MCS_ERR_RANGE, "retune: %.3g s of target: too short", T);
     size_t nt = (size_t)c.nt;
-    double *buf = calloc(4 * nt + 2 * nt, sizeof(double));
+    double *buf = calloc(4 * nt, sizeof(double));
     if (!buf) return MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
     double *tf = buf, *ta = tf + nt;
     c.tf = tf, c.ta = ta, c.sf = ta + nt, c.sa = c.sf + nt;
-    double *res = c.sa + nt;
     for (int i = 0; i < c.nt; i++) {
         tf[i] = interp(t->t, t->force, t->nt, t->t[0] + i * c.dt);
         ta[i] = interp(t->t, t->angle, t->nt, t->t[0] + i * c.dt);
@@ -372,11 +519,21 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
     if (!rr) st = MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
     if (!st) st = residuals(&c, q, rr, err);
     if (!st) st = rate(&c, &r->iso_force0, &r->iso_angle0, err);
-    int nscan = 0;
-    if (!st) st = scan_start(&c, q, lo, hi, rr, &nscan, err);
+    r->nt = c.nt;
+    r->t = malloc(7 * nt * sizeof(double));
+    if (!st && !r->t) st = MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+    if (!st) {
+        r->tf = r->t + nt, r->ta = r->tf + nt, r->f0 = r->ta + nt, r->a0 = r->f0 + nt;
+        r->f1 = r->a0 + nt, r->a1 = r->f1 + nt;
+        for (size_t i = 0; i < nt; i++)
+            r->t[i] = (double)i * c.dt;
+        memcpy(r->tf, tf, nt * sizeof(double)), memcpy(r->ta, ta, nt * sizeof(double));
+        memcpy(r->f0, c.sf, nt * sizeof(double)), memcpy(r->a0, c.sa, nt * sizeof(double));
+    }
+    if (!st && o->scan && c.nfree > 0) st = scan_start(&c, q, lo, hi, rr, err);
     tr_lm_result lr = {0};
     tr_lm_opts lo_ = tr_lm_opts_default();
-    lo_.fd_rel = 1e-3, lo_.max_iter = 30, lo_.ftol = 1e-8;
+    lo_.fd_rel = 1e-3, lo_.max_iter = 30, lo_.ftol = 1e-8, lo_.many = residuals_many;
     if (!st && c.nfree > 0)
         st = tr_lm_solve(residuals, &c, c.nfree, 2 * c.nt, q, lo, hi, &lo_, &lr, err);
     if (!st) {
@@ -385,12 +542,33 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
         st = residuals(&c, q, rr, err);
     }
     if (!st) st = rate(&c, &r->iso_force, &r->iso_angle, err);
-    r->cost0 = lr.cost0, r->cost = lr.cost, r->iter = lr.iter, r->nfev = lr.nfev + nscan + 2;
+    if (!st) {
+        memcpy(r->f1, c.sf, nt * sizeof(double));
+        memcpy(r->a1, c.sa, nt * sizeof(double));
+    }
+    r->cost0 = lr.cost0, r->cost = lr.cost, r->iter = lr.iter, r->nfev = c.nrun;
     r->why = lr.why ? lr.why : "nothing to fit";
-    (void)res;
+    if (st) tr_rt_result_free(r);
     free(rr);
     free(buf);
     return st;
+}
+
+void tr_rt_result_free(tr_rt_result *r)
+{
+    free(r->t);
+    r->t = r->tf = r->ta = r->f0 = r->a0 = r->f1 = r->a1 = NULL;
+    r->nt = 0;
+}
+
+int tr_rt_write_csv(FILE *f, const tr_rt_result *r)
+{
+    fprintf(f, "time [s], force_stage3 [N], force_before [N], force_after [N], "
+               "angle_stage3 [rad], angle_before [rad], angle_after [rad]\n");
+    for (int i = 0; r->t && i < r->nt; i++)
+        fprintf(f, "%.6g, %.9g, %.9g, %.9g, %.9g, %.9g, %.9g\n", r->t[i], r->tf[i], r->f0[i],
+                r->f1[i], r->ta[i], r->a0[i], r->a1[i]);
+    return ferror(f) ? -1 : 0;
 }
 
 mcs_status tr_rt_write_curves(const char *h5, const tr_rt_opts *o, const tr_rt_base *b,
@@ -401,11 +579,16 @@ mcs_status tr_rt_write_curves(const char *h5, const tr_rt_opts *o, const tr_rt_b
     if (st) return st;
     double xy[2 * TR_RT_MAXPT], x[4], y[4];
     char path[256];
+    /* a retune again (the loop): the new curves replace the old */
+    snprintf(path, sizeof path, "/curves/%s", o->tyre_char);
+    st = mcs_results_remove(r, path, err);
+    snprintf(path, sizeof path, "/curves/%s", o->fork_char);
+    if (!st) st = mcs_results_remove(r, path, err);
     size_t dims[2] = {(size_t)b->ntyre, 2};
     for (int i = 0; i < b->ntyre; i++)
         xy[2 * i] = b->tyre_x[i], xy[2 * i + 1] = p[0] * b->tyre_y[i];
     snprintf(path, sizeof path, "/curves/%s/loading", o->tyre_char);
-    st = mcs_results_write(r, path, 2, dims, xy, "m, N", err);
+    if (!st) st = mcs_results_write(r, path, 2, dims, xy, "m, N", err);
     /* the tyre unloads along its loading curve within its elastic range: unloading = loading
      * there; written as the loading curve (the scenario's unloading_slope is kept) */
     snprintf(path, sizeof path, "/curves/%s/unloading", o->tyre_char);

@@ -16,16 +16,25 @@
 #define TR_RT_NPAR 4
 #define TR_RT_MAXPT 32
 
+#define TR_RT_NAME 128
+
 typedef struct {
-    const char *scenario;  /* the stage-1 scenario file                                    */
-    const char *wall_body; /* stage-1 body the wall force acts on ("barrier")              */
-    const char *joint;     /* fork hinge joint ("moto_fork_deformation")                   */
-    const char *tyre_char; /* tyre characteristic ("tyre_front")                           */
-    const char *fork_char; /* fork hinge characteristic ("fork_deformation")               */
-    double end_time;       /* compared span [s]; 0: the target's and scenario's shorter    */
-    double cfc;            /* filter class on both signals (60)                            */
-    double dt;             /* common grid interval [s] (1e-4)                              */
-    int free_mask;         /* bit i: p[i] is fitted (all four: 0xf)                        */
+    const char *scenario;            /* the stage-1 scenario file                          */
+    char wall_body[TR_RT_NAME];      /* stage-1 body the wall force acts on ("barrier")    */
+    char joint[TR_RT_NAME];          /* fork hinge joint ("moto_fork_deformation")         */
+    char tyre_char[TR_RT_NAME];      /* tyre characteristic ("tyre_front")                 */
+    char fork_char[TR_RT_NAME];      /* fork hinge characteristic ("fork_deformation")     */
+    char target_force[2 * TR_RT_NAME]; /* target's wall force dataset or walls' group ("":
+                                        * the default of tr_rt_read_target)              */
+    char target_angle[2 * TR_RT_NAME]; /* target's fork angle [nt] ("": the default)      */
+    double end_time;                 /* compared span [s]; 0: the target's and scenario's shorter */
+    double cfc;                      /* filter class on both signals (60)                  */
+    double dt;                       /* common grid interval [s] (1e-4)                    */
+    int free_mask;                   /* bit i: p[i] is fitted (all four: 0xf)              */
+    int jobs;                        /* stage-1 runs at once, child processes (0: online CPUs) */
+    int scan;                        /* 1: start from the best of a factorial scan (default) */
+    int has_start;                   /* 1: start at `start` instead of the scenario's      */
+    double start[TR_RT_NPAR];        /* that start (the loop's previous fit)               */
 } tr_rt_opts;
 
 /* the scenario's characteristics as read (SI) */
@@ -49,14 +58,35 @@ typedef struct {
     double cost0, cost;                    /* objective before / after                     */
     int iter, nfev;
     const char *why;
+    /* the compared curves on the common grid (CFC-filtered): time from the target's first
+     * [s], the target's force [N] and angle [rad], stage 1's before and after (nt each) */
+    int nt;
+    double *t, *tf, *ta, *f0, *a0, *f1, *a1;
 } tr_rt_result;
+
+void tr_rt_result_free(tr_rt_result *r);
+
+/* the compared curves as CSV (time [s], then force [N] and angle [rad]: target, before, after) */
+int tr_rt_write_csv(FILE *f, const tr_rt_result *r);
 
 tr_rt_opts tr_rt_opts_default(void);
 const char *tr_rt_par_name(int i);
 
-/* read /stage3/time, the sum of /stage3/rigidwall/<wall>/force over every wall and
- * /stage3/joints/<joint>/angle; missing ones fail naming file and key */
-mcs_status tr_rt_read_target(const char *h5, const char *joint, tr_rt_target *t, mcs_error *err);
+/* the scenario's `retune:` block over o (names, target paths, free parameters, end time;
+ * docs/retune.md "The retune: block"); a missing block leaves o as it is */
+mcs_status tr_rt_read_opts(tr_rt_opts *o, mcs_error *err);
+
+/* a parameter's index by name, -1 when unknown */
+int tr_rt_par_index(const char *name);
+
+/* read /stage3/time, the wall force and the fork angle; missing ones fail naming file and key.
+ * Wall force: o->target_force (a dataset, or a group whose members' force are summed); by
+ * default /stage3/rigidwall/<wall>/force_mean (a penalty wall's interval mean, else its force)
+ * of the wall named by the attribute impact_wall of /stage3/rigidwall (a generated
+ * motorcycle's run), else summed over every wall. Angle: o->target_angle; by default
+ * /stage3/channels/<joint>_angle (a generated motorcycle's), else /stage3/joints/<joint>/angle */
+mcs_status tr_rt_read_target(const char *h5, const tr_rt_opts *o, tr_rt_target *t,
+                             mcs_error *err);
 void tr_rt_target_free(tr_rt_target *t);
 
 /* the scenario's tyre and fork characteristics; missing ones fail naming file and key */
@@ -69,7 +99,12 @@ void tr_rt_write_yaml(FILE *f, const tr_rt_opts *o, const tr_rt_base *b, const d
 mcs_status tr_rt_stage1(const tr_rt_opts *o, const tr_rt_base *b, const double *p, int nt,
                         double dt, double *force, double *angle, mcs_error *err);
 
-/* the fit; r->p0 is filled from b */
+/* stage 1 at np parameter sets p[np x 4], up to o->jobs at once in child processes
+ * (tr_pool.h): force, angle [np x nt] */
+mcs_status tr_rt_stage1_many(const tr_rt_opts *o, const tr_rt_base *b, int np, const double *p,
+                             int nt, double dt, double *force, double *angle, mcs_error *err);
+
+/* the fit; r->p0 is filled from b (or o->start) */
 mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_target *t,
                      tr_rt_result *r, mcs_error *err);
 

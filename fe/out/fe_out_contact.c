@@ -1,5 +1,5 @@
 /* fe_out_contact: contact force histories (fe_out_contact.h). */
-#include "fe/fe_out_contact.h"
+#include "fe/out/fe_out_contact.h"
 
 #include <stdio.h>
 #include <string.h>

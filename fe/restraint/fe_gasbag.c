@@ -12,7 +12,7 @@
  * integrator with error control is the right tool: the reference solution for a volume
  * known as a function of time (fe_gasbag_cvode.c), which the tests compare with. */
 #include "fe/fe_gasbag.h"
-#include "fe/fe_gasbag_impl.h"
+#include "fe/restraint/fe_gasbag_impl.h"
 #include "fe/fe_surface_volume.h"
 
 #include <math.h>

@@ -2,7 +2,7 @@
  * their /stage<N> results (see fe_scn_restraints.h). The kernel's descriptors carry the key names
  * (docs/fe.md, docs/gasbag.md); kernel errors are relocated to the scenario node. */
 #include "fe/fe_scn_restraints.h"
-#include "fe/fe_scn_node.h"
+#include "fe/scn/fe_scn_node.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,5 +1,5 @@
 /* fe_out_parts: per-part energies (element and spring parts) into /stage<N> (fe_out_parts.h) */
-#include "fe/fe_out_parts.h"
+#include "fe/out/fe_out_parts.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -3,10 +3,10 @@
  * contact, constraint, prescribed motion, load, initial velocity and rigid wall of the deck
  * through fe_kw_add_deck, and the end time of its *CONTROL_TERMINATION unless the scenario's
  * simulation.end_time gives one. */
-#include "fe/fe_scn_deck.h"
+#include "fe/scn/fe_scn_deck.h"
 
 #include "fe/fe_keyword.h"
-#include "fe/fe_scn_node.h"
+#include "fe/scn/fe_scn_node.h"
 
 #include <stdio.h>
 #include <string.h>

@@ -1,7 +1,7 @@
 /* fe_out_parts: per-part energies in the results: /stage<N>/parts/<part>/energy/<kind>
  * [nt] J for kind kinetic, internal, contact, hourglass, dissipated, for every element part and
  * every spring part (discrete springs and dampers: internal = elastic, dissipated = dampers;
- * fe/fe_discrete.c). The parts' sums plus what belongs to no part equal /stage<N>/energy.
+ * fe/elem/fe_discrete.c). The parts' sums plus what belongs to no part equal /stage<N>/energy.
  * With mass scaling during the run, also /stage<N>/mass_added [nt] kg: the mass added so far
  * (at t = 0 and since). */
 #ifndef FE_OUT_PARTS_H

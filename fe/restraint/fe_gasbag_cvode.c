@@ -6,7 +6,7 @@
  * of the per-FE-step update it checks. BDF with a dense Newton solver: the blow-down tail
  * (p -> p_amb) is stiff. */
 #include "fe/fe_gasbag.h"
-#include "fe/fe_gasbag_impl.h"
+#include "fe/restraint/fe_gasbag_impl.h"
 
 #include <math.h>
 #include <stdlib.h>

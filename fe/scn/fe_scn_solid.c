@@ -1,6 +1,6 @@
 /* fe_scn_solid.c: see fe_scn_solid.h. */
-#include "fe/fe_scn_solid.h"
-#include "fe/fe_scn_node.h"
+#include "fe/scn/fe_scn_solid.h"
+#include "fe/scn/fe_scn_node.h"
 
 #include <math.h>
 #include <stdio.h>

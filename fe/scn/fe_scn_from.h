@@ -1,5 +1,5 @@
 /* fe_scn_from: fe.parts[].mesh: {from: FILE.h5:/stageN/mesh/<part>, at: TIME | final}: a part's
- * mesh as a run wrote it (fe/fe_out_mesh.c), read back (core/mcs_results_mesh.h) into any
+ * mesh as a run wrote it (fe/out/fe_out_mesh.c), read back (core/mcs_results_mesh.h) into any
  * stage's scenario, so a bag reshaped in stage 2 is the one stage 1 uses (docs/exchange.md).
  * The file is relative to the YAML file that names it; the reference shape by default, the
  * deformed one at `at` or at the last field row (`at: final`). The section and material come

@@ -1,7 +1,7 @@
 /* fe_scn_joint.c: see fe_scn_joint.h. */
-#include "fe/fe_scn_joint.h"
+#include "fe/scn/fe_scn_joint.h"
 #include "fe/fe_joint.h"
-#include "fe/fe_scn_node.h"
+#include "fe/scn/fe_scn_node.h"
 
 #include <stdio.h>
 #include <string.h>

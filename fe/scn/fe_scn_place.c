@@ -2,10 +2,10 @@
  * fe_scn_place). Runs on the builder after every key is read and before the model is frozen,
  * so everything the model derives from positions (masses, contact segments, rigid bodies,
  * bag volumes, belt lengths) sees the placed geometry. */
-#include "fe/fe_scn_place.h"
+#include "fe/scn/fe_scn_place.h"
 #include "fe/fe_builder_impl.h"
 #include "fe/fe_restraint.h"
-#include "fe/fe_scn_node.h"
+#include "fe/scn/fe_scn_node.h"
 #include "fe/fe_slipring.h"
 
 #include <stdlib.h>

@@ -1,8 +1,8 @@
 /* fe_scn_slipring.c: scenario keys -> slip rings, and their /stage<N> results
  * (fe_scn_slipring.h). The kernel's descriptor carries the key names (docs/fe.md); kernel
  * errors are relocated to the scenario node. */
-#include "fe/fe_scn_slipring.h"
-#include "fe/fe_scn_node.h"
+#include "fe/scn/fe_scn_slipring.h"
+#include "fe/scn/fe_scn_node.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,6 +1,6 @@
 /* fe_out_motion.c: each element part's mass, centre of mass, mean velocity and mean
  * acceleration into /stage<N>/parts (fe_out_motion.h) */
-#include "fe/fe_out_motion.h"
+#include "fe/out/fe_out_motion.h"
 
 #include <stdio.h>
 #include <stdlib.h>

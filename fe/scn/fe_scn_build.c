@@ -3,17 +3,17 @@
  * differ (axis names, tangent_modulus -> a hardening table) and locates every kernel error at the
  * scenario node it came from. */
 #include "fe/fe_scn_build.h"
-#include "fe/fe_scn_node.h"
-#include "fe/fe_scn_contact.h"
-#include "fe/fe_scn_joint.h"
-#include "fe/fe_scn_solid.h"
+#include "fe/scn/fe_scn_node.h"
+#include "fe/scn/fe_scn_contact.h"
+#include "fe/scn/fe_scn_joint.h"
+#include "fe/scn/fe_scn_solid.h"
 #include "fe/fe_scn_restraints.h"
-#include "fe/fe_scn_slipring.h"
-#include "fe/fe_scn_deck.h"
+#include "fe/scn/fe_scn_slipring.h"
+#include "fe/scn/fe_scn_deck.h"
 #include "fe/fe_scn_keyword.h"
-#include "fe/fe_scn_from.h"
-#include "fe/fe_scn_place.h"
-#include "fe/fe_scn_pad.h"
+#include "fe/scn/fe_scn_from.h"
+#include "fe/scn/fe_scn_place.h"
+#include "fe/scn/fe_scn_pad.h"
 
 #include <math.h>
 #include <stdio.h>

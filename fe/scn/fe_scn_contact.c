@@ -1,6 +1,6 @@
 /* fe_scn_contact.c: see fe_scn_contact.h. */
-#include "fe/fe_scn_contact.h"
-#include "fe/fe_scn_node.h"
+#include "fe/scn/fe_scn_contact.h"
+#include "fe/scn/fe_scn_node.h"
 
 #include "fe/fe_contact.h"
 

@@ -1,5 +1,5 @@
 /* fe_scn_from.c: a part's mesh from a results file (see fe_scn_from.h). */
-#include "fe/fe_scn_from.h"
+#include "fe/scn/fe_scn_from.h"
 
 #include "core/mcs_results_mesh.h"
 
@@ -29,7 +29,7 @@ static int kind_of(const char *type, fe_section_type *sec)
 }
 
 /* an element of block b in the builder's slots (c: rows of the mesh); the inverse of
- * fe/fe_out_mesh.c's shape(): tri3 a quad with n3 = n4; tet4 (a b c d) the hex a b c c d d d d;
+ * fe/out/fe_out_mesh.c's shape(): tri3 a quad with n3 = n4; tet4 (a b c d) the hex a b c c d d d d;
  * wedge6 (a b c | d e f) the pentahedron a b e d c c f f */
 static int slots(const mcs_mesh_block *b, const int *c, int out[10])
 {

@@ -1,9 +1,9 @@
 /* fe_scn_pad.c: foam pads on a body's ellipsoid and the nodes on a body's surfaces
  * (fe_scn_pad.h) */
-#include "fe/fe_scn_pad.h"
+#include "fe/scn/fe_scn_pad.h"
 
 #include "fe/fe_builder_impl.h"
-#include "fe/fe_scn_node.h"
+#include "fe/scn/fe_scn_node.h"
 
 #include "core/mcs_obj.h"
 

@@ -1,5 +1,5 @@
 /* fe_out_joint.c: joint loads and rigid-body motion into /stage<N> (fe_out_joint.h) */
-#include "fe/fe_out_joint.h"
+#include "fe/out/fe_out_joint.h"
 #include "fe/fe_elem.h"
 #include "fe/fe_joint.h"
 #include "fe/fe_solid.h"

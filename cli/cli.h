@@ -33,7 +33,8 @@
     X(export, "mcrash export OUT.h5 --xdmf [FILE.xmf] [--stride N] | --xdmf2 [FILE.xmf] | "         \
               "--csv DIR | --mme DIR [--stage N] | --k FILE [--stage N] [--deformed] [--units mm-s-t] [--long|--i10]",                                                  \
       "write a results file in other formats (XDMF for ParaView, CSV, LS-DYNA keyword mesh)")                            \
-    X(report, "mcrash report OUT.h5 -o DIR", "HTML page with plots")                               \
+    X(report, "mcrash report OUT.h5 [-o DIR]",                                                 \
+      "one self-contained HTML page of a results file (plots, injury bars, snapshots)")        \
     X(study, "mcrash study STUDY.yaml [-o STUDY.h5]", "design of experiments")
 
 #define MCS_CLI_DECL(name, usage, summary) int cli_##name(int argc, char **argv);

@@ -85,7 +85,6 @@ static int node(gen *g, const double x[3])
     int idx;
     g->st = fe_builder_add_node(g->b, x, &idx, g->err);
     if (g->st) return -1;
-    if (g->n == 0) g->base = idx;
     memcpy(g->x + 3 * g->n, x, 3 * sizeof(double));
     g->m[g->n] = 0, g->tied[g->n] = 0;
     g->n++;
@@ -268,7 +267,10 @@ static mcs_status total_of(const mcs_node *bodies, s3_sedan_mass *t, mcs_error *
 mcs_status s3_sedan_build(fe_builder *b, const mcs_node *model, const s3_sedan_opts *o,
                           s3_sedan_mass *total, mcs_error *err)
 {
-    gen g = {.b = b, .h = o->element_size, .pre = o->name, .o = o, .err = err};
+    /* our nodes follow the builder's (another generator's may come first: plate() numbers
+       from base before its first node) */
+    gen g = {.b = b, .h = o->element_size, .pre = o->name, .o = o, .err = err,
+             .base = fe_builder_nnode(b)};
     const mcs_node *bodies = mcs_node_get(model, "bodies");
     const mcs_node *car = find_named(bodies, "sedan"), *upper = find_named(bodies, "sedan_upper");
     if (!car || !upper)

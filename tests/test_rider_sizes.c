@@ -449,7 +449,7 @@ static void test_concept_95m_overrides(void)
     const mcs_node *fe = mcs_node_get(mcs_scenario_root(s), "fe");
     const mcs_node *parts = mcs_node_get(fe, "parts"), *ret = mcs_node_get(fe, "retractors");
     CHECK(mcs_node_len(parts) == 5 && mcs_node_len(ret) == 2);
-    const double y0[2] = {0.062, -0.278}, y1[2] = {0.278, -0.062}, ya[2] = {0.288, -0.288};
+    const double y0[2] = {0.037, -0.264}, y1[2] = {0.264, -0.037}, ya[2] = {0.274, -0.274};
     for (int k = 0; k < 2 && mcs_node_len(parts) >= 2 && mcs_node_len(ret) == 2; k++) {
         const mcs_node *b = mcs_node_at(parts, k), *m = mcs_node_get(b, "mesh");
         const mcs_node *r = mcs_node_at(ret, k);
@@ -458,11 +458,11 @@ static void test_concept_95m_overrides(void)
         CHECK(!mcs_node_vec3(mcs_node_get(m, "origin"), o, &err) &&
               !mcs_node_vec3(mcs_node_get(m, "end"), e, &err) &&
               !mcs_node_vec3(mcs_node_get(r, "anchor"), a, &err));
-        CHECK_NEAR(o[0], 0.715, 1e-15);
+        CHECK_NEAR(o[0], 0.66, 1e-15);
         CHECK_NEAR(o[1], y0[k], 1e-15);
-        CHECK_NEAR(o[2], 0.869, 1e-15);
+        CHECK_NEAR(o[2], 0.921, 1e-15);
         CHECK_NEAR(e[1], y1[k], 1e-15);
-        CHECK_NEAR(a[0], 0.715, 1e-15);
+        CHECK_NEAR(a[0], 0.66, 1e-15);
         CHECK_NEAR(a[1], ya[k], 1e-15);
         CHECK_NEAR(a[2], 0.62, 1e-15);
         /* from the model: mesh generator and divisions, section, retractor limit and payin */

@@ -8,6 +8,7 @@
 #include "core/mcs_scenario.h"
 #include "fe/fe_scn_build.h"
 #include "stage1_mb/mb_model.h"
+#include "stage3_fe/s3_run.h"
 
 /* "SCENARIO [-o OUT.h5] [--quiet] [--json] [--stage 1|2|3|all]" */
 typedef struct {
@@ -53,8 +54,19 @@ int cli_stage2_scenario(const mcs_scenario *scn, const char *motion, const char 
  * of a scenario with a stage2: block) */
 int cli_stage12_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
 
-/* the stage-3 model of a scenario as `mcrash stage3` builds it (a stage-1-only key of the fe:
- * block refused at its FILE:LINE:COL); `mcrash check` builds it too */
-mcs_status cli_stage3_build(const mcs_scenario *scn, fe_problem *p, mcs_error *err);
+/* the stage-3 model of a scenario as `mcrash stage3` builds it: its stage3: block compiled
+ * into *s3 (NULL without one; the caller destroys it after p), else the scenario as it is (a
+ * stage-1-only key of the fe: block refused at its FILE:LINE:COL); `mcrash check` builds it */
+mcs_status cli_stage3_build(const mcs_scenario *scn, mcs_scenario **s3, fe_problem *p,
+                            mcs_error *err);
+/* stage 3's run into out_path (append: add /stage3 to an existing file) without its summary
+ * printed (its error is); the summary as a JSON object, or as a line on stderr */
+int cli_stage3_exec(const mcs_scenario *scn, const char *out_path, int append, int quiet,
+                    s3_summary *sum);
+void cli_stage3_json(const s3_summary *sum);
+void cli_stage3_note(const s3_summary *sum, const char *out_path);
+/* run --stage all: stage 1, stage 2 when the scenario has a stage2: block, stage 3 when it has
+ * a stage3: block, into one file (one JSON object with a member per stage) */
+int cli_stage_all_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
 
 #endif

@@ -1,8 +1,8 @@
 /* cmd_check.c: `mcrash check [--json] SCENARIO.yaml...` — validate scenarios; with --json print
  * one resolved (includes merged, every quantity in SI); `--schema` prints the key reference.
  * A scenario with a simulation: block is also built into the model `mcrash run` would run
- * (stage 1, or stage 3 for an fe: block without bodies), so what run refuses at load, check
- * refuses with the same message; nothing is simulated or written. A stage-1 model's surface
+ * (stage 1, or stage 3 for an fe: block without bodies; both with a stage3: block), so what
+ * run refuses at load, check refuses with the same message; nothing is simulated or written. A stage-1 model's surface
  * pairs that penetrate more than 1 mm at t = 0 are listed as warnings on stderr (contact,
  * surfaces, depth, the force its law gives there; stage1_mb/mb_initial.h): a model should
  * start without them. Warnings do not change the exit status. Every LS-DYNA keyword deck the
@@ -16,6 +16,7 @@
 #include "fe/fe_scn_keyword.h"
 #include "stage1_mb/mb_initial.h"
 #include "stage1_mb/mb_model.h"
+#include "stage3_fe/s3_scenario.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -51,16 +52,22 @@ static mcs_status build_model(const char *path, const mcs_scenario *scn, mcs_err
     if (!mcs_node_get(root, "simulation")) return MCS_OK; /* a model or include file */
     mcs_status st;
     mcs_log_set_level(MCS_LOG_WARN); /* the build's notes (a seated rider) are run's to show */
-    if (mcs_node_kind(mcs_node_get(root, "fe")) == MCS_NODE_MAP &&
-        mcs_node_len(mcs_node_get(root, "bodies")) == 0) {
-        fe_problem p = {0};
-        st = cli_stage3_build(scn, &p, err);
-        fe_problem_free(&p);
-    } else {
+    const int fe_only = mcs_node_kind(mcs_node_get(root, "fe")) == MCS_NODE_MAP &&
+                        mcs_node_len(mcs_node_get(root, "bodies")) == 0;
+    if (fe_only)
+        st = MCS_OK;
+    else {
         mb_model *m = NULL;
         st = mb_model_build(scn, NULL, &m, err);
         if (!st) st = warn_initial(path, m, err);
         mb_model_destroy(&m);
+    }
+    if (!st && (fe_only || s3_scenario_has_block(scn))) { /* stage 3's model (stage3: block) */
+        fe_problem p = {0};
+        mcs_scenario *s3 = NULL;
+        st = cli_stage3_build(scn, &s3, &p, err);
+        fe_problem_free(&p);
+        mcs_scenario_destroy(&s3);
     }
     mcs_log_set_level(MCS_LOG_INFO);
     return st;

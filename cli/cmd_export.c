@@ -5,6 +5,7 @@
  * translators/tr_mme.h) */
 #include "cli/cli.h"
 #include "core/mcs_results_export.h"
+#include "fe/fe_out_mesh.h"
 #include "translators/tr_keyword.h"
 #include "translators/tr_mme.h"
 
@@ -34,6 +35,7 @@ static int parse(int argc, char **argv, export_args *a)
 {
     memset(a, 0, sizeof *a);
     a->xo = mcs_xdmf_opts_default();
+    a->xo.cells = fe_out_cell_types(&a->xo.ncells);
     a->ko = tr_kw_export_opts_default();
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];

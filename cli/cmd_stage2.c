@@ -10,6 +10,7 @@
 #include "cli/cli.h"
 #include "cli/cli_common.h"
 #include "stage2_fe/s2_run.h"
+#include "stage3_fe/s3_scenario.h"
 
 #include <limits.h>
 #include <stdio.h>
@@ -40,7 +41,8 @@ static void stage2_json(const s2_model *m, const s2_summary *s)
     printf("}}");
 }
 
-/* build and run; with json print the summary object (with stage 1's when s1 is given) */
+/* build and run; with json print the summary object (with stage 1's when s1 is given; json 2:
+ * only its member `, "stage2": {...}`, the caller opens and closes the object) */
 static int stage2_exec(const mcs_scenario *scn, const char *motion, const char *out, int append,
                        int quiet, int json, const mb_run_summary *s1)
 {
@@ -60,7 +62,10 @@ static int stage2_exec(const mcs_scenario *scn, const char *motion, const char *
         s2_model_destroy(&m);
         return mcs_status_exit_code(st);
     }
-    if (json) {
+    if (json == 2) {
+        printf(", \"stage2\": ");
+        stage2_json(m, &sum);
+    } else if (json) {
         printf("{\"output\": ");
         cli_json_string(out);
         if (s1) printf(", \"stage1\": ");
@@ -96,6 +101,37 @@ int cli_stage12_scenario(const mcs_scenario *scn, const char *out, int quiet, in
                 s1.steps, s1.bodies, s1.wall_time_s, s1.energy_drift, out);
     }
     rc = stage2_exec(scn, out, out, 1, quiet, json, &s1);
+    return fflush(stdout) ? 2 : rc;
+}
+
+int cli_stage_all_scenario(const mcs_scenario *scn, const char *out, int quiet, int json)
+{
+    const mcs_node *root = mcs_scenario_root(scn);
+    const int has2 = mcs_node_kind(mcs_node_get(root, "stage2")) == MCS_NODE_MAP;
+    if (!s3_scenario_has_block(scn))
+        return has2 ? cli_stage12_scenario(scn, out, quiet, json)
+                    : cli_stage1_scenario(scn, out, quiet, json);
+    mb_run_summary s1 = {0};
+    int rc = cli_stage1_exec(scn, out, quiet, &s1);
+    if (rc) return rc;
+    if (json) {
+        printf("{\"output\": ");
+        cli_json_string(out);
+        printf(", \"stage1\": ");
+        cli_stage1_json(&s1);
+    } else if (!quiet) {
+        fprintf(stderr, "stage 1: %ld steps, %d bodies, %.3g s wall, energy drift %.3g -> %s\n",
+                s1.steps, s1.bodies, s1.wall_time_s, s1.energy_drift, out);
+    }
+    if (has2) rc = stage2_exec(scn, out, out, 1, quiet, json ? 2 : 0, NULL);
+    s3_summary s3 = {0};
+    if (!rc) rc = cli_stage3_exec(scn, out, 1, quiet, &s3);
+    if (!rc && json) {
+        printf(", \"stage3\": ");
+        cli_stage3_json(&s3);
+    } else if (!rc && !quiet)
+        cli_stage3_note(&s3, out);
+    if (json) printf("}\n"); /* the object closed also after a failed stage */
     return fflush(stdout) ? 2 : rc;
 }
 

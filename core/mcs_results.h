@@ -11,10 +11,10 @@
  *
  * Conventions beyond DESIGN.md (extensions, nothing renamed):
  *   /stageN/mesh/<part>/elements  int [ne,k], 0-based rows of that part's `nodes`;
- *                                 attr `type`: line2 | tri3 | quad4 | tet4 | wedge6 | hex8 |
- *                                 tet10 (optional: without it the width k decides, 4 = quad4);
- *                                 node orders as VTK / XDMF (Tetrahedron, Wedge, Hexahedron,
- *                                 Tetrahedron_10)
+ *                                 attr `type`: a cell type's name, ending in its node count k;
+ *                                 the writer of the meshes owns the types and their node
+ *                                 orders (fe/fe_out_mesh.h: line2, tri3, quad4, tet4, wedge6,
+ *                                 hex8, tet10, as VTK / XDMF; without `type` the width decides)
  *   /stageN/mesh/<part>/elements_<type>  the same for the elements of another type when a part
  *                                 holds several (e.g. hexahedra in `elements`, the tetrahedra
  *                                 and wedges of the same part in elements_tet4, elements_wedge6)

@@ -3,6 +3,7 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* printf into a path buffer; names with '/' or empty names are refused */
@@ -153,17 +154,14 @@ mcs_status mcs_results_put_injury(mcs_results *r, int stage, const char *criteri
     return st;
 }
 
-/* element width of each named type */
+/* element width a type name states: its trailing number ("hex8": 8, "tet10": 10; the
+ * convention of mcs_results.h); 0 when it ends in no number */
 static int type_width(const char *type)
 {
-    static const struct {
-        const char *name;
-        int k;
-    } t[] = {{"line2", 2}, {"tri3", 3},   {"quad4", 4},  {"tet4", 4},
-             {"hex8", 8},  {"wedge6", 6}, {"tet10", 10}};
-    for (size_t i = 0; type && i < sizeof t / sizeof *t; i++)
-        if (strcmp(type, t[i].name) == 0) return t[i].k;
-    return 0;
+    size_t l = type ? strlen(type) : 0, i = l;
+    while (i > 0 && type[i - 1] >= '0' && type[i - 1] <= '9') i--;
+    if (i == 0 || i == l || l - i > 3) return 0;
+    return atoi(type + i);
 }
 
 mcs_status mcs_results_put_mesh(mcs_results *r, int stage, const char *part, size_t nn,
@@ -175,7 +173,7 @@ mcs_status mcs_results_put_mesh(mcs_results *r, int stage, const char *part, siz
     if (st) return st;
     if (type && type_width(type) != k)
         return MCS_ERR(err, MCS_ERR_USAGE, "results: part %s: element type \"%s\" with %d nodes "
-                                           "(line2, tri3, quad4, tet4, wedge6, hex8, tet10)",
+                                           "(a type's name ends in its node count)",
                        part, type, k);
     if (k < 2 || k > 10 || node_offset < 0)
         return MCS_ERR(err, MCS_ERR_USAGE, "results: part %s: %d nodes per element", part, k);

@@ -16,14 +16,12 @@ void mcs_mesh_free(mcs_mesh *m)
     memset(m, 0, sizeof *m);
 }
 
+/* the node count a type's name ends in ("hex8": 8; mcs_results.h); 0 when none */
 static int width_of(const char *type)
 {
-    static const struct { const char *t; int k; } tab[] = {
-        {"line2", 2}, {"tri3", 3}, {"quad4", 4}, {"tet4", 4},
-        {"wedge6", 6}, {"hex8", 8}, {"tet10", 10}};
-    for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++)
-        if (strcmp(type, tab[i].t) == 0) return tab[i].k;
-    return 0;
+    size_t l = strlen(type), i = l;
+    while (i > 0 && type[i - 1] >= '0' && type[i - 1] <= '9') i--;
+    return i == 0 || i == l || l - i > 3 ? 0 : atoi(type + i);
 }
 
 /* one element block at gp/<name>: [ne,k] ints, every entry a row of the nn nodes */
@@ -37,16 +35,16 @@ static mcs_status read_block(mcs_results *r, const char *file, const char *gp, c
     if (st) return st;
     char *type = NULL;
     if (mcs_results_has_attr(r, p, "type")) st = mcs_results_attr_str(r, p, "type", &type, err);
-    const char *t = type ? type : a.rank == 2 && a.dims[1] == 4 ? "quad4"
-                                : a.rank == 2 && a.dims[1] == 8 ? "hex8"
-                                : a.rank == 2 && a.dims[1] == 2 ? "line2"
-                                                                : "?";
-    if (!st && strncmp(name, "elements_", 9) == 0 && strcmp(name + 9, t) != 0)
+    /* without `type`: the block's name says it (elements_<type>), else "" (the reader of the
+     * mesh decides by the width: the cell types are the writer's, fe/fe_out_mesh.h) */
+    const int named = strncmp(name, "elements_", 9) == 0;
+    const char *t = type ? type : named ? name + 9 : "";
+    if (!st && named && strcmp(name + 9, t) != 0)
         st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: type \"%s\" differs from the name", file, p, t);
-    if (!st && (a.rank != 2 || width_of(t) == 0 || (size_t)width_of(t) != a.dims[1]))
+    if (!st && (a.rank != 2 || (*t && (size_t)width_of(t) != a.dims[1])))
         st = MCS_ERR(err, MCS_ERR_FORMAT,
-                     "%s:%s: expected [ne, k] element nodes of a known type (line2, tri3, quad4, "
-                     "tet4, wedge6, hex8, tet10), got rank %d, type \"%s\"",
+                     "%s:%s: expected [ne, k] element nodes of a type whose name ends in k, got "
+                     "rank %d, type \"%s\"",
                      file, p, a.rank, t);
     for (size_t i = 0; !st && i < a.n; i++)
         if (a.iv[i] < 0 || (size_t)a.iv[i] >= nn)

@@ -14,7 +14,7 @@
 #define MCS_MESH_MAXBLOCK 8
 
 typedef struct {
-    char type[16]; /* line2 | tri3 | quad4 | tet4 | wedge6 | hex8 | tet10 */
+    char type[16]; /* the `type` attribute (ends in k); "": none (the width decides) */
     int k;         /* nodes per element [-] */
     size_t ne;     /* elements [-] */
     int *elem;     /* rows of the mesh's nodes, 0-based, VTK order (ne x k) */

@@ -26,7 +26,7 @@ typedef struct {
 
 mcs_xdmf_opts mcs_xdmf_opts_default(void)
 {
-    return (mcs_xdmf_opts){.stride = 0, .max_frames = 2000, .legacy = 0};
+    return (mcs_xdmf_opts){.stride = 0, .max_frames = 2000, .legacy = 0, .cells = NULL};
 }
 
 /* ---- file names ---- */
@@ -205,23 +205,30 @@ typedef struct {
     const char *topo; /* XDMF topology type */
 } fe_part;
 
-static const char *topology(const char *type, size_t k)
+/* the XDMF topology of a block of k-node cells of the given type (NULL: its width decides) */
+static const char *topology(const mcs_xdmf_opts *o, const char *type, size_t k)
 {
-    static const struct {
-        const char *type, *topo;
-        size_t k;
-    } t[] = {{"line2", "Polyline", 2},   {"tri3", "Triangle", 3},  {"quad4", "Quadrilateral", 4},
-             {"tet4", "Tetrahedron", 4}, {"hex8", "Hexahedron", 8}, {"wedge6", "Wedge", 6},
-             {"tet10", "Tetrahedron_10", 10}};
-    for (size_t i = 0; i < sizeof t / sizeof *t; i++)
-        if (type ? strcmp(type, t[i].type) == 0 && k == t[i].k : k == t[i].k && i != 3)
-            return t[i].topo;
+    for (int i = 0; i < o->ncells; i++) {
+        const mcs_cell_type *c = &o->cells[i];
+        if ((size_t)c->nodes == k && (type ? strcmp(type, c->name) == 0 : c->by_width))
+            return c->xdmf;
+    }
     return NULL;
 }
 
+/* the cell types' names, comma-separated, into buf */
+static const char *type_names(const mcs_xdmf_opts *o, char *buf, size_t n)
+{
+    size_t l = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < o->ncells && l < n; i++)
+        l += (size_t)snprintf(buf + l, n - l, "%s%s", i ? ", " : "", o->cells[i].name);
+    return o->ncells ? buf : "none (no cell types given)";
+}
+
 /* one element block of a part: `elements`, or block "elements_<type>" (grid "<part>.<type>") */
-static mcs_status read_part(mcs_results *r, int stage, const char *name, const char *block,
-                            fe_part *p, mcs_error *err)
+static mcs_status read_part(mcs_results *r, const mcs_xdmf_opts *o, int stage, const char *name,
+                            const char *block, fe_part *p, mcs_error *err)
 {
     memset(p, 0, sizeof *p);
     snprintf(p->name, sizeof p->name, "%s%s%s", name, block ? "." : "", block ? block : "");
@@ -244,13 +251,13 @@ static mcs_status read_part(mcs_results *r, int stage, const char *name, const c
     if (mcs_results_has_attr(r, p->elems, "type") &&
         (st = mcs_results_attr_str(r, p->elems, "type", &type, err)))
         return st;
-    p->topo = topology(type, p->k);
+    p->topo = topology(o, type, p->k);
+    char known[256];
     if (!p->topo)
         st = MCS_ERR(err, MCS_ERR_UNSUPPORTED,
-                     "%s: part %s: %zu-node elements%s%s%s: XDMF "
-                     "export knows line2, tri3, quad4, tet4, wedge6, hex8, tet10",
+                     "%s: part %s: %zu-node elements%s%s%s: XDMF export knows %s",
                      mcs_results_path(r), p->name, p->k, type ? " of type \"" : "",
-                     type ? type : "", type ? "\"" : "");
+                     type ? type : "", type ? "\"" : "", type_names(o, known, sizeof known));
     free(type);
     double off = 0;
     if (!st && mcs_results_has_attr(r, p->nodes, "node_offset"))
@@ -291,7 +298,7 @@ static void put_part(xw *w, int ind, const fe_part *p, const char *disp, const s
     put_grid_open(f, ind, p->name);
     put_indent(f, ind + 1);
     fprintf(f, "<Topology TopologyType=\"%s\" NumberOfElements=\"%zu\"", p->topo, p->ne);
-    if (strcmp(p->topo, "Polyline") == 0) fputs(" NodesPerElement=\"2\"", f);
+    if (strcmp(p->topo, "Polyline") == 0) fprintf(f, " NodesPerElement=\"%zu\"", p->k);
     fputs(">\n", f);
     item_hdf(w, ind + 2, p->elems, 2, de, 1);
     put_indent(f, ind + 1);
@@ -378,19 +385,21 @@ static mcs_status fe_stage(xw *w, int stage, int *ngrids, mcs_error *err)
         mcs_results_list_free(&names, np);
         return st;
     }
-    /* each part's `elements` and its further blocks elements_<type> (mcs_results.h) */
-    static const char *const blocks[] = {"tet4", "wedge6", "hex8", "tet10"};
-    const int nb = (int)(sizeof blocks / sizeof *blocks);
+    /* each part's `elements` and its further blocks elements_<type> (mcs_results.h), in the
+     * order of the cell types given */
+    const mcs_xdmf_opts *o = &w->opts;
+    const int nb = o->ncells > 0 ? o->ncells : 0;
     fe_part *parts = calloc((size_t)np * (size_t)(1 + nb), sizeof *parts);
     if (!parts) st = MCS_ERR(err, MCS_ERR_NOMEM, "export: out of memory");
     int ng = 0;
     for (int i = 0; i < np && !st; i++) {
-        st = read_part(w->r, stage, names[i], NULL, &parts[ng++], err);
+        st = read_part(w->r, o, stage, names[i], NULL, &parts[ng++], err);
         for (int b = 0; b < nb && !st; b++) {
             char pb[512];
-            snprintf(pb, sizeof pb, "/stage%d/mesh/%s/elements_%s", stage, names[i], blocks[b]);
+            snprintf(pb, sizeof pb, "/stage%d/mesh/%s/elements_%s", stage, names[i],
+                     o->cells[b].name);
             if (mcs_results_kind(w->r, pb) == MCS_RES_DATASET)
-                st = read_part(w->r, stage, names[i], blocks[b], &parts[ng++], err);
+                st = read_part(w->r, o, stage, names[i], o->cells[b].name, &parts[ng++], err);
         }
     }
     mcs_results_list_free(&names, np);

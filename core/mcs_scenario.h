@@ -72,6 +72,13 @@ void mcs_scenario_destroy(mcs_scenario **scn);
 mcs_status mcs_scenario_merged(const mcs_scenario *scn, const char *from, const char *into,
                                mcs_scenario **out, mcs_error *err);
 
+/* a copy of scn whose root key `into` ("fe") is the map at the dotted path `from`
+ * ("stage3.fe", moved from there; none: `into` is left out), then without the root keys
+ * drop[ndrop], validated again (core/mcs_scn_merge.c; used by stage 3: stage3_fe/s3_scenario.h) */
+mcs_status mcs_scenario_replaced(const mcs_scenario *scn, const char *from, const char *into,
+                                 const char *const *drop, int ndrop, mcs_scenario **out,
+                                 mcs_error *err);
+
 const mcs_node *mcs_scenario_root(const mcs_scenario *scn);
 
 /* the source texts that were read, in reading order, each preceded by a line

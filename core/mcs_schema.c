@@ -1116,6 +1116,17 @@ static const mcs_skey stage2_keys[] = {
 };
 static const mcs_smap stage2_map = {.what = "stage2 block", .keys = stage2_keys};
 
+/* ---- stage 3: the full FE run of the scenario (docs/contracts.md "Stage 3") ----
+ * stage3.fe replaces fe: (stage 1's FE restraints are coupled to its bodies), stage3.simulation
+ * is merged over simulation:, and the stage-1 keys (bodies, contacts, joints, impact, ...) are
+ * left out when stage 3 is compiled (stage3_fe/s3_scenario.c); its names refer to its own */
+static const mcs_skey stage3_keys[] = {
+    M("simulation", sim_map, 0, "simulation keys of stage 3, over simulation: (e.g. end_time)"),
+    M("fe", fe_map, REQ, "the stage-3 model (replaces fe:): parts (a generated motorcycle, an "
+                         "opponent), rigid walls, contacts"),
+    END,
+};
+static const mcs_smap stage3_map = {.what = "stage3 block", .keys = stage3_keys};
 /* ---- retune and loop (docs/retune.md, docs/loop.md, docs/contracts.md) ---- */
 
 /* the stage-1 names and target paths `mcrash retune` uses (defaults: the sport motorcycle
@@ -1170,6 +1181,7 @@ static const mcs_skey root_keys[] = {
     L("mount_points", mount_map, 0, "named points on bodies"),
     M("rider", rider_map, 0, "seat the rider on the motorcycle"),
     M("stage2", stage2_map, 0, "stage 2: bodies prescribed from a stage-1 results file"),
+    M("stage3", stage3_map, 0, "stage 3: the scenario's full FE model (motorcycle, opponent)"),
     M("retune", retune_map, 0, "mcrash retune: stage-1 names and stage-3 target paths"),
     M("loop", loop_map, 0, "mcrash loop: the wall, retune and crash scenarios"),
     NM("energy_groups", egroup_map, 0,

@@ -91,12 +91,11 @@ static mcs_status merge_into(mcs_scenario *s, const char *from, const char *into
     return MCS_OK;
 }
 
-mcs_status mcs_scenario_merged(const mcs_scenario *scn, const char *from, const char *into,
-                               mcs_scenario **out, mcs_error *err)
+/* a copy of scn's tree and texts (not validated); NULL out of memory */
+static mcs_scenario *copy_of(const mcs_scenario *scn)
 {
-    *out = NULL;
     mcs_scenario *s = calloc(1, sizeof *s);
-    if (!s) return MCS_ERR(err, MCS_ERR_NOMEM, "error: out of memory");
+    if (!s) return NULL;
     copy_ctx c = {.a = &s->arena};
     s->root = copy_node(&c, scn->root);
     if (scn->text) {
@@ -105,13 +104,51 @@ mcs_status mcs_scenario_merged(const mcs_scenario *scn, const char *from, const 
         s->text_len = s->text_cap = s->text ? scn->text_len : 0;
     }
     s->nfiles = scn->nfiles;
-    mcs_status st = s->root ? merge_into(s, from, into, err)
-                            : MCS_ERR(err, MCS_ERR_NOMEM, "error: out of memory");
-    if (!st) st = scn_validate(s, err);
+    if (!s->root) mcs_scenario_destroy(&s);
+    return s;
+}
+
+/* validate s; on error destroy it */
+static mcs_status finish(mcs_scenario *s, mcs_scenario **out, mcs_error *err)
+{
+    mcs_status st = scn_validate(s, err);
     if (st) {
         mcs_scenario_destroy(&s);
         return st;
     }
     *out = s;
     return MCS_OK;
+}
+
+mcs_status mcs_scenario_merged(const mcs_scenario *scn, const char *from, const char *into,
+                               mcs_scenario **out, mcs_error *err)
+{
+    *out = NULL;
+    mcs_scenario *s = copy_of(scn);
+    if (!s) return MCS_ERR(err, MCS_ERR_NOMEM, "error: out of memory");
+    mcs_status st = merge_into(s, from, into, err);
+    if (st) {
+        mcs_scenario_destroy(&s);
+        return st;
+    }
+    return finish(s, out, err);
+}
+
+mcs_status mcs_scenario_replaced(const mcs_scenario *scn, const char *from, const char *into,
+                                 const char *const *drop, int ndrop, mcs_scenario **out,
+                                 mcs_error *err)
+{
+    *out = NULL;
+    mcs_scenario *s = copy_of(scn);
+    if (!s) return MCS_ERR(err, MCS_ERR_NOMEM, "error: out of memory");
+    int i = scn_map_find(s->root, into);
+    if (i >= 0) scn_map_remove(s->root, i);
+    mcs_status st = merge_into(s, from, into, err); /* into is absent now: from moves there */
+    for (int k = 0; k < ndrop && !st; k++)
+        if ((i = scn_map_find(s->root, drop[k])) >= 0) scn_map_remove(s->root, i);
+    if (st) {
+        mcs_scenario_destroy(&s);
+        return st;
+    }
+    return finish(s, out, err);
 }

@@ -35,8 +35,11 @@ static int ref_names(const scn_walk *w, mcs_sref ref, const char **names, int ma
 {
     int n = 0;
     const mcs_node *list = NULL;
+    /* inside stage3: stage3.fe replaces fe: (stage 3 is compiled without it) */
+    const mcs_node *fe = strncmp(w->path, "stage3.", 7) == 0
+                             ? mcs_node_get(mcs_node_get(w->root, "stage3"), "fe")
+                             : mcs_node_get(w->root, "fe");
     if (ref == MCS_REF_CHAR || ref == MCS_REF_BODY_LAW) {
-        const mcs_node *fe = mcs_node_get(w->root, "fe");
         const mcs_node *c = ref == MCS_REF_CHAR ? mcs_node_get(w->root, "characteristics")
                                                 : mcs_node_get(fe, "body_characteristics");
         for (int pass = 0; pass < 2; pass++) {
@@ -52,7 +55,7 @@ static int ref_names(const scn_walk *w, mcs_sref ref, const char **names, int ma
     if (ref == MCS_REF_BODY_OR_GROUND) names[n++] = "ground";
     if (ref == MCS_REF_BODY || ref == MCS_REF_BODY_OR_GROUND)
         list = mcs_node_get(w->root, "bodies");
-    if (ref == MCS_REF_FE_PART) list = mcs_node_get(mcs_node_get(w->root, "fe"), "parts");
+    if (ref == MCS_REF_FE_PART) list = mcs_node_get(fe, "parts");
     for (int pass = 0; pass < 2; pass++) {
         for (int i = 0; i < mcs_node_len(list) && n < max && list->kind == MCS_NODE_SEQ; i++) {
             const mcs_node *nm = mcs_node_get(mcs_node_at(list, i), "name");

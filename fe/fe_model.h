@@ -383,6 +383,8 @@ typedef struct fe_model {
     int nerode;            /* element erosion: nhex + nshell when a part has a failure
                               strain (element e of kind k at e, nhex + e for shells), else 0 */
     int nwall_slave;       /* slave nodes of kinematic walls with mass, all walls [-]      */
+    int nwall_part;        /* nwall x npart: penalty walls' normal force by part (fe_state
+                              wall_part_f, row w: wall w) [-]                              */
     int *wall_slave;       /* (nwall_slave) node indices                                   */
     int wall_slave_off[FE_WALL_MAX + 1]; /* wall w's slaves: wall_slave_off[w] ..[w+1] [-]  */
     int njoint;            /* joints between rigid bodies (fe_joint.h) [-]                 */

@@ -8,8 +8,15 @@
 #define FE_OUT_MESH_H
 
 #include "core/mcs_results.h"
+#include "core/mcs_results_export.h"
 #include "fe/fe_model.h"
 #include "fe/fe_state.h"
+
+/* the cell types the meshes carry (the `type` of each element block) with their node counts and
+ * XDMF topologies, for the XDMF export (mcs_xdmf_opts.cells): line2 Polyline, tri3 Triangle,
+ * quad4 Quadrilateral (a 4-wide block without `type`), tet4 Tetrahedron, wedge6 Wedge, hex8
+ * Hexahedron, tet10 Tetrahedron_10; *n gets their count */
+const mcs_cell_type *fe_out_cell_types(int *n);
 
 /* into /stage<stage>/mesh/<part> */
 mcs_status fe_out_part_mesh(mcs_results *r, int stage, const fe_model *m, const fe_part *p,

@@ -100,6 +100,7 @@ typedef struct {
     X(double, wall_diss, nwall, 2, "J", "kinematic wall with mass: landing loss, halves at t")    \
     X(double, wall_scr, nwall_slave, 2, "-", "scratch of the kinematic wall solve (fe_wall_kin.c)") \
     X(double, wall_ft, nwall_slave, 3, "N", "penalty wall friction force on each slave at t")     \
+    X(double, wall_part_f, nwall_part, 1, "N", "penalty wall normal force by part at t (w, part)") \
     X(double, hist_time, opts.history_capacity, 1, "s", "history sample times")                  \
     X(double, hist_energy, opts.history_capacity, FE_NENERGY, "J", "energies at samples")        \
     X(double, hist_wall_force, opts.history_capacity, FE_WALL_MAX, "N", "wall normal force")     \

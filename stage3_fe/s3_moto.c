@@ -3,6 +3,7 @@
 #include "stage3_fe/s3_moto.h"
 #include "stage3_fe/s3_model_file.h"
 
+#include "fe/fe_contact.h"
 #include "fe/fe_elem.h" /* fe_shell_frame: the kernel's shell area, so the masses agree */
 #include "fe/fe_joint.h"
 #include "fe/fe_restraint.h"
@@ -41,6 +42,8 @@
 #define ABS_E 2.2e9 /* fairing and seat pan plastic */
 #define ABS_RHO 1050.0
 #define RUBBER_E 0.1e9 /* tyre carcass (cord-reinforced rubber, effective) */
+#define SPOKE_T 0.006  /* cast spoke plate, aluminium (A356-T6 class, sigma_y 200 MPa) [m] */
+
 #define RUBBER_RHO 1100.0
 /* tyre inflation, gauge, cold (Kawasaki Ninja ZX-6R 2009 service manual, "Air Pressure (when
  * Cold)", up to 180 kg load: front 250 kPa, rear 290 kPa; a 600 cc sport bike on 120/70 ZR17
@@ -69,6 +72,8 @@ typedef struct {
     double *x;        /* (cap x 3) their positions */
     signed char *grp; /* (cap) their group */
     acc a[G_N];
+    double spin_c[G_N][3], spin_w[G_N]; /* wheels: axle centre [m], spin about +y [rad/s] */
+    double tyre_r2[G_N];                /* wheels: mean square radius of the tyre's nodes [m^2] */
     double prho[64], pt[64]; /* density and thickness of the builder's parts (by index) */
     mcs_error *err;
     mcs_status st;
@@ -136,6 +141,7 @@ static int node(gen *g, const double x[3], int grp)
 }
 
 static void acc_add(acc *a, double m, const double x[3]);
+static void node_vel(gen *g, int n, int k);
 
 /* a node with a point mass m (a spring's end on a rigid body: the spring's step needs it) */
 static int mass_node(gen *g, const double x[3], int grp, double m)
@@ -146,10 +152,23 @@ static int mass_node(gen *g, const double x[3], int grp, double m)
     md.node = n, md.mass = m;
     g->st = fe_builder_add_mass(g->b, &md, g->err);
     if (grp >= 0) acc_add(&g->a[grp], m, x);
+    node_vel(g, n, grp);
     return n;
 }
 
 static const double *xof(const gen *g, int idx) { return g->x + 3 * (idx - g->base); }
+
+/* the initial velocity of our node n (builder index) in group k (-1 none): the motorcycle's,
+ * plus a wheel's spin w e_y x r about its axle (a point mass has no part to take it from) */
+static void node_vel(gen *g, int n, int k)
+{
+    const double *V = g->o->velocity, *x = xof(g, n);
+    const double w = k >= 0 ? g->spin_w[k] : 0, *c = k >= 0 ? g->spin_c[k] : V;
+    if (g->st || (V[0] == 0 && V[1] == 0 && V[2] == 0 && w == 0)) return;
+    const double r[3] = {x[0] - c[0], x[1] - c[1], x[2] - c[2]};
+    const double v[3] = {V[0] + w * r[2], V[1], V[2] - w * r[0]};
+    g->st = fe_builder_node_velocity(g->b, n, v, g->err);
+}
 
 static void acc_add(acc *a, double m, const double x[3])
 {
@@ -339,6 +358,8 @@ static void wheel(gen *g, const char *which, int grp, const double c[3], double 
     int hub = part(g, nm, M_RIGID, 0.004, AL_RHO, AL_E, 0);
     snprintf(nm, sizeof nm, "%s_rim", which);
     int rim = part(g, nm, M_PLASTIC, 0.004, AL_RHO, AL_E, 200e6);
+    snprintf(nm, sizeof nm, "%s_spokes", which);
+    int spk = part(g, nm, M_PLASTIC, SPOKE_T, AL_RHO, AL_E, 200e6);
     snprintf(nm, sizeof nm, "%s_tyre", which);
     int tyre = part(g, nm, M_ELASTIC, 0.006, RUBBER_RHO, RUBBER_E, 0);
     if (g->st) return;
@@ -387,7 +408,7 @@ static void wheel(gen *g, const char *which, int grp, const double c[3], double 
             }
         for (int k = 0; k < nr; k++)
             for (int j = 0; j < ny; j++)
-                quad(g, hub, sp[k * (ny + 1) + j], sp[(k + 1) * (ny + 1) + j],
+                quad(g, spk, sp[k * (ny + 1) + j], sp[(k + 1) * (ny + 1) + j],
                      sp[(k + 1) * (ny + 1) + j + 1], sp[k * (ny + 1) + j + 1]);
     }
     /* tyre section: r = RIM_R + ar cos(psi), y = sin(psi) (wr/2 + (W - wr)/2 cos(psi)), psi from
@@ -409,15 +430,18 @@ static void wheel(gen *g, const char *which, int grp, const double c[3], double 
             quad(g, tyre, tn[i * (nk + 1) + k], tn[i * (nk + 1) + k + 1],
                  tn[i1 * (nk + 1) + k + 1], tn[i1 * (nk + 1) + k]);
         }
+    double r2 = 0; /* the tyre's nodes (their rim edges too), for the wheel's ballast */
+    for (int i = 0; i < nt * (nk + 1); i++) {
+        const double *x = xof(g, tn[i]);
+        r2 += ((x[0] - c[0]) * (x[0] - c[0]) + (x[2] - c[2]) * (x[2] - c[2])) / (nt * (nk + 1));
+    }
+    g->tyre_r2[grp] = r2;
     free(rn), free(tn);
     tyre_gas(g, which, gauge);
-    const double *V = g->o->velocity, w = V[0] / R;
-    if (w != 0)
-        for (int n = first; n < g->n && !g->st; n++) {
-            const double *x = g->x + 3 * n, r[3] = {x[0] - c[0], x[1] - c[1], x[2] - c[2]};
-            double v[3] = {V[0] + w * r[2], V[1], V[2] - w * r[0]}; /* w e_y x r */
-            g->st = fe_builder_node_velocity(g->b, g->base + n, v, g->err);
-        }
+    g->spin_w[grp] = g->o->velocity[0] / R; /* rolling: w = v_x / R */
+    memcpy(g->spin_c[grp], c, sizeof g->spin_c[grp]);
+    if (g->spin_w[grp] != 0)
+        for (int n = first; n < g->n && !g->st; n++) node_vel(g, g->base + n, grp);
 }
 
 /* ---- the stage-1 model ---- */
@@ -515,6 +539,20 @@ static void joint(gen *g, const char *name, fe_joint_type type, const char *a, c
     g->st = fe_builder_add_joint(g->b, &j, g->err);
 }
 
+/* a two-surface contact between the parts <pre>_<a[i]> and <pre>_<b[j]> */
+static void contact(gen *g, const char *name, const char *const *a, int na, const char *const *b,
+                    int nb, double mu)
+{
+    if (g->st) return;
+    fe_contact_desc d = fe_contact_desc_default();
+    snprintf(d.name, sizeof d.name, "%.31s_%.31s", g->pre, name);
+    d.type = FE_CONTACT_TWO_SURFACE;
+    d.nslave = na, d.nmaster = nb, d.friction = mu;
+    for (int i = 0; i < na; i++) snprintf(d.slave[i], FE_NAME_MAX, "%.31s_%.31s", g->pre, a[i]);
+    for (int i = 0; i < nb; i++) snprintf(d.master[i], FE_NAME_MAX, "%.31s_%.31s", g->pre, b[i]);
+    g->st = fe_builder_add_contact(g->b, &d, g->err);
+}
+
 static void nrb(gen *g, const char *name, const int *nodes, int n)
 {
     char nm[FE_NAME_MAX];
@@ -530,6 +568,38 @@ static void extra(gen *g, const char *host, const int *nodes, int n)
 }
 
 /* six point masses on host making the group's mass, centre and inertia those of body s */
+/* a wheel's missing mass spread on its rim band (radius RIM_R) and its tyre's nodes (mean
+ * square radius tyre_r2), split so that the spin inertia about the axle is the stage-1 body's
+ * Iyy: m_r RIM_R^2 + m_t tyre_r2 = Iyy - the mesh's, m_r + m_t = the rest of the mass (rubber
+ * and rim metal the shells' thicknesses leave out); both are rings about the axle, so the centre
+ * stays there (the stage-1 wheel's). Not six rigid point masses: they would sit near the tyre's
+ * radius and strike a wall as rigid points. Ixx = Izz follow from the rings (not matched) */
+static void wheel_ballast(gen *g, int k, const s1body *s, const char *which, const mcs_node *at)
+{
+    if (g->st) return;
+    const acc *a = &g->a[k];
+    const double mb = s->m - a->m, *c = s->c, rt2 = g->tyre_r2[k], rr2 = RIM_R * RIM_R;
+    double iy = 0; /* the mesh's spin inertia about the axle (y through c) */
+    for (int i = 0; i < 3; i += 2) iy += a->S[i][i] - 2 * c[i] * a->mx[i] + a->m * c[i] * c[i];
+    const double mt = (s->I[1] - iy - mb * rr2) / (rt2 - rr2);
+    if (!(mb > 0) || !(rt2 > rr2) || mt < 0 || mt > mb) {
+        g->st = mcs_node_error(at, g->err, MCS_ERR_RANGE,
+                               "motorcycle: the %s wheel's mesh (%.3g kg, spin inertia %.3g kg "
+                               "m^2) cannot be brought to the stage-1 body's %.3g kg, %.3g kg m^2",
+                               which, a->m, iy, s->m, s->I[1]);
+        return;
+    }
+    const char *band[2] = {"tyre", "rim"};
+    const double mass[2] = {mt, mb - mt};
+    for (int i = 0; i < 2 && !g->st; i++) {
+        if (!(mass[i] > 0)) continue;
+        fe_mass_desc md = {0};
+        md.node = -1, md.where = FE_WHERE_ALL, md.mass = mass[i];
+        snprintf(md.part, sizeof md.part, "%.31s_%.15s_%.15s", g->pre, which, band[i]);
+        g->st = fe_builder_add_mass(g->b, &md, g->err);
+    }
+}
+
 static void ballast(gen *g, int k, const s1body *s, const mcs_node *at)
 {
     if (g->st) return;
@@ -566,6 +636,7 @@ static void ballast(gen *g, int k, const s1body *s, const mcs_node *at)
             fe_mass_desc md = {0};
             md.node = nodes[2 * i + sg], md.mass = mb / 6;
             g->st = fe_builder_add_mass(g->b, &md, g->err);
+            node_vel(g, nodes[2 * i + sg], k);
             if (g->st) return;
         }
     }
@@ -768,8 +839,18 @@ static void build(gen *g, const mcs_node *root)
     joint(g, "swing_arm_pivot", FE_JOINT_REVOLUTE, "swing_arm", "frame", P, ey, root);
     joint(g, "rear_axle", FE_JOINT_REVOLUTE, "rear_wheel", "swing_arm", Ar, ey, root);
 
+    /* the front wheel against the engine and fairing (stage 1's moto_front_wheel_engine):
+     * steel/aluminium on rubber and metal, friction 0.3 (assumed) */
+    static const char *const wh[] = {"front_tyre", "front_rim", "front_spokes", "front_wheel"};
+    static const char *const en[] = {"frame", "fairing"};
+    contact(g, "wheel_engine", wh, 4, en, 2, 0.3);
+
     /* masses: six point masses per rigid body; the fork-deformation body's rest on its tubes */
     for (int k = 0; k < G_N && !g->st; k++) {
+        if (k == G_FWHEEL || k == G_RWHEEL) {
+            wheel_ballast(g, k, &s[k], k == G_FWHEEL ? "front" : "rear", root);
+            continue;
+        }
         if (host_of[k]) {
             ballast(g, k, &s[k], root);
             continue;

@@ -7,6 +7,7 @@
 #include "core/mcs_progress.h"
 #include "core/mcs_results.h"
 #include "fe/fe_contact.h"
+#include "stage3_fe/s3_wallcase.h"
 
 #include <float.h>
 #include <math.h>
@@ -24,8 +25,14 @@ static double now_s(void)
 
 typedef struct {
     mcs_results_series *time, *energy[FE_NENERGY], *wall_f[FE_WALL_MAX], *wall_d[FE_WALL_MAX];
+    mcs_results_series *wall_m[FE_WALL_MAX]; /* penalty walls: mean force over the interval */
+    double imp[FE_WALL_MAX], imp_t;          /* their impulses and the time since the last row */
     mcs_results_series *eroded; /* elements deleted so far (erosion only), NULL without */
     fe_out fe; /* fields, contacts, restraints, slip rings, parts (fe/fe_out.h) */
+    s3_wallcase *wc; /* a motorcycle's fork angle, wall force by part, phases; NULL none */
+    double hg_max; /* largest hourglass / internal energy once internal is 1 % of its end [-] */
+    double *eint;  /* (rows) internal and hourglass energy of each row, for hg_max [J] */
+    size_t nrow, caprow;
 } s3_out;
 
 static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_error *err)
@@ -41,11 +48,15 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
         st = mcs_results_series_create(r, path, 1, NULL, "N", 0, &o->wall_f[w], err);
         snprintf(path, sizeof path, "/stage3/rigidwall/%s/displacement", m->wall[w].name);
         if (!st) st = mcs_results_series_create(r, path, 1, NULL, "m", 0, &o->wall_d[w], err);
+        snprintf(path, sizeof path, "/stage3/rigidwall/%s/force_mean", m->wall[w].name);
+        if (!st && m->wall[w].method == FE_WALL_PENALTY)
+            st = mcs_results_series_create(r, path, 1, NULL, "N", 0, &o->wall_m[w], err);
     }
     if (!st && m->nerode > 0)
         st = mcs_results_series_create(r, "/stage3/erosion/count", 1, NULL, "-", 0, &o->eroded,
                                        err);
     if (!st) st = fe_out_open(r, 3, m, &o->fe, err);
+    if (!st) st = s3_wallcase_open(r, m, &o->wc, err);
     return st;
 }
 
@@ -57,18 +68,48 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
     for (int w = 0; w < m->nwall && !st; w++) {
         st = mcs_results_series_append(o->wall_f[w], &s->wall_normal[w], err);
         if (!st) st = mcs_results_series_append(o->wall_d[w], &s->wall_disp[w], err);
+        const double fm = o->imp_t > 0 ? o->imp[w] / o->imp_t : s->wall_normal[w];
+        if (!st && o->wall_m[w]) st = mcs_results_series_append(o->wall_m[w], &fm, err);
+        o->imp[w] = 0;
     }
+    o->imp_t = 0;
     if (!st && o->eroded) {
         double n = s->neroded;
         st = mcs_results_series_append(o->eroded, &n, err);
     }
     if (!st) st = fe_out_sample(m, s, &o->fe, err);
+    if (!st) st = s3_wallcase_sample(m, s, o->wc, err);
+    if (o->nrow < o->caprow) { /* beyond the rows planned: not in hg_max */
+        o->eint[2 * o->nrow] = s->energy[FE_E_internal];
+        o->eint[2 * o->nrow++ + 1] = s->energy[FE_E_hourglass];
+    }
     return st;
+}
+
+/* the largest hourglass / internal energy ratio over the rows whose internal energy is at
+ * least 1 % of the last row's (LS-DYNA practice: hourglass below 10 % of internal) */
+static double hourglass_max(const s3_out *o)
+{
+    if (o->nrow == 0) return 0;
+    const double e_end = o->eint[2 * (o->nrow - 1)];
+    double r = 0;
+    for (size_t i = 0; i < o->nrow; i++)
+        if (o->eint[2 * i] > 0.01 * e_end && o->eint[2 * i] > 0)
+            r = fmax(r, o->eint[2 * i + 1] / o->eint[2 * i]);
+    return r;
 }
 
 static mcs_status sample_field(const fe_model *m, const fe_state *s, s3_out *o, mcs_error *err)
 {
     return fe_out_field_sample(m, s, s->time, &o->fe.field, err);
+}
+
+/* after a step: the walls' impulses F(t_n) dt over the step just taken (for force_mean) */
+static void accumulate(const fe_model *m, const fe_state *s, s3_out *o)
+{
+    for (int w = 0; w < m->nwall; w++) o->imp[w] += s->wall_normal[w] * s->dt_prev;
+    o->imp_t += s->dt_prev;
+    s3_wallcase_step(m, s, o->wc);
 }
 
 /* the time loop: fe_step until end_time, sampling energies (at t_n) and fields (at t_n+1) */
@@ -91,6 +132,7 @@ static mcs_status loop(const fe_problem *p, const s3_run_opts *ro, fe_state *s, 
             MCS_ERR(err, st, "stage 3: %s", s->err.msg);
             break;
         }
+        accumulate(m, s, o);
         const double eps = 1e-9 * s->dt;
         if (s->energy_time >= next_e - eps) {
             st = sample_energy(m, s, o, err);
@@ -117,7 +159,12 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
     mcs_results *r = NULL;
     s3_out o = {0};
     mcs_status st = fe_state_create(m, &s, err);
-    if (!st) st = mcs_results_create(&r, ro->out_path, ro->scenario_text, err);
+    o.caprow = (size_t)ceil(p->end_time * p->output_rate) + 2;
+    o.eint = st ? NULL : malloc(2 * sizeof(double) * o.caprow);
+    if (!st && !o.eint) st = MCS_ERR(err, MCS_ERR_NOMEM, "stage 3: out of memory");
+    if (!st)
+        st = ro->append ? mcs_results_append(&r, ro->out_path, err)
+                        : mcs_results_create(&r, ro->out_path, ro->scenario_text, err);
     if (!st) st = fe_out_meshes(r, 3, m, err);
     if (!st) st = open_series(r, m, &o, err);
     if (!st) st = loop(p, ro, s, &o, err);
@@ -150,9 +197,21 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
         if (!st)
             st = mcs_results_set_attr_double(r, "/stage3", "mass_added_fraction",
                                              sum->mass_added_fraction, err);
+        const double e_int = s->energy[FE_E_internal], e_hg = s->energy[FE_E_hourglass];
+        sum->hourglass_fraction = e_int > 0 ? e_hg / e_int : 0;
+        sum->hourglass_fraction_max = hourglass_max(&o);
+        if (!st)
+            st = mcs_results_set_attr_double(r, "/stage3", "hourglass_fraction",
+                                             sum->hourglass_fraction, err);
+        if (!st)
+            st = mcs_results_set_attr_double(r, "/stage3", "hourglass_fraction_max",
+                                             sum->hourglass_fraction_max, err);
+        if (!st) st = s3_wallcase_finish(r, &o.wc, err);
         if (!st) st = mcs_results_commit(&r, err);
     }
     mcs_results_abort(&r);
+    s3_wallcase_free(&o.wc);
+    free(o.eint);
     fe_out_free(&o.fe);
     fe_state_destroy(&s);
     sum->wall_time_s = now_s() - wall0;

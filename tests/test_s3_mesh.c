@@ -158,6 +158,7 @@ static void test_mesh_types(void)
     }
     /* XDMF: one grid per block with its topology and count */
     mcs_xdmf_opts xo = mcs_xdmf_opts_default();
+    xo.cells = fe_out_cell_types(&xo.ncells);
     CHECK(mcs_results_export_xdmf(r, xmf, &xo, &err) == MCS_OK);
     char *xml = slurp(xmf);
     CHECK_STR_CONTAINS(xml, "TopologyType=\"Hexahedron\" NumberOfElements=\"1\"");
@@ -167,6 +168,11 @@ static void test_mesh_types(void)
     CHECK_STR_CONTAINS(xml, "Name=\"mix.wedge6\"");
     CHECK_STR_CONTAINS(xml, "/stage3/mesh/mix/elements_tet4");
     free(xml);
+    /* the export knows no cell type of its own (core/ does not know the FE kernel's) */
+    mcs_xdmf_opts none = mcs_xdmf_opts_default();
+    CHECK(mcs_results_export_xdmf(r, xmf, &none, &err) == MCS_ERR_UNSUPPORTED);
+    CHECK_STR_CONTAINS(err.msg, "no cell types given");
+    mcs_error_clear(&err);
     /* keyword export: 9 solids (the hexahedron, the pentahedra and tetrahedra in LS-DYNA's
        degenerate forms) and one 10-node tetrahedron */
     tr_kw_export_opts ko = tr_kw_export_opts_default();

@@ -330,6 +330,7 @@ static mcs_status resolve_loads(const fe_builder *b, fe_model *m, mcs_error *err
 static mcs_status resolve_walls(const fe_builder *b, fe_model *m, mcs_error *err)
 {
     m->nwall = b->nwall;
+    m->nwall_part = b->nwall * m->npart;
     m->wall = calloc((size_t)(b->nwall ? b->nwall : 1), sizeof *m->wall);
     if (!m->wall) return MCS_ERR(err, MCS_ERR_NOMEM, "fe: out of memory");
     unsigned char *inpart = calloc((size_t)(m->nnode ? m->nnode : 1), 1), *mk = NULL;

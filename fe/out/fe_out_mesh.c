@@ -6,6 +6,19 @@
 
 enum { SH_HEX, SH_WEDGE, SH_TET, SH_N };
 
+const mcs_cell_type *fe_out_cell_types(int *n)
+{
+    /* XDMF's names of the VTK cells (the node orders put_solid writes); a part's further
+     * blocks are exported in this order */
+    static const mcs_cell_type t[] = {
+        {"line2", 2, "Polyline", 1},      {"tri3", 3, "Triangle", 1},
+        {"quad4", 4, "Quadrilateral", 1}, {"tet4", 4, "Tetrahedron", 0},
+        {"wedge6", 6, "Wedge", 1},        {"hex8", 8, "Hexahedron", 1},
+        {"tet10", 10, "Tetrahedron_10", 1}};
+    *n = (int)(sizeof t / sizeof *t);
+    return t;
+}
+
 /* shape of hex slots c (the builder admits only these three patterns) and the cell's nodes
  * in VTK / XDMF order: tetrahedron n1 n2 n3 n3 n4 n4 n4 n4 -> (n1 n2 n3 n4); pentahedron
  * n1 n2 n3 n4 n5 n5 n6 n6 (quad 1-2-3-4, ridge 5-6) -> wedge (n1 n2 n5 | n4 n3 n6): the

@@ -2,6 +2,7 @@
 #include "fe/scn/fe_scn_from.h"
 
 #include "core/mcs_results_mesh.h"
+#include "fe/fe_out_mesh.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -131,6 +132,18 @@ mcs_status fe_scn_from_add_part(fe_builder *b, const mcs_node *part, const fe_pa
     mcs_error e = {0};
     fe_part_desc pd = *d;
     mcs_status st = mcs_results_read_mesh(ref, shape, mcs_node_num(at), &m, &e);
+    /* a block without `type`: the cell type of its width (fe_out_cell_types: 4 = quad4) */
+    int nct;
+    const mcs_cell_type *ct = fe_out_cell_types(&nct);
+    for (int i = 0; !st && i < m.nblock; i++) {
+        for (int j = 0; !m.block[i].type[0] && j < nct; j++)
+            if (ct[j].by_width && ct[j].nodes == m.block[i].k)
+                snprintf(m.block[i].type, sizeof m.block[i].type, "%s", ct[j].name);
+        if (!m.block[i].type[0])
+            st = MCS_ERR(&e, MCS_ERR_FORMAT, "%s/elements: %d-node elements without a type "
+                                             "(no cell type of that width)",
+                         ref, m.block[i].k);
+    }
     if (!st) st = add_mesh(b, &m, ref, &pd, &e);
     mcs_mesh_free(&m);
     return st ? mcs_node_error(shape == MCS_MESH_AT && st == MCS_ERR_RANGE ? at : fn, err, st, "%s",

@@ -132,6 +132,7 @@ void fe_internal_forces(const fe_model *m, fe_state *s)
 void fe_contact_forces(const fe_model *m, fe_state *s)
 {
     memset(s->wall_force, 0, sizeof(double) * 3 * (size_t)m->nwall);
+    memset(s->wall_part_f, 0, sizeof(double) * (size_t)m->nwall_part);
     if (m->contact) fe_contact_finish(m, s); /* begun in fe_internal_forces */
     unsigned pen = 0;
     for (int w = 0; w < m->nwall; w++)
@@ -154,6 +155,10 @@ void fe_contact_forces(const fe_model *m, fe_state *s)
                 s->node_fext[3 * n + i] += fn * W->normal[i];
                 s->wall_force[3 * w + i] -= fn * W->normal[i];
             }
+            /* by part: a node without elements (a point mass) counts for its rigid part */
+            int p = m->node_part[n], bd = m->node_body[n];
+            if (p < 0 && bd >= 0) p = m->body[bd].part;
+            if (p >= 0) s->wall_part_f[w * m->npart + p] += fn;
         }
     }
     if (m->nwall_slave) fe_wall_penalty_friction(m, s); /* after the normal forces */

@@ -422,7 +422,12 @@ static mcs_status ref_h5(const char *file, const char *sel, an_signal *out, mcs_
         for (size_t i = 0; !st && i < nt; i++) {
             out->t[i] = ta.v[i];
             out->y[i] = a.v[i * w + (col < 0 ? 0 : (size_t)col)] * factor;
-            if (!isfinite(out->y[i]) || !isfinite(out->t[i]))
+            if (!isfinite(out->t[i]) || (i > 0 && !(out->t[i] > out->t[i - 1])))
+                st = MCS_ERR(err, MCS_ERR_FORMAT,
+                             "%s:%s[%zu] = %g: not finite or not after the one before (the time "
+                             "of %s)",
+                             file, tpath, i, out->t[i], sel);
+            else if (!isfinite(out->y[i]))
                 st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: sample %zu is not finite", file, sel, i);
             else if (i > 0 && !(out->t[i] > out->t[i - 1]))
                 st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: time %zu (%g s) is not after %g s",

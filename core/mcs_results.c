@@ -43,9 +43,10 @@ mcs_status mcs_res_h5err(mcs_error *err, const mcs_results *r, const char *path,
     h5_walk w = {{0}, 0};
     H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, walk_cb, &w);
     H5Eclear2(H5E_DEFAULT);
-    return MCS_ERR(err, MCS_ERR_HDF5, "%s:%s: %s%s%s%s", r && r->path ? r->path : "(results)",
-                   path ? path : "", what, w.have ? " (hdf5: " : "", w.have ? w.inner : "",
-                   w.have ? ")" : "");
+    int at = path && *path; /* the file alone: no "file::" */
+    return MCS_ERR(err, MCS_ERR_HDF5, "%s%s%s: %s%s%s%s", r && r->path ? r->path : "(results)",
+                   at ? ":" : "", at ? path : "", what, w.have ? " (hdf5: " : "",
+                   w.have ? w.inner : "", w.have ? ")" : "");
 }
 
 mcs_status mcs_res_check_path(const mcs_results *r, const char *path, int want_write,
@@ -366,7 +367,7 @@ mcs_status mcs_results_open(mcs_results **out, const char *path, mcs_error *err)
     r->file = H5Fopen(path, H5F_ACC_RDONLY, fapl);
     H5Pclose(fapl);
     if (r->file < 0) {
-        mcs_status st = mcs_res_h5err(err, r, "", "cannot open");
+        mcs_status st = mcs_res_h5err(err, r, "", "cannot open: a truncated or damaged file");
         free_handle(r);
         return st;
     }

@@ -1,6 +1,7 @@
 /* mcs_results_io.c: whole datasets and attributes — write, read, look up, list. */
 #include "core/mcs_results_impl.h"
 
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -235,6 +236,32 @@ static void attr_to_buf(mcs_results *r, const char *path, const char *name, char
     free(s);
 }
 
+/* a dataset's declared size must be one the file holds: the count must not overflow, and more
+ * than 1 MiB declared must be held in at least 1/1024 of its bytes (the ratio bounds deflate's,
+ * ~1000; mcrash writes no filter). Refused otherwise, before anything is allocated for it. */
+static mcs_status check_held(mcs_results *r, const char *path, hid_t d, const size_t *dims,
+                             size_t fsz, size_t esz, mcs_error *err)
+{
+    size_t n = 1;
+    for (int i = 0; i < MCS_RESULTS_MAXRANK; i++) {
+        if (dims[i] && n > SIZE_MAX / dims[i])
+            return MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: declares [%zu, %zu, %zu] values: too many",
+                           r->path, path, dims[0], dims[1], dims[2]);
+        n *= dims[i];
+    }
+    size_t big = fsz > esz ? fsz : esz;
+    if (big && n > SIZE_MAX / big)
+        return MCS_ERR(err, MCS_ERR_FORMAT, "%s:%s: declares %zu values: too many", r->path, path,
+                       n);
+    unsigned long long held = (unsigned long long)H5Dget_storage_size(d);
+    if ((double)n * (double)fsz > 1048576.0 && (double)held * 1024.0 < (double)n * (double)fsz)
+        return MCS_ERR(err, MCS_ERR_FORMAT,
+                       "%s:%s: declares %zu values (%zu bytes) but the file holds %llu bytes of "
+                       "them",
+                       r->path, path, n, n * fsz, held);
+    return MCS_OK;
+}
+
 static mcs_status read_any(mcs_results *r, const char *path, mcs_array *out, int as_int,
                            mcs_error *err)
 {
@@ -245,16 +272,18 @@ static mcs_status read_any(mcs_results *r, const char *path, mcs_array *out, int
     st = dataset_shape(r, path, d, &out->rank, out->dims, err);
     hid_t t = H5Dget_type(d);
     H5T_class_t c = t < 0 ? H5T_NO_CLASS : H5Tget_class(t);
+    size_t fsz = t < 0 ? 0 : H5Tget_size(t);
     if (t >= 0) H5Tclose(t);
     if (!st && c != H5T_INTEGER && c != H5T_FLOAT)
         st = MCS_ERR(err, MCS_ERR_TYPE, "%s:%s: not a numeric dataset", r->path, path);
+    size_t esz = as_int ? sizeof(int) : sizeof(double);
+    if (!st) st = check_held(r, path, d, out->dims, fsz, esz, err);
     if (st) {
         H5Dclose(d);
         return st;
     }
     out->n = out->dims[0] * out->dims[1] * out->dims[2];
     if (out->rank == 0) out->n = 1;
-    size_t esz = as_int ? sizeof(int) : sizeof(double);
     void *buf = malloc(esz * (out->n ? out->n : 1));
     if (!buf) {
         H5Dclose(d);

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define KW_FILE_MAX (1L << 30) /* largest deck file read [B] */
 
@@ -55,6 +56,11 @@ static mcs_status slurp(kw_ctx *c, const char *path, char **out, size_t *len)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return MCS_ERR(c->err, MCS_ERR_IO, "%s: cannot open the keyword file", path);
+    struct stat sb;
+    if (fstat(fileno(f), &sb) == 0 && S_ISDIR(sb.st_mode)) {
+        fclose(f);
+        return MCS_ERR(c->err, MCS_ERR_IO, "%s: a directory, not a keyword file", path);
+    }
     char *buf = NULL;
     size_t n = 0, cap = 0;
     for (;;) {
@@ -199,6 +205,10 @@ static mcs_status do_include(kw_ctx *c, const kw_card *cards, int ncard)
         if (resolve_include(c, cd->file, name, path, sizeof path))
             return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_IO, "cannot open '%s'%s", path,
                            c->npath ? " (nor in the *INCLUDE_PATH folders)" : "");
+        struct stat sb;
+        if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))
+            return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_IO,
+                           "'%s' is a directory, not a keyword file", path);
         int loop = open_index(c, path);
         if (loop >= 0)
             return kw_fail(c, cd->file, cd->line, 1, MCS_ERR_FORMAT,

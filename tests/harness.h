@@ -71,6 +71,22 @@ static inline int th_verify(void)
     return v && *v && *v != '0';
 }
 
+/* the whole file at path, NUL-terminated (malloc'ed; NULL when it cannot be opened or read);
+ * *n, when n is not NULL, gets its length in bytes */
+static inline char *th_slurp(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    char *s = NULL;
+    long len = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    if (len >= 0 && fseek(f, 0, SEEK_SET) == 0) s = malloc((size_t)len + 1);
+    size_t k = s ? fread(s, 1, (size_t)len, f) : 0;
+    if (s) s[k] = 0;
+    if (n) *n = k;
+    fclose(f);
+    return s;
+}
+
 #include "figures.h"
 
 #endif

@@ -199,20 +199,6 @@ static void test_csv_content(void)
 
 /* ---- XDMF ---- */
 
-static char *slurp(const char *p)
-{
-    FILE *f = fopen(p, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *b = malloc((size_t)n + 1);
-    size_t k = fread(b, 1, (size_t)n, f);
-    b[k] = 0;
-    fclose(f);
-    return b;
-}
-
 /* the value of attribute `name` in the tag starting at tag, into out */
 static int tag_attr(const char *tag, const char *name, char *out, size_t n)
 {
@@ -397,7 +383,7 @@ static void test_xdmf_references(void)
     cli_result *res = cli_run(cmd);
     CHECK(res->status == 0);
     CHECK_STR_CONTAINS(res->out, "sample.xmf");
-    char *xml = slurp(tpath("sample.xmf"));
+    char *xml = th_slurp(tpath("sample.xmf"), NULL);
     CHECK(xml != NULL);
     if (!xml) return;
     CHECK_STR_CONTAINS(xml, "<Xdmf Version=\"3.0\">");
@@ -433,7 +419,7 @@ static void test_xdmf2_legacy(void)
     snprintf(cmd, sizeof cmd, "export %s --xdmf2 %s", tpath("sample.h5"), tpath("legacy.xmf"));
     cli_result *res = cli_run(cmd);
     CHECK(res->status == 0);
-    char *xml = slurp(tpath("legacy.xmf"));
+    char *xml = th_slurp(tpath("legacy.xmf"), NULL);
     CHECK(xml != NULL);
     if (!xml) return;
     CHECK_STR_CONTAINS(xml, "<Xdmf Version=\"2.0\">");
@@ -461,7 +447,7 @@ static void test_xdmf_elsewhere_and_stride(void)
              tpath("views/deep/s.xmf"));
     cli_result *res = cli_run(cmd);
     CHECK(res->status == 0);
-    char *xml = slurp(tpath("views/deep/s.xmf"));
+    char *xml = th_slurp(tpath("views/deep/s.xmf"), NULL);
     CHECK(xml != NULL);
     if (!xml) return;
     xdmf_check c = {0};
@@ -551,7 +537,7 @@ static int paraview_read(const char *xmf, int legacy, double at, long *pts, long
              "%s --time %.17g %s > %s 2>&1",
              legacy ? "--xdmf2" : "", at, xmf, tpath("pv.txt"));
     int rc = system(cmd);
-    char *out = slurp(tpath("pv.txt"));
+    char *out = th_slurp(tpath("pv.txt"), NULL);
     const char *p = out ? strstr(out, "xdmf:") : NULL;
     int n = p ? sscanf(p, "xdmf: points %ld cells %ld timesteps %ld last %lf zmin %lf q %lf %lf",
                        pts, cells, steps, t, zmin, qw, qy)

@@ -349,20 +349,6 @@ static void test_bodies_contact_force(void)
 
 /* ---- the XDMF file ---- */
 
-static char *slurp(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *b = malloc((size_t)len + 1);
-    *n = b ? fread(b, 1, (size_t)len, f) : 0;
-    if (b) b[*n] = 0;
-    fclose(f);
-    return b;
-}
-
 static int parse_dims(const char *s, size_t *d, int max)
 {
     int n = 0;
@@ -458,7 +444,7 @@ static void test_xdmf_shows_parts_and_bodies(void)
     cli_result *r = cli_run(args);
     CHECK(r->status == 0);
     size_t len = 0;
-    char *x = slurp(xmf, &len);
+    char *x = th_slurp(xmf, &len);
     CHECK(x != NULL);
     mcs_results *h = NULL;
     mcs_error err = {0};
@@ -547,7 +533,7 @@ static void test_same_bytes_on_1_and_2_threads(void)
     unsetenv("OMP_NUM_THREADS");
     unsetenv("OMP_WAIT_POLICY");
     size_t na = 0, nb = 0;
-    char *a = slurp(out[0], &na), *b = slurp(out[1], &nb);
+    char *a = th_slurp(out[0], &na), *b = th_slurp(out[1], &nb);
     CHECK(a && b && na == nb && na > 0 && memcmp(a, b, na) == 0);
     mcs_results *h = NULL;
     mcs_error err = {0};

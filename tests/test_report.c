@@ -26,20 +26,6 @@ static const char *tpath(const char *name)
     return buf[k];
 }
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    if (s && fread(s, 1, (size_t)n, f) != (size_t)n) n = 0;
-    if (s) s[n] = 0;
-    fclose(f);
-    return s;
-}
-
 static int count(const char *s, const char *needle)
 {
     int n = 0;
@@ -66,7 +52,7 @@ static void test_sections(void)
     tr_report_summary sum;
     mcs_error e = {0};
     CHECK(tr_report_write(tpath("sample.h5"), tpath("sample.html"), NULL, &sum, &e) == MCS_OK);
-    char *s = slurp(tpath("sample.html"));
+    char *s = th_slurp(tpath("sample.html"), NULL);
     CHECK(s != NULL);
     if (!s) return;
     CHECK(sum.bytes == strlen(s));
@@ -113,7 +99,7 @@ static void test_sections(void)
     free(s);
     /* a second run writes the same bytes (deterministic page) */
     CHECK(tr_report_write(tpath("sample.h5"), tpath("again.html"), NULL, NULL, &e) == MCS_OK);
-    char *a = slurp(tpath("sample.html")), *b = slurp(tpath("again.html"));
+    char *a = th_slurp(tpath("sample.html"), NULL), *b = th_slurp(tpath("again.html"), NULL);
     CHECK(a && b && strcmp(a, b) == 0);
     free(a);
     free(b);
@@ -134,7 +120,7 @@ static void test_sections_left_out(void)
           MCS_OK);
     CHECK(strcmp(sum.sections, "energy") == 0);
     CHECK(strcmp(sum.skipped, "injury,dummy,restraints,crush,parts,stages,kinematics") == 0);
-    char *s = slurp(tpath("energy_only.html"));
+    char *s = th_slurp(tpath("energy_only.html"), NULL);
     CHECK_STR_CONTAINS(s, "not in this file: injury,dummy,restraints,crush,parts,stages,");
     CHECK(s && count(s, "<svg") == 1);
     free(s);
@@ -172,7 +158,7 @@ static void test_bad_input(void)
     CHECK(tr_report_write(tpath("nostage.h5"), tpath("nostage.html"), NULL, NULL, &e) ==
           MCS_ERR_FORMAT);
     CHECK_STR_CONTAINS(e.msg, "not an mcrash results file");
-    char *s = slurp(tpath("nostage.html"));
+    char *s = th_slurp(tpath("nostage.html"), NULL);
     CHECK(s && strcmp(s, "earlier") == 0);
     free(s);
 }

@@ -57,19 +57,6 @@ static int count_entries(const char *s)
     return n;
 }
 
-static char *slurp(const char *p, size_t *len)
-{
-    FILE *f = fopen(p, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *b = malloc((size_t)n + 1);
-    *len = fread(b, 1, (size_t)n, f);
-    fclose(f);
-    return b;
-}
-
 static void test_create_commit_meta(void)
 {
     mcs_error e = {0};
@@ -459,7 +446,7 @@ static void test_abort_keeps_earlier_file(void)
     CHECK(mcs_results_put_time(r, 1, 2, t, &e) == MCS_OK);
     CHECK(mcs_results_commit(&r, &e) == MCS_OK);
     size_t n0, n1;
-    char *before = slurp(out, &n0);
+    char *before = th_slurp(out, &n0);
 
     /* a second run that fails half-way: the earlier file stays byte for byte */
     CHECK(mcs_results_create(&r, out, "second run", &e) == MCS_OK);
@@ -471,7 +458,7 @@ static void test_abort_keeps_earlier_file(void)
     mcs_results_abort(&r);
     CHECK(r == NULL);
     CHECK(count_entries("run.h5.tmp.") == 0);
-    char *after = slurp(out, &n1);
+    char *after = th_slurp(out, &n1);
     CHECK(before && after && n0 == n1 && memcmp(before, after, n0) == 0);
     free(after);
 
@@ -479,7 +466,7 @@ static void test_abort_keeps_earlier_file(void)
     CHECK(mcs_results_create(&r, out, "third run", &e) == MCS_OK);
     mcs_results_close(&r);
     CHECK(count_entries("run.h5.tmp.") == 0);
-    after = slurp(out, &n1);
+    after = th_slurp(out, &n1);
     CHECK(after && n0 == n1 && memcmp(before, after, n0) == 0);
     free(after);
     free(before);
@@ -680,12 +667,12 @@ static void test_append_stage(void)
     CHECK(mcs_results_put_time(r, 1, 3, t, &e) == MCS_OK);
     CHECK(mcs_results_commit(&r, &e) == MCS_OK);
     size_t n0, n1;
-    char *before = slurp(out, &n0);
+    char *before = th_slurp(out, &n0);
     /* a later stage that fails leaves the file as it was */
     CHECK(mcs_results_append(&r, out, &e) == MCS_OK);
     CHECK(mcs_results_put_time(r, 2, 3, t, &e) == MCS_OK);
     mcs_results_abort(&r);
-    char *after = slurp(out, &n1);
+    char *after = th_slurp(out, &n1);
     CHECK(before && after && n0 == n1 && memcmp(before, after, n0) == 0);
     free(before);
     free(after);
@@ -722,7 +709,7 @@ static void test_deterministic_bytes(void)
     }
     unsetenv("SOURCE_DATE_EPOCH");
     size_t na, nb;
-    char *a = slurp(p[0], &na), *b = slurp(p[1], &nb);
+    char *a = th_slurp(p[0], &na), *b = th_slurp(p[1], &nb);
     CHECK(a && b && na == nb && memcmp(a, b, na) == 0);
     free(a);
     free(b);

@@ -83,20 +83,6 @@ static fe_model *build(void)
     return m;
 }
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    if (s && fread(s, 1, (size_t)n, f) != (size_t)n) n = 0;
-    if (s) s[n] = 0;
-    fclose(f);
-    return s;
-}
-
 /* every cell of a block has a positive volume in VTK's node order (tetra: (0,1,2) turns
  * towards 3; wedge: (0,1,2) turns away from (3,4,5); hexahedron: bottom towards top) */
 static int positive(const mcs_array *nodes, const mcs_array *el, const char *type)
@@ -160,7 +146,7 @@ static void test_mesh_types(void)
     mcs_xdmf_opts xo = mcs_xdmf_opts_default();
     xo.cells = fe_out_cell_types(&xo.ncells);
     CHECK(mcs_results_export_xdmf(r, xmf, &xo, &err) == MCS_OK);
-    char *xml = slurp(xmf);
+    char *xml = th_slurp(xmf, NULL);
     CHECK_STR_CONTAINS(xml, "TopologyType=\"Hexahedron\" NumberOfElements=\"1\"");
     CHECK_STR_CONTAINS(xml, "TopologyType=\"Wedge\" NumberOfElements=\"2\"");
     CHECK_STR_CONTAINS(xml, "TopologyType=\"Tetrahedron\" NumberOfElements=\"6\"");

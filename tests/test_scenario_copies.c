@@ -153,20 +153,6 @@ static void plines_free(plines *p)
     memset(p, 0, sizeof *p);
 }
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    if (s && fread(s, 1, (size_t)n, f) != (size_t)n) n = 0;
-    if (s) s[n] = 0;
-    fclose(f);
-    return s;
-}
-
 /* every .yaml under dir, the skipped folders aside */
 static void scan_dir(plines *p, const char *dir, int *nfiles)
 {
@@ -185,7 +171,7 @@ static void scan_dir(plines *p, const char *dir, int *nfiles)
         if (S_ISDIR(sb.st_mode)) {
             scan_dir(p, path, nfiles);
         } else if (l > 5 && strcmp(e->d_name + l - 5, ".yaml") == 0) {
-            char *t = slurp(path);
+            char *t = th_slurp(path, NULL);
             if (t) scan_text(p, path, t), (*nfiles)++;
             free(t);
         }

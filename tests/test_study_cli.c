@@ -12,20 +12,6 @@
 
 static char tmp[64];
 
-static char *slurp(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *b = malloc((size_t)len + 1);
-    *n = b ? fread(b, 1, (size_t)len, f) : 0;
-    if (b) b[*n] = 0;
-    fclose(f);
-    return b;
-}
-
 static void read_dataset(const char *h5, const char *path, mcs_array *a)
 {
     mcs_results *r = NULL;
@@ -49,7 +35,7 @@ static void test_study_2x2(void)
     r = cli_run(cmd);
     CHECK(r->status == 0);
     size_t na = 0, nb = 0;
-    char *fa = slurp(a, &na), *fb = slurp(b, &nb);
+    char *fa = th_slurp(a, &na), *fb = th_slurp(b, &nb);
     CHECK(fa && fb && na == nb && na > 0 && memcmp(fa, fb, na) == 0); /* whatever N */
     free(fa), free(fb);
 
@@ -75,7 +61,7 @@ static void test_study_2x2(void)
     char csv[128];
     snprintf(csv, sizeof csv, "%s/j1.csv", tmp);
     size_t n;
-    char *t = slurp(csv, &n);
+    char *t = th_slurp(csv, &n);
     CHECK_STR_CONTAINS(t, "case,status,bodies[head].mass,bodies[head].velocity[2],HIC15,");
     CHECK_STR_CONTAINS(t, "\n3,0,6,-4,");
     free(t);
@@ -143,7 +129,7 @@ static void test_study_failed_case(void)
     CHECK(r->status == 0);
     CHECK_STR_CONTAINS(r->err, "case 1 failed (exit 1)");
     size_t n;
-    char *t = slurp(csv, &n);
+    char *t = th_slurp(csv, &n);
     /* the base case at the scenario's 10 us, then 4 ms: energy growth, exit 1, NaN */
     CHECK_STR_CONTAINS(t, "\n0,0,1.0000000000000001e-05,");
     CHECK_STR_CONTAINS(t, "\n1,1,0.0040000000000000001,NaN\n");

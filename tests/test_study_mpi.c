@@ -9,19 +9,6 @@
 
 static char tmp[64];
 
-static char *slurp(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *b = malloc((size_t)len + 1);
-    *n = b ? fread(b, 1, (size_t)len, f) : 0;
-    fclose(f);
-    return b;
-}
-
 static int have_mpi(void)
 {
     char mpi[4200];
@@ -56,12 +43,12 @@ static void test_mpi_same_file(void)
         char log[128];
         size_t n;
         snprintf(log, sizeof log, "%s/mpi.log", tmp);
-        char *t = slurp(log, &n);
+        char *t = th_slurp(log, &n);
         if (t) fprintf(stderr, "%.*s\n", (int)(n < 4000 ? n : 4000), t);
         free(t);
     }
     size_t na = 0, nb = 0;
-    char *fa = slurp(a, &na), *fb = slurp(b, &nb);
+    char *fa = th_slurp(a, &na), *fb = th_slurp(b, &nb);
     CHECK(fa && fb && na == nb && na > 0 && memcmp(fa, fb, na) == 0);
     free(fa), free(fb);
 }

@@ -121,8 +121,12 @@ static void test_max_iter_and_failures(void)
     snprintf(path, sizeof path, "%s/wall_stage3.h5", out);
     CHECK(access(path, F_OK) != 0); /* not run again */
 
-    /* stage 3 fails: a stage-1 scenario given as the wall case (no fe: block), exit 2 */
-    write_loop("bad3.yaml", cr, rt, cr);
+    /* stage 3 fails: a stage-1 scenario given as the wall case (no fe: or stage3: block), exit 2
+     * (not crash.yaml: the thesis case it includes has a stage3: block since the stage-3 wall case) */
+    char *s1 = realpath("scenarios/verification/pendulum.yaml", NULL);
+    CHECK(s1 != NULL);
+    write_loop("bad3.yaml", s1 ? s1 : "missing.yaml", rt, cr);
+    free(s1);
     snprintf(cmd, sizeof cmd, "loop %s/bad3.yaml -o %s/bad3", tdir, tdir);
     c = cli_run(cmd);
     CHECK(c->status == 2);

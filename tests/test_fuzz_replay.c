@@ -95,13 +95,17 @@ static int write_h5_seed(const char *dir)
         v[3 * i] = 1, v[3 * i + 1] = v[3 * i + 2] = 0;
     }
     size_t d1 = NT, d3[2] = {NT, 3}, d4[2] = {NT, 4};
-    mcs_results_write(r, "/stage1/time", 1, &d1, t, "s", &e);
-    mcs_results_write(r, "/stage1/bodies/block/position", 2, d3, pos, "m", &e);
-    mcs_results_write(r, "/stage1/bodies/block/orientation", 2, d4, q, "", &e);
-    mcs_results_write(r, "/stage1/bodies/block/velocity", 2, d3, v, "m/s", &e);
-    mcs_results_write(r, "/stage1/bodies/block/angular_velocity", 2, d3, w, "rad/s", &e);
-    mcs_results_write(r, "/stage1/channels/head_ax", 1, &d1, ax, "m/s^2", &e);
-    return mcs_results_commit(&r, &e) != MCS_OK;
+    mcs_status st = mcs_results_write(r, "/stage1/time", 1, &d1, t, "s", &e);
+    if (!st) st = mcs_results_write(r, "/stage1/bodies/block/position", 2, d3, pos, "m", &e);
+    if (!st) st = mcs_results_write(r, "/stage1/bodies/block/orientation", 2, d4, q, "-", &e);
+    if (!st) st = mcs_results_write(r, "/stage1/bodies/block/velocity", 2, d3, v, "m/s", &e);
+    if (!st)
+        st = mcs_results_write(r, "/stage1/bodies/block/angular_velocity", 2, d3, w, "rad/s", &e);
+    if (!st) st = mcs_results_write(r, "/stage1/channels/head_ax", 1, &d1, ax, "m/s^2", &e);
+    if (!st) st = mcs_results_commit(&r, &e);
+    mcs_results_abort(&r);
+    if (st) fprintf(stderr, "%s\n", e.msg);
+    return st != MCS_OK;
 }
 
 int main(int argc, char **argv)

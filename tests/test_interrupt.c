@@ -171,7 +171,10 @@ static void test_sigint_stage1(void)
     interrupt_case("stage1", long_s1, SIGINT, "/stage1/time", 1000);
 }
 
-static void test_sigterm_run(void) { interrupt_case("run", long_s1, SIGTERM, "/stage1/time", 1000); }
+static void test_sigterm_run(void)
+{
+    interrupt_case("run", long_s1, SIGTERM, "/stage1/time", 1000);
+}
 
 static void test_sigint_stage3(void)
 {

@@ -40,7 +40,7 @@ static void fuzz_rmdir_(void)
 }
 
 /* the process's temporary folder (created on first use) */
-static const char *fuzz_dir(void)
+static inline const char *fuzz_dir(void)
 {
     if (fuzz_dir_[0]) return fuzz_dir_;
     const char *tmp = getenv("TMPDIR");
@@ -55,13 +55,13 @@ static const char *fuzz_dir(void)
 }
 
 /* buf = the temporary folder / name */
-static void fuzz_path(char *buf, size_t n, const char *name)
+static inline void fuzz_path(char *buf, size_t n, const char *name)
 {
     snprintf(buf, n, "%s/%s", fuzz_dir(), name);
 }
 
 /* write len bytes to the temporary folder's file `name` (its folder made when it has one) */
-static void fuzz_write(const char *name, const uint8_t *data, size_t len)
+static inline void fuzz_write(const char *name, const uint8_t *data, size_t len)
 {
     char p[512];
     fuzz_path(p, sizeof p, name);
@@ -80,7 +80,7 @@ static void fuzz_write(const char *name, const uint8_t *data, size_t len)
 }
 
 /* remove the temporary folder's file `name` (absent: nothing) */
-static void fuzz_unlink(const char *name)
+static inline void fuzz_unlink(const char *name)
 {
     char p[512];
     fuzz_path(p, sizeof p, name);
@@ -89,7 +89,7 @@ static void fuzz_unlink(const char *name)
 
 /* split data at the lines "@@@" into at most FUZZ_MAX_PARTS parts (the last takes the rest);
  * returns the number of parts; part i is start[i], len[i] */
-static int fuzz_split(const uint8_t *data, size_t size, const uint8_t **start, size_t *len)
+static inline int fuzz_split(const uint8_t *data, size_t size, const uint8_t **start, size_t *len)
 {
     int np = 0;
     size_t from = 0;

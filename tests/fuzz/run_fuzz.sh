@@ -2,7 +2,7 @@
 # run_fuzz.sh BUILD SECONDS HARNESS...: `make fuzz`. Runs each libFuzzer harness BUILD/fuzz/fuzz_H
 # for SECONDS on its working corpus BUILD/fuzz/corpus/H (kept between runs) plus the seeds and
 # regression inputs of tests/fuzz/H/, with a 1 s limit per input, 2 GB of memory and leak
-# detection. A failing input is written to BUILD/fuzz/findings/H/; copy it to
+# detection (not for results: see below). A failing input is written to BUILD/fuzz/findings/H/; copy it to
 # tests/fuzz/H/regress/ once the reader is fixed (docs/reliability.md "Fuzzing").
 # Ends with one line per harness: executions, edges (cov), features (ft), corpus, findings.
 build=$1; secs=$2; shift 2
@@ -12,8 +12,14 @@ for h in "$@"; do
     mkdir -p "$build/fuzz/corpus/$h" "$build/fuzz/findings/$h" "tests/fuzz/$h/regress"
     log="$build/fuzz/$h.log"
     echo "fuzz: $h for $secs s (log $log)"
-    "$build/fuzz/fuzz_$h" -max_total_time="$secs" -timeout=1 -rss_limit_mb=2048 \
-        -print_final_stats=1 -detect_leaks=1 -artifact_prefix="$build/fuzz/findings/$h/" \
+    # results: LeakSanitizer in this clang build reports blocks libhdf5 allocates for its
+    # object-header cache (H5Oopen, H5Lexists) as lost although no HDF5 object stays open
+    # (fuzz_results.c checks that); valgrind and gcc's ASan on the replay find none, and every
+    # input would pay a full leak scan. Its leaks are checked there (docs/reliability.md)
+    leaks=1
+    [ "$h" = results ] && leaks=0
+    ASAN_OPTIONS="detect_leaks=$leaks" "$build/fuzz/fuzz_$h" -max_total_time="$secs" -timeout=1 -rss_limit_mb=2048 \
+        -print_final_stats=1 -detect_leaks=$leaks -artifact_prefix="$build/fuzz/findings/$h/" \
         "$build/fuzz/corpus/$h" "tests/fuzz/$h/seeds" "tests/fuzz/$h/regress" \
         > "$log" 2>&1
     rc=$?

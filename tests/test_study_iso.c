@@ -123,6 +123,23 @@ static void test_iso_pairs(void)
                           "HIC15.difference,");
     CHECK_STR_CONTAINS(t, "\n1,215-6.7/9.8,0,0,");
     free(t);
+
+    /* the study page: the variant is a factor; its main effect is the mean over each
+     * motorcycle's three cases */
+    snprintf(cmd, sizeof cmd, "report %s", h5);
+    CHECK(cli_run(cmd)->status == 0);
+    snprintf(csv, sizeof csv, "%s/iso.html", tmp);
+    t = th_slurp(csv, NULL);
+    CHECK_STR_CONTAINS(t, "main effect of variant (0 scenario, 1 compare): HIC15");
+    read_dataset(h5, "/study/responses/HIC15", &hic);
+    for (int v = 0; v < 2 && hic.n == 6; v++) {
+        char want[160];
+        double m = (hic.v[v] + hic.v[2 + v] + hic.v[4 + v]) / 3;
+        snprintf(want, sizeof want, "<title>mean %.6g at %d (3 cases)</title>", m, v);
+        CHECK_STR_CONTAINS(t, want);
+    }
+    mcs_array_free(&hic);
+    free(t);
 }
 
 /* a configuration whose digit no table holds, and a speed out of its key's range: exit 2 at

@@ -1142,7 +1142,8 @@ static const mcs_skey retune_keys[] = {
     S("target_angle", NE, "stage-3 fork angle dataset (default /stage3/channels/<joint>_angle, "
                           "else /stage3/joints/<joint>/angle)"),
     A("free", 0, "parameters fitted, a list of tyre_force_scale, fork_moment_scale, "
-                 "fork_elastic_limit, fork_stop_angle (default all four)"),
+                 "fork_elastic_limit, fork_stop_angle, rim_force_scale, fork_stop_stiffness "
+                 "(default the first four)"),
     Q("end_time", MCS_DIM_TIME, GT, 0, 0, "compared span [s] (default the target's)"),
     END,
 };

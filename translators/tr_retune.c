@@ -570,8 +570,16 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
     tr_lm_result lr = {0};
     tr_lm_opts lo_ = tr_lm_opts_default();
     lo_.fd_rel = 1e-3, lo_.max_iter = 30, lo_.ftol = 1e-8, lo_.many = residuals_many;
+    double q0[TR_RT_NPAR];
+    memcpy(q0, q, sizeof q0);
     if (!st && c.nfree > 0)
         st = tr_lm_solve(residuals, &c, c.nfree, 2 * c.nt, q, lo, hi, &lo_, &lr, err);
+    /* a gain below the LM's ftol is no move: the start is kept to the last bit, so a retune
+     * from its own fit (the loop's iteration k > 1) returns that fit and stage 1 repeats */
+    if (!st && c.nfree > 0 && !(lr.cost < lr.cost0 * (1 - lo_.ftol))) {
+        memcpy(q, q0, sizeof q0);
+        lr.cost = lr.cost0;
+    }
     if (!st && !c.nfree && o->has_after) { /* a case not in the fit: rated at o->after */
         memcpy(c.p, o->after, sizeof c.p);
         memcpy(r->p, o->after, sizeof r->p);

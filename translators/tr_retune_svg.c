@@ -19,6 +19,7 @@ void tr_rt_write_svg(FILE *f, const tr_rt_result *r, int angle, const char *titl
         for (int k = 0; k < 3; k++)
             if (isfinite(y[k][i])) lo = fmin(lo, s * y[k][i]), hi = fmax(hi, s * y[k][i]);
     }
+    if (lo > -0.02 * hi) lo = 0; /* the filters' undershoot: no axis below zero for it */
     an_svg_axes a;
     an_svg_axes_fit(&a, 70, 34, W - 90, H - 84, 0, r->nt > 0 ? tms[r->nt - 1] : 1, lo, hi);
     an_svg_begin(f, W, H, title);

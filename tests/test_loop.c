@@ -377,7 +377,7 @@ static void test_shipped(void)
         if (j && strstr(j, key)) nit = k;
     }
     CHECK(nit >= 2 && nit <= 5);
-    FIG("loop.thesis_iterations", "%d", nit);
+    FIG("loop.thesis_iterations", "%.0f", (double)nit);
     /* the loop's fit: its last iteration's parameters */
     double pfit[TR_RT_NPAR];
     char last[32];

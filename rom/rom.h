@@ -49,9 +49,12 @@ typedef struct {
     double frame_damping;    /* [N s/m]                                                     */
     double rider_gap;        /* rider travel on the seat before the restraint acts [m]      */
     double rider_stiffness;  /* rider against the frame (tank, bars, belt) [N/m]            */
+    double rider_limit;      /* force where the rider slides on over the tank (plateau) [N] */
+    double rider_unload;     /* unloading slope beyond 5 mm [N/m]                           */
     double rider_damping;    /* [N s/m]                                                     */
     double rider_wall_gap;   /* rider travel before the rider meets the wall [m]            */
     double rider_wall_stiffness; /* [N/m]                                                   */
+    double rider_wall_unload;    /* unloading slope beyond 5 mm (the dummy's own losses) [N/m] */
     double rider_wall_damping;   /* [N s/m]                                                 */
     double opponent_mass;    /* 0: rigid wall, else a free opponent mass [kg]               */
     double rtol;             /* CVODE relative tolerance [-]                                */

@@ -30,9 +30,12 @@ rom_params rom_params_default(void)
         .frame_damping = 500,
         .rider_gap = 0.05,               /* seat travel before knees meet the tank       */
         .rider_stiffness = 20e3 / 0.060, /* tank: 20 kN at 60 mm                          */
+        .rider_limit = 60e3,             /* tank: its last point, 60 kN at 100 mm         */
+        .rider_unload = 2e6,             /* tank unloading_slope                          */
         .rider_damping = 200,
         .rider_wall_gap = 0.9,                /* chest to the tyre's front, seated        */
         .rider_wall_stiffness = 20e3 / 0.060, /* rider_torso: 20 kN at 60 mm              */
+        .rider_wall_unload = 2e6,             /* as the tank's (an estimate)              */
         .rider_wall_damping = 500,
         .opponent_mass = 0,
         .rtol = 1e-6,
@@ -44,8 +47,9 @@ const char *const rom_param_names[] = {
     "tyre_stiffness", "tyre_travel", "rim_stiffness", "tyre_unload", "tyre_damping",
     "fork_stiffness", "fork_yield", "fork_hardening", "fork_stop", "stop_stiffness",
     "fork_unload", "fork_damping", "frame_gap", "frame_stiffness", "frame_unload",
-    "frame_damping", "rider_gap", "rider_stiffness", "rider_damping", "rider_wall_gap",
-    "rider_wall_stiffness", "rider_wall_damping", "opponent_mass", "rtol", NULL};
+    "frame_damping", "rider_gap", "rider_stiffness", "rider_limit", "rider_unload",
+    "rider_damping", "rider_wall_gap", "rider_wall_unload", "rider_wall_stiffness",
+    "rider_wall_damping", "opponent_mass", "rtol", NULL};
 
 double *rom_param_ptr(rom_params *p, const char *name)
 {
@@ -53,7 +57,8 @@ double *rom_param_ptr(rom_params *p, const char *name)
                    &p->tyre_damping, &p->fork_stiffness, &p->fork_yield, &p->fork_hardening,
                    &p->fork_stop, &p->stop_stiffness, &p->fork_unload, &p->fork_damping,
                    &p->frame_gap, &p->frame_stiffness, &p->frame_unload, &p->frame_damping,
-                   &p->rider_gap, &p->rider_stiffness, &p->rider_damping, &p->rider_wall_gap,
+                   &p->rider_gap, &p->rider_stiffness, &p->rider_limit, &p->rider_unload,
+                   &p->rider_damping, &p->rider_wall_gap, &p->rider_wall_unload,
                    &p->rider_wall_stiffness, &p->rider_wall_damping, &p->opponent_mass,
                    &p->rtol};
     for (int i = 0; rom_param_names[i]; i++)
@@ -80,7 +85,8 @@ static mcs_status elems(rom_model *m, mcs_error *err)
     double fork[4][2] = {{0, 0}, {xe, p->fork_yield}, {p->fork_stop, fs},
                          {p->fork_stop + 1, fs + p->stop_stiffness}};
     double frame[2][2] = {{0, 0}, {1, p->frame_stiffness}};
-    double rider[2][2] = {{0, 0}, {1, p->rider_stiffness}};
+    double xr = p->rider_limit / p->rider_stiffness;
+    double rider[3][2] = {{0, 0}, {xr, p->rider_limit}, {xr + 1, p->rider_limit}};
     double head[2][2] = {{0, 0}, {1, p->rider_wall_stiffness}};
     if (!(xe > 0 && xe < p->fork_stop))
         return MCS_ERR(err, MCS_ERR_RANGE,
@@ -99,13 +105,15 @@ static mcs_status elems(rom_model *m, mcs_error *err)
     if (!st) st = curve("rom tyre", 3, tyre, &e[ROM_TYRE].loading, err);
     if (!st) st = curve("rom fork", 4, fork, &e[ROM_FORK].loading, err);
     if (!st) st = curve("rom frame", 2, frame, &e[ROM_FRAMEWALL].loading, err);
-    if (!st) st = curve("rom rider", 2, rider, &e[ROM_RIDERFRAME].loading, err);
+    if (!st) st = curve("rom rider", 3, rider, &e[ROM_RIDERFRAME].loading, err);
     if (!st) st = curve("rom head", 2, head, &e[ROM_RIDERWALL].loading, err);
     if (st) return st;
     /* unloading slopes and elastic limits as stage 1's characteristics (tyre_front, the fork
-     * hinge, engine); the rider's contacts elastic (seat and rider_torso have none) */
-    const double ku[ROM_NELEM] = {p->tyre_unload, p->fork_unload, p->frame_unload, 0, 0};
-    const double xl[ROM_NELEM] = {p->tyre_travel, xe, 0.005, INFINITY, INFINITY};
+     * hinge, engine, tank); the rider on the barrier: rider_torso has none, but the one rider
+     * mass stands for a jointed dummy that dissipates, so it unloads by a slope too */
+    const double ku[ROM_NELEM] = {p->tyre_unload, p->fork_unload, p->frame_unload, p->rider_unload,
+                                  p->rider_wall_unload};
+    const double xl[ROM_NELEM] = {p->tyre_travel, xe, 0.005, 0.005, 0.005};
     for (int i = 0; i < ROM_NELEM; i++) {
         e[i].hyst = (mcs_hyst_model){.loading = e[i].loading,
                                      .unload = ku[i] > 0 ? MCS_UNLOAD_SLOPE : MCS_UNLOAD_ELASTIC,

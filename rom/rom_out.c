@@ -68,13 +68,17 @@ mcs_status rom_write(const rom_model *m, const rom_result *r, mcs_results *res, 
         st = channel(res, "rider_moto_fn", r, r->f[ROM_RIDERFRAME], "N", 0, NULL, err);
     if (!st && rider)
         st = channel(res, "rider_barrier_fn", r, r->f[ROM_RIDERWALL], "N", 0, NULL, err);
+    /* the rider mass as the chest's sensor (SAE J211: x forward, along the normal; y, z none),
+     * so `mcrash injury --stage 0` gives its chest a3ms */
+    double *zero = calloc((size_t)r->nt, sizeof *zero);
+    if (!zero) return MCS_ERR(err, MCS_ERR_NOMEM, "rom: channels");
+    const char *chest[3] = {"chest_ax", "chest_ay", "chest_az"};
+    for (int k = 0; !st && rider && k < 3; k++)
+        st = channel(res, chest[k], r, k ? zero : r->a[ROM_RIDER], "m/s^2", 0, "rider_torso", err);
     if (!st) st = body(res, m, r, ROM_FRONT, "moto_front", err);
     if (!st) st = body(res, m, r, ROM_FRAME, "moto_frame", err);
-    /* one rider mass: its acceleration is the torso's (injury reads chest a3ms from it) */
     if (!st && rider) st = body(res, m, r, ROM_RIDER, "rider_torso", err);
     if (!st && m->mass[ROM_OPP] > 0) st = body(res, m, r, ROM_OPP, "opponent", err);
-    double *zero = calloc((size_t)r->nt, sizeof *zero);
-    if (!zero) return MCS_ERR(err, MCS_ERR_NOMEM, "rom: energies");
     const char *kind[] = {"kinetic", "internal", "dissipated", "total", "potential",
                           "contact", "hourglass", "external_work"};
     const double *e[] = {r->kinetic, r->internal, r->dissipated, r->total, zero, zero, zero, zero};

@@ -302,6 +302,35 @@ static void test_study_stage_rom(void)
     CHECK_STR_CONTAINS(r->err, "/stage0/channels/no_such_channel");
 }
 
+/* the rider in /stage0 and `mcrash injury --stage 0`: the rider mass is read as the chest
+ * (rider_torso), so the chest a3ms criterion is there; every rom: key names its own field */
+static void test_rider_injury_and_params(void)
+{
+    const char *out = "/tmp/mcrash_test_rom_rider.h5";
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "rom tests/data/rom/frontal_rider_13.4.yaml -o %s --quiet", out);
+    cli_result *r = cli_run(cmd);
+    CHECK(r->status == 0);
+    snprintf(cmd, sizeof cmd, "injury %s --stage 0 --json", out);
+    r = cli_run(cmd);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "\"stage\": 0");
+    CHECK_STR_CONTAINS(r->out, "chest_a3ms");
+    remove(out);
+    r = cli_run("injury tests/data/rom/frontal_13.4.yaml --stage 4");
+    CHECK(r->status == 2);
+    rom_params p = rom_params_default();
+    int n = 0, dup = 0;
+    for (int i = 0; rom_param_names[i]; i++, n++) {
+        double *a = rom_param_ptr(&p, rom_param_names[i]);
+        CHECK(a != NULL);
+        for (int j = 0; j < i; j++) dup += a == rom_param_ptr(&p, rom_param_names[j]);
+    }
+    CHECK(dup == 0);
+    /* every double of rom_params is named (the int `adams` is the method key) */
+    CHECK(n == (int)((sizeof p - sizeof(double)) / sizeof(double)));
+}
+
 int main(void)
 {
     RUN(test_wall_impact_linear);
@@ -312,5 +341,6 @@ int main(void)
     RUN(test_opponent_elastic);
     RUN(test_cli_layout);
     RUN(test_study_stage_rom);
+    RUN(test_rider_injury_and_params);
     TEST_END();
 }

@@ -14,15 +14,17 @@
 void tr_rom_target_free(tr_rom_target *t)
 {
     free(t->force), free(t->vel), free(t->acc);
+    free(t->rider_vel), free(t->rider_force), free(t->chest_acc);
     memset(t, 0, sizeof *t);
 }
 
-/* a [nt, 3] body quantity projected on the normal, on the grid */
-static mcs_status body_on_grid(mcs_results *r, const char *q, const mcs_array *time,
-                               const double n[3], tr_rom_target *t, double *out, mcs_error *err)
+/* out += w times a [nt, 3] body quantity projected on the normal, on the grid */
+static mcs_status body_on_grid(mcs_results *r, const char *body, const char *q,
+                               const mcs_array *time, const double n[3], double w,
+                               tr_rom_target *t, double *out, mcs_error *err)
 {
-    char p[128];
-    snprintf(p, sizeof p, "/stage1/bodies/moto_frame/%s", q);
+    char p[256];
+    snprintf(p, sizeof p, "/stage1/bodies/%s/%s", body, q);
     mcs_array a = {0};
     mcs_status st = mcs_results_read(r, p, &a, err);
     if (!st && (a.rank != 2 || a.dims[1] != 3 || a.dims[0] != time->n))
@@ -32,7 +34,7 @@ static mcs_status body_on_grid(mcs_results *r, const char *q, const mcs_array *t
     for (size_t i = 0; !st && i < time->n; i++)
         s[i] = a.v[3 * i] * n[0] + a.v[3 * i + 1] * n[1] + a.v[3 * i + 2] * n[2];
     for (int i = 0; !st && i < t->n; i++)
-        out[i] = an_interp_linear(time->v, s, (int)time->n, i * t->dt);
+        out[i] += w * an_interp_linear(time->v, s, (int)time->n, i * t->dt);
     free(s);
     mcs_array_free(&a);
     return st;
@@ -53,8 +55,12 @@ static mcs_status force_on_grid(mcs_results *r, const mcs_array *time, tr_rom_ta
         mcs_array a = {0};
         st = mcs_results_read(r, p, &a, err);
         if (!st && a.n != time->n) st = MCS_ERR(err, MCS_ERR_FORMAT, "%s: %zu samples", p, a.n);
-        for (int i = 0; !st && i < t->n; i++)
-            t->force[i] += an_interp_linear(time->v, a.v, (int)time->n, i * t->dt);
+        int rider = strncmp(names[k], "rider_", 6) == 0;
+        for (int i = 0; !st && i < t->n; i++) {
+            double f = an_interp_linear(time->v, a.v, (int)time->n, i * t->dt);
+            t->force[i] += f;
+            if (rider && t->rider_force) t->rider_force[i] += f;
+        }
         mcs_array_free(&a);
         used++;
     }
@@ -64,8 +70,41 @@ static mcs_status force_on_grid(mcs_results *r, const mcs_array *time, tr_rom_ta
     return st;
 }
 
-mcs_status tr_rom_target_read(const char *h5, const double normal[3], double t_end, double dt,
-                              tr_rom_target *t, mcs_error *err)
+/* the rider: centre-of-mass velocity (the rider_* bodies' velocities weighted by their masses
+ * in the scenario) and the upper torso's acceleration */
+static mcs_status rider_on_grid(mcs_results *r, const mcs_scenario *scn, const mcs_array *time,
+                                const double n[3], tr_rom_target *t, mcs_error *err)
+{
+    const mcs_node *bodies = mcs_node_get(mcs_scenario_root(scn), "bodies");
+    double mtot = 0;
+    for (int i = 0; i < mcs_node_len(bodies); i++) {
+        const mcs_node *b = mcs_node_at(bodies, i);
+        if (!strncmp(mcs_node_str(mcs_node_get(b, "name")), "rider_", 6))
+            mtot += mcs_node_num(mcs_node_get(b, "mass"));
+    }
+    mcs_status st = MCS_OK;
+    for (int i = 0; !st && i < mcs_node_len(bodies); i++) {
+        const mcs_node *b = mcs_node_at(bodies, i);
+        const char *name = mcs_node_str(mcs_node_get(b, "name"));
+        if (strncmp(name, "rider_", 6)) continue;
+        double w = mcs_node_num(mcs_node_get(b, "mass")) / mtot;
+        st = body_on_grid(r, name, "velocity", time, n, w, t, t->rider_vel, err);
+    }
+    if (!st) st = body_on_grid(r, "rider_upper_torso", "acceleration", time, n, 1, t, t->chest_acc,
+                               err);
+    if (!st) st = an_cfc_filter(t->chest_acc, t->n, t->dt, 180, t->chest_acc, err);
+    return st;
+}
+
+static double *zeros(int n, int *bad)
+{
+    double *p = calloc((size_t)n, sizeof(double));
+    *bad |= !p;
+    return p;
+}
+
+mcs_status tr_rom_target_read(const char *h5, const mcs_scenario *scn, const double normal[3],
+                              double t_end, double dt, tr_rom_target *t, mcs_error *err)
 {
     memset(t, 0, sizeof *t);
     mcs_results *r = NULL;
@@ -75,16 +114,21 @@ mcs_status tr_rom_target_read(const char *h5, const double normal[3], double t_e
     if (!st && (time.n < 2 || time.v[time.n - 1] < t_end * (1 - 1e-9)))
         st = MCS_ERR(err, MCS_ERR_RANGE, "%s: /stage1/time ends before %g s", h5, t_end);
     if (!st) {
+        int bad = 0;
         t->n = (int)floor(t_end / dt + 1e-9) + 1, t->dt = dt;
-        t->force = calloc((size_t)t->n, sizeof(double));
-        t->vel = calloc((size_t)t->n, sizeof(double));
-        t->acc = calloc((size_t)t->n, sizeof(double));
-        if (!t->force || !t->vel || !t->acc) st = MCS_ERR(err, MCS_ERR_NOMEM, "rom target");
+        t->rider = mcs_results_kind(r, "/stage1/bodies/rider_upper_torso") == MCS_RES_GROUP;
+        t->force = zeros(t->n, &bad), t->vel = zeros(t->n, &bad), t->acc = zeros(t->n, &bad);
+        if (t->rider) {
+            t->rider_vel = zeros(t->n, &bad), t->rider_force = zeros(t->n, &bad);
+            t->chest_acc = zeros(t->n, &bad);
+        }
+        if (bad) st = MCS_ERR(err, MCS_ERR_NOMEM, "rom target");
     }
     if (!st) st = force_on_grid(r, &time, t, err);
-    if (!st) st = body_on_grid(r, "velocity", &time, normal, t, t->vel, err);
-    if (!st) st = body_on_grid(r, "acceleration", &time, normal, t, t->acc, err);
+    if (!st) st = body_on_grid(r, "moto_frame", "velocity", &time, normal, 1, t, t->vel, err);
+    if (!st) st = body_on_grid(r, "moto_frame", "acceleration", &time, normal, 1, t, t->acc, err);
     if (!st) st = an_cfc_filter(t->acc, t->n, dt, 60, t->acc, err);
+    if (!st && t->rider) st = rider_on_grid(r, scn, &time, normal, t, err);
     if (!st) t->v0 = t->vel[0];
     mcs_array_free(&time);
     mcs_results_close(&r);
@@ -104,7 +148,26 @@ static const double free_hi[] = {500e3, 786e3, 18500, 0.14, 0.30, 2e6};
 
 tr_rom_free tr_rom_free_default(void)
 {
-    return (tr_rom_free){6, free_names, free_lo, free_hi};
+    return (tr_rom_free){6, free_names, free_lo, free_hi, 0};
+}
+
+/* the rider's bounds (docs/rom.md "Calibration"): the restraint gap from 0 (knees on the tank)
+ * to 150 mm (the seat's H-point 110 mm behind the tank, sport_208kg.yaml, plus the thighs'
+ * slide), its stiffness between the seat's secant at 80 mm (375 kN/m) halved and the tank's at
+ * 100 mm (600 kN/m) doubled, its plateau between the rider's attachments and seat friction
+ * (1.5 kN) and the tank's last point (60 kN); the barrier gap from the hands' (0.3 m behind the
+ * tyre's front) to the pelvis' (1.2 m), the rider_torso characteristic's secants (100 kN/m at
+ * 10 mm, 750 kN/m at 80 mm), its unloading slope from the loading's (elastic) to twice the
+ * stiffest of stage 1's (tyre_front, 10 MN/m) */
+static const char *const rider_names[] = {"rider_gap",      "rider_stiffness",
+                                          "rider_limit",    "rider_wall_gap",
+                                          "rider_wall_stiffness", "rider_wall_unload"};
+static const double rider_lo[] = {0.0, 1.875e5, 1.5e3, 0.3, 1e5, 7.5e5};
+static const double rider_hi[] = {0.15, 1.2e6, 60e3, 1.2, 7.5e5, 2e7};
+
+tr_rom_free tr_rom_free_rider(void)
+{
+    return (tr_rom_free){6, rider_names, rider_lo, rider_hi, 1};
 }
 
 typedef struct {
@@ -126,10 +189,15 @@ static mcs_status residuals(void *ctx, const double *p, double *res, mcs_error *
     if (st) return st;
     const int n = c->t->n;
     const double w = 1 / sqrt((double)n);
+    const int rd = c->f->rider;
+    const double *F = rd ? r.f[ROM_RIDERWALL] : r.wall_force;
+    const double *V = r.v[rd ? ROM_RIDER : ROM_FRAME];
+    const double *F1 = rd ? c->t->rider_force : c->t->force;
+    const double *V1 = rd ? c->t->rider_vel : c->t->vel;
     for (int i = 0; i < n; i++) {
-        double fr = i < r.nt ? r.wall_force[i] : 0, vr = i < r.nt ? r.v[ROM_FRAME][i] : 0;
-        res[i] = w * (fr - c->t->force[i]) / c->fscale;
-        res[n + i] = w * (vr - c->t->vel[i]) / fabs(c->t->v0);
+        double fr = i < r.nt ? F[i] : 0, vr = i < r.nt ? V[i] : 0;
+        res[i] = w * (fr - F1[i]) / c->fscale;
+        res[n + i] = w * (vr - V1[i]) / fabs(c->t->v0);
     }
     rom_result_free(&r);
     return MCS_OK;
@@ -155,7 +223,10 @@ mcs_status tr_rom_fit(rom_model *m, const tr_rom_target *t, const tr_rom_free *f
         if (!v) return MCS_ERR(err, MCS_ERR_KEY, "rom fit: no parameter %s", f->name[i]);
         p[i] = *v;
     }
-    for (int i = 0; i < t->n; i++) fpk = fmax(fpk, t->force[i]);
+    if (f->rider && (!t->rider || !(m->mass[ROM_RIDER] > 0)))
+        return MCS_ERR(err, MCS_ERR_USAGE, "rom fit: the rider's parameters need a rider");
+    const double *F1 = f->rider ? t->rider_force : t->force;
+    for (int i = 0; i < t->n; i++) fpk = fmax(fpk, F1[i]);
     if (!(fpk > 0) || !(fabs(t->v0) > 0))
         return MCS_ERR(err, MCS_ERR_RANGE, "rom fit: the target has no barrier force or speed");
     fit_ctx c = {m, t, f, fpk};
@@ -172,6 +243,30 @@ static double peak_abs(const double *y, int n)
     double p = 0;
     for (int i = 0; i < n; i++) p = fmax(p, fabs(y[i]));
     return p;
+}
+
+/* the rider's rows: velocity and barrier force, its acceleration against the chest's */
+static mcs_status rider_error(const rom_result *r, const tr_rom_target *t, tr_rom_error *e,
+                              mcs_error *err)
+{
+    an_iso_opts o = an_iso_opts_default();
+    an_iso_result ir;
+    double *acc = malloc(sizeof *acc * (size_t)t->n);
+    if (!acc) return MCS_ERR(err, MCS_ERR_NOMEM, "rom error");
+    mcs_status st = an_cfc_filter(r->a[ROM_RIDER], t->n, t->dt, 180, acc, err);
+    if (!st) st = an_iso18571_arrays(t->rider_vel, r->v[ROM_RIDER], t->n, t->dt, &o, &ir, err);
+    if (!st) e->iso_rider_vel = ir.rating;
+    if (!st)
+        st = an_iso18571_arrays(t->rider_force, r->f[ROM_RIDERWALL], t->n, t->dt, &o, &ir, err);
+    if (!st) e->iso_rider_force = ir.rating;
+    if (!st) st = an_iso18571_arrays(t->chest_acc, acc, t->n, t->dt, &o, &ir, err);
+    if (!st) {
+        e->iso_chest = ir.rating;
+        double a1 = peak_abs(t->chest_acc, t->n);
+        e->peak_chest_err = (peak_abs(acc, t->n) - a1) / a1;
+    }
+    free(acc);
+    return st;
 }
 
 mcs_status tr_rom_error_eval(const rom_model *m0, const tr_rom_target *t, tr_rom_error *e,
@@ -195,6 +290,8 @@ mcs_status tr_rom_error_eval(const rom_model *m0, const tr_rom_target *t, tr_rom
     if (!st) st = an_iso18571_arrays(t->vel, r.v[ROM_FRAME], t->n, t->dt, &o, &ir, err);
     if (!st) e->iso_vel = ir.rating;
     if (!st) st = an_iso18571_arrays(t->acc, acc, t->n, t->dt, &o, &ir, err);
+    e->iso_rider_vel = e->iso_rider_force = e->iso_chest = e->peak_chest_err = NAN;
+    if (!st && t->rider && m.mass[ROM_RIDER] > 0) st = rider_error(&r, t, e, err);
     if (!st) {
         e->iso_acc = ir.rating;
         double f1 = peak_abs(t->force, t->n), a1 = peak_abs(t->acc, t->n);

@@ -120,7 +120,7 @@ static void test_compile(void)
                       "      - {name: barrier, parts: [front_tyre]}\n";
     mcs_error e2 = {0};
     CHECK(mcs_scenario_load_text("scenarios/wall_case.yaml", bad, strlen(bad), &scn, &e2) != 0);
-    CHECK_STR_CONTAINS(e2.msg, "wall_case.yaml:6:33: error: stage3.fe.rigid_walls[0].parts[0]: "
+    CHECK_STR_CONTAINS(e2.msg, "wall_case.yaml:6:33: error: stage3.fe.rigid_walls[1].parts[0]: "
                                "unknown FE part 'front_tyre'");
     mcs_scenario_destroy(&scn);
 }

@@ -140,6 +140,13 @@ static void test_iso_pairs(void)
     }
     mcs_array_free(&hic);
     free(t);
+
+    /* --analyze: the columns no configuration changes (the opponent point's height, the
+     * motorcycle's point) left out, the variant added: 9 - 4 + 1 factors */
+    snprintf(cmd, sizeof cmd, "study --analyze %s", h5);
+    r = cli_run(cmd);
+    CHECK(r->status == 0);
+    CHECK_STR_CONTAINS(r->out, "6 cases, design iso13232, 6 factors (SI)");
 }
 
 /* a configuration whose digit no table holds, and a speed out of its key's range: exit 2 at

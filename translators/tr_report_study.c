@@ -84,14 +84,16 @@ static void effect_plot(tr_rp *c, const rp_factor *a, const rp_factor *b, const 
         snprintf(title, sizeof title, "interaction %s x %s: %s", a->name, b->name, resp);
     else
         snprintf(title, sizeof title, "main effect of %s: %s", a->name, resp);
+    char xlab[200];
     snprintf(ylab, sizeof ylab, "mean %s [%s]", resp, unit);
+    snprintf(xlab, sizeof xlab, "%s [SI]", a->name);
     double w = c->svg_w, h = 300;
     an_svg_axes ax;
     an_svg_axes_fit(&ax, 70, 30, w - (b ? 230 : 100), h - 80, a->lev[0], a->lev[a->nlev - 1],
                     lo, hi);
     an_svg_begin(c->f, w, h, title);
     an_svg_text(c->f, w / 2, 16, "middle", 13, "#222", title);
-    an_svg_draw_axes(c->f, &ax, a->name, ylab);
+    an_svg_draw_axes(c->f, &ax, xlab, ylab);
     const char *lab[RP_MAXLEV], *col[RP_MAXLEV];
     char labs[RP_MAXLEV][64];
     for (int lb = 0; lb < nb; lb++) {
@@ -111,7 +113,12 @@ static void effect_plot(tr_rp *c, const rp_factor *a, const rp_factor *b, const 
         snprintf(labs[lb], sizeof labs[lb], "%.6g", b ? b->lev[lb] : 0);
         lab[lb] = labs[lb];
     }
-    if (b) an_svg_legend(c->f, w - 150, 40, lab, col, NULL, nb);
+    if (b) {
+        char head[40];
+        snprintf(head, sizeof head, "%.24s%s [SI]:", b->name, strlen(b->name) > 24 ? "..." : "");
+        an_svg_text(c->f, w - 150, 40, "start", 11, "#222", head);
+        an_svg_legend(c->f, w - 150, 48, lab, col, NULL, nb);
+    }
     an_svg_end(c->f);
     c->sum->nsvg++;
 }

@@ -2,6 +2,8 @@
 #ifndef MCS_CLI_UTIL_H
 #define MCS_CLI_UTIL_H
 
+#include "core/mcs_results.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -59,6 +61,16 @@ static cli_result *cli_run(const char *args)
     remove(errp);
     rmdir(dir);
     return &r;
+}
+
+/* the dataset at path of results file h5 into a (zeroed, empty when it cannot be read) */
+static inline void cli_read_dataset(const char *h5, const char *path, mcs_array *a)
+{
+    mcs_results *r = NULL;
+    mcs_error err = {0};
+    memset(a, 0, sizeof *a);
+    if (!mcs_results_open(&r, h5, &err)) mcs_results_read(r, path, a, &err);
+    mcs_results_close(&r);
 }
 
 #endif

@@ -9,15 +9,6 @@
 
 static char tmp[64];
 
-static void read_dataset(const char *h5, const char *path, mcs_array *a)
-{
-    mcs_results *r = NULL;
-    mcs_error err = {0};
-    memset(a, 0, sizeof *a);
-    if (!mcs_results_open(&r, h5, &err)) mcs_results_read(r, path, a, &err);
-    mcs_results_close(&r);
-}
-
 static int count(const char *hay, const char *needle)
 {
     int n = 0;
@@ -51,13 +42,13 @@ static void test_study_page(void)
     static const char *const resp[4] = {"HIC15", "Head a3ms", "peak:stage1.channels.head_az",
                                         "hic15_dataset"};
     mcs_array d;
-    read_dataset(h5, "/study/design", &d);
+    cli_read_dataset(h5, "/study/design", &d);
     CHECK(d.n == 8);
     for (int i = 0; i < 4 && d.n == 8; i++) {
         char path[128], want[160];
         snprintf(path, sizeof path, "/study/responses/%s", resp[i]);
         mcs_array y;
-        read_dataset(h5, path, &y);
+        cli_read_dataset(h5, path, &y);
         CHECK(y.n == 4);
         for (int j = 0; j < 2 && y.n == 4; j++) {
             /* the two levels of factor j: mean over the 2 cases at each */

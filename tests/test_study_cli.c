@@ -12,15 +12,6 @@
 
 static char tmp[64];
 
-static void read_dataset(const char *h5, const char *path, mcs_array *a)
-{
-    mcs_results *r = NULL;
-    mcs_error err = {0};
-    memset(a, 0, sizeof *a);
-    if (!mcs_results_open(&r, h5, &err)) mcs_results_read(r, path, a, &err);
-    mcs_results_close(&r);
-}
-
 /* the headform (m, v) on a linear pad k = 4.5e5 N/m without damping: a half sine of peak
  * deceleration v sqrt(k/m) (scenarios/verification/head_drop.yaml) */
 static void test_study_2x2(void)
@@ -40,11 +31,11 @@ static void test_study_2x2(void)
     free(fa), free(fb);
 
     mcs_array d, s, peak, hic, hic2;
-    read_dataset(a, "/study/design", &d);
-    read_dataset(a, "/study/status", &s);
-    read_dataset(a, "/study/responses/peak:stage1.channels.head_az", &peak);
-    read_dataset(a, "/study/responses/HIC15", &hic);
-    read_dataset(a, "/study/responses/hic15_dataset", &hic2);
+    cli_read_dataset(a, "/study/design", &d);
+    cli_read_dataset(a, "/study/status", &s);
+    cli_read_dataset(a, "/study/responses/peak:stage1.channels.head_az", &peak);
+    cli_read_dataset(a, "/study/responses/HIC15", &hic);
+    cli_read_dataset(a, "/study/responses/hic15_dataset", &hic2);
     CHECK(d.rank == 2 && d.dims[0] == 4 && d.dims[1] == 2 && s.n == 4 && peak.n == 4);
     /* full factorial, first factor fastest: (4.5, -3), (6, -3), (4.5, -4), (6, -4) in SI */
     static const double m[4] = {4.5, 6, 4.5, 6}, v[4] = {-3, -3, -4, -4};
@@ -91,7 +82,7 @@ static void test_study_frac_lhs(void)
     snprintf(cmd, sizeof cmd, "study " DATA "head_drop_frac_lhs.yaml -o %s --quiet", out);
     CHECK(cli_run(cmd)->status == 0);
     mcs_array d;
-    read_dataset(out, "/study/design", &d);
+    cli_read_dataset(out, "/study/design", &d);
     CHECK(d.rank == 2 && d.dims[0] == 4 && d.dims[1] == 3);
     for (size_t c = 0; c < 4 && d.n == 12; c++) {
         int a = d.v[3 * c] > 5 ? 1 : -1, b = d.v[3 * c + 1] > -3.5 ? 1 : -1;
@@ -103,7 +94,7 @@ static void test_study_frac_lhs(void)
     snprintf(out, sizeof out, "%s/lhs.h5", tmp);
     snprintf(cmd, sizeof cmd, "study " DATA "head_drop_lhs.yaml -o %s --quiet", out);
     CHECK(cli_run(cmd)->status == 0);
-    read_dataset(out, "/study/design", &d);
+    cli_read_dataset(out, "/study/design", &d);
     static const double lo[3] = {4.5, -4, 0}, hi[3] = {6, -3, 50};
     for (int j = 0; j < 3 && d.n == 15; j++) {
         int seen[5] = {0};

@@ -12,15 +12,6 @@
 
 static char tmp[64];
 
-static void read_dataset(const char *h5, const char *path, mcs_array *a)
-{
-    mcs_results *r = NULL;
-    mcs_error err = {0};
-    memset(a, 0, sizeof *a);
-    if (!mcs_results_open(&r, h5, &err)) mcs_results_read(r, path, a, &err);
-    mcs_results_close(&r);
-}
-
 static char *read_attr(const char *h5, const char *name)
 {
     mcs_results *r = NULL;
@@ -56,10 +47,10 @@ static void check_case(const char *dir, long c, int k)
     snprintf(h5, sizeof h5, "%s/case_%05ld.h5", dir, c);
     double a = cfg[k].deg * M_PI / 180, hx = sin(a), hy = -cos(a), back = 0.050 + 1.72 - 0.68;
     mcs_array p, q, v, vs;
-    read_dataset(h5, "/stage1/bodies/moto_frame/position", &p);
-    read_dataset(h5, "/stage1/bodies/moto_frame/orientation", &q);
-    read_dataset(h5, "/stage1/bodies/moto_frame/velocity", &v);
-    read_dataset(h5, "/stage1/bodies/sedan/velocity", &vs);
+    cli_read_dataset(h5, "/stage1/bodies/moto_frame/position", &p);
+    cli_read_dataset(h5, "/stage1/bodies/moto_frame/orientation", &q);
+    cli_read_dataset(h5, "/stage1/bodies/moto_frame/velocity", &v);
+    cli_read_dataset(h5, "/stage1/bodies/sedan/velocity", &vs);
     CHECK(p.n >= 3 && q.n >= 4 && v.n >= 3 && vs.n >= 3);
     if (p.n >= 3 && q.n >= 4 && v.n >= 3 && vs.n >= 3) {
         CHECK_NEAR(p.v[0], cfg[k].opp[0] - back * hx, 1e-9);
@@ -89,9 +80,9 @@ static void test_iso_pairs(void)
     CHECK(codes && !strcmp(codes, "413-0/13.4\n215-6.7/9.8\n611-0/17.9"));
     free(codes);
     mcs_array d, var, st;
-    read_dataset(h5, "/study/design", &d);
-    read_dataset(h5, "/study/variant", &var);
-    read_dataset(h5, "/study/status", &st);
+    cli_read_dataset(h5, "/study/design", &d);
+    cli_read_dataset(h5, "/study/variant", &var);
+    cli_read_dataset(h5, "/study/status", &st);
     CHECK(d.rank == 2 && d.dims[0] == 6 && d.dims[1] == 9 && var.n == 6 && st.n == 6);
     /* case 2k: configuration k, conventional; 2k + 1: the same, concept */
     for (int c = 0; c < 6 && d.n == 54 && var.n == 6 && st.n == 6; c++) {
@@ -108,8 +99,8 @@ static void test_iso_pairs(void)
 
     /* the difference per configuration is concept - conventional of the responses */
     mcs_array hic, dh;
-    read_dataset(h5, "/study/responses/peak:stage1.channels.head_ax", &hic);
-    read_dataset(h5, "/study/difference/peak:stage1.channels.head_ax", &dh);
+    cli_read_dataset(h5, "/study/responses/peak:stage1.channels.head_ax", &hic);
+    cli_read_dataset(h5, "/study/difference/peak:stage1.channels.head_ax", &dh);
     CHECK(hic.n == 6 && dh.n == 3);
     for (int k = 0; k < 3 && hic.n == 6 && dh.n == 3; k++) {
         CHECK(dh.v[k] == hic.v[2 * k + 1] - hic.v[2 * k]);
@@ -131,7 +122,7 @@ static void test_iso_pairs(void)
     snprintf(csv, sizeof csv, "%s/iso.html", tmp);
     t = th_slurp(csv, NULL);
     CHECK_STR_CONTAINS(t, "main effect of variant (0 scenario, 1 compare): HIC15");
-    read_dataset(h5, "/study/responses/HIC15", &hic);
+    cli_read_dataset(h5, "/study/responses/HIC15", &hic);
     for (int v = 0; v < 2 && hic.n == 6; v++) {
         char want[160];
         double m = (hic.v[v] + hic.v[2 + v] + hic.v[4 + v]) / 3;
@@ -196,8 +187,8 @@ static void test_iso_sweep(void)
     CHECK(r->status == 0);
     printf("%s", r->out);
     mcs_array st, d;
-    read_dataset(h5, "/study/status", &st);
-    read_dataset(h5, "/study/difference/HIC15", &d);
+    cli_read_dataset(h5, "/study/status", &st);
+    cli_read_dataset(h5, "/study/difference/HIC15", &d);
     CHECK(st.n == 400 && d.n == 200);
     int failed = 0;
     for (size_t c = 0; c < st.n; c++)

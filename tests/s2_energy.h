@@ -24,8 +24,8 @@
 #include <string.h>
 
 /* tolerances (measured and justified in docs/validation_stage2.md "Energy balance") */
-#define S2_ENERGY_TOL 0.005 /* the model's drift over its reference [-] */
-#define S2_RIDER_TOL 1e-3   /* the rider's balance over its initial energy [-] */
+#define S2_ENERGY_TOL 0.006 /* the model's drift over its reference [-] */
+#define S2_RIDER_TOL 5e-5   /* the rider's balance over its initial energy [-] */
 
 typedef struct {
     double sum_err;      /* largest |total - (K + P + I + C + D - W)| over the reference [-]  */

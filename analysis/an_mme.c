@@ -50,7 +50,8 @@ static mcs_status head_line(const char *path, int line, char *key, char *val, mm
     } else if (strcasecmp(key, "Unit") == 0) {
         snprintf(h->unit, sizeof h->unit, "%s", val);
     } else if (strcasecmp(key, "Channel frequency class") == 0) {
-        h->cfc = parse_number(val, &v) ? (int)v : 0; /* NOVALUE: unfiltered */
+        /* NOVALUE (or a number no filter class has): unfiltered */
+        h->cfc = parse_number(val, &v) && v >= 0 && v <= 1e6 ? (int)v : 0;
     } else if (strcasecmp(key, "Time of first sample") == 0) {
         if (!parse_number(val, &v))
             return MCS_ERR(err, MCS_ERR_FORMAT, "%s:%d: error: Time of first sample: \"%s\"",
@@ -99,7 +100,7 @@ mcs_status an_mme_read_file(const char *path, an_signal *out, mcs_error *err)
     char *buf = NULL;
     size_t cap = 0;
     int line = 0, indata = 0;
-    long k = 0;
+    long k = 0, cap_s = 0;
     mcs_status st = MCS_OK;
     while (!st && getline(&buf, &cap, f) >= 0) {
         line++;
@@ -122,12 +123,21 @@ mcs_status an_mme_read_file(const char *path, an_signal *out, mcs_error *err)
             indata = 1;
             st = check_head(path, &h, &factor, &si, err);
             if (st) break;
-            out->t = malloc((size_t)h.nsamp * sizeof(double));
-            out->y = malloc((size_t)h.nsamp * sizeof(double));
-            if (!out->t || !out->y) {
+        }
+        if (k == cap_s && k < h.nsamp) {
+            /* grown with the samples the file holds, not to the size its header declares
+             * (up to 10^9: a 16 GB allocation for a file of a few lines) */
+            long c = cap_s ? 2 * cap_s : 1024;
+            if (c > h.nsamp) c = h.nsamp;
+            double *t = realloc(out->t, (size_t)c * sizeof(double));
+            if (t) out->t = t;
+            double *y = t ? realloc(out->y, (size_t)c * sizeof(double)) : NULL;
+            if (y) out->y = y;
+            if (!t || !y) {
                 st = MCS_ERR(err, MCS_ERR_NOMEM, "%s: out of memory", path);
                 break;
             }
+            cap_s = c;
         }
         if (!parse_number(s, &v)) {
             st = MCS_ERR(err, MCS_ERR_FORMAT, "%s:%d:1: error: \"%s\" is not a sample value",

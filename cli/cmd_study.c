@@ -76,8 +76,10 @@ int cli_study(int argc, char **argv)
     long nfail = 0;
     for (long c = 0; res && c < s.ncase; c++)
         nfail += res[c].status != 0;
-    if (!rc && !a.quiet)
+    if (!rc && !a.quiet) {
         fprintf(stderr, "study: %ld cases, %ld failed -> %s\n", s.ncase, nfail, a.out);
+        study_pairs_summary(&s, res, stdout);
+    }
     free(res);
     study_free(&s);
     return rc;

@@ -1,5 +1,6 @@
 /* main.c: `mcrash` — dispatch to the subcommands of cli.h */
 #include "cli/cli.h"
+#include "core/mcs_interrupt.h"
 #include "core/mcs_version.h"
 #include "stage3_fe/s3_moto.h"
 #include "stage3_fe/s3_sedan.h"
@@ -98,5 +99,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "mcrash: unknown subcommand '%s' (mcrash --help lists them)\n", sub);
         return 2;
     }
+    /* the runs stop cleanly on SIGINT / SIGTERM: results up to then, exit 130; a second
+     * signal stops at once without a file (core/mcs_interrupt.h) */
+    static const char *const runs[] = {"run", "stage1", "stage2", "stage3"};
+    for (int i = 0; i < 4; i++)
+        if (strcmp(sub, runs[i]) == 0) mcs_interrupt_install();
     return c->fn(argc - 1, argv + 1);
 }

@@ -7,12 +7,15 @@
 #include "core/mcs_scenario.h"
 
 #include <stddef.h>
+#include <stdio.h>
 #include <stdint.h>
 
 #define STUDY_NAME 128
 #define STUDY_UNIT 32
 
-typedef enum { STUDY_FULL, STUDY_FRACTIONAL, STUDY_LHS, STUDY_OAT } study_design;
+typedef enum { STUDY_FULL, STUDY_FRACTIONAL, STUDY_LHS, STUDY_OAT, STUDY_ISO13232 } study_design;
+
+#define STUDY_CODE 32 /* an ISO 13232 configuration code, "413-0/13.4" */
 
 typedef struct {
     char path[STUDY_NAME]; /* key path in the scenario                                    */
@@ -46,6 +49,15 @@ typedef struct {
     study_response *r;
     long ncase;
     double *x;                   /* factor values of each case [SI] (ncase x nfactor)       */
+    /* compare: a second scenario run on every row of the design (docs/contracts.md): case c
+     * is row c / nvar on the scenario (c % nvar == 0) or on the compared one (1) */
+    mcs_scenario *alt;
+    char alt_path[4096];
+    int nvar;                    /* 1, or 2 with compare:                                    */
+    long nrow;                   /* rows of the design (ncase / nvar)                        */
+    char (*code)[STUDY_CODE];    /* iso13232: each row's configuration code (nrow)           */
+    int nset;                    /* set: settings applied to every case                     */
+    mcs_scn_setting *set;
 } study;
 
 /* one case's outcome (fixed size: gathered across processes as bytes) */
@@ -61,7 +73,21 @@ typedef struct {
 int study_load(const char *path, study *s);
 void study_free(study *s);
 
-/* the case's scenario (the base with the case's factor values set) */
+/* the SI value of a level node v (or num when v is NULL) at factor f's key: the base scenario
+ * with it set and validated; 2 with the message printed (FILE:LINE:COL) */
+int study_level_si(study *s, const study_factor *f, const mcs_node *v, double num, double *out);
+
+/* the iso13232 design (study_iso.c) from the study file's design: map: s->f (the impact keys
+ * set per row), s->nrow rows in s->x and their codes; 0, or 2 with the message printed */
+int study_iso_rows(study *s, const mcs_node *d);
+
+/* with compare: the pairs: STUDY_pairs.csv (per row and response: base, compare, compare -
+ * base) and /study/difference/<response> written by study_write; the summary printed */
+int study_write_pairs(const study *s, const study_result *res, const char *csv);
+void study_pairs_summary(const study *s, const study_result *res, FILE *out);
+
+/* the case's scenario (the base, or the compared one, with set: and the case's factor values,
+ * and its configuration code, set) */
 mcs_status study_case_scenario(const study *s, long c, mcs_scenario **out, mcs_error *err);
 
 /* run case c in a child process into dir/case_NNNN.h5 (its messages in case_NNNN.log) and

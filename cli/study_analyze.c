@@ -41,6 +41,37 @@ static void data_free(study_data *d)
         free(d->y[i]);
 }
 
+/* the iso13232 design: its constant columns (a point's coordinate no code changes) left out,
+ * and with compare: the variant (0 the scenario, 1 the compared one) a factor */
+static mcs_status iso_columns(mcs_results *r, study_data *d, mcs_error *err)
+{
+    mcs_array v = {0};
+    int k = d->nfactor, m = 0, var = mcs_results_kind(r, "/study/variant") == MCS_RES_DATASET;
+    if (var && (mcs_results_read(r, "/study/variant", &v, err) || (long)v.n != d->ncase)) {
+        mcs_array_free(&v);
+        return err->status ? err->status : MCS_ERR(err, MCS_ERR_FORMAT, "/study/variant");
+    }
+    double *x = malloc((size_t)d->ncase * (k + 1) * sizeof *x);
+    if (!x) return MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+    for (int j = 0; j <= k; j++) {
+        const double *col = j < k ? d->x + j : v.v;
+        int step = j < k ? k : 1, same = 1;
+        if (j == k && !var) break;
+        for (long c = 1; c < d->ncase; c++)
+            same &= col[c * step] == col[0];
+        if (same) continue;
+        for (long c = 0; c < d->ncase; c++)
+            x[c * (k + 1) + m] = col[c * step];
+        d->fn[m++] = j < k ? d->fn[j] : "variant";
+    }
+    for (long c = 0; c < d->ncase; c++) /* rows of m columns */
+        memmove(x + c * m, x + c * (k + 1), (size_t)m * sizeof *x);
+    free(d->x);
+    d->x = x, d->nfactor = m;
+    mcs_array_free(&v);
+    return MCS_OK;
+}
+
 static mcs_status data_read(const char *path, study_data *d, mcs_error *err)
 {
     memset(d, 0, sizeof *d);
@@ -71,6 +102,7 @@ static mcs_status data_read(const char *path, study_data *d, mcs_error *err)
         d->y[i] = a.v, a.v = NULL;
         mcs_array_free(&a);
     }
+    if (!st && !strcmp(d->design, "iso13232")) st = iso_columns(r, d, err);
     mcs_results_close(&r);
     return st;
 }

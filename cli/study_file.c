@@ -9,27 +9,51 @@
 #include <string.h>
 #include <sys/stat.h>
 
-/* names joined by newlines (the attributes naming factors and responses) */
-static char *joined(const study *s, int factors)
-{
-    size_t n = 1;
-    int m = factors ? s->nfactor : s->nresp;
-    for (int i = 0; i < m; i++)
-        n += strlen(factors ? s->f[i].path : s->r[i].name) + 1;
-    char *t = calloc(n, 1);
-    for (int i = 0; t && i < m; i++) {
-        if (i) strcat(t, "\n");
-        strcat(t, factors ? s->f[i].path : s->r[i].name);
-    }
-    return t;
-}
-
 /* the unit of response i: that of the first case that has a value */
 static const char *resp_unit(const study *s, const study_result *res, int i)
 {
     for (long c = 0; c < s->ncase; c++)
         if (!isnan(res[c].v[i]) && res[c].unit[i][0]) return res[c].unit[i];
     return "-";
+}
+
+/* the i-th name of a list: factor paths (0), response names (1), configuration codes (2) */
+static const char *name_of(const study *s, int what, long i)
+{
+    return what == 0 ? s->f[i].path : what == 1 ? s->r[i].name : s->code[i];
+}
+
+/* names joined by newlines (the attributes naming factors, responses and codes) */
+static char *joined(const study *s, int what)
+{
+    size_t n = 1;
+    long m = what == 0 ? s->nfactor : what == 1 ? s->nresp : s->nrow;
+    for (long i = 0; i < m; i++)
+        n += strlen(name_of(s, what, i)) + 1;
+    char *t = calloc(n, 1), *o = t;
+    for (long i = 0; t && i < m; i++)
+        o += sprintf(o, "%s%s", i ? "\n" : "", name_of(s, what, i));
+    return t;
+}
+
+/* compare: /study/variant and, per response, /study/difference/<name> (compare - base per
+ * row) */
+static mcs_status write_pairs_h5(mcs_results *r, const study *s, const study_result *res,
+                                 double *v, int *iv, mcs_error *err)
+{
+    size_t dims[1] = {(size_t)s->ncase}, drow[1] = {(size_t)s->nrow};
+    for (long c = 0; c < s->ncase; c++)
+        iv[c] = (int)(c % s->nvar);
+    mcs_status st = mcs_results_write_int(r, "/study/variant", 1, dims, iv, "-", err);
+    if (!st) st = mcs_results_set_attr_str(r, "/study", "compare", s->alt_path, err);
+    for (int i = 0; !st && i < s->nresp; i++) {
+        char p[256];
+        snprintf(p, sizeof p, "/study/difference/%s", s->r[i].name);
+        for (long w = 0; w < s->nrow; w++)
+            v[w] = res[2 * w + 1].v[i] - res[2 * w].v[i];
+        st = mcs_results_write(r, p, 1, drow, v, resp_unit(s, res, i), err);
+    }
+    return st;
 }
 
 static mcs_status write_h5(const study *s, const study_result *res, const char *out,
@@ -40,8 +64,9 @@ static mcs_status write_h5(const study *s, const study_result *res, const char *
     size_t dims[2] = {(size_t)s->ncase, (size_t)s->nfactor};
     double *v = malloc((size_t)s->ncase * sizeof *v);
     int *status = malloc((size_t)s->ncase * sizeof *status);
-    char *fn = joined(s, 1), *rn = joined(s, 0);
-    if (!st && (!v || !status || !fn || !rn)) st = MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
+    char *fn = joined(s, 0), *rn = joined(s, 1), *cn = s->code ? joined(s, 2) : NULL;
+    if (!st && (!v || !status || !fn || !rn || (s->code && !cn)))
+        st = MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
     if (!st) st = mcs_results_write(r, "/study/design", 2, dims, s->x, "SI", err);
     for (long c = 0; !st && c < s->ncase; c++)
         status[c] = res[c].status;
@@ -51,6 +76,8 @@ static mcs_status write_h5(const study *s, const study_result *res, const char *
     if (!st) st = mcs_results_set_attr_str(r, "/study", "responses", rn, err);
     if (!st) st = mcs_results_set_attr_str(r, "/study", "scenario", s->scenario, err);
     if (!st) st = mcs_results_set_attr_str(r, "/study", "stage", s->stage, err);
+    if (!st && cn) st = mcs_results_set_attr_str(r, "/study", "codes", cn, err);
+    if (!st && s->nvar == 2) st = write_pairs_h5(r, s, res, v, status, err);
     if (!st && s->design == STUDY_LHS)
         st = mcs_results_set_attr_double(r, "/study", "seed", (double)s->seed, err);
     for (int i = 0; !st && i < s->nresp; i++) {
@@ -61,7 +88,7 @@ static mcs_status write_h5(const study *s, const study_result *res, const char *
         st = mcs_results_write(r, p, 1, dims, v, resp_unit(s, res, i), err);
         if (!st) st = mcs_results_set_attr_str(r, p, "source", s->r[i].spec, err);
     }
-    free(v), free(status), free(fn), free(rn);
+    free(v), free(status), free(fn), free(rn), free(cn);
     if (!st) return mcs_results_commit(&r, err);
     mcs_results_abort(&r);
     return st;
@@ -86,7 +113,7 @@ static int write_csv(const study *s, const study_result *res, const char *path)
 {
     FILE *f = fopen(path, "w");
     if (!f) return -1;
-    fprintf(f, "case,status");
+    fprintf(f, "case,status%s%s", s->code ? ",code" : "", s->nvar == 2 ? ",variant" : "");
     for (int j = 0; j < s->nfactor; j++)
         fputc(',', f), csv_field(f, s->f[j].path);
     for (int i = 0; i < s->nresp; i++)
@@ -94,6 +121,8 @@ static int write_csv(const study *s, const study_result *res, const char *path)
     fputc('\n', f);
     for (long c = 0; c < s->ncase; c++) {
         fprintf(f, "%ld,%d", c, res[c].status);
+        if (s->code) fprintf(f, ",%s", s->code[c / s->nvar]);
+        if (s->nvar == 2) fprintf(f, ",%ld", c % s->nvar);
         for (int j = 0; j < s->nfactor; j++)
             fprintf(f, ",%.17g", s->x[c * s->nfactor + j]);
         for (int i = 0; i < s->nresp; i++)
@@ -115,6 +144,11 @@ int study_write(const study *s, const study_result *res, const char *out)
     int h5 = n > 3 && !strcmp(out + n - 3, ".h5");
     snprintf(csv, sizeof csv, "%.*s.csv", (int)(h5 ? n - 3 : n), out);
     if (write_csv(s, res, csv)) {
+        fprintf(stderr, "study: cannot write %s\n", csv);
+        return 2;
+    }
+    snprintf(csv, sizeof csv, "%.*s_pairs.csv", (int)(h5 ? n - 3 : n), out);
+    if (s->nvar == 2 && study_write_pairs(s, res, csv)) {
         fprintf(stderr, "study: cannot write %s\n", csv);
         return 2;
     }

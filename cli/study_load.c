@@ -47,7 +47,7 @@ static int check_keys(const mcs_node *map, const char *what, const char *allowed
 
 /* SI value of a level node (or num when v is NULL) at the factor's key: the base scenario with
  * that value set and validated again */
-static int level_si(study *s, const study_factor *f, const mcs_node *v, double num, double *out)
+int study_level_si(study *s, const study_factor *f, const mcs_node *v, double num, double *out)
 {
     mcs_scn_setting set = {.path = f->path, .value = v, .num = num, .at = f->at};
     mcs_scenario *c = NULL;
@@ -79,8 +79,8 @@ static int read_factor(study *s, const mcs_node *fn, study_factor *f)
     if (rg) {
         if (mcs_node_kind(rg) != MCS_NODE_SEQ || mcs_node_len(rg) != 2)
             return fail(rg, "%s: range: expected [low, high]", f->path, NULL);
-        if (level_si(s, f, mcs_node_at(rg, 0), 0, &f->lo) ||
-            level_si(s, f, mcs_node_at(rg, 1), 0, &f->hi))
+        if (study_level_si(s, f, mcs_node_at(rg, 0), 0, &f->lo) ||
+            study_level_si(s, f, mcs_node_at(rg, 1), 0, &f->hi))
             return 2;
         if (!(f->hi > f->lo)) return fail(rg, "%s: range: high must exceed low", f->path, NULL);
         int n = lv ? (int)mcs_node_num(lv) : 2;
@@ -99,7 +99,7 @@ static int read_factor(study *s, const mcs_node *fn, study_factor *f)
     f->nlev = mcs_node_len(lv);
     f->lev = calloc((size_t)f->nlev, sizeof *f->lev);
     for (int i = 0; f->lev && i < f->nlev; i++)
-        if (level_si(s, f, mcs_node_at(lv, i), 0, &f->lev[i])) return 2;
+        if (study_level_si(s, f, mcs_node_at(lv, i), 0, &f->lev[i])) return 2;
     f->lo = f->hi = f->lev ? f->lev[0] : NAN;
     for (int i = 0; f->lev && i < f->nlev; i++)
         f->lo = fmin(f->lo, f->lev[i]), f->hi = fmax(f->hi, f->lev[i]);
@@ -160,18 +160,21 @@ static int read_design(study *s, const mcs_node *d, const char ***gen, int *ngen
     const char *t = mcs_node_str(mcs_node_get(d, "type"));
     if (mcs_node_kind(d) != MCS_NODE_MAP || !t)
         return fail(d, "study.design: expected {type: full_factorial | fractional_factorial | "
-                    "latin_hypercube | one_at_a_time, ...}", NULL, NULL);
+                    "latin_hypercube | one_at_a_time | iso13232, ...}", NULL, NULL);
     static const char *names[] = {"full_factorial", "fractional_factorial", "latin_hypercube",
-                                  "one_at_a_time"};
+                                  "one_at_a_time", "iso13232"};
     int k = 0;
-    while (k < 4 && strcmp(t, names[k])) k++;
-    if (k == 4)
+    while (k < 5 && strcmp(t, names[k])) k++;
+    if (k == 5)
         return fail(mcs_node_get(d, "type"), "study.design.type: unknown design '%s'", t, NULL);
     s->design = (study_design)k;
     s->design_name = names[k];
-    if (check_keys(d, "study.design", k == 1   ? "type|resolution|generators"
-                                      : k == 2 ? "type|samples|seed"
-                                               : "type"))
+    if (check_keys(d, "study.design",
+                   k == 1   ? "type|resolution|generators"
+                   : k == 2 ? "type|samples|seed"
+                   : k == 4 ? "type|opponent_contacts|motorcycle_contacts|headings|speeds|"
+                              "configurations"
+                            : "type"))
         return 2;
     const mcs_node *sm = mcs_node_get(d, "samples"), *sd = mcs_node_get(d, "seed");
     const mcs_node *rs = mcs_node_get(d, "resolution"), *gn = mcs_node_get(d, "generators");
@@ -305,34 +308,75 @@ static int make_cases(study *s, const mcs_node *d, const char **gen, int ngen, i
     int rc = s->design == STUDY_FULL         ? cases_full(s, d)
              : s->design == STUDY_FRACTIONAL ? cases_fractional(s, d, gen, ngen, res)
              : s->design == STUDY_LHS        ? cases_lhs(s)
-                                             : cases_oat(s);
+             : s->design == STUDY_OAT        ? cases_oat(s)
+                                             : 0;
     if (rc) return rc;
-    if (!s->x || s->ncase < 1) return fail(d, "study.design: no cases (out of memory?)", 0, 0);
+    if (s->design != STUDY_ISO13232) s->nrow = s->ncase;
+    if (!s->x || s->nrow < 1) return fail(d, "study.design: no cases (out of memory?)", 0, 0);
+    /* compare: each row twice, the scenario's case then the compared one's */
+    s->ncase = s->nrow * s->nvar;
+    if (s->nvar == 1) return 0;
+    int k = s->nfactor;
+    double *x = calloc((size_t)s->ncase * k, sizeof *x);
+    if (!x) return 2;
+    for (long c = 0; c < s->ncase; c++)
+        memcpy(x + c * k, s->x + c / s->nvar * k, (size_t)k * sizeof *x);
+    free(s->x);
+    s->x = x;
     return 0;
 }
 
 mcs_status study_case_scenario(const study *s, long c, mcs_scenario **out, mcs_error *err)
 {
-    mcs_scn_setting set[64];
+    int n = s->nset;
+    mcs_scn_setting *set = calloc((size_t)n + s->nfactor + 1, sizeof *set);
+    if (!set) return MCS_ERR(err, MCS_ERR_NOMEM, "error: out of memory");
+    if (n) memcpy(set, s->set, (size_t)n * sizeof *set);
     for (int j = 0; j < s->nfactor; j++)
-        set[j] = (mcs_scn_setting){.path = s->f[j].path, .num = s->x[c * s->nfactor + j],
-                                   .at = s->f[j].at};
-    return mcs_scenario_set(s->base, set, s->nfactor, out, err);
+        set[n++] = (mcs_scn_setting){.path = s->f[j].path, .num = s->x[c * s->nfactor + j],
+                                     .at = s->f[j].at};
+    if (s->code)
+        set[n++] = (mcs_scn_setting){.path = "impact.code", .str = s->code[c / s->nvar],
+                                     .at = s->f[0].at};
+    mcs_status st = mcs_scenario_set(s->nvar == 2 && c % 2 ? s->alt : s->base, set, n, out, err);
+    free(set);
+    return st;
 }
 
-/* the base scenario, relative to the study file */
-static int load_base(study *s, const char *path, const mcs_node *sc)
+/* a scenario named in the study file, relative to it */
+static int load_scenario(const char *path, const mcs_node *sc, const char *key, char *file,
+                         size_t nfile, mcs_scenario **out)
 {
     const char *p = mcs_node_str(sc);
-    if (!p) return fail(sc, "study.scenario: the base scenario's file is missing", NULL, NULL);
+    if (!p) return fail(sc, "study.%s: a scenario file is missing", key, NULL);
     const char *slash = strrchr(path, '/');
     if (p[0] == '/' || !slash)
-        snprintf(s->scenario, sizeof s->scenario, "%s", p);
+        snprintf(file, nfile, "%s", p);
     else
-        snprintf(s->scenario, sizeof s->scenario, "%.*s/%s", (int)(slash - path), path, p);
+        snprintf(file, nfile, "%.*s/%s", (int)(slash - path), path, p);
     mcs_error err = {0};
-    if (mcs_scenario_load(s->scenario, &s->base, &err)) return print_err(&err);
+    if (mcs_scenario_load(file, out, &err)) return print_err(&err);
     return 0;
+}
+
+/* the base scenario, the compared one (compare:) and the settings of every case (set:) */
+static int load_base(study *s, const char *path, const mcs_node *st)
+{
+    const mcs_node *sc = mcs_node_get(st, "scenario"), *cmp = mcs_node_get(st, "compare");
+    const mcs_node *set = mcs_node_get(st, "set");
+    if (load_scenario(path, sc, "scenario", s->scenario, sizeof s->scenario, &s->base)) return 2;
+    s->nvar = cmp ? 2 : 1;
+    if (cmp && load_scenario(path, cmp, "compare", s->alt_path, sizeof s->alt_path, &s->alt))
+        return 2;
+    if (!set) return 0;
+    if (mcs_node_kind(set) != MCS_NODE_MAP || mcs_node_len(set) < 1)
+        return fail(set, "study.set: a map {key.path: value, ...}", NULL, NULL);
+    s->nset = mcs_node_len(set);
+    s->set = calloc((size_t)s->nset, sizeof *s->set);
+    for (int i = 0; s->set && i < s->nset; i++)
+        s->set[i] = (mcs_scn_setting){.path = mcs_node_key(set, i),
+                                      .value = mcs_node_at(set, i), .at = mcs_node_at(set, i)};
+    return s->set ? 0 : 2;
 }
 
 static int read_study(study *s, const char *path, const mcs_node *st, const char ***gen,
@@ -341,8 +385,8 @@ static int read_study(study *s, const char *path, const mcs_node *st, const char
     if (mcs_node_kind(st) != MCS_NODE_MAP)
         return fail(mcs_scenario_root(s->file), "study: the file's top-level study: map is "
                     "missing", NULL, NULL);
-    if (check_keys(st, "study", "scenario|stage|design|factors|responses")) return 2;
-    if (load_base(s, path, mcs_node_get(st, "scenario"))) return 2;
+    if (check_keys(st, "study", "scenario|compare|set|stage|design|factors|responses")) return 2;
+    if (load_base(s, path, st)) return 2;
     const mcs_node *sg = mcs_node_get(st, "stage");
     snprintf(s->stage, sizeof s->stage, "1");
     if (sg) {
@@ -353,16 +397,20 @@ static int read_study(study *s, const char *path, const mcs_node *st, const char
     }
     if (read_design(s, mcs_node_get(st, "design"), gen, ngen, res)) return 2;
     const mcs_node *fs = mcs_node_get(st, "factors"), *rs = mcs_node_get(st, "responses");
-    s->nfactor = mcs_node_len(fs);
-    if (mcs_node_kind(fs) != MCS_NODE_SEQ || s->nfactor < 1 || s->nfactor > AN_DOE_MAXFACTOR)
+    if (s->design == STUDY_ISO13232 && fs)
+        return fail(fs, "study.factors: the iso13232 design sets the impact: keys itself", 0, 0);
+    if (s->design == STUDY_ISO13232 && study_iso_rows(s, mcs_node_get(st, "design"))) return 2;
+    s->nfactor = s->design == STUDY_ISO13232 ? s->nfactor : mcs_node_len(fs);
+    if (s->design != STUDY_ISO13232 &&
+        (mcs_node_kind(fs) != MCS_NODE_SEQ || s->nfactor < 1 || s->nfactor > AN_DOE_MAXFACTOR))
         return fail(fs ? fs : st, "study.factors: a list of 1..26 factors", NULL, NULL);
     s->nresp = mcs_node_len(rs);
     if (mcs_node_kind(rs) != MCS_NODE_SEQ || s->nresp < 1 || s->nresp > STUDY_MAXRESP)
         return fail(rs ? rs : st, "study.responses: a list of 1..64 responses", NULL, NULL);
-    s->f = calloc((size_t)s->nfactor, sizeof *s->f);
+    if (!s->f) s->f = calloc((size_t)s->nfactor, sizeof *s->f);
     s->r = calloc((size_t)s->nresp, sizeof *s->r);
     if (!s->f || !s->r) return 2;
-    for (int j = 0; j < s->nfactor; j++) {
+    for (int j = 0; s->design != STUDY_ISO13232 && j < s->nfactor; j++) {
         if (read_factor(s, mcs_node_at(fs, j), &s->f[j])) return 2;
         for (int q = 0; q < j; q++)
             if (!strcmp(s->f[q].path, s->f[j].path))
@@ -402,8 +450,9 @@ void study_free(study *s)
 {
     for (int j = 0; s->f && j < s->nfactor; j++)
         free(s->f[j].lev);
-    free(s->f), free(s->r), free(s->x);
+    free(s->f), free(s->r), free(s->x), free(s->code), free(s->set);
     mcs_scenario_destroy(&s->base);
+    mcs_scenario_destroy(&s->alt);
     mcs_scenario_destroy(&s->file);
     memset(s, 0, sizeof *s);
 }

@@ -19,6 +19,7 @@ int mcs_status_exit_code(mcs_status st)
 {
     if (st == MCS_OK) return 0;
     if (st == MCS_ERR_NUMERIC || st == MCS_ERR_ARENA) return 1;
+    if (st == MCS_INTERRUPTED) return 130;
     return 2;
 }
 

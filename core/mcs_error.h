@@ -20,7 +20,8 @@
     X(MCS_ERR_NOMEM, "out of memory")                                                              \
     X(MCS_ERR_ARENA, "scratch arena exhausted")                                                    \
     X(MCS_ERR_NUMERIC, "numerical failure")                                                        \
-    X(MCS_ERR_UNSUPPORTED, "not built yet")
+    X(MCS_ERR_UNSUPPORTED, "not built yet")                                                        \
+    X(MCS_INTERRUPTED, "interrupted") /* by a signal; results written up to then (exit 130) */
 
 typedef enum {
 #define MCS_X_ENUM(name, text) name,
@@ -40,7 +41,8 @@ typedef struct {
 
 const char *mcs_status_str(mcs_status st);
 
-/* exit status of the command for a status: 0 ok, 1 numerical failure, 2 bad input/usage */
+/* exit status of the command for a status: 0 ok, 1 numerical failure, 2 bad input/usage,
+ * 130 interrupted (core/mcs_interrupt.h) */
 int mcs_status_exit_code(mcs_status st);
 
 /* record an error (first one wins if e already holds one); returns st */

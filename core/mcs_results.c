@@ -1,5 +1,6 @@
 /* mcs_results.c: the results file's lifecycle — create to a temporary, commit by rename,
  * abort by removal, open for reading — and the HDF5 error translation. */
+#include "core/mcs_interrupt.h"
 #include "core/mcs_results_impl.h"
 #include "core/mcs_version.h"
 
@@ -154,13 +155,17 @@ static mcs_results *new_handle(const char *path, int writable)
     if (!r) return NULL;
     r->file = H5I_INVALID_HID;
     r->writable = writable;
+    r->tmp_slot = -1;
     r->path = strdup(path);
     if (writable) {
         size_t n = strlen(path) + 40;
         r->tmp = malloc(n);
         if (r->tmp) snprintf(r->tmp, n, "%s.tmp.%ld", path, (long)getpid());
+        /* a second SIGINT / SIGTERM removes it (core/mcs_interrupt.h) */
+        r->tmp_slot = r->tmp ? mcs_interrupt_track(r->tmp) : -1;
     }
     if (!r->path || (writable && !r->tmp)) {
+        mcs_interrupt_untrack(r->tmp_slot);
         free(r->path);
         free(r->tmp);
         free(r);
@@ -171,6 +176,7 @@ static mcs_results *new_handle(const char *path, int writable)
 
 static void free_handle(mcs_results *r)
 {
+    mcs_interrupt_untrack(r->tmp_slot);
     free(r->path);
     free(r->tmp);
     free(r);

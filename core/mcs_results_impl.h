@@ -26,6 +26,7 @@ struct mcs_results {
     int committed;             /* 1 once renamed                              */
     char *path;                /* final name                                  */
     char *tmp;                 /* temporary name of a writer                  */
+    int tmp_slot;              /* its slot in core/mcs_interrupt.c, or -1     */
     mcs_results_series *series;
 };
 

@@ -93,7 +93,8 @@ typedef struct {
     const char *path;      /* key path                                                    */
     const mcs_node *value; /* a scalar node (its text read by the key's schema, units and
                               all, as any scenario value), or NULL: then num               */
-    double num;            /* the value in SI when value is NULL                          */
+    double num;            /* the value in SI when value and str are NULL                 */
+    const char *str;       /* a string value when value is NULL (the key's schema reads it) */
     const mcs_node *at;    /* where the setting was written: messages, and the added key   */
 } mcs_scn_setting;
 

@@ -3,6 +3,7 @@
  * the study file itself) */
 #include "core/mcs_scn_internal.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -100,11 +101,14 @@ static mcs_node *setting_value(mcs_scenario *s, const mcs_scn_setting *set)
     if (set->value) return scn_copy_node(&s->arena, set->value);
     const mcs_node *at = set->at;
     const char *file = at && at->file ? scn_strndup(&s->arena, at->file, strlen(at->file)) : "?";
-    mcs_node *v = scn_node_new(&s->arena, MCS_NODE_NUM, file, at ? at->line : 0, at ? at->col : 0);
+    mcs_node *v = scn_node_new(&s->arena, set->str ? MCS_NODE_STR : MCS_NODE_NUM, file,
+                               at ? at->line : 0, at ? at->col : 0);
     char txt[40];
     snprintf(txt, sizeof txt, "%.17g", set->num);
-    if (!v || !file || !(v->text = scn_strndup(&s->arena, txt, strlen(txt)))) return NULL;
-    v->num = set->num;
+    const char *t = set->str ? set->str : txt;
+    if (!v || !file || !(v->text = scn_strndup(&s->arena, t, strlen(t)))) return NULL;
+    v->num = set->str ? NAN : set->num;
+    v->quoted = set->str != NULL;
     return v;
 }
 

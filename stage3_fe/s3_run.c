@@ -4,6 +4,7 @@
 #include "stage3_fe/s3_run.h"
 #include "fe/fe_out.h"
 
+#include "core/mcs_interrupt.h"
 #include "core/mcs_progress.h"
 #include "core/mcs_results.h"
 #include "fe/fe_contact.h"
@@ -114,7 +115,7 @@ static void accumulate(const fe_model *m, const fe_state *s, s3_out *o)
 
 /* the time loop: fe_step until end_time, sampling energies (at t_n) and fields (at t_n+1) */
 static mcs_status loop(const fe_problem *p, const s3_run_opts *ro, fe_state *s, s3_out *o,
-                       mcs_error *err)
+                       int *interrupted, mcs_error *err)
 {
     const fe_model *m = p->model;
     const double every = 1.0 / p->output_rate;
@@ -127,6 +128,12 @@ static mcs_status loop(const fe_problem *p, const s3_run_opts *ro, fe_state *s, 
     mcs_progress_start(&prog, &po, p->end_time);
     mcs_status st = sample_field(m, s, o, err); /* t = 0: zero displacement */
     while (!st && s->time < p->end_time) {
+        /* SIGINT / SIGTERM: stop between steps (core/mcs_interrupt.h). Issue 18 item 3's
+         * restart dump of the state at s->time belongs here, before the results are written. */
+        if (mcs_interrupt_pending()) {
+            *interrupted = 1;
+            break;
+        }
         st = fe_step(m, s);
         if (st) {
             MCS_ERR(err, st, "stage 3: %s", s->err.msg);
@@ -148,6 +155,17 @@ static mcs_status loop(const fe_problem *p, const s3_run_opts *ro, fe_state *s, 
     return st;
 }
 
+/* OUT.h5.failure.txt of a numerical failure: time, step, the element or node named, the
+ * energies */
+static void failure_record(const fe_state *s, const char *out, const mcs_error *err)
+{
+    char where[256];
+    mcs_failure_where(err->msg, where, sizeof where);
+    if (mcs_failure_record_write(out, 3, s->time, (long)s->nstep, where, err->msg,
+                                 fe_energy_name, s->energy, FE_NENERGY))
+        mcs_log(MCS_LOG_WARN, "stage 3: failure record beside %s not written", out);
+}
+
 mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, mcs_error *err)
 {
     const fe_model *m = p->model;
@@ -167,7 +185,8 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
                         : mcs_results_create(&r, ro->out_path, ro->scenario_text, err);
     if (!st) st = fe_out_meshes(r, 3, m, err);
     if (!st) st = open_series(r, m, &o, err);
-    if (!st) st = loop(p, ro, s, &o, err);
+    int interrupted = 0;
+    if (!st) st = loop(p, ro, s, &o, &interrupted, err);
     if (!st) {
         sum->steps = s->nstep;
         sum->elements = m->nelem;
@@ -207,9 +226,18 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
             st = mcs_results_set_attr_double(r, "/stage3", "hourglass_fraction_max",
                                              sum->hourglass_fraction_max, err);
         if (!st) st = s3_wallcase_finish(r, &o.wc, err);
+        /* an interrupted run's file: complete up to s->time, marked (core/mcs_interrupt.h) */
+        if (!st && interrupted)
+            st = mcs_results_set_attr_str(r, "/meta", "status", "interrupted", err);
         if (!st) st = mcs_results_commit(&r, err);
+        if (!st) mcs_failure_record_remove(ro->out_path); /* an earlier failure's, now stale */
     }
     mcs_results_abort(&r);
+    if (st == MCS_ERR_NUMERIC && s && ro->out_path) failure_record(s, ro->out_path, err);
+    if (!st && interrupted)
+        st = MCS_ERR(err, MCS_INTERRUPTED,
+                     "stage 3: interrupted at t = %.9g s (step %ld); results up to then in %s",
+                     s->time, (long)s->nstep, ro->out_path);
     s3_wallcase_free(&o.wc);
     free(o.eint);
     fe_out_free(&o.fe);

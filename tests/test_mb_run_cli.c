@@ -181,7 +181,12 @@ static void test_unstable_run_exits_1_without_file(void)
     CHECK(r->status == 1);
     CHECK_STR_CONTAINS(r->err, "ball");
     CHECK_STR_CONTAINS(r->err, "t = ");
-    CHECK(count_files(sub) == 0); /* neither the file nor its temporary */
+    /* neither the file nor its temporary: only the failure record (tests/test_interrupt.c
+     * checks its content) */
+    CHECK(count_files(sub) == 1);
+    char rec[300];
+    snprintf(rec, sizeof rec, "%s.failure.txt", out);
+    CHECK(access(rec, F_OK) == 0);
 }
 
 static void test_bad_input_and_stage_dispatch(void)

@@ -144,6 +144,12 @@ static void test_study_bad_input(void)
         {"bad_unit.yaml", DATA "bad_unit.yaml:5:52: error: ", "expected a mass (kg)"},
         {"bad_path.yaml", DATA "bad_path.yaml:5:14: error: ", "names no key of the scenario"},
         {"bad_response.yaml", DATA "bad_response.yaml:6:22: error: ", "'HIC17' is no injury"},
+        /* a level outside the key's range (a mass > 0), a range bound in a wrong unit, a
+         * path's last key that its block does not know */
+        {"bad_range.yaml", DATA "bad_range.yaml:5:52: error: ", "must be > 0 kg (got -6 kg)"},
+        {"bad_range_unit.yaml", DATA "bad_range_unit.yaml:5:58: error: ",
+         "'-3 kg' is a mass (kg), expected a velocity (m/s)"},
+        {"bad_key.yaml", DATA "bad_key.yaml:5:14: error: ", "unknown key in a simulation block"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char cmd[512], dir[128];
@@ -166,6 +172,14 @@ static void test_study_bad_input(void)
                                "/stage1/channels/neck_fz");
     snprintf(h5, sizeof h5, "%s/badch_cases/case_00000.h5", tmp);
     struct stat st;
+    CHECK(stat(h5, &st) != 0);
+    /* the same for max: of a channel (a one-at-a-time design) */
+    snprintf(cmd, sizeof cmd, "study " DATA "bad_channel_max.yaml -o %s/badmax.h5", tmp);
+    r = cli_run(cmd);
+    CHECK(r->status == 2);
+    CHECK_STR_CONTAINS(r->err, DATA "bad_channel_max.yaml:6:22: error: study.responses: no "
+                               "dataset /stage1/channels/chest_az");
+    snprintf(h5, sizeof h5, "%s/badmax_cases/case_00000.h5", tmp);
     CHECK(stat(h5, &st) != 0);
     CHECK(cli_run("study")->status == 2);
     CHECK(cli_run("study --analyze no_such.h5")->status == 2);

@@ -101,7 +101,7 @@ static void write_head(tr_rp *c, FILE *f)
     c->f = keep;
 }
 
-/* the input checks: a readable HDF5 file with a /stageN group */
+/* the input checks: a readable HDF5 file with a /stageN group, or a study file (/study) */
 static mcs_status open_input(tr_rp *c, const char *h5, mcs_error *err)
 {
     struct stat st;
@@ -121,9 +121,11 @@ static mcs_status open_input(tr_rp *c, const char *h5, mcs_error *err)
         if (c->has_stage[k] && rp_read(c, g, &c->time[k]) == 0 && c->time[k].rank != 1)
             mcs_array_free(&c->time[k]);
     }
-    if (!any)
+    c->study = mcs_results_kind(c->r, "/study") == MCS_RES_GROUP;
+    if (!any && !c->study)
         return MCS_ERR(err, MCS_ERR_FORMAT,
-                       "%s: not an mcrash results file (no /stage1, /stage2 or /stage3 group)",
+                       "%s: not an mcrash results file (no /stage1, /stage2, /stage3 or /study "
+                       "group)",
                        h5);
     return MCS_OK;
 }
@@ -148,6 +150,12 @@ static char *write_body(tr_rp *c, size_t *len)
     char *buf = NULL;
     c->f = open_memstream(&buf, len);
     if (!c->f) return NULL;
+    if (c->study) {
+        rp_study(c);
+        fclose(c->f);
+        c->f = NULL;
+        return buf;
+    }
     rp_energy(c);
     rp_injury(c);
     rp_dummy(c);

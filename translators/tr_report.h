@@ -6,6 +6,8 @@
  *   CFC), belt / airbag / foam channels, force-crush of stage-3 rigid walls, energy per part
  *   and per contact partner (stacked bars), stage against stage overlays with their ISO/TS 18571
  *   ratings, kinematic snapshots (side and top views of the bodies and FE meshes, strips).
+ * A study file (`mcrash study`'s STUDY.h5, a /study group) gets the study page instead: per
+ * response the main-effect and two-factor interaction plots (tr_report_study.c).
  * The page is written to a temporary beside the output and renamed when complete: an error
  * leaves no page (and an earlier page as it was). */
 #ifndef TR_REPORT_H
@@ -31,11 +33,11 @@ typedef struct {
 } tr_report_summary;
 
 /* the input checks alone (as tr_report_write makes them): a readable HDF5 file with a
- * /stage1, /stage2 or /stage3 group */
+ * /stage1, /stage2, /stage3 or /study group */
 mcs_status tr_report_check(const char *h5, mcs_error *err);
 
 /* the page of results file h5 at html (e.g. "out/iso413.html"); sum may be NULL. A missing
- * file: MCS_ERR_IO; a file that is not HDF5 or has no /stage1../stage3 group: MCS_ERR_FORMAT,
+ * file: MCS_ERR_IO; a file that is not HDF5 or has no /stage1../stage3 or /study group: MCS_ERR_FORMAT,
  * both naming the file */
 mcs_status tr_report_write(const char *h5, const char *html, const tr_report_opts *o,
                            tr_report_summary *sum, mcs_error *err);

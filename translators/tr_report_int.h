@@ -19,6 +19,7 @@ typedef struct {
     mcs_array time[RP_NSTAGE + 1]; /* /stageN/time [s] (n = 0 when absent) */
     tr_report_summary *sum;
     int svg_w;               /* width of a line plot [px] */
+    int study;               /* 1: a study file (/study): the study page */
 } tr_rp;
 
 /* one curve of a line plot: x [SI] and y [SI] with n samples, its legend label */
@@ -75,5 +76,7 @@ void rp_crush(tr_rp *c);
 void rp_parts(tr_rp *c);
 void rp_compare(tr_rp *c);
 void rp_kinematics(tr_rp *c);
+/* the study page of a STUDY.h5 (tr_report_study.c) */
+void rp_study(tr_rp *c);
 
 #endif

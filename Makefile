@@ -29,7 +29,7 @@ LDFLAGS  += $(SAN) $(OMP)
 FE_OPT   ?= -O3
 LDLIBS   += $(PKG_LIBS) -lsundials_cvode -lsundials_nvecserial -llapack -lblas -lm
 
-MODULES  = core analysis fe stage1_mb stage2_fe stage3_fe translators
+MODULES  = core analysis fe rom stage1_mb stage2_fe stage3_fe translators
 # fe/ groups its sources in subfolders (docs/contracts.md "Layout of fe/"); a file in fe/ itself
 # still builds
 LIB_SRC  = $(foreach d,$(MODULES),$(wildcard $(d)/*.c)) $(wildcard fe/*/*.c)

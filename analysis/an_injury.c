@@ -320,12 +320,13 @@ mcs_status an_injury_evaluate_as(const char *h5_path, int stage, int dummy, an_i
     inj_ctx c = {.path = h5_path, .stage = stage, .err = err};
     mcs_status st = mcs_results_open(&c.r, h5_path, err);
     if (st) return st;
-    if (stage == 0)
-        for (int s = 3; s >= 1 && !c.stage; s--)
+    if (stage == AN_STAGE_AUTO)
+        for (int s = 3; s >= 1 && c.stage < 1; s--)
             if (stage_present(c.r, s)) c.stage = s;
-    if (c.stage < 1 || c.stage > 3 || !stage_present(c.r, c.stage)) {
-        st = MCS_ERR(err, MCS_ERR_KEY, "%s: no /stage%d/channels or /stage%d/bodies", h5_path,
-                     stage ? stage : 1, stage ? stage : 1);
+    if (c.stage < 0 || c.stage > 3 || !stage_present(c.r, c.stage)) {
+        int s = stage >= 0 ? stage : 1;
+        st = MCS_ERR(err, MCS_ERR_KEY, "%s: no /stage%d/channels or /stage%d/bodies", h5_path, s,
+                     s);
         mcs_results_close(&c.r);
         return st;
     }

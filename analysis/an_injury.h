@@ -33,8 +33,10 @@ typedef struct {
     int cfc;           /* filter class of those channels, 0 = unfiltered */
 } an_injury_row;
 
-/* stage 0: the highest stage that has channels or bodies. *rows (malloc'd, *n of them) is
+/* stage AN_STAGE_AUTO: the highest of stages 3, 2, 1 that has channels or bodies; stage 0 is the
+ * reduced-order model's /stage0 (rom/rom.h), read only when asked for. *rows (malloc'd, *n of them) is
  * empty when no known channel is present (not an error). *stage_used receives the stage. */
+#define AN_STAGE_AUTO (-1)
 mcs_status an_injury_evaluate(const char *h5_path, int stage, an_injury_row **rows, int *n,
                               int *stage_used, mcs_error *err);
 

@@ -50,7 +50,7 @@ int main(void)
     t.angle = malloc(nt * sizeof(double));
     tr_rt_opts ot = o;
     ot.cfc = 0;
-    double pt[TR_RT_NPAR] = {0.8, 1.3, b.phi_e, b.phi_s};
+    double pt[TR_RT_NPAR] = {0.8, 1.3, b.phi_e, b.phi_s, 1, b.k_stop};
     for (int i = 0; i < nt; i++)
         t.t[i] = i * o.dt;
     if (tr_rt_stage1(&ot, &b, pt, nt, o.dt, t.force, t.angle, &err)) {

@@ -17,8 +17,10 @@
       "run the FE rider-interaction model on stage-1 vehicle motion")                              \
     X(stage3, "mcrash stage3 SCENARIO.yaml [-o OUT.h5] [--quiet] [--json]",                        \
       "run the full FE vehicle model")                                                             \
+    X(rom, "mcrash rom SCENARIO.yaml [-o OUT.h5] [--append] [--quiet] [--json]",                   \
+      "run the reduced-order lumped-mass model (CVODE) into /stage0")                              \
     X(retune, "mcrash retune STAGE3.h5 --scenario STAGE1.yaml [-o CURVES.yaml] [--end-time T] "    \
-              "[-j N] [--csv FILE] [--json]",                                                      \
+              "[-j N] [--csv FILE] [--svg PREFIX] [--json]",                                       \
       "fit stage-1 front characteristics to stage-3 wall force and fork angle")                    \
     X(loop, "mcrash loop SCENARIO.yaml [--max-iter N] [-o DIR] [-j N]",                            \
       "stage 3 -> retune -> stage 1 -> stage 2 until the ratings settle")                          \

@@ -38,6 +38,8 @@ void cli_json_string(const char *s);
  * the summary object on stdout; return the exit status (0, 1 numerical, 2 bad input) */
 int cli_stage1_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
 int cli_stage3_scenario(const mcs_scenario *scn, const char *out_path, int quiet, int json);
+/* the reduced-order model (cmd_rom.c) into out_path's /stage0; append: add to that file */
+int cli_rom_exec(const mcs_scenario *scn, const char *out_path, int append, int quiet, int json);
 /* `compare OUT.h5 --stages A,B` (cmd_compare_stages.c): "A,B" parsed (1 when good), and the
  * ratings of every channel the two stages share (cora: CORA, else ISO/TS 18571) */
 int cli_parse_stages(const char *s, int *a, int *b);

@@ -82,7 +82,7 @@ static int parse(int argc, char **argv, const char **a, const char **b, compare_
                  int *json, int stages[2])
 {
     *a = *b = NULL;
-    stages[0] = stages[1] = 0;
+    stages[0] = stages[1] = -1; /* -1: no --stages (0 is the reduced-order model) */
     *m = METHOD_ISO;
     *json = 0;
     for (int i = 1; i < argc; i++) {
@@ -133,11 +133,11 @@ static int parse(int argc, char **argv, const char **a, const char **b, compare_
             return cli_usage(argv[0]);
         }
     }
-    if (stages[0] && (!*a || *b)) {
+    if (stages[0] >= 0 && (!*a || *b)) {
         fprintf(stderr, "mcrash compare: --stages takes one results file\n");
         return cli_usage(argv[0]);
     }
-    if (!stages[0] && (!*a || !*b)) {
+    if (stages[0] < 0 && (!*a || !*b)) {
         fprintf(stderr, "mcrash compare: needs a reference and a comparison channel\n");
         return cli_usage(argv[0]);
     }
@@ -157,7 +157,8 @@ int cli_compare(int argc, char **argv)
     compare_method method;
     int json, stages[2], rc = parse(argc, argv, &ra, &rb, &method, &json, stages);
     if (rc) return rc;
-    if (stages[0]) return cli_compare_stages(ra, stages[0], stages[1], method == METHOD_CORA, json);
+    if (stages[0] >= 0)
+        return cli_compare_stages(ra, stages[0], stages[1], method == METHOD_CORA, json);
 
     an_signal a = {0}, b = {0};
     mcs_error err = {0};

@@ -12,11 +12,11 @@
 #include <stdio.h>
 #include <string.h>
 
-/* "A,B" with A, B stage numbers 1..9 */
+/* "A,B" with A, B stage numbers 0..9 (0: the reduced-order model) */
 int cli_parse_stages(const char *s, int *a, int *b)
 {
     char c;
-    return s && sscanf(s, "%d,%d%c", a, b, &c) == 2 && *a >= 1 && *a <= 9 && *b >= 1 && *b <= 9;
+    return s && sscanf(s, "%d,%d%c", a, b, &c) == 2 && *a >= 0 && *a <= 9 && *b >= 0 && *b <= 9;
 }
 
 static void num(double v)

@@ -122,15 +122,15 @@ int cli_injury(int argc, char **argv)
 {
     if (cli_wants_help(argv[0], argc, argv)) return 0;
     const char *file[INJ_MAXFILES];
-    int nfile = 0, stage = 0, json = 0, dummy = -1;
+    int nfile = 0, stage = AN_STAGE_AUTO, json = 0, dummy = -1;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--json") == 0) {
             json = 1;
         } else if (strcmp(argv[i], "--stage") == 0 && i + 1 < argc) {
             char *end;
             long s = strtol(argv[++i], &end, 10);
-            if (*end || s < 1 || s > 3) {
-                fprintf(stderr, "mcrash injury: --stage %s: 1, 2 or 3\n", argv[i]);
+            if (*end || s < 0 || s > 3) {
+                fprintf(stderr, "mcrash injury: --stage %s: 0 (rom), 1, 2 or 3\n", argv[i]);
                 return 2;
             }
             stage = (int)s;

@@ -1,11 +1,12 @@
 /* cmd_retune.c: `mcrash retune STAGE3.h5 --scenario STAGE1.yaml [-o CURVES.yaml]
- * [--end-time T] [-j N] [--csv FILE] [--json]` (translators/tr_retune.h, docs/retune.md): fits the stage-1 front
- * characteristics so that stage 1 reproduces the target's wall force and fork angle; writes
- * CURVES.yaml (default: curves.yaml) and /curves/<characteristic>/{loading,unloading} into
- * STAGE3.h5; prints the parameters and the ISO/TS 18571 ratings before and after. The
+ * [--end-time T] [-j N] [--csv FILE] [--svg PREFIX] [--json]` (translators/tr_retune.h,
+ * docs/retune.md): fits the stage-1 front characteristics so that stage 1 reproduces the
+ * target's wall force and fork angle; writes CURVES.yaml (default: curves.yaml) and
+ * /curves/<characteristic>/{loading,unloading} into STAGE3.h5; prints the parameters and the ISO/TS 18571 ratings before and after. The
  * scenario's retune: block names the characteristics and the target's datasets; -j N runs N
  * stage-1 runs at once (default: the online processors); --csv writes the compared curves
- * (target, before, after). */
+ * (target, before, after); --svg the same as two plots, PREFIX_force.svg and
+ * PREFIX_angle.svg. */
 #include "cli/cli.h"
 #include "cli/cli_common.h"
 #include "translators/tr_retune.h"
@@ -18,7 +19,7 @@ static int usage_err(const char *msg)
 {
     fprintf(stderr,
             "retune: %s\nusage: mcrash retune STAGE3.h5 --scenario STAGE1.yaml "
-            "[-o CURVES.yaml] [--end-time T] [-j N] [--csv FILE] [--json]\n",
+            "[-o CURVES.yaml] [--end-time T] [-j N] [--csv FILE] [--svg PREFIX] [--json]\n",
             msg);
     return 2;
 }
@@ -54,7 +55,7 @@ static void print_json(const tr_rt_result *r, const char *out)
 int cli_retune(int argc, char **argv)
 {
     if (cli_wants_help(argv[0], argc, argv)) return 0;
-    const char *h5 = NULL, *out = "curves.yaml", *csv = NULL;
+    const char *h5 = NULL, *out = "curves.yaml", *csv = NULL, *svg = NULL;
     tr_rt_opts o = tr_rt_opts_default();
     int json = 0, jobs = 0;
     double end_time = 0;
@@ -66,6 +67,8 @@ int cli_retune(int argc, char **argv)
             out = argv[++i];
         else if (!strcmp(a, "--csv") && i + 1 < argc)
             csv = argv[++i];
+        else if (!strcmp(a, "--svg") && i + 1 < argc)
+            svg = argv[++i];
         else if (!strcmp(a, "--end-time") && i + 1 < argc) {
             char *end = NULL;
             end_time = strtod(argv[++i], &end);
@@ -115,6 +118,16 @@ int cli_retune(int argc, char **argv)
         FILE *f = fopen(csv, "w");
         if (!f || tr_rt_write_csv(f, &r) || fclose(f))
             st = MCS_ERR(&err, MCS_ERR_IO, "%s: cannot write", csv);
+    }
+    for (int k = 0; k < 2 && !st && svg; k++) {
+        char path[4096];
+        snprintf(path, sizeof path, "%s_%s.svg", svg, k ? "angle" : "force");
+        FILE *f = fopen(path, "w");
+        if (f)
+            tr_rt_write_svg(f, &r, k,
+                            k ? "Fork angle: stage 1 before and after retune, and stage 3"
+                              : "Wall force: stage 1 before and after retune, and stage 3");
+        if (!f || ferror(f) | fclose(f)) st = MCS_ERR(&err, MCS_ERR_IO, "%s: cannot write", path);
     }
     if (!st) tr_rt_result_free(&r);
     if (st) {

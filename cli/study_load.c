@@ -391,8 +391,9 @@ static int read_study(study *s, const char *path, const mcs_node *st, const char
     snprintf(s->stage, sizeof s->stage, "1");
     if (sg) {
         const char *t = mcs_node_text(sg);
-        if (!t || (strcmp(t, "1") && strcmp(t, "2") && strcmp(t, "3") && strcmp(t, "all")))
-            return fail(sg, "study.stage: 1, 2, 3 or all", NULL, NULL);
+        if (!t || (strcmp(t, "1") && strcmp(t, "2") && strcmp(t, "3") && strcmp(t, "all") &&
+                   strcmp(t, "rom")))
+            return fail(sg, "study.stage: 1, 2, 3, all or rom", NULL, NULL);
         snprintf(s->stage, sizeof s->stage, "%s", t);
     }
     if (read_design(s, mcs_node_get(st, "design"), gen, ngen, res)) return 2;

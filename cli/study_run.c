@@ -28,6 +28,8 @@ static int run_stages(const mcs_scenario *scn, const char *stage, const char *ou
     int fe_only = mcs_node_kind(mcs_node_get(root, "fe")) == MCS_NODE_MAP &&
                   mcs_node_len(mcs_node_get(root, "bodies")) == 0;
     int has2 = mcs_node_kind(mcs_node_get(root, "stage2")) == MCS_NODE_MAP;
+    /* the reduced-order model: the study's fast stage (docs/rom.md) */
+    if (!strcmp(stage, "rom")) return cli_rom_exec(scn, out, 0, 1, 0);
     if (fe_only || !strcmp(stage, "3")) return cli_stage3_scenario(scn, out, 1, 0);
     if ((!strcmp(stage, "2") || !strcmp(stage, "all")) && has2)
         return cli_stage12_scenario(scn, out, 1, 0);
@@ -81,7 +83,8 @@ static double reduce(const mcs_array *a, study_rkind k)
 
 static int stage_number(const char *stage)
 {
-    return !strcmp(stage, "all") ? 0 : atoi(stage);
+    if (!strcmp(stage, "rom")) return 0; /* /stage0 */
+    return !strcmp(stage, "all") ? AN_STAGE_AUTO : atoi(stage);
 }
 
 static void eval_responses(const study *s, long c, const char *h5, study_result *res)
@@ -172,13 +175,14 @@ void study_run_cases(const study *s, const char *dir, int jobs, long first, long
     free(running), free(pids);
 }
 
-/* a response the probe checks: a channel, body or energy series of stage 1 (criteria need the
- * whole run) */
-static int probed(const study_response *r)
+/* a response the probe checks: a channel, body or energy series of stage 1 (of stage 0 for a
+ * study of the reduced-order model; criteria need the whole run) */
+static int probed(const study_response *r, int rom)
 {
-    static const char *const pre[] = {"/stage1/channels/", "/stage1/bodies/", "/stage1/energy/"};
+    static const char *const pre[] = {"/stage1/channels/", "/stage1/bodies/", "/stage1/energy/",
+                                      "/stage0/channels/", "/stage0/bodies/", "/stage0/energy/"};
     for (int i = 0; r->kind != STUDY_R_INJURY && i < 3; i++)
-        if (!strncmp(r->target, pre[i], strlen(pre[i]))) return 1;
+        if (!strncmp(r->target, pre[i + 3 * rom], strlen(pre[i + 3 * rom]))) return 1;
     return 0;
 }
 
@@ -189,12 +193,13 @@ static int probed(const study_response *r)
 int study_probe(const study *s, const char *dir)
 {
     const mcs_node *root = mcs_scenario_root(s->base);
-    int stage1 = !strcmp(s->stage, "1") ||
+    int rom = !strcmp(s->stage, "rom");
+    int stage1 = !strcmp(s->stage, "1") || rom ||
                  (!strcmp(s->stage, "all") &&
                   mcs_node_kind(mcs_node_get(root, "stage2")) != MCS_NODE_MAP);
     int any = 0;
     for (int i = 0; i < s->nresp; i++)
-        any |= probed(&s->r[i]);
+        any |= probed(&s->r[i], rom);
     if (!stage1 || !any || mcs_node_len(mcs_node_get(root, "bodies")) == 0) return 0;
     double dt = mcs_node_num(mcs_scenario_find(root, "simulation.time_step"));
     mcs_scn_setting set = {.path = "simulation.end_time", .num = isfinite(dt) ? 2 * dt : 1e-4,
@@ -211,7 +216,9 @@ int study_probe(const study *s, const char *dir)
         if (fd >= 0) dup2(fd, 1), dup2(fd, 2), close(fd);
         mcs_scenario *scn = NULL;
         mcs_error err = {0};
-        int rc = mcs_scenario_set(s->base, &set, 1, &scn, &err) ? 2 : run_stages(scn, "1", h5);
+        int rc = mcs_scenario_set(s->base, &set, 1, &scn, &err)
+                     ? 2
+                     : run_stages(scn, rom ? "rom" : "1", h5);
         mcs_scenario_destroy(&scn);
         _exit(rc);
     }
@@ -220,7 +227,7 @@ int study_probe(const study *s, const char *dir)
     mcs_results *f = NULL;
     mcs_error err = {0};
     for (int i = 0; ws == 0 && i < s->nresp && !rc; i++) {
-        if (!probed(&s->r[i])) continue;
+        if (!probed(&s->r[i], rom)) continue;
         if (!f && mcs_results_open(&f, h5, &err)) break;
         if (mcs_results_kind(f, s->r[i].target) != MCS_RES_DATASET) {
             mcs_node_error(s->r[i].at, &err, MCS_ERR_KEY,

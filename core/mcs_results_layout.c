@@ -27,10 +27,11 @@ static mcs_status check_name(const char *what, const char *name, mcs_error *err)
     return MCS_OK;
 }
 
+/* stage 0 is the reduced-order model (rom/rom.h, docs/contracts.md) */
 static mcs_status check_stage(int stage, mcs_error *err)
 {
-    if (stage < 1 || stage > 3)
-        return MCS_ERR(err, MCS_ERR_USAGE, "results: stage %d not in 1..3", stage);
+    if (stage < 0 || stage > 3)
+        return MCS_ERR(err, MCS_ERR_USAGE, "results: stage %d not in 0..3", stage);
     return MCS_OK;
 }
 

@@ -1147,7 +1147,8 @@ static const mcs_skey retune_keys[] = {
     S("target_angle", NE, "stage-3 fork angle dataset (default /stage3/channels/<joint>_angle, "
                           "else /stage3/joints/<joint>/angle)"),
     A("free", 0, "parameters fitted, a list of tyre_force_scale, fork_moment_scale, "
-                 "fork_elastic_limit, fork_stop_angle (default all four)"),
+                 "fork_elastic_limit, fork_stop_angle, rim_force_scale, fork_stop_stiffness "
+                 "(default the first four)"),
     Q("end_time", MCS_DIM_TIME, GT, 0, 0, "compared span [s] (default the target's)"),
     END,
 };
@@ -1164,6 +1165,44 @@ static const mcs_skey loop_keys[] = {
     END,
 };
 static const mcs_smap loop_map = {.what = "loop block", .keys = loop_keys};
+
+/* ---- the reduced-order model (rom/rom.h, docs/rom.md) ---- */
+
+#define STF MCS_DIM_STIFFNESS
+#define DMP MCS_DIM_DAMPING
+/* every parameter optional: the defaults are the stage-1 sport motorcycle's (docs/rom.md) */
+static const mcs_skey rom_keys[] = {
+    Q("tyre_stiffness", STF, GT, 0, 0, "front crush slope up to tyre_travel [N/m]"),
+    Q("tyre_travel", LEN, GT, 0, 0, "tyre crush where the rim takes over [m]"),
+    Q("rim_stiffness", STF, GT, 0, 0, "front crush slope beyond tyre_travel [N/m]"),
+    Q("tyre_unload", STF, GT, 0, 0, "tyre unloading slope [N/m]"),
+    Q("tyre_damping", DMP, GE, 0, 0, "tyre damping [N s/m]"),
+    Q("fork_stiffness", STF, GT, 0, 0, "fork elastic slope [N/m]"),
+    Q("fork_yield", FRC, GT, 0, 0, "fork force at its elastic limit [N]"),
+    Q("fork_hardening", STF, GT, 0, 0, "fork slope after yield [N/m]"),
+    Q("fork_stop", LEN, GT, 0, 0, "fork travel where the wheel meets the engine [m]"),
+    Q("stop_stiffness", STF, GT, 0, 0, "slope beyond fork_stop [N/m]"),
+    Q("fork_unload", STF, GT, 0, 0, "fork unloading slope [N/m]"),
+    Q("fork_damping", DMP, GE, 0, 0, "fork damping [N s/m]"),
+    Q("frame_gap", LEN, GE, 0, 0, "frame travel before it meets the barrier [m]"),
+    Q("frame_stiffness", STF, GT, 0, 0, "frame against the barrier [N/m]"),
+    Q("frame_unload", STF, GT, 0, 0, "frame unloading slope [N/m]"),
+    Q("frame_damping", DMP, GE, 0, 0, "frame damping [N s/m]"),
+    Q("rider_gap", LEN, GE, 0, 0, "rider travel before the restraint acts [m]"),
+    Q("rider_stiffness", STF, GT, 0, 0, "rider against the frame [N/m]"),
+    Q("rider_limit", FRC, GT, 0, 0, "rider restraint force plateau (sliding over the tank) [N]"),
+    Q("rider_unload", STF, GT, 0, 0, "rider restraint unloading slope [N/m]"),
+    Q("rider_damping", DMP, GE, 0, 0, "rider restraint damping [N s/m]"),
+    Q("rider_wall_gap", LEN, GE, 0, 0, "rider travel before the rider meets the barrier [m]"),
+    Q("rider_wall_stiffness", STF, GT, 0, 0, "rider against the barrier [N/m]"),
+    Q("rider_wall_damping", DMP, GE, 0, 0, "rider-barrier damping [N s/m]"),
+    Q("rider_wall_unload", STF, GT, 0, 0, "rider-barrier unloading slope [N/m]"),
+    Q("opponent_mass", MCS_DIM_MASS, GE, 0, 0, "0: rigid barrier, else a free opponent [kg]"),
+    Q("rtol", NONE, GT, 0, 0, "CVODE relative tolerance (default 1e-6)"),
+    E("method", "bdf|adams", 0, "CVODE method (default bdf)"),
+    END,
+};
+static const mcs_smap rom_map = {.what = "rom block", .keys = rom_keys};
 
 /* ---- the root ---- */
 
@@ -1189,6 +1228,7 @@ static const mcs_skey root_keys[] = {
     M("stage3", stage3_map, 0, "stage 3: the scenario's full FE model (motorcycle, opponent)"),
     M("retune", retune_map, 0, "mcrash retune: stage-1 names and stage-3 target paths"),
     M("loop", loop_map, 0, "mcrash loop: the wall, retune and crash scenarios"),
+    M("rom", rom_map, 0, "stage 0: the reduced-order model's parameters (mcrash rom)"),
     NM("energy_groups", egroup_map, 0,
        "energy balances of named groups of bodies, split by contact partner (default: rider)"),
     END,

@@ -68,6 +68,26 @@ static int ref_names(const scn_walk *w, mcs_sref ref, const char **names, int ma
     return n;
 }
 
+/* 1 when name is <entry>_<component> of an fe.parts entry whose generator makes several parts
+ * so named (mesh: {generate: motorcycle | sedan_side}, stage3_fe/s3_moto.h, s3_sedan.h); the
+ * component itself is the builder's to check (fe_builder: an unknown part at the key's entry) */
+static int generated_part(const scn_walk *w, const char *name)
+{
+    const mcs_node *fe = strncmp(w->path, "stage3.", 7) == 0
+                             ? mcs_node_get(mcs_node_get(w->root, "stage3"), "fe")
+                             : mcs_node_get(w->root, "fe");
+    const mcs_node *list = mcs_node_get(fe, "parts");
+    for (int i = 0; i < mcs_node_len(list) && list->kind == MCS_NODE_SEQ; i++) {
+        const mcs_node *p = mcs_node_at(list, i), *nm = mcs_node_get(p, "name");
+        const char *g = mcs_node_str(mcs_node_get(mcs_node_get(p, "mesh"), "generate"));
+        if (!nm || !nm->text || !g || (strcmp(g, "motorcycle") && strcmp(g, "sedan_side")))
+            continue;
+        const size_t k = strlen(nm->text);
+        if (strncmp(name, nm->text, k) == 0 && name[k] == '_' && name[k + 1]) return 1;
+    }
+    return 0;
+}
+
 static const char *ref_what(mcs_sref ref)
 {
     switch (ref) {
@@ -91,6 +111,7 @@ static mcs_status check_ref(scn_walk *w, mcs_node *v, mcs_sref ref)
     int n = ref_names(w, ref, names, MAX_NAMES);
     for (int i = 0; i < n; i++)
         if (strcmp(names[i], v->text) == 0) return MCS_OK;
+    if (ref == MCS_REF_FE_PART && generated_part(w, v->text)) return MCS_OK;
     char dym[96];
     scn_suggest(dym, sizeof dym, v->text, names, n);
     return FAIL(w, v, MCS_ERR_KEY, "unknown %s '%.80s'%s", ref_what(ref), v->text, dym);

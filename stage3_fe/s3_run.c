@@ -8,6 +8,7 @@
 #include "core/mcs_progress.h"
 #include "core/mcs_results.h"
 #include "fe/fe_contact.h"
+#include "stage3_fe/s3_carcase.h"
 #include "stage3_fe/s3_wallcase.h"
 
 #include <float.h>
@@ -31,6 +32,7 @@ typedef struct {
     mcs_results_series *eroded; /* elements deleted so far (erosion only), NULL without */
     fe_out fe; /* fields, contacts, restraints, slip rings, parts (fe/fe_out.h) */
     s3_wallcase *wc; /* a motorcycle's fork angle, wall force by part, phases; NULL none */
+    s3_carcase *cc;  /* a motorcycle into a sedan: pitch, velocities, door intrusion; NULL none */
     double hg_max; /* largest hourglass / internal energy once internal is 1 % of its end [-] */
     double *eint;  /* (rows) internal and hourglass energy of each row, for hg_max [J] */
     size_t nrow, caprow;
@@ -58,6 +60,7 @@ static mcs_status open_series(mcs_results *r, const fe_model *m, s3_out *o, mcs_
                                        err);
     if (!st) st = fe_out_open(r, 3, m, &o->fe, err);
     if (!st) st = s3_wallcase_open(r, m, &o->wc, err);
+    if (!st) st = s3_carcase_open(r, m, &o->cc, err);
     return st;
 }
 
@@ -80,6 +83,7 @@ static mcs_status sample_energy(const fe_model *m, const fe_state *s, s3_out *o,
     }
     if (!st) st = fe_out_sample(m, s, &o->fe, err);
     if (!st) st = s3_wallcase_sample(m, s, o->wc, err);
+    if (!st) st = s3_carcase_sample(m, s, o->cc, err);
     if (o->nrow < o->caprow) { /* beyond the rows planned: not in hg_max */
         o->eint[2 * o->nrow] = s->energy[FE_E_internal];
         o->eint[2 * o->nrow++ + 1] = s->energy[FE_E_hourglass];
@@ -226,6 +230,7 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
             st = mcs_results_set_attr_double(r, "/stage3", "hourglass_fraction_max",
                                              sum->hourglass_fraction_max, err);
         if (!st) st = s3_wallcase_finish(r, &o.wc, err);
+        if (!st) st = s3_carcase_finish(r, &o.cc, err);
         /* an interrupted run's file: complete up to s->time, marked (core/mcs_interrupt.h) */
         if (!st && interrupted)
             st = mcs_results_set_attr_str(r, "/meta", "status", "interrupted", err);
@@ -239,6 +244,7 @@ mcs_status s3_run(const fe_problem *p, const s3_run_opts *ro, s3_summary *sum, m
                      "stage 3: interrupted at t = %.9g s (step %ld); results up to then in %s",
                      s->time, (long)s->nstep, ro->out_path);
     s3_wallcase_free(&o.wc);
+    s3_carcase_free(&o.cc);
     free(o.eint);
     fe_out_free(&o.fe);
     fe_state_destroy(&s);

@@ -15,7 +15,8 @@
  * hourglass_fraction (hourglass / internal energy at the end) and hourglass_fraction_max (the
  * largest over the rows whose internal energy is at least 1 % of the end's) [-].
  * A generated motorcycle adds its fork angle, wall forces by part, crush and impact phases
- * (stage3_fe/s3_wallcase.h).
+ * (stage3_fe/s3_wallcase.h); one meeting a generated sedan its pitch, the vehicles' velocities
+ * and the door intrusion (stage3_fe/s3_carcase.h).
  * A numerical failure (MCS_ERR_NUMERIC: instability, inverted element, energy growth) aborts
  * the results writer: no file is left. */
 #ifndef S3_RUN_H

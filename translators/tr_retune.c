@@ -28,8 +28,9 @@ tr_rt_opts tr_rt_opts_default(void)
 
 const char *tr_rt_par_name(int i)
 {
-    static const char *const n[TR_RT_NPAR] = {"tyre_force_scale", "fork_moment_scale",
-                                              "fork_elastic_limit", "fork_stop_angle"};
+    static const char *const n[TR_RT_NPAR] = {
+        "tyre_force_scale", "fork_moment_scale", "fork_elastic_limit",
+        "fork_stop_angle",  "rim_force_scale",   "fork_stop_stiffness"};
     return i >= 0 && i < TR_RT_NPAR ? n[i] : "?";
 }
 
@@ -71,7 +72,8 @@ mcs_status tr_rt_read_opts(tr_rt_opts *o, mcs_error *err)
             if (k < 0)
                 st = mcs_node_error(it, err, MCS_ERR_RANGE,
                                     "retune.free: unknown parameter (tyre_force_scale, "
-                                    "fork_moment_scale, fork_elastic_limit, fork_stop_angle)");
+                                    "fork_moment_scale, fork_elastic_limit, fork_stop_angle, "
+                                    "rim_force_scale, fork_stop_stiffness)");
             else
                 o->free_mask |= 1 << k;
         }
@@ -81,9 +83,11 @@ mcs_status tr_rt_read_opts(tr_rt_opts *o, mcs_error *err)
 }
 
 /* bounds (docs/retune.md "Parameters"): scales 0.5..2; elastic limit 0.03..0.11 rad; stop
- * 0.12..0.35 rad, so the stop always lies beyond the elastic limit */
-static const double par_lo[TR_RT_NPAR] = {0.5, 0.5, 0.03, 0.12};
-static const double par_hi[TR_RT_NPAR] = {2.0, 2.0, 0.11, 0.35};
+ * 0.12..0.35 rad, so the stop always lies beyond the elastic limit; stop stiffness 3e4..3e6
+ * N m/rad, fitted as its logarithm (par_log: two decades) */
+static const double par_lo[TR_RT_NPAR] = {0.5, 0.5, 0.03, 0.12, 0.5, 3e4};
+static const double par_hi[TR_RT_NPAR] = {2.0, 2.0, 0.11, 0.35, 2.0, 3e6};
+static const int par_log[TR_RT_NPAR] = {0, 0, 0, 0, 0, 1};
 
 void tr_rt_target_free(tr_rt_target *t)
 {
@@ -222,6 +226,9 @@ mcs_status tr_rt_read_base(const tr_rt_opts *o, tr_rt_base *b, mcs_error *err)
     double fx[TR_RT_MAXPT], fy[TR_RT_MAXPT];
     int nf = 0;
     st = read_curve(o->scenario, ch, o->tyre_char, b->tyre_x, b->tyre_y, &b->ntyre, err);
+    /* the rim's share of the tyre curve: beyond its elastic limit (none: no rim part) */
+    if (!st)
+        b->tyre_xe = mcs_node_num_or(mcs_node_get(ch, o->tyre_char), "elastic_limit", INFINITY);
     if (!st) st = read_curve(o->scenario, ch, o->fork_char, fx, fy, &nf, err);
     if (!st && (nf < 3 || fx[0] != 0 || fy[0] != 0 || !(fy[2] >= fy[1])))
         st = MCS_ERR(err, MCS_ERR_RANGE,
@@ -243,14 +250,30 @@ static void fork_curve(const tr_rt_base *b, const double *p, double x[4], double
     x[0] = 0, y[0] = 0;
     x[1] = p[2], y[1] = p[1] * b->m_e;
     x[2] = p[3], y[2] = p[1] * b->m_p;
-    x[3] = p[3] + 0.02, y[3] = y[2] + b->k_stop * 0.02;
+    x[3] = p[3] + 0.02, y[3] = y[2] + p[5] * 0.02;
+}
+
+/* the tyre curve's i-th force at p: p[0] times the scenario's, its rise beyond the elastic
+ * limit x_e (the rim, the hub) times p[4] more: p0 (y(x_e) + p4 (y(x) - y(x_e))), monotone
+ * when the scenario's curve is */
+static double tyre_force(const tr_rt_base *b, const double *p, int i)
+{
+    double x = b->tyre_x[i], y = b->tyre_y[i];
+    if (!(x > b->tyre_xe)) return p[0] * y;
+    int k = 1;
+    while (k < b->ntyre - 1 && b->tyre_x[k] < b->tyre_xe)
+        k++;
+    double x0 = b->tyre_x[k - 1], x1 = b->tyre_x[k];
+    double ye = b->tyre_y[k - 1] + (b->tyre_y[k] - b->tyre_y[k - 1]) * (b->tyre_xe - x0) /
+                                       (x1 - x0);
+    return p[0] * (ye + p[4] * (y - ye));
 }
 
 void tr_rt_write_yaml(FILE *f, const tr_rt_opts *o, const tr_rt_base *b, const double *p)
 {
     fprintf(f, "characteristics:\n  %s:\n    loading: [", o->tyre_char);
     for (int i = 0; i < b->ntyre; i++)
-        fprintf(f, "%s[%.9g, %.9g]", i ? ", " : "", b->tyre_x[i], p[0] * b->tyre_y[i]);
+        fprintf(f, "%s[%.9g, %.9g]", i ? ", " : "", b->tyre_x[i], tyre_force(b, p, i));
     double x[4], y[4];
     fork_curve(b, p, x, y);
     fprintf(f, "]\n  %s:\n    loading: [", o->fork_char);
@@ -397,6 +420,17 @@ typedef struct {
     double *sf, *sa; /* the last point's stage-1 force and angle [nt] */
 } fit_ctx;
 
+/* a parameter as the fit moves it (its logarithm where par_log), and back */
+static double to_q(int i, double p)
+{
+    return par_log[i] ? log(p) : p;
+}
+
+static double to_p(int i, double q)
+{
+    return par_log[i] ? exp(q) : q;
+}
+
 /* residuals R[k x 2nt] at the k free-parameter points Q[k x nfree] (tr_lm_many_fn): the
  * stage-1 runs in parallel */
 static mcs_status residuals_many(void *vc, int k, const double *Q, double *R, mcs_error *err)
@@ -410,7 +444,7 @@ static mcs_status residuals_many(void *vc, int k, const double *Q, double *R, mc
         double *pq = P + (size_t)q * TR_RT_NPAR;
         memcpy(pq, c->p, sizeof c->p);
         for (int j = 0; j < c->nfree; j++)
-            pq[c->idx[j]] = Q[(size_t)q * (size_t)c->nfree + (size_t)j];
+            pq[c->idx[j]] = to_p(c->idx[j], Q[(size_t)q * (size_t)c->nfree + (size_t)j]);
     }
     if (!st) st = tr_rt_stage1_many(c->o, c->b, k, P, c->nt, c->dt, F, A, err);
     c->nrun += k;
@@ -448,9 +482,9 @@ static mcs_status rate(const fit_ctx *c, double *rf, double *ra, mcs_error *err)
 }
 
 /* the start: the best of q and a full factorial over the free parameters (7 levels each for up
- * to two, else 3: the centres of equal parts of each range), all run at once, since the
- * objective has local minima (a stage-1 run is non-smooth in its parameters: contacts open and
- * close); ties go to the earlier point, so the choice does not depend on the jobs */
+ * to two, 3 for up to four, else 2: the centres of equal parts of each range), all run at once,
+ * since the objective has local minima (a stage-1 run is non-smooth in its parameters: contacts
+ * open and close); ties go to the earlier point, so the choice does not depend on the jobs */
 static mcs_status scan_start(fit_ctx *c, double *q, const double *lo, const double *hi,
                              const double *rr, mcs_error *err)
 {
@@ -483,7 +517,7 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
                      tr_rt_result *r, mcs_error *err)
 {
     *r = (tr_rt_result){0};
-    double p0[TR_RT_NPAR] = {1, 1, b->phi_e, b->phi_s};
+    double p0[TR_RT_NPAR] = {1, 1, b->phi_e, b->phi_s, 1, b->k_stop};
     if (o->has_start) memcpy(p0, o->start, sizeof p0);
     fit_ctx c = {.o = o, .b = b, .dt = o->dt};
     for (int i = 0; i < TR_RT_NPAR; i++) {
@@ -507,14 +541,16 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
     mcs_status st = filter(tf, c.nt, c.dt, o->cfc, err);
     if (!st) st = filter(ta, c.nt, c.dt, o->cfc, err);
     for (int i = 0; i < c.nt; i++)
-        c.fscale = fmax(c.fscale, fabs(tf[i])), c.ascale = fmax(c.ascale, fabs(ta[i]));
+        c.fscale += tf[i] * tf[i] / c.nt, c.ascale += ta[i] * ta[i] / c.nt;
+    c.fscale = sqrt(c.fscale), c.ascale = sqrt(c.ascale); /* the target's RMS */
     if (!st && (!(c.fscale > 0) || !(c.ascale > 0)))
         st = MCS_ERR(err, MCS_ERR_RANGE,
                      "retune: the target's wall force or fork angle is "
                      "zero throughout");
     double q[TR_RT_NPAR], lo[TR_RT_NPAR], hi[TR_RT_NPAR];
     for (int j = 0; j < c.nfree; j++)
-        q[j] = p0[c.idx[j]], lo[j] = par_lo[c.idx[j]], hi[j] = par_hi[c.idx[j]];
+        q[j] = to_q(c.idx[j], p0[c.idx[j]]), lo[j] = to_q(c.idx[j], par_lo[c.idx[j]]),
+        hi[j] = to_q(c.idx[j], par_hi[c.idx[j]]);
     double *rr = malloc(2 * nt * sizeof(double));
     if (!rr) st = MCS_ERR(err, MCS_ERR_NOMEM, "out of memory");
     if (!st) st = residuals(&c, q, rr, err);
@@ -534,11 +570,23 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
     tr_lm_result lr = {0};
     tr_lm_opts lo_ = tr_lm_opts_default();
     lo_.fd_rel = 1e-3, lo_.max_iter = 30, lo_.ftol = 1e-8, lo_.many = residuals_many;
+    double q0[TR_RT_NPAR];
+    memcpy(q0, q, sizeof q0);
     if (!st && c.nfree > 0)
         st = tr_lm_solve(residuals, &c, c.nfree, 2 * c.nt, q, lo, hi, &lo_, &lr, err);
+    /* a gain below the LM's ftol is no move: the start is kept to the last bit, so a retune
+     * from its own fit (the loop's iteration k > 1) returns that fit and stage 1 repeats */
+    if (!st && c.nfree > 0 && !(lr.cost < lr.cost0 * (1 - lo_.ftol))) {
+        memcpy(q, q0, sizeof q0);
+        lr.cost = lr.cost0;
+    }
+    if (!st && !c.nfree && o->has_after) { /* a case not in the fit: rated at o->after */
+        memcpy(c.p, o->after, sizeof c.p);
+        memcpy(r->p, o->after, sizeof r->p);
+    }
     if (!st) {
         for (int j = 0; j < c.nfree; j++)
-            r->p[c.idx[j]] = q[j];
+            r->p[c.idx[j]] = to_p(c.idx[j], q[j]);
         st = residuals(&c, q, rr, err);
     }
     if (!st) st = rate(&c, &r->iso_force, &r->iso_angle, err);
@@ -547,7 +595,7 @@ mcs_status tr_rt_fit(const tr_rt_opts *o, const tr_rt_base *b, const tr_rt_targe
         memcpy(r->a1, c.sa, nt * sizeof(double));
     }
     r->cost0 = lr.cost0, r->cost = lr.cost, r->iter = lr.iter, r->nfev = c.nrun;
-    r->why = lr.why ? lr.why : "nothing to fit";
+    r->why = lr.why ? lr.why : o->has_after && !c.nfree ? "held out" : "nothing to fit";
     if (st) tr_rt_result_free(r);
     free(rr);
     free(buf);
@@ -586,7 +634,7 @@ mcs_status tr_rt_write_curves(const char *h5, const tr_rt_opts *o, const tr_rt_b
     if (!st) st = mcs_results_remove(r, path, err);
     size_t dims[2] = {(size_t)b->ntyre, 2};
     for (int i = 0; i < b->ntyre; i++)
-        xy[2 * i] = b->tyre_x[i], xy[2 * i + 1] = p[0] * b->tyre_y[i];
+        xy[2 * i] = b->tyre_x[i], xy[2 * i + 1] = tyre_force(b, p, i);
     snprintf(path, sizeof path, "/curves/%s/loading", o->tyre_char);
     if (!st) st = mcs_results_write(r, path, 2, dims, xy, "m, N", err);
     /* the tyre unloads along its loading curve within its elastic range: unloading = loading

@@ -1,9 +1,13 @@
 /* tr_retune.h: stage-3 results -> stage-1 characteristics (`mcrash retune`, docs/retune.md).
- * The front's stage-1 characteristics are parameterised by four physical parameters
+ * The front's stage-1 characteristics are parameterised by six physical parameters
  *   p[0] tyre force scale   on the tyre characteristic's loading forces          [-]
  *   p[1] fork moment scale  on the fork hinge's elastic limit and plastic moments [-]
  *   p[2] elastic limit angle of the fork hinge (its elastic slope M_e / phi_e)     [rad]
  *   p[3] stop angle of the fork hinge: the wheel against the engine               [rad]
+ *   p[4] rim force scale    on the tyre curve's rise beyond its elastic limit (the
+ *        rim's collapse and the hub), on top of p[0]                              [-]
+ *   p[5] stop stiffness     the fork hinge's slope beyond the stop angle (the wheel
+ *        pressed into the engine)                                                 [N m/rad]
  * and fitted by bounded least squares (tr_lm.h) so that stage-1 runs of the scenario reproduce
  * the target's wall force and fork angle on a common CFC-filtered time grid. */
 #ifndef TR_RETUNE_H
@@ -13,7 +17,7 @@
 
 #include <stdio.h>
 
-#define TR_RT_NPAR 4
+#define TR_RT_NPAR 6
 #define TR_RT_MAXPT 32
 
 #define TR_RT_NAME 128
@@ -30,17 +34,20 @@ typedef struct {
     double end_time;                 /* compared span [s]; 0: the target's and scenario's shorter */
     double cfc;                      /* filter class on both signals (60)                  */
     double dt;                       /* common grid interval [s] (1e-4)                    */
-    int free_mask;                   /* bit i: p[i] is fitted (all four: 0xf)              */
+    int free_mask;                   /* bit i: p[i] is fitted (default the first four: 0xf) */
     int jobs;                        /* stage-1 runs at once, child processes (0: online CPUs) */
     int scan;                        /* 1: start from the best of a factorial scan (default) */
     int has_start;                   /* 1: start at `start` instead of the scenario's      */
     double start[TR_RT_NPAR];        /* that start (the loop's previous fit)               */
+    int has_after;                   /* with no parameter free: rate the target at `after` */
+    double after[TR_RT_NPAR];        /* (a case not in the fit, at another case's fit)     */
 } tr_rt_opts;
 
 /* the scenario's characteristics as read (SI) */
 typedef struct {
     int ntyre;
     double tyre_x[TR_RT_MAXPT], tyre_y[TR_RT_MAXPT];
+    double tyre_xe;                        /* the tyre's elastic limit (rim contact) [m]  */
     double m_e, phi_e, m_p, phi_s, k_stop; /* fork: elastic limit, plastic, stop, its slope  */
 } tr_rt_base;
 
@@ -65,6 +72,11 @@ typedef struct {
 } tr_rt_result;
 
 void tr_rt_result_free(tr_rt_result *r);
+
+/* the compared curves of the wall force (angle 0) or the fork angle (1) as one SVG plot: the
+ * target, stage 1 before and after, their ISO/TS 18571 ratings in the legend
+ * (translators/tr_retune_svg.c, analysis/an_svg.h) */
+void tr_rt_write_svg(FILE *f, const tr_rt_result *r, int angle, const char *title);
 
 /* the compared curves as CSV (time [s], then force [N] and angle [rad]: target, before, after) */
 int tr_rt_write_csv(FILE *f, const tr_rt_result *r);

@@ -6,6 +6,7 @@
  * docs/keyword.md. */
 #include "fe/fe_kw_impl.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -206,6 +207,12 @@ mcs_status kw_h_section_beam(kw_ctx *c, const kw_card *cd, int n)
         KW_TRY(kw_real(c, &cd[i], &KW_L10, 2, "SHRF", 0, &s->shrf));
         KW_TRY(kw_real(c, &cd[i], &KW_L10, 3, "QR/IRID", 0, &qr));
         KW_TRY(kw_real(c, &cd[i], &KW_L10, 4, "CST", 0, &cst));
+        /* integers written in real fields: past an int they are no rule's id or type (and
+         * the conversion would be undefined: found by tests/fuzz/fuzz_keyword.c) */
+        if (!(fabs(qr) <= INT_MAX))
+            return refuse(c, &cd[i], &KW_L10, 3, "QR/IRID", "must be an integration rule id");
+        if (!(fabs(cst) <= INT_MAX))
+            return refuse(c, &cd[i], &KW_L10, 4, "CST", "must be 0, 1 or 2");
         s->irid = (int)qr, s->cst = (int)cst;
         const kw_card *b = &cd[i + 1];
         const int f = s->elform;

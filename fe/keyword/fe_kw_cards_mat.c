@@ -155,7 +155,7 @@ mcs_status kw_h_mat_rigid(kw_ctx *c, const kw_card *cd, int n)
         KW_TRY(kw_real(c, c2, &KW_L10, 0, "CMO", 0, &cmo));
         KW_TRY(kw_int(c, c2, &KW_L10, 1, "CON1", 0, &m->con1));
         KW_TRY(kw_int(c, c2, &KW_L10, 2, "CON2", 0, &m->con2));
-        m->cmo = (int)cmo;
+        m->cmo = cmo == 1; /* 0 or 1 (refused below otherwise): no conversion of a huge value */
         if (cmo != 0 && cmo != 1)
             return refuse(c, c2, 0,
                           "field CMO: %g: constraints in a local system (CMO -1) are not built; "

@@ -140,6 +140,7 @@ mcs_status kw_int(kw_ctx *c, const kw_card *cd, const kw_layout *l, int i, const
     if (kw_param_is_ref(p, n)) {
         double v;
         mcs_status st = kw_param_num(c, cd, p, n, name, 1, &v);
+        if (!st && !(fabs(v) <= INT_MAX)) return bad(c, cd, p, n, name, "an integer of int range");
         if (!st) *out = (int)v;
         return st;
     }

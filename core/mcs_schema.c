@@ -663,16 +663,21 @@ static const mcs_skey fabric_keys[] = {
     END,
 };
 static const mcs_skey rigid_keys[] = {ELASTIC_KEYS, END};
+/* nonstructural (LS-DYNA *MAT_NULL): mass and a contact surface, no stress, no element step; for parts
+ * carried rigidly by a stage-1 body (the stage-2 cockpit panels), whose elements cannot strain */
+static const mcs_skey null_keys[] = {END};
 static const mcs_smap elastic_map = {.what = "elastic material", .keys = elastic_keys};
 static const mcs_smap plastic_map = {
     .what = "elastic_plastic material", .keys = plastic_keys, .check = mcs_rule_plastic};
 static const mcs_smap foam_map = {.what = "foam material", .keys = foam_keys};
 static const mcs_smap fabric_map = {.what = "fabric material", .keys = fabric_keys};
 static const mcs_smap rigid_map = {.what = "rigid material", .keys = rigid_keys};
+static const mcs_smap null_map = {.what = "nonstructural material", .keys = null_keys};
 static const mcs_svariant material_variants[] = {
     {"elastic", &elastic_map}, {"elastic_plastic", &plastic_map},
     {"foam", &foam_map},       {"fabric", &fabric_map},
-    {"rigid", &rigid_map},     {0}};
+    {"rigid", &rigid_map},     {"nonstructural", &null_map},
+    {0}};
 static const mcs_skey material_keys[] = {
     D("model", "material model"),
     Q("density", MCS_DIM_DENSITY, REQ | GT, 0, 0, "density [kg/m^3]"),

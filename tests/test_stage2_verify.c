@@ -9,6 +9,7 @@
 #include "tests/s2_test_util.h"
 #include "analysis/an_iso18571.h"
 #include "tests/s2_fig23.h"
+#include "tests/s2_energy.h"
 
 #include <unistd.h>
 
@@ -20,6 +21,8 @@
 #define CONCEPT_95M_S2 "scenarios/iso13232_413-0_13.4_sedan_rider_concept_95m_stage2.yaml"
 
 static void fig23_50th(const char *h2);
+static void energy_closure(const char *h2, const char *label, const char *k_drift,
+                           const char *k_rider, const char *k_panel);
 
 static char tdir[64], h1[128];
 
@@ -262,6 +265,8 @@ static void test_consistency_413(void)
     double fpk = 0, tpk = 0, nt2 = neck_tension(h2), nt1 = 0;
     pad_peak(h2, &fpk, &tpk);
     fig23_50th(h2); /* the shipped stage-2 run against the paper's Fig. 23/24 (s2_fig23.h) */
+    energy_closure(h2, "50th", "s2energy.p50_drift_pct", "s2energy.p50_rider_drift_pct",
+                   "s2energy.p50_panel_peak_n");
     unlink(h2);
     free(y);
     /* the same pads against a rigid thigh (the in-memory variant above) */
@@ -302,6 +307,36 @@ static void test_consistency_413(void)
     FIG("stage2.consistency_foam_rigid_thigh_head", "%.2f", hard[0]);
     FIG("stage2.consistency_foam_rigid_thigh_chest", "%.2f", hard[1]);
     FIG("stage2.consistency_foam_rigid_thigh_pelvis", "%.2f", hard[2]);
+}
+
+/* issue 13 item 5: the energy balance of a 300 ms stage-2 run of the concept case (s2_energy.h)
+ * and its figures: the model's drift [%], the rider's [%], the panels' peak contact force [N] */
+static void energy_closure(const char *h2, const char *label, const char *k_drift,
+                           const char *k_rider, const char *k_panel)
+{
+    s2_energy e;
+    CHECK(s2_energy_read(h2, 2, &e) == 0);
+    double fp = 0;
+    size_t n = 0;
+    const char *pc[2] = {"/stage2/contact/panel_tank_rider/force",
+                         "/stage2/contact/panel_fairing_rider/force"};
+    for (int k = 0; k < 2; k++) {
+        double *f = read_ds(h2, pc[k], &n);
+        CHECK(f != NULL);
+        for (size_t i = 0; f && i + 2 < n; i += 3)
+            fp = fmax(fp, sqrt(f[i] * f[i] + f[i + 1] * f[i + 1] + f[i + 2] * f[i + 2]));
+        free(f);
+    }
+    printf("%s, stage 2 energy: total - (K + P + I + C + D - W) %.2g, drift %.3g %% of %.4g J; "
+           "rider: drift %.3g %% of %.4g J, %d partners sum to contact_total within %.2g, "
+           "categories %.2g; cockpit panels' contact force peak %.3g N\n",
+           label, e.sum_err, 100 * e.drift, e.ref, 100 * e.rider_drift, e.rider_e0, e.npartner,
+           e.partner_err, e.category_err, fp);
+    CHECK(e.sum_err < 1e-9 && e.partner_err < 1e-9 && e.category_err < 1e-9);
+    CHECK(e.drift < S2_ENERGY_TOL && e.rider_drift < S2_RIDER_TOL && e.npartner > 10);
+    FIG(k_drift, "%.2f", 100 * e.drift);
+    FIG(k_rider, "%.1g", 100 * e.rider_drift);
+    FIG(k_panel, "%.0f", fp);
 }
 
 /* ---- the paper's stage-2 figures (seed 001 Sec. 3.2, Fig. 23, Fig. 24b; s2_fig23.h) ---- */
@@ -357,6 +392,7 @@ static void fig23_50th(const char *h2)
 typedef struct {
     const char *label, *s1, *s2;
     const char *pad_fig;         /* the tank pads' peak contact force [N] */
+    const char *e_fig[3];        /* energy_closure's figures */
     const char *k1[10], *k2[10]; /* kinematics (s2_fig23.h f23_fig) of stage 1, stage 2 */
     const char *crit_fig[2][7];  /* [stage][criterion] of crit[] below */
     double leave;                /* the pelvis' largest distance from its seated place [m] */
@@ -367,6 +403,7 @@ static const size_case sizes[2] = {
      CONCEPT_05F,
      CONCEPT_05F_S2,
      "fig23.p05_s2_pad_peak_n",
+     {"s2energy.p05_drift_pct", "s2energy.p05_rider_drift_pct", "s2energy.p05_panel_peak_n"},
      {"fig23.p05_s1_slip_100_mm", "fig23.p05_s1_slip_200_mm", "fig23.p05_s1_slip_300_mm",
       "fig23.p05_s1_up_100_mm", "fig23.p05_s1_up_200_mm", "fig23.p05_s1_up_300_mm",
       "fig23.p05_s1_head_peak_mm", "fig23.p05_s1_head_fwd_mm", "fig23.p05_s1_pelvis_fwd_mm",
@@ -386,6 +423,7 @@ static const size_case sizes[2] = {
      CONCEPT_95M,
      CONCEPT_95M_S2,
      "fig23.p95_s2_pad_peak_n",
+     {"s2energy.p95_drift_pct", "s2energy.p95_rider_drift_pct", "s2energy.p95_panel_peak_n"},
      {"fig23.p95_s1_slip_100_mm", "fig23.p95_s1_slip_200_mm", "fig23.p95_s1_slip_300_mm",
       "fig23.p95_s1_up_100_mm", "fig23.p95_s1_up_200_mm", "fig23.p95_s1_up_300_mm",
       "fig23.p95_s1_head_peak_mm", "fig23.p95_s1_head_fwd_mm", "fig23.p95_s1_pelvis_fwd_mm",
@@ -435,6 +473,7 @@ static void fig23_size(const size_case *z)
     pad_peak(s2, &fpk, &tpk);
     printf("%s, stage 2, tank pads: contact force peak %.4g N at %.4g s\n", z->label, fpk, tpk);
     FIG(z->pad_fig, "%.0f", fpk);
+    energy_closure(s2, z->label, z->e_fig[0], z->e_fig[1], z->e_fig[2]);
     snprintf(what, sizeof what, "%s, stage 1", z->label);
     double off1 = f23_fig(s1, 1, what, z->k1);
     CHECK(isfinite(off1) && off1 < z->leave);

@@ -119,6 +119,11 @@ static mcs_status read_material(const mcs_node *mat, fe_material_desc *d, mcs_er
     const char *model = mcs_node_str(fe_scn_get(mat, "model"));
     if (model && (strcmp(model, "foam") == 0 || strcmp(model, "rigid") == 0))
         return fe_scn_solid_material(mat, d, err);
+    if (model && strcmp(model, "nonstructural") == 0) { /* mass and contact only (*MAT_NULL) */
+        d->model = FE_MAT_NULL;
+        d->density = mcs_node_num(fe_scn_get(mat, "density"));
+        return MCS_OK;
+    }
     int plastic = model && strcmp(model, "elastic_plastic") == 0;
     if (model && strcmp(model, "fabric") == 0) return fe_scn_read_fabric(mat, d, err);
     if (!plastic && !(model && strcmp(model, "elastic") == 0)) {

@@ -396,7 +396,10 @@ static int read_study(study *s, const char *path, const mcs_node *st, const char
             return fail(sg, "study.stage: 1, 2, 3, all or rom", NULL, NULL);
         snprintf(s->stage, sizeof s->stage, "%s", t);
     }
-    if (read_design(s, mcs_node_get(st, "design"), gen, ngen, res)) return 2;
+    const mcs_node *dn = mcs_node_get(st, "design");
+    if (!dn) /* the error at the study: block, not at a node that is not there */
+        return fail(st, "study.design: missing (expected {type: full_factorial | ...})", 0, 0);
+    if (read_design(s, dn, gen, ngen, res)) return 2;
     const mcs_node *fs = mcs_node_get(st, "factors"), *rs = mcs_node_get(st, "responses");
     if (s->design == STUDY_ISO13232 && fs)
         return fail(fs, "study.factors: the iso13232 design sets the impact: keys itself", 0, 0);

@@ -141,6 +141,8 @@ static void test_study_bad_input(void)
         {"bad_range_unit.yaml", DATA "bad_range_unit.yaml:5:58: error: ",
          "'-3 kg' is a mass (kg), expected a velocity (m/s)"},
         {"bad_key.yaml", DATA "bad_key.yaml:5:14: error: ", "unknown key in a simulation block"},
+        /* no design: the place is the study: block (it was "?:0:0") */
+        {"no_design.yaml", DATA "no_design.yaml:2:3: error: ", "study.design: missing"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char cmd[512], dir[128];

@@ -132,51 +132,67 @@ static ride closed_form(void)
     return r;
 }
 
+/* least squares of one signal x (n samples at dt, multiplied by sc) on 1, t, cos and sin of
+ * w1 t and w2 t: the coefficients (in that order) into c, the residual returned */
+static double lsq6(const double *x0, int n, double dt, double f1, double f2, double sc,
+                   double c[6])
+{
+    double A[6][7] = {{0}}, xx = 0;
+    for (int i = 0; i < n; i++) {
+        const double t = i * dt, x = x0[i] * sc;
+        const double B[6] = {1, t, cos(2 * M_PI * f1 * t), sin(2 * M_PI * f1 * t),
+                             cos(2 * M_PI * f2 * t), sin(2 * M_PI * f2 * t)};
+        for (int j = 0; j < 6; j++) {
+            for (int k = 0; k < 6; k++) A[j][k] += B[j] * B[k];
+            A[j][6] += B[j] * x;
+        }
+        xx += x * x;
+    }
+    double rhs[6];
+    for (int j = 0; j < 6; j++) rhs[j] = A[j][6];
+    for (int j = 0; j < 6; j++) /* Gauss-Jordan, partial pivoting */ {
+        int p = j;
+        for (int r = j + 1; r < 6; r++)
+            if (fabs(A[r][j]) > fabs(A[p][j])) p = r;
+        for (int k = 0; k < 7; k++) {
+            const double t = A[j][k];
+            A[j][k] = A[p][k], A[p][k] = t;
+        }
+        if (A[j][j] == 0) return INFINITY;
+        for (int r = 0; r < 6; r++)
+            if (r != j) {
+                const double f = A[r][j] / A[j][j];
+                for (int k = j; k < 7; k++) A[r][k] -= f * A[j][k];
+            }
+    }
+    /* residual = x.x - coef . rhs (normal equations) */
+    double cr = 0;
+    for (int j = 0; j < 6; j++) c[j] = A[j][6] / A[j][j], cr += c[j] * rhs[j];
+    return xx - cr;
+}
+
 /* the least-squares residual of signals a and b (n samples at dt, each scaled to its range)
  * on 1, t, cos and sin of w1 t and w2 t */
 static double fit_residual(const double *a, const double *b, int n, double dt, double f1,
                            double f2)
 {
     const double *sig[2] = {a, b};
-    double tot = 0;
-    for (int c = 0; c < 2; c++) {
-        double lo = sig[c][0], hi = sig[c][0];
-        for (int i = 0; i < n; i++) lo = fmin(lo, sig[c][i]), hi = fmax(hi, sig[c][i]);
-        const double sc = hi > lo ? 1 / (hi - lo) : 1;
-        double A[6][7] = {{0}}, xx = 0;
-        for (int i = 0; i < n; i++) {
-            const double t = i * dt, x = sig[c][i] * sc;
-            const double B[6] = {1, t, cos(2 * M_PI * f1 * t), sin(2 * M_PI * f1 * t),
-                                 cos(2 * M_PI * f2 * t), sin(2 * M_PI * f2 * t)};
-            for (int j = 0; j < 6; j++) {
-                for (int k = 0; k < 6; k++) A[j][k] += B[j] * B[k];
-                A[j][6] += B[j] * x;
-            }
-            xx += x * x;
-        }
-        double rhs[6];
-        for (int j = 0; j < 6; j++) rhs[j] = A[j][6];
-        for (int j = 0; j < 6; j++) /* Gauss-Jordan, partial pivoting */ {
-            int p = j;
-            for (int r = j + 1; r < 6; r++)
-                if (fabs(A[r][j]) > fabs(A[p][j])) p = r;
-            for (int k = 0; k < 7; k++) {
-                const double t = A[j][k];
-                A[j][k] = A[p][k], A[p][k] = t;
-            }
-            if (A[j][j] == 0) return INFINITY;
-            for (int r = 0; r < 6; r++)
-                if (r != j) {
-                    const double f = A[r][j] / A[j][j];
-                    for (int k = j; k < 7; k++) A[r][k] -= f * A[j][k];
-                }
-        }
-        /* residual = x.x - coef . rhs (normal equations) */
-        double cr = 0;
-        for (int j = 0; j < 6; j++) cr += A[j][6] / A[j][j] * rhs[j];
-        tot += xx - cr;
+    double tot = 0, c[6];
+    for (int k = 0; k < 2; k++) {
+        double lo = sig[k][0], hi = sig[k][0];
+        for (int i = 0; i < n; i++) lo = fmin(lo, sig[k][i]), hi = fmax(hi, sig[k][i]);
+        tot += lsq6(sig[k], n, dt, f1, f2, hi > lo ? 1 / (hi - lo) : 1, c);
     }
     return tot;
+}
+
+/* the level x oscillates about (n samples at dt, modes f1 and f2): the fitted constant and
+ * drift's mean over the window */
+static double fit_level(const double *x, int n, double dt, double f1, double f2)
+{
+    double c[6];
+    lsq6(x, n, dt, f1, f2, 1, c);
+    return c[0] + c[1] * 0.5 * (n - 1) * dt;
 }
 
 /* the two frequencies of signals a and b (n samples at dt), lower first [Hz]: a grid over
@@ -370,10 +386,14 @@ static ride stage3(void)
     mcs_status st = MCS_OK;
     while (!st && s->time < 0.3) st = fe_step(m, s);
     const double *R = s->body_rot + 9 * sa, *Rf = s->body_rot + 9 * fr;
-    r.sag_f = l0 - spring_len(m, s, fl);
-    r.sag_r = fabs(atan2(R[2], R[0]) - atan2(Rf[2], Rf[0])); /* the arm against the frame */
-    printf("  stage 3 settled at %.3f s: frame down %.2f mm, vz %.2e m/s\n", s->time,
-           1e3 * (z0 - s->body_x[3 * fr + 2]), s->body_v[3 * fr + 2]);
+    /* the damped settling creeps (overdamped by the mass damping): at 0.3 s the frame still
+       sinks at about 1 cm/s, the fork about 2 mm short of its rest. The static sag is the level
+       the free motion below oscillates about (fit_level), not this state */
+    printf("  stage 3 at %.3f s (damped): fork %.2f mm, swing arm %.4f rad, frame down %.2f mm, "
+           "vz %.2e m/s\n",
+           s->time, 1e3 * (l0 - spring_len(m, s, fl)),
+           fabs(atan2(R[2], R[0]) - atan2(Rf[2], Rf[0])), 1e3 * (z0 - s->body_x[3 * fr + 2]),
+           s->body_v[3 * fr + 2]);
     /* release */
     m->opts.damping = 0;
     m->spring[fl].damping = m->spring[fs].damping = m->spring[sh].damping = 0;
@@ -381,14 +401,14 @@ static ride stage3(void)
         fe_spring *sp = &m->spring[j ? fs : fl];
         for (int k = 0; k < sp->ncurve; k++) sp->curve[k][1] -= 0.5 * STEP_FRAC * P_FORK;
     }
-    static double z[NSAMP], th[NSAMP];
+    static double z[NSAMP], th[NSAMP], lf[NSAMP], arm[NSAMP];
     int ns = 0;
     const double t0 = s->time;
     while (!st && ns < NSAMP && s->time < t0 + 0.8) {
         st = fe_step(m, s);
         if (s->time >= t0 + ns * SAMPLE) {
-            const double *Rf = s->body_rot + 9 * fr;
             z[ns] = s->body_x[3 * fr + 2], th[ns] = atan2(Rf[2], Rf[0]);
+            lf[ns] = spring_len(m, s, fl), arm[ns] = fabs(atan2(R[2], R[0]) - atan2(Rf[2], Rf[0]));
             ns++;
         }
     }
@@ -396,6 +416,11 @@ static ride stage3(void)
     double f[2] = {0, 0};
     CHECK(fit2(z, th, ns, SAMPLE, f));
     r.f_bounce = f[0], r.f_pitch = f[1];
+    /* the static sag: the levels the undamped motion oscillates about; the front's with the
+       preload step's shift undone (the loads are statically determinate: the 5 % step moves
+       the fork's rest by dP / k = 30 N / 18 kN/m, the swing arm's not at all) */
+    r.sag_f = l0 - fit_level(lf, ns, SAMPLE, f[0], f[1]) + STEP_FRAC * P_FORK / K_FORK;
+    r.sag_r = fit_level(arm, ns, SAMPLE, f[0], f[1]);
 out:
     fe_state_destroy(&s);
     fe_model_destroy(&m);

@@ -71,6 +71,16 @@ static inline int th_verify(void)
     return v && *v && *v != '0';
 }
 
+/* dir/name in one of 8 rotating buffers (a test's scratch paths: up to 8 live at once) */
+static inline const char *th_path(const char *dir, const char *name)
+{
+    static char buf[8][512];
+    static int k;
+    k = (k + 1) % 8;
+    snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
+    return buf[k];
+}
+
 /* the whole file at path, NUL-terminated (malloc'ed; NULL when it cannot be opened or read);
  * *n, when n is not NULL, gets its length in bytes */
 static inline char *th_slurp(const char *path, size_t *n)

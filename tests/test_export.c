@@ -16,14 +16,7 @@
 
 static char tdir[64];
 
-static const char *tpath(const char *name)
-{
-    static char buf[8][512];
-    static int k;
-    k = (k + 1) % 8;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tdir, name);
-    return buf[k];
-}
+#define tpath(name) th_path(tdir, (name))
 
 /* ---- the sample run: analytic motions, so every exported number can be checked ---- */
 

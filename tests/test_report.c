@@ -17,14 +17,7 @@
 
 static char tdir[64];
 
-static const char *tpath(const char *name)
-{
-    static char buf[8][512];
-    static int k;
-    k = (k + 1) % 8;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tdir, name);
-    return buf[k];
-}
+#define tpath(name) th_path(tdir, (name))
 
 static int count(const char *s, const char *needle)
 {

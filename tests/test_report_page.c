@@ -18,14 +18,7 @@
 static char tdir[64];
 static char chrome[512];
 
-static const char *tpath(const char *name)
-{
-    static char buf[8][512];
-    static int k;
-    k = (k + 1) % 8;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tdir, name);
-    return buf[k];
-}
+#define tpath(name) th_path(tdir, (name))
 
 /* the browser: $MCRASH_CHROMIUM, else the first of chromium, chromium-browser on the PATH */
 static int find_chromium(void)

@@ -31,14 +31,7 @@ static void rm_tdir(void)
     if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", tdir);
 }
 
-static const char *tpath(const char *name)
-{
-    static char buf[4][256];
-    static int k;
-    k = (k + 1) % 4;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tdir, name);
-    return buf[k];
-}
+#define tpath(name) th_path(tdir, (name))
 
 static int file_exists(const char *p)
 {
